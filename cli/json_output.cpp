@@ -1,0 +1,116 @@
+#include "json_output.h"
+
+#include <gmcc/geometry/rational.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <sstream>
+
+namespace gmcc::cli {
+namespace {
+using Json = nlohmann::ordered_json;
+
+Json exact_pair(const Point2& p) { return Json::array({to_string(p.x), to_string(p.y)}); }
+Json approx_pair(const Point2& p) {
+  const auto d = to_double_nearest(p);
+  return Json::array({d[0], d[1]});
+}
+
+Json convex_set_json(const ConvexSet2& s) {
+  Json vertices = Json::array(), approx = Json::array();
+  for (const Point2& v : s.vertices) {
+    vertices.push_back(exact_pair(v));
+    approx.push_back(approx_pair(v));
+  }
+  Json j;
+  j["kind"] = to_string(s.kind);
+  j["vertices"] = vertices;
+  j["vertices_approx"] = approx;
+  j["area"] = to_string(area(s));
+  return j;
+}
+
+Json selection_json(const Selection& s) {
+  const MapEstimate& e = s.estimate;
+  Json j;
+  j["map"] = Json::array({e.map[0], e.map[1]});
+  if (e.exact) j["map_exact"] = exact_pair(*e.exact);
+  j["error_bound"] = e.error_bound;
+  j["enclosure"] = Json::array({Json::array({e.enclosure[0][0], e.enclosure[0][1]}),
+                                Json::array({e.enclosure[1][0], e.enclosure[1][1]})});
+  j["method"] = e.method;
+  if (e.precision_bits) j["precision_bits"] = e.precision_bits;
+  j["worst_case_deg"] = s.worst_case_deg;
+  return j;
+}
+
+std::string fmt(double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", x);
+  return buf;
+}
+
+}  // namespace
+
+std::string select_json(const SelectReport& r) {
+  Json j;
+  j["feasible_set"] = convex_set_json(r.feasible);
+  Json sel = Json::object();
+  if (r.selections.max_area) sel["max_area"] = selection_json(*r.selections.max_area);
+  if (r.selections.mean_2d) sel["mean_2d"] = selection_json(*r.selections.mean_2d);
+  if (r.selections.mean_3d) sel["mean_3d"] = selection_json(*r.selections.mean_3d);
+  j["selections"] = sel;
+  Json cg = convex_set_json(r.canonical_gamut);
+  cg["expansion"] = {{"policy", to_string(r.expansion.policy)},
+                     {"factor", to_string(r.expansion.factor)}};
+  j["canonical_gamut"] = cg;
+  j["input"] = {{"canonical_colours", r.canonical_colours},
+                {"canonical_dropped_nonpositive_blue", r.canonical_dropped},
+                {"image_colours", r.image_colours},
+                {"image_dropped_nonpositive_blue", r.image_dropped}};
+  return j.dump(2) + "\n";
+}
+
+std::string select_text(const SelectReport& r) {
+  std::ostringstream out;
+  out << "canonical gamut: " << to_string(r.canonical_gamut.kind) << ", "
+      << r.canonical_gamut.vertices.size() << " vertices from " << r.canonical_colours
+      << " colours";
+  if (r.canonical_dropped) out << " (" << r.canonical_dropped << " with b <= 0 dropped)";
+  if (r.expansion.policy != ExpansionPolicy::none)
+    out << "; expanded by " << to_string(r.expansion.factor) << " ("
+        << to_string(r.expansion.policy) << ")";
+  out << "\nimage: " << r.image_colours << " colours";
+  if (r.image_dropped) out << " (" << r.image_dropped << " with b <= 0 dropped)";
+  out << "\nfeasible set: " << to_string(r.feasible.kind);
+  if (r.feasible.kind == ConvexKind::polygon)
+    out << ", " << r.feasible.vertices.size() << " vertices, area "
+        << fmt(to_double_nearest(area(r.feasible)));
+  out << "\n";
+  for (const Point2& v : r.feasible.vertices) {
+    const auto d = to_double_nearest(v);
+    out << "  (" << fmt(d[0]) << ", " << fmt(d[1]) << ")\n";
+  }
+  if (r.feasible.kind == ConvexKind::empty) {
+    out << "no diagonal map takes every image colour into the canonical gamut\n";
+    return out.str();
+  }
+  out << "selections (perspective map d1/d3, d2/d3; worst-case map-space error):\n";
+  auto line = [&out](const char* name, const Selection& s) {
+    out << "  " << name << "  (" << fmt(s.estimate.map[0]) << ", " << fmt(s.estimate.map[1])
+        << ")  worst case " << fmt(s.worst_case_deg) << " deg";
+    if (s.estimate.exact)
+      out << "  exact (" << to_string(s.estimate.exact->x) << ", "
+          << to_string(s.estimate.exact->y) << ")";
+    else
+      out << "  ± " << fmt(s.estimate.error_bound) << " (" << s.estimate.method << ")";
+    out << "\n";
+  };
+  line("max-area", *r.selections.max_area);
+  line("2-D mean", *r.selections.mean_2d);
+  line("3-D mean", *r.selections.mean_3d);
+  return out.str();
+}
+
+}  // namespace gmcc::cli

@@ -1,0 +1,98 @@
+#include "select.h"
+
+#include "json_output.h"
+
+#include <gmcc/geometry/feasible_set.h>
+#include <gmcc/validation/colour_csv.h>
+
+#include <iostream>
+
+namespace gmcc::cli {
+namespace {
+
+// Chromaticities of a colour file under the blue policy, with line-accurate errors.
+Chromaticities chromaticities_of(const ColourTable& table, NonPositiveBluePolicy policy) {
+  Chromaticities c;
+  try {
+    c = perspective_chromaticities(table.colours, policy);
+  } catch (const NonPositiveBlue& e) {
+    throw InputError(table.file, table.lines[e.index],
+                     "b <= 0: this colour has no perspective chromaticity (r/b, g/b); "
+                     "use --nonpositive-blue drop to skip such colours");
+  }
+  if (c.points.empty())
+    throw InputError(table.file, 0,
+                     "no usable colour: every colour has b = 0 and so no chromaticity");
+  return c;
+}
+
+}  // namespace
+
+CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "select",
+      "Feasible set of perspective diagonal maps for an image and a canonical gamut, and the "
+      "three selection rules of Finlayson & Hordley (1999): max-area, 2-D mean, 3-D mean.");
+  cmd->add_option("--canonical", o.canonical_path,
+                  "canonical colours, one r,g,b per line (decimal or p/q, read exactly)")
+      ->required();
+  cmd->add_option("--image", o.image_path, "image colours, same format")->required();
+  cmd->add_flag("--json", o.json, "print one JSON object (SPEC §5) instead of a summary");
+  cmd->add_option("--expand", o.expand_factor,
+                  "expand the canonical gamut by this factor (0.1 = 10%; exact)")
+      ->capture_default_str();
+  cmd->add_option("--expand-policy", o.expand_policy, "none | centroid-clip | multiplicative")
+      ->check(CLI::IsMember({"none", "centroid-clip", "multiplicative"}))
+      ->capture_default_str();
+  cmd->add_option("--mean3d", o.mean3d_method, "route to the 3-D mean: analytic (closed form)")
+      ->check(CLI::IsMember({"analytic"}))
+      ->capture_default_str();
+  cmd->add_option("--precision", o.precision_bits,
+                  "force the closed form's working precision in bits (default: automatic)")
+      ->check(CLI::Range(64u, 1u << 20));
+  cmd->add_option("--nonpositive-blue", o.nonpositive_blue,
+                  "colours with b <= 0 have no chromaticity: drop (count them) or reject")
+      ->check(CLI::IsMember({"drop", "reject"}))
+      ->capture_default_str();
+  return cmd;
+}
+
+int run_select(const SelectOptions& o) {
+  SelectReport r;
+  const NonPositiveBluePolicy policy =
+      o.nonpositive_blue == "reject" ? NonPositiveBluePolicy::reject : NonPositiveBluePolicy::drop;
+  Expansion expansion;
+  try {
+    expansion.policy = expansion_policy_from_string(o.expand_policy);
+    expansion.factor = parse_rational(o.expand_factor);
+    if (sgn(expansion.factor) < 0) throw std::invalid_argument("must be >= 0");
+    if (sgn(expansion.factor) > 0 && expansion.policy == ExpansionPolicy::none)
+      throw std::invalid_argument("needs --expand-policy centroid-clip or multiplicative");
+  } catch (const std::invalid_argument& e) {
+    throw InputError("--expand", 0, e.what());
+  }
+  r.expansion = expansion;
+
+  const ColourTable canonical = read_colour_csv(o.canonical_path);
+  const ColourTable image = read_colour_csv(o.image_path);
+  const Chromaticities cq = chromaticities_of(canonical, policy);
+  const Chromaticities iq = chromaticities_of(image, policy);
+  r.canonical_colours = canonical.colours.size();
+  r.canonical_dropped = cq.dropped;
+  r.image_colours = image.colours.size();
+  r.image_dropped = iq.dropped;
+
+  r.canonical_gamut = canonical_gamut(cq.points, expansion);
+  try {
+    r.feasible = feasible_set(r.canonical_gamut, iq.points);
+  } catch (const UnboundedFeasibleSet& e) {
+    throw InputError(o.image_path, 0, e.what());
+  }
+  r.selections = select_maps(r.feasible, Mean3dOptions{o.precision_bits});
+
+  const std::string out = o.json ? select_json(r) : select_text(r);
+  std::cout << out << std::flush;
+  return 0;
+}
+
+}  // namespace gmcc::cli

@@ -1,0 +1,33 @@
+#pragma once
+// `gmcc select`: the feasible set of one image against one canonical gamut and the three
+// selection rules (SPEC §5).
+
+#include <gmcc/geometry/canonical_gamut.h>
+#include <gmcc/geometry/chromaticity.h>
+#include <gmcc/selection/mean_3d.h>
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace gmcc::cli {
+
+struct SelectOptions {
+  std::string canonical_path;
+  std::string image_path;
+  bool json = false;
+  std::string expand_policy = "none";
+  std::string expand_factor = "0";  // read exactly, like every number gmcc reads
+  std::string mean3d_method = "analytic";
+  unsigned precision_bits = 0;
+  std::string nonpositive_blue = "drop";
+};
+
+/// Register the subcommand and its options on `app`; returns the subcommand.
+CLI::App* add_select_command(CLI::App& app, SelectOptions& options);
+
+/// Run it: the whole output is built first and written at once (never a partial document).
+/// Returns the exit status; bad input throws gmcc::InputError (exit 2 at the edge).
+int run_select(const SelectOptions& options);
+
+}  // namespace gmcc::cli

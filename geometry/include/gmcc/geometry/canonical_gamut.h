@@ -1,0 +1,42 @@
+#pragma once
+/// \file canonical_gamut.h
+/// The canonical gamut G_c: the convex hull of the canonical chromaticities (Forsyth 1990;
+/// Finlayson 1996 §3), optionally expanded as the seed paper did (Finlayson & Hordley 1999 §4:
+/// "expanded by 10%"), by a named policy that keeps chromaticities positive (SPEC §1).
+
+#include <gmcc/geometry/colour.h>
+#include <gmcc/geometry/convex_set.h>
+
+#include <string>
+#include <vector>
+
+namespace gmcc {
+
+/// How to enlarge the canonical gamut by a factor F >= 0 (s = 1 + F).
+enum class ExpansionPolicy {
+  none,            ///< G_c as measured (the default)
+  centroid_clip,   ///< scale about the area centroid by s, then clip each axis at
+                   ///< (original minimum) / s: never below the measured gamut's own
+                   ///< multiplicative reach, so chromaticities stay > 0 when they were
+  multiplicative,  ///< a box in log-chromaticity: the hull of (x·s^±1, y·s^±1) over the
+                   ///< hull's vertices; exact, and positive whenever the input is
+};
+
+/// `none`, `centroid-clip`, `multiplicative`.
+std::string to_string(ExpansionPolicy policy);
+/// Inverse of to_string. \throws std::invalid_argument listing the valid names.
+ExpansionPolicy expansion_policy_from_string(const std::string& name);
+
+/// The expansion to apply: policy and factor F (0.1 means 10%).
+struct Expansion {
+  ExpansionPolicy policy = ExpansionPolicy::none;
+  Rational factor = 0;
+};
+
+/// G_c: the exact hull of `chromaticities`, expanded by `expansion`.
+/// \throws std::invalid_argument if factor < 0, or factor > 0 with policy none.
+/// Complexity O(n log n).
+ConvexSet2 canonical_gamut(const std::vector<Point2>& chromaticities,
+                           const Expansion& expansion = {});
+
+}  // namespace gmcc

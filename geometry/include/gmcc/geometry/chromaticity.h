@@ -1,0 +1,40 @@
+#pragma once
+/// \file chromaticity.h
+/// Perspective chromaticity q = (r/b, g/b): Finlayson (1996) "Color in perspective", and
+/// Finlayson & Hordley (1999) eq. (10).
+
+#include <gmcc/geometry/colour.h>
+#include <gmcc/geometry/point.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace gmcc {
+
+/// What to do with colours whose blue channel is <= 0: they have no perspective chromaticity.
+enum class NonPositiveBluePolicy {
+  drop,    ///< skip them and count them (the default of `gmcc select`)
+  reject,  ///< throw NonPositiveBlue naming the first offending colour
+};
+
+/// Thrown by perspective_chromaticities under NonPositiveBluePolicy::reject.
+struct NonPositiveBlue {
+  std::size_t index;  ///< position of the offending colour in the input
+};
+
+/// The chromaticities of the colours that have one, in input order, and how many were dropped.
+struct Chromaticities {
+  std::vector<Point2> points;
+  std::vector<std::size_t> source_index;  ///< for each point, the index of its colour
+  std::size_t dropped = 0;                ///< colours with b <= 0 skipped under `drop`
+};
+
+/// q = (r/b, g/b) for every colour with b > 0, exactly (eq. 10 of the seed paper).
+/// \throws NonPositiveBlue under NonPositiveBluePolicy::reject. O(n).
+Chromaticities perspective_chromaticities(const std::vector<Colour>& colours,
+                                          NonPositiveBluePolicy policy);
+
+/// q = (r/b, g/b) of one colour. Precondition: c.b > 0.
+Point2 perspective_chromaticity(const Colour& c);
+
+}  // namespace gmcc

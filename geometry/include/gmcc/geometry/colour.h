@@ -1,0 +1,20 @@
+#pragma once
+/// \file colour.h
+/// A colour: a linear sensor response (r, g, b), exact, finite and >= 0 (SPEC §1).
+
+#include <gmcc/geometry/rational.h>
+
+namespace gmcc {
+
+/// A linear three-channel sensor response, held exactly.
+struct Colour {
+  Rational r;
+  Rational g;
+  Rational b;
+};
+
+inline bool operator==(const Colour& a, const Colour& b) {
+  return a.r == b.r && a.g == b.g && a.b == b.b;
+}
+
+}  // namespace gmcc

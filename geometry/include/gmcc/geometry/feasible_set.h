@@ -1,0 +1,35 @@
+#pragma once
+/// \file feasible_set.h
+/// The feasible set of perspective diagonal maps (Forsyth 1990; Finlayson 1996, "Color in
+/// perspective"; Finlayson & Hordley 1999 eqs. 7–9 in perspective):
+///   F = { m : (m1·q1, m2·q2) ∈ G_c for every image chromaticity q } = ⋂_q (G_c ⊘ q).
+
+#include <gmcc/geometry/convex_set.h>
+
+#include <stdexcept>
+#include <vector>
+
+namespace gmcc {
+
+/// Thrown when the image leaves a map component unconstrained (every image chromaticity has
+/// r = 0, or every one has g = 0): F is then an unbounded set and no rule can select from it.
+struct UnboundedFeasibleSet : std::domain_error {
+  using std::domain_error::domain_error;
+};
+
+/// F, exactly, with its kind (polygon, segment, point or empty).
+///
+/// Only the vertices of the image hull constrain F, so the image hull is taken first. G_c is
+/// written as half-planes n_e·x <= k_e (a degenerate G_c as pairs of opposite half-planes), and
+/// each image vertex q gives the half-planes (n_e ⊙ q)·m <= k_e. These are clipped, in exact
+/// rational arithmetic, from the box [0, max x / max q1] × [0, max y / max q2], which they
+/// imply (Sutherland–Hodgman on closed half-planes: degenerate results are kept, not lost).
+///
+/// \param canonical  G_c, non-empty (any kind).
+/// \param image      image chromaticities, non-empty, components >= 0.
+/// \throws std::invalid_argument on empty inputs or negative components;
+///         UnboundedFeasibleSet as documented above.
+/// Complexity O(k·m·|F|) for k image-hull vertices and m canonical edges.
+ConvexSet2 feasible_set(const ConvexSet2& canonical, const std::vector<Point2>& image);
+
+}  // namespace gmcc

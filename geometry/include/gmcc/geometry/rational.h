@@ -1,0 +1,37 @@
+#pragma once
+/// \file rational.h
+/// The one boundary where text or floating-point data becomes exact (SPEC §1 "Exact input").
+
+#include <gmpxx.h>
+
+#include <string>
+#include <string_view>
+
+namespace gmcc {
+
+/// An exact rational number (GMP), always kept in canonical (reduced) form.
+using Rational = mpq_class;
+
+/// Largest decimal exponent accepted by parse_rational (|e| in `1.5e-3`): 10^4096 already has
+/// 13,600 bits; larger exponents would let one short line exhaust memory.
+inline constexpr long max_decimal_exponent = 4096;
+
+/// Parse decimal or fraction text *exactly*: `0.1` is 1/10, `-2.5e-3` is -1/400, `3/7` is 3/7.
+/// Grammar: [+-]digits[.digits][(e|E)[+-]digits] or [+-]digits/digits (a leading `.5` and a
+/// trailing `5.` are accepted). No surrounding white space, no hexadecimal.
+/// \throws std::invalid_argument with a message a person can act on (NaN, infinity, `p/0`,
+///         malformed text, exponent beyond max_decimal_exponent).
+Rational parse_rational(std::string_view text);
+
+/// The exact value of a finite double (every double is a dyadic rational).
+/// \throws std::invalid_argument for NaN or infinity.
+Rational rational_from_double(double value);
+
+/// Canonical text of a rational: `p/q` in lowest terms with q > 0, or `p` when q = 1.
+std::string to_string(const Rational& value);
+
+/// The double nearest to an exact rational (round to nearest, ties to even; via MPFR).
+/// Unlike mpq_get_d, which truncates, this is correctly rounded.
+double to_double_nearest(const Rational& value);
+
+}  // namespace gmcc

@@ -1,0 +1,131 @@
+// The one place where text and doubles become exact rationals (SPEC §1 "Exact input").
+#include <gmcc/geometry/point.h>
+#include <gmcc/geometry/rational.h>
+
+#include <mpfr.h>
+
+#include <cctype>
+#include <cmath>
+#include <stdexcept>
+
+namespace gmcc {
+namespace {
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+[[noreturn]] void malformed(std::string_view text, const char* why) {
+  throw std::invalid_argument("'" + std::string(text) + "' is not a number: " + why +
+                              " (expected a decimal such as 0.25 or 2.5e-3, or a fraction p/q)");
+}
+
+// [+-]digits
+mpz_class parse_integer(std::string_view text, std::string_view whole, bool allow_sign) {
+  std::size_t i = 0;
+  bool negative = false;
+  if (allow_sign && i < text.size() && (text[i] == '+' || text[i] == '-')) {
+    negative = text[i] == '-';
+    ++i;
+  }
+  if (i == text.size()) malformed(whole, "missing digits");
+  for (std::size_t j = i; j < text.size(); ++j)
+    if (!is_digit(text[j])) malformed(whole, "unexpected character");
+  mpz_class z(std::string(text.substr(i)), 10);
+  return negative ? mpz_class(-z) : z;
+}
+
+}  // namespace
+
+Rational parse_rational(std::string_view text) {
+  if (text.empty()) malformed(text, "empty field");
+  const std::string low = lower(text);
+  const std::string_view unsigned_low =
+      (low[0] == '+' || low[0] == '-') ? std::string_view(low).substr(1) : std::string_view(low);
+  if (unsigned_low == "nan")
+    throw std::invalid_argument("NaN is not allowed: a colour channel must be a finite number");
+  if (unsigned_low == "inf" || unsigned_low == "infinity")
+    throw std::invalid_argument("infinity is not allowed: a colour channel must be finite");
+
+  if (const auto slash = text.find('/'); slash != std::string_view::npos) {
+    const mpz_class p = parse_integer(text.substr(0, slash), text, true);
+    const mpz_class q = parse_integer(text.substr(slash + 1), text, false);
+    if (q == 0) throw std::invalid_argument("'" + std::string(text) + "' divides by zero");
+    Rational r(p, q);
+    r.canonicalize();
+    return r;
+  }
+
+  // Decimal: sign, integer digits, optional fraction, optional exponent.
+  std::size_t i = 0;
+  bool negative = false;
+  if (text[i] == '+' || text[i] == '-') {
+    negative = text[i] == '-';
+    ++i;
+  }
+  std::string digits;  // all mantissa digits, decimal point removed
+  long fraction_digits = 0;
+  bool seen_digit = false;
+  while (i < text.size() && is_digit(text[i])) digits += text[i++], seen_digit = true;
+  if (i < text.size() && text[i] == '.') {
+    ++i;
+    while (i < text.size() && is_digit(text[i])) digits += text[i++], ++fraction_digits,
+                                                  seen_digit = true;
+  }
+  if (!seen_digit) malformed(text, "missing digits");
+  long exponent = 0;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    bool exp_negative = false;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) exp_negative = text[i++] == '-';
+    if (i == text.size() || !is_digit(text[i])) malformed(text, "missing exponent digits");
+    while (i < text.size() && is_digit(text[i])) {
+      exponent = exponent * 10 + (text[i++] - '0');
+      if (exponent > max_decimal_exponent)
+        throw std::invalid_argument("'" + std::string(text) + "': exponent beyond ±" +
+                                    std::to_string(max_decimal_exponent) + " is not supported");
+    }
+    if (exp_negative) exponent = -exponent;
+  }
+  if (i != text.size()) malformed(text, "unexpected character");
+  // Decimal: also bound the total power of ten (many fraction digits plus an exponent).
+  const long power = exponent - fraction_digits;
+  if (power > max_decimal_exponent || power < -max_decimal_exponent - 1000000)
+    throw std::invalid_argument("'" + std::string(text) + "': magnitude not supported");
+
+  mpz_class mantissa(digits, 10);
+  if (negative) mantissa = -mantissa;
+  mpz_class scale;
+  mpz_ui_pow_ui(scale.get_mpz_t(), 10, static_cast<unsigned long>(power < 0 ? -power : power));
+  Rational r = power >= 0 ? Rational(mantissa * scale) : Rational(mantissa, scale);
+  r.canonicalize();
+  return r;
+}
+
+Rational rational_from_double(double value) {
+  if (!std::isfinite(value)) throw std::invalid_argument("a non-finite double has no exact value");
+  Rational r;
+  mpq_set_d(r.get_mpq_t(), value);  // exact: a double is a dyadic rational
+  return r;
+}
+
+std::string to_string(const Rational& value) { return value.get_str(10); }
+
+double to_double_nearest(const Rational& value) {
+  mpfr_t x;
+  mpfr_init2(x, 53);
+  mpfr_set_q(x, value.get_mpq_t(), MPFR_RNDN);
+  const double d = mpfr_get_d(x, MPFR_RNDN);
+  mpfr_clear(x);
+  return d;
+}
+
+std::array<double, 2> to_double_nearest(const Point2& p) {
+  return {to_double_nearest(p.x), to_double_nearest(p.y)};
+}
+
+}  // namespace gmcc

@@ -1,0 +1,21 @@
+#pragma once
+/// \file angular_error.h
+/// Angular errors between maps, the accuracy measures of colour constancy.
+
+#include <gmcc/geometry/colour.h>
+#include <gmcc/geometry/point.h>
+
+namespace gmcc {
+
+/// The paper's measure (Finlayson & Hordley 1999 §4): the angle, in degrees, between the lifted
+/// maps (m, 1) and (m*, 1). Inputs exact; evaluated as atan2(|u×v|, u·v) from exact cross and dot
+/// products in MPFR (128 bits), then rounded to double. Domain: any two points.
+double map_angular_error_deg(const Point2& estimate, const Point2& truth);
+
+/// The illuminant recovery error benchmarks report (Hordley & Finlayson 2006): the angle, in
+/// degrees, between the illuminants e = c ⊘ (m, 1) implied by the estimated and the true map,
+/// for the canonical illuminant c. \pre all map components and c are > 0.
+double illuminant_angular_error_deg(const Point2& estimate, const Point2& truth,
+                                    const Colour& canonical_illuminant);
+
+}  // namespace gmcc

@@ -1,0 +1,29 @@
+#pragma once
+/// \file select_maps.h
+/// The three selection rules of Finlayson & Hordley (1999) §3 applied to one feasible set,
+/// each with its map-space worst case (§4): what `gmcc select` reports and what every
+/// experiment evaluates per scene.
+
+#include <gmcc/selection/map_estimate.h>
+#include <gmcc/selection/mean_3d.h>
+
+#include <optional>
+
+namespace gmcc {
+
+/// One rule's answer and the largest map-space error it can make within F.
+struct Selection {
+  MapEstimate estimate;
+  double worst_case_deg = 0;  ///< worst_case_map_deg(F, estimate) (mean_3d: at its double map)
+};
+
+/// max_area, mean_2d and mean_3d of F; all absent when F is empty.
+struct Selections {
+  std::optional<Selection> max_area, mean_2d, mean_3d;
+};
+
+/// Apply max_area, mean_2d and mean_3d (closed form) to F with their worst cases.
+/// The worst case of mean_3d is measured from its reported double map, taken exactly.
+Selections select_maps(const ConvexSet2& F, const Mean3dOptions& mean3d = {});
+
+}  // namespace gmcc

@@ -1,0 +1,79 @@
+#pragma once
+// A small RAII wrapper over MPFI intervals: certified enclosures for the irrational rules.
+// Internal to gmcc::selection.
+
+#include <gmcc/geometry/rational.h>
+
+#include <mpfi.h>
+
+#include <utility>
+
+namespace gmcc::internal {
+
+class Interval {
+ public:
+  explicit Interval(mpfr_prec_t bits) { mpfi_init2(v_, bits); }
+  Interval(const Rational& q, mpfr_prec_t bits) : Interval(bits) { mpfi_set_q(v_, q.get_mpq_t()); }
+  Interval(const Interval& o) : Interval(mpfi_get_prec(o.v_)) { mpfi_set(v_, o.v_); }
+  Interval& operator=(const Interval& o) {
+    if (this != &o) mpfi_set(v_, o.v_);
+    return *this;
+  }
+  ~Interval() { mpfi_clear(v_); }
+
+  mpfi_ptr get() { return v_; }
+  mpfi_srcptr get() const { return v_; }
+  mpfr_prec_t precision() const { return mpfi_get_prec(v_); }
+
+  friend Interval operator+(const Interval& a, const Interval& b) {
+    Interval r(a.precision());
+    mpfi_add(r.v_, a.v_, b.v_);
+    return r;
+  }
+  friend Interval operator-(const Interval& a, const Interval& b) {
+    Interval r(a.precision());
+    mpfi_sub(r.v_, a.v_, b.v_);
+    return r;
+  }
+  friend Interval operator*(const Interval& a, const Interval& b) {
+    Interval r(a.precision());
+    mpfi_mul(r.v_, a.v_, b.v_);
+    return r;
+  }
+  friend Interval operator*(const Interval& a, const Rational& q) {
+    Interval r(a.precision());
+    mpfi_mul_q(r.v_, a.v_, q.get_mpq_t());
+    return r;
+  }
+  friend Interval operator/(const Interval& a, const Interval& b) {
+    Interval r(a.precision());
+    mpfi_div(r.v_, a.v_, b.v_);
+    return r;
+  }
+  friend Interval sqrt(const Interval& a) {
+    Interval r(a.precision());
+    mpfi_sqrt(r.v_, a.v_);
+    return r;
+  }
+  /// atan2(y, x) over intervals (y > 0 here, so no branch cut is crossed).
+  friend Interval atan2(const Interval& y, const Interval& x) {
+    Interval r(y.precision());
+    mpfi_atan2(r.v_, y.v_, x.v_);
+    return r;
+  }
+
+ private:
+  mpfi_t v_;
+};
+
+/// The double nearest the interval's midpoint, and a rigorous bound on its distance to every
+/// point of the interval (rounded up). The pair is (value, bound).
+std::pair<double, double> nearest_with_bound(const Interval& x);
+
+/// The interval's ends rounded outward to doubles.
+std::pair<double, double> outward_doubles(const Interval& x);
+
+/// True when the interval's width is at most 2^-bits times its magnitude (or it is a point).
+bool tight(const Interval& x, int bits);
+
+}  // namespace gmcc::internal

@@ -1,0 +1,51 @@
+#pragma once
+/// \file colour_csv.h
+/// Reading colour files: one linear RGB per line, numbers read exactly (SPEC §5).
+
+#include <gmcc/geometry/colour.h>
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace gmcc {
+
+/// Bad input in a file: a message a person can act on, with the file and (when the problem is
+/// on one line) the 1-based line number. what() reads `FILE:LINE: problem`.
+class InputError : public std::runtime_error {
+ public:
+  InputError(std::string file, std::size_t line, const std::string& problem);
+  const std::string& file() const { return file_; }
+  std::size_t line() const { return line_; }  ///< 0 when the problem is the whole file
+
+ private:
+  std::string file_;
+  std::size_t line_;
+};
+
+/// Largest colour file accepted, in bytes (a clear error instead of exhausting memory).
+inline constexpr std::size_t max_colour_file_bytes = std::size_t(256) << 20;
+
+/// The colours of a file, with the line each came from.
+struct ColourTable {
+  std::string file;
+  std::vector<Colour> colours;
+  std::vector<std::size_t> lines;  ///< 1-based source line of each colour
+};
+
+/// Parse colour-file text. Format: one colour per line as `r,g,b`; an optional header line
+/// `r,g,b`; blank lines and lines whose first non-blank character is `#` are ignored; CRLF
+/// line ends, a UTF-8 byte-order mark and spaces or tabs around numbers are accepted. Numbers
+/// are decimals or `p/q`, read exactly (parse_rational). Channels must be finite and >= 0.
+/// \param file  the name used in messages.
+/// \throws InputError naming the file and line: malformed or non-finite numbers, negative
+///         channels, a wrong number of columns, NUL bytes, no colour at all.
+ColourTable parse_colour_csv(const std::string& text, const std::string& file);
+
+/// Read and parse a colour file (parse_colour_csv).
+/// \throws InputError if the file cannot be read, is larger than max_colour_file_bytes, or
+///         its content is bad.
+ColourTable read_colour_csv(const std::string& path);
+
+}  // namespace gmcc

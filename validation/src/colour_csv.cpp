@@ -1,0 +1,110 @@
+#include <gmcc/validation/colour_csv.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace gmcc {
+namespace {
+
+std::string_view trim(std::string_view s) {
+  const char* blanks = " \t\r\v\f";
+  const auto first = s.find_first_not_of(blanks);
+  if (first == std::string_view::npos) return {};
+  return s.substr(first, s.find_last_not_of(blanks) - first + 1);
+}
+
+bool is_header(std::string_view line) {
+  std::string compact;
+  for (char c : line)
+    if (c != ' ' && c != '\t') compact += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return compact == "r,g,b";
+}
+
+std::string location(const std::string& file, std::size_t line) {
+  return line ? file + ":" + std::to_string(line) : file;
+}
+
+}  // namespace
+
+InputError::InputError(std::string file, std::size_t line, const std::string& problem)
+    : std::runtime_error(location(file, line) + ": " + problem), file_(std::move(file)),
+      line_(line) {}
+
+ColourTable parse_colour_csv(const std::string& text, const std::string& file) {
+  ColourTable table;
+  table.file = file;
+  std::string_view rest(text);
+  if (rest.substr(0, 3) == "\xEF\xBB\xBF") rest.remove_prefix(3);  // UTF-8 byte-order mark
+  bool first_content = true;
+  for (std::size_t number = 1; !rest.empty() || number == 1; ++number) {
+    const auto end = rest.find('\n');
+    const std::string_view raw = rest.substr(0, end);
+    rest = end == std::string_view::npos ? std::string_view() : rest.substr(end + 1);
+    if (raw.find('\0') != std::string_view::npos)
+      throw InputError(file, number, "binary data (a NUL byte): expected text lines r,g,b");
+    const std::string_view line = trim(raw);
+    if (line.empty() || line.front() == '#') {
+      if (rest.empty()) break;
+      continue;
+    }
+    if (first_content && is_header(line)) {
+      first_content = false;
+      continue;
+    }
+    first_content = false;
+    std::vector<std::string_view> fields;
+    for (std::size_t start = 0;;) {
+      const auto comma = line.find(',', start);
+      fields.push_back(trim(line.substr(start, comma - start)));
+      if (comma == std::string_view::npos) break;
+      start = comma + 1;
+    }
+    if (fields.size() != 3)
+      throw InputError(file, number,
+                       "expected 3 comma-separated values r,g,b, found " +
+                           std::to_string(fields.size()));
+    Rational channel[3];
+    static const char* names[] = {"r", "g", "b"};
+    for (int k = 0; k < 3; ++k) {
+      try {
+        channel[k] = parse_rational(fields[k]);
+      } catch (const std::invalid_argument& e) {
+        throw InputError(file, number, std::string("channel ") + names[k] + ": " + e.what());
+      }
+      if (sgn(channel[k]) < 0)
+        throw InputError(file, number,
+                         std::string("channel ") + names[k] + " is negative (" +
+                             std::string(fields[k]) +
+                             "): a linear sensor response must be >= 0");
+    }
+    table.colours.push_back({channel[0], channel[1], channel[2]});
+    table.lines.push_back(number);
+    if (rest.empty()) break;
+  }
+  if (table.colours.empty())
+    throw InputError(file, 0, "no colours (expected lines r,g,b)");
+  return table;
+}
+
+ColourTable read_colour_csv(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, 0, "is a directory, not a colour file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw InputError(path, 0, "cannot read (not a regular file?)");
+  if (static_cast<std::size_t>(size) > max_colour_file_bytes)
+    throw InputError(path, 0, "larger than the " + std::to_string(max_colour_file_bytes >> 20) +
+                                  " MiB limit for colour files");
+  in.seekg(0);
+  std::string text(static_cast<std::size_t>(size), '\0');
+  if (!in.read(text.data(), size)) throw InputError(path, 0, "cannot read");
+  return parse_colour_csv(text, path);
+}
+
+}  // namespace gmcc
