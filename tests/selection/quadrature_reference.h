@@ -1,0 +1,77 @@
+#pragma once
+// An independent numerical route to the 3-D mean for tests: the weighted planar centroid
+// m = ∫_F (a, b) w dA / ∫_F w dA with w = (1 + a² + b²)^-2 (MATH §1a.3), by Duffy-collapsed
+// Gauss–Legendre on the fan triangles of F, in long double and in offsets from the fan apex so
+// that small polygons do not cancel (MATH §1c). Shares no code with the closed form.
+
+#include <gmcc/geometry/convex_set.h>
+
+#include <mpfr.h>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace gmcc::test {
+
+/// Gauss–Legendre nodes and weights on [0, 1] (Newton on P_n).
+inline void gauss_legendre01(int n, std::vector<long double>& x, std::vector<long double>& w) {
+  x.assign(n, 0);
+  w.assign(n, 0);
+  const long double pi = 3.141592653589793238462643383279502884L;
+  for (int i = 0; i < n; ++i) {
+    long double z = std::cos(pi * (i + 0.75L) / (n + 0.5L)), dp = 0;
+    for (int it = 0; it < 100; ++it) {
+      long double p0 = 1, p1 = z;
+      for (int k = 2; k <= n; ++k) {
+        const long double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = n * (z * p1 - p0) / (z * z - 1);
+      const long double dz = p1 / dp;
+      z -= dz;
+      if (std::fabs(dz) < 1e-19L) break;
+    }
+    x[i] = (1 - z) / 2;
+    w[i] = 1 / ((1 - z * z) * dp * dp);  // 2/((1-z²)P'²) scaled by 1/2 for [0, 1]
+  }
+}
+
+/// The weighted centroid of a polygon by n×n-point Duffy–Gauss–Legendre per fan triangle.
+inline std::array<long double, 2> mean_3d_quadrature(const ConvexSet2& F, int n) {
+  std::vector<long double> x, w;
+  gauss_legendre01(n, x, w);
+  const auto& v = F.vertices;
+  auto ld = [](const Rational& q) {  // nearest long double, via MPFR at 64 bits
+    mpfr_t t;
+    mpfr_init2(t, 64);
+    mpfr_set_q(t, q.get_mpq_t(), MPFR_RNDN);
+    const long double r = mpfr_get_ld(t, MPFR_RNDN);
+    mpfr_clear(t);
+    return r;
+  };
+  // Offsets from the apex are formed exactly, then rounded once.
+  const long double ax = ld(v[0].x), ay = ld(v[0].y);
+  long double sw = 0, sx = 0, sy = 0;
+  for (std::size_t i = 1; i + 1 < v.size(); ++i) {
+    const long double ex = ld(Rational(v[i].x - v[0].x)), ey = ld(Rational(v[i].y - v[0].y));
+    const long double fx = ld(Rational(v[i + 1].x - v[0].x)),
+                      fy = ld(Rational(v[i + 1].y - v[0].y));
+    const long double jac = std::fabs(ex * fy - ey * fx);
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b) {
+        const long double s = x[a], t = x[b] * (1 - x[a]);  // Duffy: t = v(1 − u)
+        const long double ox = s * ex + t * fx, oy = s * ey + t * fy;
+        const long double px = ax + ox, py = ay + oy;
+        const long double r2 = 1 + px * px + py * py;
+        const long double wt = w[a] * w[b] * (1 - x[a]) * jac / (r2 * r2);
+        sw += wt;
+        sx += wt * ox;
+        sy += wt * oy;
+      }
+  }
+  return {ax + sx / sw, ay + sy / sw};
+}
+
+}  // namespace gmcc::test
