@@ -100,9 +100,13 @@ std::string select_text(const SelectReport& r) {
   auto line = [&out](const char* name, const Selection& s) {
     out << "  " << name << "  (" << fmt(s.estimate.map[0]) << ", " << fmt(s.estimate.map[1])
         << ")  worst case " << fmt(s.worst_case_deg) << " deg";
-    if (s.estimate.exact)
-      out << "  exact (" << to_string(s.estimate.exact->x) << ", "
-          << to_string(s.estimate.exact->y) << ")";
+    if (s.estimate.exact) {
+      const std::string x = to_string(s.estimate.exact->x), y = to_string(s.estimate.exact->y);
+      if (x.size() + y.size() <= 40)
+        out << "  exact (" << x << ", " << y << ")";
+      else
+        out << "  exact rational (" << x.size() + y.size() << " digits; see --json)";
+    }
     else
       out << "  ± " << fmt(s.estimate.error_bound) << " (" << s.estimate.method << ")";
     out << "\n";
