@@ -31,17 +31,33 @@ Json convex_set_json(const ConvexSet2& s) {
   return j;
 }
 
+Json pair(const std::array<double, 2>& p) { return Json::array({p[0], p[1]}); }
+
 Json selection_json(const Selection& s) {
   const MapEstimate& e = s.estimate;
   Json j;
-  j["map"] = Json::array({e.map[0], e.map[1]});
-  if (e.exact) j["map_exact"] = exact_pair(*e.exact);
-  j["error_bound"] = e.error_bound;
-  j["enclosure"] = Json::array({Json::array({e.enclosure[0][0], e.enclosure[0][1]}),
-                                Json::array({e.enclosure[1][0], e.enclosure[1][1]})});
-  j["method"] = e.method;
+  if (!e.valid) {  // no map: say why, with what was tried
+    j["map"] = nullptr;
+    j["error_bound"] = nullptr;
+    j["method"] = e.method;
+    j["note"] = e.note;
+  } else {
+    j["map"] = pair(e.map);
+    if (e.exact) j["map_exact"] = exact_pair(*e.exact);
+    j["error_bound"] = e.error_bound;
+    if (e.enclosure) j["enclosure"] = Json::array({pair((*e.enclosure)[0]), pair((*e.enclosure)[1])});
+    j["method"] = e.method;
+  }
   if (e.precision_bits) j["precision_bits"] = e.precision_bits;
-  j["worst_case_deg"] = s.worst_case_deg;
+  if (e.quadrature_order) j["order"] = e.quadrature_order;
+  if (e.method == "monte-carlo") {
+    j["samples"] = e.samples;
+    j["samples_kept"] = e.samples_kept;
+    j["seed"] = e.seed;
+    j["generator"] = "mt19937_64";
+    if (e.valid && !e.exact) j["standard_error"] = pair(e.standard_error);
+  }
+  if (s.worst_case_deg) j["worst_case_deg"] = *s.worst_case_deg;
   return j;
 }
 
@@ -98,8 +114,12 @@ std::string select_text(const SelectReport& r) {
   }
   out << "selections (perspective map d1/d3, d2/d3; worst-case map-space error):\n";
   auto line = [&out](const char* name, const Selection& s) {
+    if (!s.estimate.valid) {
+      out << "  " << name << "  none (" << s.estimate.method << "): " << s.estimate.note << "\n";
+      return;
+    }
     out << "  " << name << "  (" << fmt(s.estimate.map[0]) << ", " << fmt(s.estimate.map[1])
-        << ")  worst case " << fmt(s.worst_case_deg) << " deg";
+        << ")  worst case " << fmt(*s.worst_case_deg) << " deg";
     if (s.estimate.exact) {
       const std::string x = to_string(s.estimate.exact->x), y = to_string(s.estimate.exact->y);
       if (x.size() + y.size() <= 40)
@@ -108,7 +128,11 @@ std::string select_text(const SelectReport& r) {
         out << "  exact rational (" << x.size() + y.size() << " digits; see --json)";
     }
     else
-      out << "  ± " << fmt(s.estimate.error_bound) << " (" << s.estimate.method << ")";
+      out << "  ± " << fmt(s.estimate.error_bound) << " ("
+          << (s.estimate.method == "monte-carlo" ? "monte-carlo, one standard error"
+              : s.estimate.method == "quadrature" ? "quadrature, estimated"
+                                                  : "analytic, certified")
+          << ")";
     out << "\n";
   };
   line("max-area", *r.selections.max_area);

@@ -44,12 +44,23 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
   cmd->add_option("--expand-policy", o.expand_policy, "none | centroid-clip | multiplicative")
       ->check(CLI::IsMember({"none", "centroid-clip", "multiplicative"}))
       ->capture_default_str();
-  cmd->add_option("--mean3d", o.mean3d_method, "route to the 3-D mean: analytic (closed form)")
-      ->check(CLI::IsMember({"analytic"}))
+  cmd->add_option("--mean3d", o.mean3d_method,
+                  "route to the 3-D mean: analytic (closed form, certified bound), quadrature "
+                  "(Duffy–Gauss–Legendre, estimated error) or monte-carlo (the paper's method, "
+                  "standard error)")
+      ->check(CLI::IsMember({"analytic", "quadrature", "monte-carlo"}))
       ->capture_default_str();
   cmd->add_option("--precision", o.precision_bits,
-                  "force the closed form's working precision in bits (default: automatic)")
-      ->check(CLI::Range(64u, 1u << 20));
+                  "analytic: force the working precision in bits (default: automatic)")
+      ->check(CLI::Range(53u, 1u << 20));
+  cmd->add_option("--order", o.order, "quadrature: Gauss–Legendre points per direction")
+      ->check(CLI::Range(1u, 1000u))
+      ->capture_default_str();
+  cmd->add_option("--samples", o.samples, "monte-carlo: points drawn in the unit cube")
+      ->check(CLI::Range(std::uint64_t(1), std::uint64_t(1) << 40))
+      ->capture_default_str();
+  cmd->add_option("--seed", o.seed, "monte-carlo: seed of the mt19937_64 generator")
+      ->capture_default_str();
   cmd->add_option("--nonpositive-blue", o.nonpositive_blue,
                   "colours with b <= 0 have no chromaticity: drop (count them) or reject")
       ->check(CLI::IsMember({"drop", "reject"}))
@@ -88,7 +99,13 @@ int run_select(const SelectOptions& o) {
   } catch (const UnboundedFeasibleSet& e) {
     throw InputError(o.image_path, 0, e.what());
   }
-  r.selections = select_maps(r.feasible, Mean3dOptions{o.precision_bits});
+  Mean3dOptions mean3d;
+  mean3d.method = mean3d_method_from_string(o.mean3d_method);
+  mean3d.precision_bits = o.precision_bits;
+  mean3d.order = o.order;
+  mean3d.samples = o.samples;
+  mean3d.seed = o.seed;
+  r.selections = select_maps(r.feasible, mean3d);
 
   const std::string out = o.json ? select_json(r) : select_text(r);
   std::cout << out << std::flush;

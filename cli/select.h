@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <string>
 
 namespace gmcc::cli {
@@ -20,6 +21,9 @@ struct SelectOptions {
   std::string expand_factor = "0";  // read exactly, like every number gmcc reads
   std::string mean3d_method = "analytic";
   unsigned precision_bits = 0;
+  unsigned order = 12;
+  std::uint64_t samples = 1000000;
+  std::uint64_t seed = 1;
   std::string nonpositive_blue = "drop";
 };
 

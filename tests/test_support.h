@@ -35,12 +35,17 @@ inline Rational random_rational(Rng& rng, long lo, long hi, long max_den) {
   return r;
 }
 
-/// n points with coordinates in [lo/max_den, hi] drawn as small-denominator rationals.
+/// n points whose coordinates are k/max_den with k uniform in [lo, hi·max_den]: values in
+/// [lo/max_den, hi] on a grid of step 1/max_den (so duplicates and collinear triples occur).
 inline std::vector<Point2> random_points(Rng& rng, int n, long lo, long hi, long max_den) {
+  std::uniform_int_distribution<long> k(lo, hi * max_den);
   std::vector<Point2> p;
-  for (int i = 0; i < n; ++i)
-    p.push_back({random_rational(rng, lo, hi * max_den, max_den),
-                 random_rational(rng, lo, hi * max_den, max_den)});
+  for (int i = 0; i < n; ++i) {
+    Rational x(k(rng), max_den), y(k(rng), max_den);
+    x.canonicalize();
+    y.canonicalize();
+    p.push_back({x, y});
+  }
   return p;
 }
 

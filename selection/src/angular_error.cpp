@@ -46,4 +46,12 @@ double illuminant_angular_error_deg(const Point2& estimate, const Point2& truth,
                    {Rational(c.r / truth.x), Rational(c.g / truth.y), c.b});
 }
 
+double reproduction_angular_error_deg(const Point2& estimate, const Point2& truth) {
+  for (const Rational* x : {&estimate.x, &estimate.y, &truth.x, &truth.y})
+    if (sgn(*x) <= 0)
+      throw std::invalid_argument("reproduction_angular_error_deg: maps must be > 0");
+  return angle_deg({Rational(estimate.x / truth.x), Rational(estimate.y / truth.y), Rational(1)},
+                   {Rational(1), Rational(1), Rational(1)});
+}
+
 }  // namespace gmcc

@@ -47,3 +47,37 @@ bool tight(const Interval& x, int bits) {
 }
 
 }  // namespace gmcc::internal
+
+#include "internal/ld_interval.h"
+
+namespace gmcc::internal {
+namespace {
+// |z| ≈ t·2^e with t < 2^64 holding the top 64 bits (truncated), as an exact long double.
+long double top_bits(mpz_srcptr z, long& e) {
+  const std::size_t n = mpz_size(z);
+  e = 0;
+  if (n == 0) return 0;
+  const mp_limb_t high = mpz_getlimbn(z, static_cast<mp_size_t>(n - 1));
+  if (n == 1) return static_cast<long double>(high);
+  const int shift = __builtin_clzll(high);
+  const mp_limb_t next = mpz_getlimbn(z, static_cast<mp_size_t>(n - 2));
+  const unsigned long long top = shift ? (high << shift) | (next >> (64 - shift)) : high;
+  e = static_cast<long>(n - 1) * 64 - shift;
+  return static_cast<long double>(top);
+}
+}  // namespace
+
+LDInterval enclose_ld(const Rational& q) {
+  static_assert(sizeof(mp_limb_t) == 8 && std::numeric_limits<long double>::digits == 64,
+                "the fast path assumes 64-bit limbs and x87 extended precision");
+  if (sgn(q) == 0) return {0, 0};
+  long en, ed;
+  const long double n = top_bits(q.get_num_mpz_t(), en), d = top_bits(q.get_den_mpz_t(), ed);
+  const long double ratio = sgn(q) > 0 ? n / d : -(n / d);
+  const long double v = en == ed ? ratio : std::ldexp(ratio, static_cast<int>(en - ed));
+  // One-limb numerator and denominator are exact: only the division rounds (2^-64).
+  const bool exact_parts = mpz_size(q.get_num_mpz_t()) <= 1 && mpz_size(q.get_den_mpz_t()) <= 1;
+  return LDInterval::around(v, v, exact_parts ? LDInterval::push : 0x1p-60L);
+}
+
+}  // namespace gmcc::internal

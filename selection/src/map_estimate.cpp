@@ -25,16 +25,16 @@ MapEstimate exact_map_estimate(std::string rule, const Point2& exact) {
   e.map = to_double_nearest(exact);
   e.error_bound = std::max(upper_double(rational_from_double(e.map[0]) - exact.x),
                            upper_double(rational_from_double(e.map[1]) - exact.y));
-  for (int k = 0; k < 2; ++k) e.enclosure[k] = {e.map[k], e.map[k]};
   // The enclosure of an exact value is [value rounded down, value rounded up].
+  e.enclosure.emplace();
   for (int k = 0; k < 2; ++k) {
     mpfr_t v;
     mpfr_init2(v, 53);
     const Rational& q = k == 0 ? exact.x : exact.y;
     mpfr_set_q(v, q.get_mpq_t(), MPFR_RNDD);
-    e.enclosure[k][0] = mpfr_get_d(v, MPFR_RNDD);
+    (*e.enclosure)[k][0] = mpfr_get_d(v, MPFR_RNDD);
     mpfr_set_q(v, q.get_mpq_t(), MPFR_RNDU);
-    e.enclosure[k][1] = mpfr_get_d(v, MPFR_RNDU);
+    (*e.enclosure)[k][1] = mpfr_get_d(v, MPFR_RNDU);
     mpfr_clear(v);
   }
   return e;

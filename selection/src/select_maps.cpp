@@ -6,6 +6,7 @@
 namespace gmcc {
 namespace {
 Selection with_worst_case(const ConvexSet2& F, MapEstimate e) {
+  if (!e.valid) return {std::move(e), std::nullopt};
   const Point2 m = e.exact ? *e.exact
                            : Point2{rational_from_double(e.map[0]), rational_from_double(e.map[1])};
   const double w = worst_case_map_deg(F, m);

@@ -35,6 +35,7 @@ from fractions import Fraction as Fr
 
 import mpmath
 
+sys.dont_write_bytecode = True  # keep the source tree free of __pycache__
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "oracle"))
 import select_oracle as so  # noqa: E402
 

@@ -22,6 +22,7 @@ import os
 import sys
 from fractions import Fraction
 
+sys.dont_write_bytecode = True  # keep the source tree free of __pycache__
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import select_oracle as so  # noqa: E402
 
@@ -29,8 +30,8 @@ BUG = os.environ.get("GMCC_FAKE_BUG", "")
 
 
 def _double_parse(field):
-    value = so.parse_number(field)  # keeps the error behaviour
-    return Fraction(float(value)) if value == value else value
+    value = _original_parse_number(field)  # keeps the error behaviour
+    return Fraction(float(value))
 
 
 def _mean3d_double(kind, vertices):
@@ -57,6 +58,7 @@ def _angle_acos(m, v):
     return math.degrees(math.acos(min(1.0, c)))
 
 
+_original_parse_number = so.parse_number
 _original_mean_3d = so.mean_3d
 _original_feasible_set = so.feasible_set
 

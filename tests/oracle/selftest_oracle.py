@@ -8,8 +8,9 @@ Checks (each asserts; the last line is `N passed, N failed`):
 * hand-derived cases: the paper's toy example (MATH 1a.6 / 4.1), axis-aligned boxes, points,
   segments, empty sets, zero chromaticity components;
 * feasible set: line-interval method == Sutherland-Hodgman clipping of G_c / q (the production
-  method, MATH 3b, re-implemented here in Fractions) on random cases, exactly; and membership of
-  random rational maps by the definition (diag(m) q in G_c for every q) == membership in F;
+  method, MATH 3b, re-implemented here in Fractions) on random cases with a polygon G_c, exactly;
+  and, for polygon, segment and point gamuts alike, membership of random rational maps by the
+  definition (diag(m) q in G_c for every q) == membership in F;
 * max-area: no sampled point of F (boundary and interior) has a larger product (MATH 1d);
 * 3-D mean: Arvo closed form == weighted planar centroid with w = (1+a^2+b^2)^-2 integrated by
   mpmath quadrature over a fan triangulation (MATH 1a.3), and == a thin-polygon limit check;
@@ -24,6 +25,7 @@ from fractions import Fraction as Fr
 
 import mpmath
 
+sys.dont_write_bytecode = True  # keep the source tree free of __pycache__
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import select_oracle as so  # noqa: E402
 
@@ -147,7 +149,15 @@ def rand_q(rng):
 
 
 def random_case(rng):
-    canon = [rand_q(rng) for _ in range(rng.randint(3, 25))]
+    u = rng.random()
+    if u < 0.15:  # canonical gamut a point (possibly repeated)
+        canon = [rand_q(rng)] * rng.randint(1, 3)
+    elif u < 0.3:  # canonical gamut a segment
+        a, b = rand_q(rng), rand_q(rng)
+        canon = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
+                 for t in (Fr(0), Fr(1), Fr(rng.randint(0, 6), 6))]
+    else:
+        canon = [rand_q(rng) for _ in range(rng.randint(3, 25))]
     d = (Fr(rng.randint(1, 30), rng.randint(1, 10)), Fr(rng.randint(1, 30), rng.randint(1, 10)))
     image = [(x / d[0], y / d[1]) for x, y in rng.sample(canon, rng.randint(1, min(8, len(canon))))]
     if rng.random() < 0.5:

@@ -39,7 +39,7 @@ inline void gauss_legendre01(int n, std::vector<long double>& x, std::vector<lon
 }
 
 /// The weighted centroid of a polygon by n×n-point Duffy–Gauss–Legendre per fan triangle.
-inline std::array<long double, 2> mean_3d_quadrature(const ConvexSet2& F, int n) {
+inline std::array<long double, 2> weighted_centroid_reference(const ConvexSet2& F, int n) {
   std::vector<long double> x, w;
   gauss_legendre01(n, x, w);
   const auto& v = F.vertices;

@@ -74,7 +74,7 @@ BOOST_AUTO_TEST_CASE(paper_toy_example) {
   // The reported bound covers the rounding to double, and the enclosure brackets 5/3.
   BOOST_TEST(e.error_bound > 0.0);
   BOOST_TEST(e.error_bound < 1e-15);
-  BOOST_TEST(e.enclosure[0][0] < e.enclosure[0][1]);
+  BOOST_TEST((*e.enclosure)[0][0] < (*e.enclosure)[0][1]);
 }
 
 BOOST_AUTO_TEST_CASE(centroid_of_a_triangle_is_the_vertex_mean) {

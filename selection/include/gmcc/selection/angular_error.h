@@ -18,4 +18,13 @@ double map_angular_error_deg(const Point2& estimate, const Point2& truth);
 double illuminant_angular_error_deg(const Point2& estimate, const Point2& truth,
                                     const Colour& canonical_illuminant);
 
+/// The reproduction angular error (Finlayson & Zakizadeh, BMVC 2014
+/// [Finlayson2014Reproduction]), in degrees: the angle between e_true ⊘ e_est = d_est ⊘ d_true
+/// and the white (1, 1, 1), with d = (m1, m2, 1) the lifted maps. It measures how far the
+/// corrected white is from white, and does not depend on the canonical illuminant c (the c of
+/// e = c ⊘ d cancels). Inputs exact; evaluated like the others, atan2 of exact cross and dot
+/// products in 128-bit MPFR, then rounded to double. O(1).
+/// \pre all map components > 0 (the illuminants must exist). 	hrows std::invalid_argument.
+double reproduction_angular_error_deg(const Point2& estimate, const Point2& truth);
+
 }  // namespace gmcc

@@ -5,6 +5,7 @@
 #include <gmcc/geometry/point.h>
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -13,15 +14,27 @@ namespace gmcc {
 /// A chosen perspective map with its provenance.
 struct MapEstimate {
   std::string rule;             ///< `max_area`, `mean_2d` or `mean_3d`
-  std::string method;           ///< `exact` for rational rules; `analytic` (closed form) …
+  std::string method;           ///< `exact` (rational rules), `analytic`, `quadrature`, `monte-carlo`
   std::array<double, 2> map{};  ///< the map as the nearest doubles (for use)
   std::optional<Point2> exact;  ///< the exact map, where the rule's answer is rational
-  /// A rigorous bound on max_k |map[k] − true map_k|: the rounding of `exact` to double, or for
-  /// an irrational answer the certified enclosure's reach from `map`.
+  /// The error statement for max_k |map[k] − true map_k|, by method:
+  /// exact and analytic: a rigorous bound (rounding, or the certified enclosure's reach);
+  /// quadrature: an a-posteriori estimate (order n against 2n, at least one ulp);
+  /// monte-carlo: the larger standard error of the two components (one sigma).
   double error_bound = 0;
-  /// Certified enclosure of each component (lo, hi), rounded outward to doubles.
-  std::array<std::array<double, 2>, 2> enclosure{};
-  unsigned precision_bits = 0;  ///< MPFR/MPFI precision used (0 for exact rules)
+  /// exact and analytic: certified enclosure of each component (lo, hi), rounded outward.
+  std::optional<std::array<std::array<double, 2>, 2>> enclosure;
+  unsigned precision_bits = 0;  ///< analytic: working precision (53: the double fast path)
+
+  /// False when the method could not produce a map (Monte Carlo with too few samples in the
+  /// cone, or on a set with no volume); `note` says why and `map` is not meaningful.
+  bool valid = true;
+  std::string note;
+  unsigned quadrature_order = 0;  ///< quadrature: Gauss–Legendre points per direction
+  std::uint64_t samples = 0;      ///< monte-carlo: points drawn in the unit cube
+  std::uint64_t samples_kept = 0; ///< monte-carlo: of those, inside cone ∩ ball
+  std::uint64_t seed = 0;         ///< monte-carlo: generator seed (generator: mt19937_64)
+  std::array<double, 2> standard_error{};  ///< monte-carlo: per component
 };
 
 /// A MapEstimate for an exact rational answer: map rounded to nearest, with its error bound.

@@ -14,7 +14,9 @@ namespace gmcc {
 /// One rule's answer and the largest map-space error it can make within F.
 struct Selection {
   MapEstimate estimate;
-  double worst_case_deg = 0;  ///< worst_case_map_deg(F, estimate) (mean_3d: at its double map)
+  /// worst_case_map_deg(F, estimate), at the estimate's double map when it is not rational;
+  /// absent when the estimate is not valid (Monte Carlo with too few samples).
+  std::optional<double> worst_case_deg;
 };
 
 /// max_area, mean_2d and mean_3d of F; all absent when F is empty.
@@ -22,7 +24,7 @@ struct Selections {
   std::optional<Selection> max_area, mean_2d, mean_3d;
 };
 
-/// Apply max_area, mean_2d and mean_3d (closed form) to F with their worst cases.
+/// Apply max_area, mean_2d and mean_3d (by the route in `mean3d`) to F with their worst cases.
 /// The worst case of mean_3d is measured from its reported double map, taken exactly.
 Selections select_maps(const ConvexSet2& F, const Mean3dOptions& mean3d = {});
 

@@ -1,0 +1,168 @@
+#include <gmcc/selection/mean_3d_analytic.h>
+
+#include "internal/ld_interval.h"
+#include "internal/interval.h"
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+
+namespace gmcc {
+namespace {
+using internal::LDInterval;
+using internal::Interval;
+using Vec3 = std::array<Rational, 3>;
+
+Vec3 lift(const Point2& p) { return {p.x, p.y, Rational(1)}; }
+Vec3 cross(const Vec3& u, const Vec3& v) {
+  return {Rational(u[1] * v[2] - u[2] * v[1]), Rational(u[2] * v[0] - u[0] * v[2]),
+          Rational(u[0] * v[1] - u[1] * v[0])};
+}
+Rational dot(const Vec3& u, const Vec3& v) {
+  return Rational(u[0] * v[0] + u[1] * v[1] + u[2] * v[2]);
+}
+
+// floor(log2 |x|) for x != 0, from the sizes of numerator and denominator (±1).
+long log2_size(const Rational& x) {
+  return static_cast<long>(mpz_sizeinbase(x.get_num_mpz_t(), 2)) -
+         static_cast<long>(mpz_sizeinbase(x.get_den_mpz_t(), 2));
+}
+
+// Bits the closed form needs: the edge terms are O(ε) and τ is O(ε²) for a polygon of angular
+// width ε (MATH §1a.7), so 2·log2(1/ε) bits cancel; add 53 for the answer and 40 guard bits.
+unsigned automatic_precision(const std::vector<Point2>& v) {
+  Rational width2 = 0;
+  for (const Point2& p : v)
+    width2 = std::max(width2, Rational((p.x - v[0].x) * (p.x - v[0].x) +
+                                       (p.y - v[0].y) * (p.y - v[0].y)));
+  const Rational norm2 = 1 + v[0].x * v[0].x + v[0].y * v[0].y;
+  const long cancel = std::max(0L, log2_size(norm2) - log2_size(width2) + 2);
+  return static_cast<unsigned>(53 + 40 + cancel);
+}
+
+// The map's direction as enclosures, generic over the interval type: (τ1/τ3, τ2/τ3) for a
+// polygon, the bisector's perspective for a segment. `make` encloses an exact rational.
+template <class I, class Make>
+std::array<I, 2> direction_map(const ConvexSet2& F, Make make) {
+  const auto& v = F.vertices;
+  std::array<I, 3> dir{make(Rational(0)), make(Rational(0)), make(Rational(0))};
+  if (F.kind == ConvexKind::segment) {
+    // û1 + û2: the bisector of the end rays (MATH §1a.6).
+    for (const Point2& p : v) {
+      const Vec3 u = lift(p);
+      const I inv_norm = make(Rational(1)) / sqrt(make(dot(u, u)));
+      for (int k = 0; k < 3; ++k) dir[k] = dir[k] + inv_norm * make(u[k]);
+    }
+  } else {
+    // τ = ½ Σ θ_i c_i/|c_i|; the ½ cancels in the ratio, as does the orientation sign.
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const Vec3 p = lift(v[i]), q = lift(v[(i + 1) % v.size()]);
+      const Vec3 c = cross(p, q);  // exact
+      const I norm = sqrt(make(dot(c, c)));
+      const I w = atan2(norm, make(dot(p, q))) / norm;
+      for (int k = 0; k < 3; ++k) dir[k] = dir[k] + w * make(c[k]);
+    }
+  }
+  return {dir[0] / dir[2], dir[1] / dir[2]};
+}
+
+// The same map in extended-precision intervals, from enclosures of the vertices (c_i and
+// p_i·p_{i+1} in interval arithmetic: cheap, and on thin polygons too wide to be kept).
+std::array<LDInterval, 2> direction_map_fast(const ConvexSet2& F) {
+  const auto& v = F.vertices;
+  const std::size_t n = v.size();
+  std::vector<LDInterval> a(n), b(n);
+  for (std::size_t i = 0; i < n; ++i) a[i] = internal::enclose_ld(v[i].x), b[i] = internal::enclose_ld(v[i].y);
+  const LDInterval one{1, 1};
+  std::array<LDInterval, 3> dir{LDInterval{0, 0}, LDInterval{0, 0}, LDInterval{0, 0}};
+  if (F.kind == ConvexKind::segment) {
+    for (std::size_t i = 0; i < 2; ++i) {
+      const LDInterval inv_norm = one / sqrt(a[i] * a[i] + b[i] * b[i] + one);
+      dir = {dir[0] + inv_norm * a[i], dir[1] + inv_norm * b[i], dir[2] + inv_norm};
+    }
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t j = (i + 1) % n;
+      // c = (a_i, b_i, 1) × (a_j, b_j, 1)
+      const LDInterval c0 = b[i] - b[j], c1 = a[j] - a[i], c2 = a[i] * b[j] - b[i] * a[j];
+      const LDInterval norm = sqrt(c0 * c0 + c1 * c1 + c2 * c2);
+      const LDInterval w = atan2(norm, a[i] * a[j] + b[i] * b[j] + one) / norm;
+      dir = {dir[0] + w * c0, dir[1] + w * c1, dir[2] + w * c2};
+    }
+  }
+  return {dir[0] / dir[2], dir[1] / dir[2]};
+}
+
+// The fast path is kept when its enclosure is this tight (relative): with the rounding to
+// double the bound is then at most 2^-51 + 2^-53 relative, under SPEC §6's 1e-15.
+constexpr int fast_path_bits = 51;
+
+bool tight(const LDInterval& x, int bits) {
+  return std::isfinite(x.lo) && std::isfinite(x.hi) &&
+         x.hi - x.lo <= std::ldexp(std::max(std::fabs(x.lo), std::fabs(x.hi)), -bits);
+}
+
+// The double nearest the midpoint, the farther end's distance from it (rounded up), and the
+// enclosure's ends rounded outward to doubles.
+void report(MapEstimate& e, int k, const LDInterval& x) {
+  const long double mid = x.lo + (x.hi - x.lo) / 2;
+  const double value = static_cast<double>(mid);
+  const long double reach = std::max(value - x.lo, x.hi - value);
+  e.map[k] = value;
+  e.error_bound = std::max(e.error_bound, std::nextafter(static_cast<double>(LDInterval::up(reach)), INFINITY));
+  double lo = static_cast<double>(x.lo), hi = static_cast<double>(x.hi);
+  if (lo > x.lo) lo = std::nextafter(lo, -INFINITY);
+  if (hi < x.hi) hi = std::nextafter(hi, INFINITY);
+  (*e.enclosure)[k] = {lo, hi};
+}
+
+}  // namespace
+
+MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options) {
+  if (F.kind == ConvexKind::empty) throw std::invalid_argument("mean_3d: empty feasible set");
+  if (F.kind == ConvexKind::point) {
+    MapEstimate e = exact_map_estimate("mean_3d", F.vertices[0]);
+    e.method = "analytic";
+    return e;
+  }
+  MapEstimate e;
+  e.rule = "mean_3d";
+  e.method = "analytic";
+  e.enclosure.emplace();
+
+  // Fast path: rigorous extended-precision intervals, kept only when tight enough.
+  if (options.precision_bits == 0) {
+    const auto m = direction_map_fast(F);
+    // A τ3 enclosure that straddles 0 yields quotients of both signs, never a tight result.
+    if (tight(m[0], fast_path_bits) && tight(m[1], fast_path_bits)) {
+      e.precision_bits = 53;
+      report(e, 0, m[0]);
+      report(e, 1, m[1]);
+      return e;
+    }
+  }
+  // MPFI: precision chosen from the polygon's size, then doubled until the certified enclosure
+  // pins each component to 2^-60 relative (a forced precision is used once, as given).
+  constexpr int target_bits = 60;
+  constexpr unsigned max_bits = 1u << 20;
+  unsigned bits = options.precision_bits ? options.precision_bits : automatic_precision(F.vertices);
+  for (;;) {
+    const auto m = direction_map<Interval>(F, [bits](const Rational& q) { return Interval(q, bits); });
+    const bool done = options.precision_bits != 0 || bits >= max_bits ||
+                      (internal::tight(m[0], target_bits) && internal::tight(m[1], target_bits));
+    if (done) {
+      e.precision_bits = bits;
+      for (int k = 0; k < 2; ++k) {
+        const auto [value, bound] = internal::nearest_with_bound(m[k]);
+        e.map[k] = value;
+        e.error_bound = std::max(e.error_bound, bound);
+        const auto [lo, hi] = internal::outward_doubles(m[k]);
+        (*e.enclosure)[k] = {lo, hi};
+      }
+      return e;
+    }
+    bits *= 2;
+  }
+}
+
+}  // namespace gmcc
