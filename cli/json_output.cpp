@@ -58,6 +58,7 @@ Json selection_json(const Selection& s) {
     if (e.valid && !e.exact) j["standard_error"] = pair(e.standard_error);
   }
   if (s.worst_case_deg) j["worst_case_deg"] = *s.worst_case_deg;
+  if (s.worst_case_illuminant_deg) j["worst_case_illuminant_deg"] = *s.worst_case_illuminant_deg;
   return j;
 }
 
@@ -81,6 +82,9 @@ std::string select_json(const SelectReport& r) {
   cg["expansion"] = {{"policy", to_string(r.expansion.policy)},
                      {"factor", to_string(r.expansion.factor)}};
   j["canonical_gamut"] = cg;
+  j["canonical_illuminant"] = Json::array({to_string(r.canonical_illuminant.r),
+                                           to_string(r.canonical_illuminant.g),
+                                           to_string(r.canonical_illuminant.b)});
   j["input"] = {{"canonical_colours", r.canonical_colours},
                 {"canonical_dropped_nonpositive_blue", r.canonical_dropped},
                 {"image_colours", r.image_colours},
@@ -120,6 +124,8 @@ std::string select_text(const SelectReport& r) {
     }
     out << "  " << name << "  (" << fmt(s.estimate.map[0]) << ", " << fmt(s.estimate.map[1])
         << ")  worst case " << fmt(*s.worst_case_deg) << " deg";
+    if (s.worst_case_illuminant_deg)
+      out << " (illuminant " << fmt(*s.worst_case_illuminant_deg) << ")";
     if (s.estimate.exact) {
       const std::string x = to_string(s.estimate.exact->x), y = to_string(s.estimate.exact->y);
       if (x.size() + y.size() <= 40)

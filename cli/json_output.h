@@ -12,6 +12,7 @@ namespace gmcc::cli {
 
 struct SelectReport {
   Expansion expansion;
+  Colour canonical_illuminant{1, 1, 1};
   std::size_t canonical_colours = 0, canonical_dropped = 0;
   std::size_t image_colours = 0, image_dropped = 0;
   ConvexSet2 canonical_gamut;

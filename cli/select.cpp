@@ -61,6 +61,10 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
       ->capture_default_str();
   cmd->add_option("--seed", o.seed, "monte-carlo: seed of the mt19937_64 generator")
       ->capture_default_str();
+  cmd->add_option("--canonical-illuminant", o.canonical_illuminant,
+                  "r,g,b of the canonical light, for the illuminant-space worst case "
+                  "(e = c ⊘ d; exact numbers, all > 0)")
+      ->capture_default_str();
   cmd->add_option("--nonpositive-blue", o.nonpositive_blue,
                   "colours with b <= 0 have no chromaticity: drop (count them) or reject")
       ->check(CLI::IsMember({"drop", "reject"}))
@@ -83,6 +87,16 @@ int run_select(const SelectOptions& o) {
     throw InputError("--expand", 0, e.what());
   }
   r.expansion = expansion;
+  try {
+    const ColourTable c = parse_colour_csv(o.canonical_illuminant, "--canonical-illuminant");
+    if (c.colours.size() != 1) throw InputError("--canonical-illuminant", 0, "expected one r,g,b");
+    r.canonical_illuminant = c.colours[0];
+    for (const Rational* x : {&r.canonical_illuminant.r, &r.canonical_illuminant.g, &r.canonical_illuminant.b})
+      if (sgn(*x) <= 0) throw InputError("--canonical-illuminant", 0, "every channel must be > 0");
+  } catch (const InputError& e) {
+    throw InputError("--canonical-illuminant", 0,
+                     "'" + o.canonical_illuminant + "' is not a light r,g,b with channels > 0");
+  }
 
   const ColourTable canonical = read_colour_csv(o.canonical_path);
   const ColourTable image = read_colour_csv(o.image_path);
@@ -105,7 +119,7 @@ int run_select(const SelectOptions& o) {
   mean3d.order = o.order;
   mean3d.samples = o.samples;
   mean3d.seed = o.seed;
-  r.selections = select_maps(r.feasible, mean3d);
+  r.selections = select_maps(r.feasible, mean3d, r.canonical_illuminant);
 
   const std::string out = o.json ? select_json(r) : select_text(r);
   std::cout << out << std::flush;

@@ -25,6 +25,7 @@ struct SelectOptions {
   std::uint64_t samples = 1000000;
   std::uint64_t seed = 1;
   std::string nonpositive_blue = "drop";
+  std::string canonical_illuminant = "1,1,1";
 };
 
 /// Register the subcommand and its options on `app`; returns the subcommand.

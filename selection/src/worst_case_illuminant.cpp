@@ -72,17 +72,40 @@ Poly gcd(Poly a, Poly b) {
   return a;
 }
 
-Rational eval(const Poly& p, const Rational& t) {
-  Rational r = 0;
-  for (std::size_t i = p.size(); i-- > 0;) r = r * t + p[i];
-  return r;
+// p scaled by a positive rational to coprime integer coefficients: the same signs everywhere,
+// and integer arithmetic from then on (the coefficients inherit the size of the map m, which for
+// the 2-D mean can have hundreds of digits).
+Poly primitive(Poly p) {
+  if (p.empty()) return p;
+  mpz_class den_lcm = 1, num_gcd = 0;
+  for (const Rational& c : p) {
+    mpz_lcm(den_lcm.get_mpz_t(), den_lcm.get_mpz_t(), c.get_den_mpz_t());
+    mpz_gcd(num_gcd.get_mpz_t(), num_gcd.get_mpz_t(), c.get_num_mpz_t());
+  }
+  const Rational k(den_lcm, num_gcd);  // > 0
+  return scaled(std::move(p), k);
+}
+
+// The sign of an integer-coefficient p at t = a/b (b > 0), from the homogeneous form
+// Σ c_i a^i b^(d−i): integer arithmetic only, no rational normalisation.
+int sign_at(const Poly& p, const Rational& t) {
+  if (p.empty()) return 0;
+  const mpz_class& a = t.get_num();
+  const mpz_class& b = t.get_den();
+  // Horner on the homogeneous form: r ← r·a + c_i·b^(d−i), from i = d − 1 down to 0.
+  mpz_class r = p.back().get_num(), b_power = 1;
+  for (std::size_t i = p.size() - 1; i-- > 0;) {
+    b_power *= b;
+    r = r * a + p[i].get_num() * b_power;
+  }
+  return sgn(r);
 }
 
 // Sign variations of a Sturm sequence at t, zeros skipped.
 int variations(const std::vector<Poly>& chain, const Rational& t) {
   int count = 0, last = 0;
   for (const Poly& p : chain) {
-    const int s = sgn(eval(p, t));
+    const int s = sign_at(p, t);
     if (s == 0) continue;
     if (last != 0 && s != last) ++count;
     last = s;
@@ -96,11 +119,12 @@ int variations(const std::vector<Poly>& chain, const Rational& t) {
 // #roots in (lo, hi] = V(lo) − V(hi), also when lo or hi is a root (Basu, Pollack & Roy,
 // "Algorithms in Real Algebraic Geometry", Thm 2.50 and its proof).
 std::vector<Rational> roots_in_unit_interval(const Poly& p) {
-  const Poly s = divide(p, gcd(p, derivative(p))).first;
+  const Poly s = primitive(divide(p, gcd(p, derivative(p))).first);
   if (s.size() < 2) return {};
-  std::vector<Poly> chain{s, derivative(s)};
-  for (;;) {
-    Poly r = scaled(divide(chain[chain.size() - 2], chain.back()).second, Rational(-1));
+  const Poly ds = primitive(derivative(s));
+  std::vector<Poly> chain{s, ds};
+  for (;;) {  // positive scalings keep a Sturm sequence's signs
+    Poly r = primitive(scaled(divide(chain[chain.size() - 2], chain.back()).second, Rational(-1)));
     if (r.empty()) break;
     chain.push_back(std::move(r));
   }
@@ -118,16 +142,18 @@ std::vector<Rational> roots_in_unit_interval(const Poly& p) {
     const int count = iv.v_lo - iv.v_hi;
     if (count == 0) continue;
     if (count == 1) {
-      while (iv.hi - iv.lo > width && sgn(eval(s, iv.hi)) != 0) {
+      // One simple root in (lo, hi]: bisect on the sign of s alone. Just right of lo, s has
+      // the sign of s(lo), or of s′(lo) where lo is itself a (simple) root of s.
+      int sign_lo = sign_at(s, iv.lo);
+      if (sign_lo == 0) sign_lo = sign_at(ds, iv.lo);
+      while (iv.hi - iv.lo > width && sign_at(s, iv.hi) != 0) {
         Rational mid = (iv.lo + iv.hi) / 2;
-        const int v_mid = variations(chain, mid);
-        if (iv.v_lo - v_mid == 1) {
+        const int sign_mid = sign_at(s, mid);
+        if (sign_mid == 0) {
           iv.hi = std::move(mid);
-          iv.v_hi = v_mid;
-        } else {
-          iv.lo = std::move(mid);
-          iv.v_lo = v_mid;
+          break;
         }
+        (sign_mid == sign_lo ? iv.lo : iv.hi) = std::move(mid);
       }
       roots.push_back(iv.hi);
       continue;

@@ -24,7 +24,7 @@ double illuminant_angular_error_deg(const Point2& estimate, const Point2& truth,
 /// corrected white is from white, and does not depend on the canonical illuminant c (the c of
 /// e = c ⊘ d cancels). Inputs exact; evaluated like the others, atan2 of exact cross and dot
 /// products in 128-bit MPFR, then rounded to double. O(1).
-/// \pre all map components > 0 (the illuminants must exist). 	hrows std::invalid_argument.
+/// \pre all map components > 0 (the illuminants must exist). \throws std::invalid_argument.
 double reproduction_angular_error_deg(const Point2& estimate, const Point2& truth);
 
 }  // namespace gmcc

@@ -4,6 +4,7 @@
 /// each with its map-space worst case (§4): what `gmcc select` reports and what every
 /// experiment evaluates per scene.
 
+#include <gmcc/geometry/colour.h>
 #include <gmcc/selection/map_estimate.h>
 #include <gmcc/selection/mean_3d.h>
 
@@ -17,6 +18,10 @@ struct Selection {
   /// worst_case_map_deg(F, estimate), at the estimate's double map when it is not rational;
   /// absent when the estimate is not valid (Monte Carlo with too few samples).
   std::optional<double> worst_case_deg;
+  /// worst_case_illuminant_deg(F, estimate, c): the same in illuminant space (MATH §1e, exact
+  /// edge quartics); absent when the estimate is not valid or F or the map touches an axis
+  /// (an illuminant c ⊘ (m, 1) needs m > 0).
+  std::optional<double> worst_case_illuminant_deg;
 };
 
 /// max_area, mean_2d and mean_3d of F; all absent when F is empty.
@@ -24,8 +29,10 @@ struct Selections {
   std::optional<Selection> max_area, mean_2d, mean_3d;
 };
 
-/// Apply max_area, mean_2d and mean_3d (by the route in `mean3d`) to F with their worst cases.
-/// The worst case of mean_3d is measured from its reported double map, taken exactly.
-Selections select_maps(const ConvexSet2& F, const Mean3dOptions& mean3d = {});
+/// Apply max_area, mean_2d and mean_3d (by the route in `mean3d`) to F with their worst cases,
+/// in map space and in illuminant space for the canonical illuminant c. The worst cases of an
+/// irrational estimate are measured from its reported double map, taken exactly.
+Selections select_maps(const ConvexSet2& F, const Mean3dOptions& mean3d = {},
+                       const Colour& canonical_illuminant = {1, 1, 1});
 
 }  // namespace gmcc

@@ -1,0 +1,29 @@
+#pragma once
+// `gmcc accuracy`: how accurate is each route to the 3-D mean (Finlayson & Hordley 1999 §3.2)?
+// The study behind docs/accuracy.md: on a fixed 7-gon of width w = 10 … 1e-12 around the map
+// (1.1, 0.7), the error of the double closed form (MATH §1a.7), the certified closed form,
+// Duffy–Gauss–Legendre quadrature (MATH §1c) and Monte Carlo (MATH §1a.5) against a 4096-bit
+// certified enclosure.
+
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <string>
+
+namespace gmcc::cli {
+
+struct AccuracyOptions {
+  std::string csv_path;                  ///< long-format CSV; empty: none
+  std::string plot_dir;                  ///< accuracy.dat, .gp (and .png, .svg via gnuplot)
+  std::uint64_t seed = 1;                ///< Monte Carlo generator seed (every run)
+  std::uint64_t max_samples = 10000000;  ///< cap on the Monte Carlo sample counts 10^4 … 10^7
+};
+
+/// Register the subcommand and its options on `app`; returns the subcommand.
+CLI::App* add_accuracy_command(CLI::App& app, AccuracyOptions& options);
+
+/// Run it: every output file is written under a temporary name and renamed when complete.
+/// Returns the exit status; unusable output paths throw gmcc::InputError (exit 2 at the edge).
+int run_accuracy(const AccuracyOptions& options);
+
+}  // namespace gmcc::cli
