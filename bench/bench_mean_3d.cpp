@@ -8,6 +8,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdio>
 
 namespace {
 // A regular-ish 12-gon of radius 0.6 around (1.2, 0.9) with rational vertices (a typical
@@ -23,9 +24,16 @@ gmcc::ConvexSet2 polygon12() {
 }
 const gmcc::ConvexSet2 F = polygon12();
 
+std::string format_bound(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2g", x);
+  return b;
+}
+
 void analytic_auto(benchmark::State& s) {
   for (auto _ : s) benchmark::DoNotOptimize(gmcc::mean_3d_analytic(F));
-  s.SetLabel("precision " + std::to_string(gmcc::mean_3d_analytic(F).precision_bits));
+  const gmcc::MapEstimate e = gmcc::mean_3d_analytic(F);
+  s.SetLabel("precision " + std::to_string(e.precision_bits) + ", bound " + format_bound(e.error_bound));
 }
 void analytic_mpfi_128(benchmark::State& s) {
   for (auto _ : s) benchmark::DoNotOptimize(gmcc::mean_3d_analytic(F, {128}));
@@ -36,10 +44,20 @@ void double_naive(benchmark::State& s) {
 void quadrature(benchmark::State& s) {
   const auto n = static_cast<unsigned>(s.range(0));
   for (auto _ : s) benchmark::DoNotOptimize(gmcc::mean_3d_quadrature(F, n));
+  char label[64];
+  std::snprintf(label, sizeof label, "estimate %.2g", gmcc::mean_3d_quadrature(F, n).error_bound);
+  s.SetLabel(label);
 }
 void monte_carlo(benchmark::State& s) {
   const auto n = static_cast<std::uint64_t>(s.range(0));
   for (auto _ : s) benchmark::DoNotOptimize(gmcc::mean_3d_monte_carlo(F, n, 1));
+  const gmcc::MapEstimate e = gmcc::mean_3d_monte_carlo(F, n, 1);
+  char label[96];
+  if (e.valid)
+    std::snprintf(label, sizeof label, "standard error %.2g", e.error_bound);
+  else
+    std::snprintf(label, sizeof label, "no map: %llu kept", static_cast<unsigned long long>(e.samples_kept));
+  s.SetLabel(label);
 }
 }  // namespace
 
