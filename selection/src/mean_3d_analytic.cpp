@@ -120,14 +120,12 @@ void report(MapEstimate& e, int k, const LDInterval& x) {
 
 MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options) {
   if (F.kind == ConvexKind::empty) throw std::invalid_argument("mean_3d: empty feasible set");
-  if (F.kind == ConvexKind::point) {
-    MapEstimate e = exact_map_estimate("mean_3d", F.vertices[0]);
-    e.method = "analytic";
-    return e;
-  }
-  MapEstimate e;
+  // A point is its own mean, exactly.
+  MapEstimate e = F.kind == ConvexKind::point ? exact_map_estimate("mean_3d", F.vertices[0])
+                                              : MapEstimate{};
   e.rule = "mean_3d";
   e.method = "analytic";
+  if (F.kind == ConvexKind::point) return e;
   e.enclosure.emplace();
 
   // Fast path: rigorous extended-precision intervals, kept only when tight enough.

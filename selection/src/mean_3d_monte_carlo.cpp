@@ -46,18 +46,14 @@ bool in_unit_ball(double x, double y, double z) {
 
 MapEstimate mean_3d_monte_carlo(const ConvexSet2& F, std::uint64_t samples, std::uint64_t seed) {
   if (F.kind == ConvexKind::empty) throw std::invalid_argument("mean_3d: empty feasible set");
-  if (F.kind == ConvexKind::point) {
-    MapEstimate e = exact_map_estimate("mean_3d", F.vertices[0]);
-    e.method = "monte-carlo";
-    e.samples = samples;
-    e.seed = seed;
-    return e;
-  }
-  MapEstimate e;
+  // A point is its own mean, exactly.
+  MapEstimate e = F.kind == ConvexKind::point ? exact_map_estimate("mean_3d", F.vertices[0])
+                                              : MapEstimate{};
   e.rule = "mean_3d";
   e.method = "monte-carlo";
   e.samples = samples;
   e.seed = seed;
+  if (F.kind == ConvexKind::point) return e;
   if (F.kind == ConvexKind::segment) {
     e.valid = false;
     e.note = "the feasible set is a segment: its cone has no volume, so Monte Carlo cannot "

@@ -159,16 +159,13 @@ std::array<double, 2> quadrature_map(const ConvexSet2& F, unsigned n) {
 MapEstimate mean_3d_quadrature(const ConvexSet2& F, unsigned order) {
   if (F.kind == ConvexKind::empty) throw std::invalid_argument("mean_3d: empty feasible set");
   if (order == 0) throw std::invalid_argument("mean_3d_quadrature: order must be >= 1");
-  if (F.kind == ConvexKind::point) {
-    MapEstimate e = exact_map_estimate("mean_3d", F.vertices[0]);
-    e.method = "quadrature";
-    e.quadrature_order = order;
-    return e;
-  }
-  MapEstimate e;
+  // A point is its own mean, exactly.
+  MapEstimate e = F.kind == ConvexKind::point ? exact_map_estimate("mean_3d", F.vertices[0])
+                                              : MapEstimate{};
   e.rule = "mean_3d";
   e.method = "quadrature";
   e.quadrature_order = order;
+  if (F.kind == ConvexKind::point) return e;
   e.map = quadrature_map(F, order);
   const std::array<double, 2> finer = quadrature_map(F, 2 * order);
   for (int k = 0; k < 2; ++k) {

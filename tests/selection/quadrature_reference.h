@@ -6,6 +6,7 @@
 
 #include <gmcc/geometry/convex_set.h>
 
+#include <Eigen/Dense>
 #include <mpfr.h>
 
 #include <array>
@@ -14,27 +15,20 @@
 
 namespace gmcc::test {
 
-/// Gauss–Legendre nodes and weights on [0, 1] (Newton on P_n).
+/// Gauss–Legendre nodes and weights on [0, 1] by Golub–Welsch: the eigenvalues of the Jacobi
+/// matrix of the Legendre recurrence (off-diagonal k/√(4k² − 1)) are the nodes on [−1, 1], and
+/// twice the squared first components of the eigenvectors the weights (a different algorithm
+/// from the library's Newton iteration, on purpose).
 inline void gauss_legendre01(int n, std::vector<long double>& x, std::vector<long double>& w) {
-  x.assign(n, 0);
-  w.assign(n, 0);
-  const long double pi = 3.141592653589793238462643383279502884L;
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, n);
+  for (int k = 1; k < n; ++k) J(k, k - 1) = J(k - 1, k) = k / std::sqrt(4.0 * k * k - 1);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(J);
+  x.resize(n);
+  w.resize(n);
   for (int i = 0; i < n; ++i) {
-    long double z = std::cos(pi * (i + 0.75L) / (n + 0.5L)), dp = 0;
-    for (int it = 0; it < 100; ++it) {
-      long double p0 = 1, p1 = z;
-      for (int k = 2; k <= n; ++k) {
-        const long double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (z * p1 - p0) / (z * z - 1);
-      const long double dz = p1 / dp;
-      z -= dz;
-      if (std::fabs(dz) < 1e-19L) break;
-    }
-    x[i] = (1 - z) / 2;
-    w[i] = 1 / ((1 - z * z) * dp * dp);  // 2/((1-z²)P'²) scaled by 1/2 for [0, 1]
+    x[i] = (1 + eig.eigenvalues()(i)) / 2;
+    const double v0 = eig.eigenvectors()(0, i);
+    w[i] = v0 * v0;  // 2·v0² on [−1, 1], halved for [0, 1]
   }
 }
 

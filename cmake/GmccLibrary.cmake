@@ -1,0 +1,18 @@
+# gmcc_library(NAME <folder> SOURCES ...): one gmcc library target per top-level folder, with
+# namespace = folder = target (gmcc::<folder>), its public headers under <folder>/include, and
+# install/export rules.
+function(gmcc_library)
+  cmake_parse_arguments(ARG "" "NAME" "SOURCES" ${ARGN})
+  set(target gmcc_${ARG_NAME})
+  add_library(${target} ${ARG_SOURCES})
+  add_library(gmcc::${ARG_NAME} ALIAS ${target})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${ARG_NAME} OUTPUT_NAME ${target}
+    POSITION_INDEPENDENT_CODE ON)
+  target_include_directories(${target} PUBLIC
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  target_compile_features(${target} PUBLIC cxx_std_17)
+  install(TARGETS ${target} EXPORT gmccTargets
+    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+  install(DIRECTORY include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+endfunction()
