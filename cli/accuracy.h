@@ -7,7 +7,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <cstdint>
 #include <string>
 
 namespace gmcc::cli {
@@ -15,8 +14,10 @@ namespace gmcc::cli {
 struct AccuracyOptions {
   std::string csv_path;                  ///< long-format CSV; empty: none
   std::string plot_dir;                  ///< accuracy.dat, .gp (and .png, .svg via gnuplot)
-  std::uint64_t seed = 1;                ///< Monte Carlo generator seed (every run)
-  std::uint64_t max_samples = 10000000;  ///< cap on the Monte Carlo sample counts 10^4 … 10^7
+  // Integers read exactly like every number gmcc reads (`1e7` is 10000000), and range-checked
+  // in run_accuracy (CLI11 would wrap a negative seed to 2^64 − 1).
+  std::string seed = "1";           ///< Monte Carlo generator seed (every run), 0 … 2^64 − 1
+  std::string max_samples = "1e7";  ///< cap on the Monte Carlo sample counts 10^4 … 10^7
 };
 
 /// Register the subcommand and its options on `app`; returns the subcommand.

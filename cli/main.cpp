@@ -1,5 +1,6 @@
 // gmcc: gamut-mapping colour constancy with exact geometry. The command line's one edge where
 // errors become messages and exit statuses: 0 success, 2 bad input or usage, 1 internal error.
+#include "accuracy.h"
 #include "select.h"
 
 #include <gmcc/validation/colour_csv.h>
@@ -16,6 +17,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "gmcc 0.1.0");
   gmcc::cli::SelectOptions select_options;
   CLI::App* select = gmcc::cli::add_select_command(app, select_options);
+  gmcc::cli::AccuracyOptions accuracy_options;
+  CLI::App* accuracy = gmcc::cli::add_accuracy_command(app, accuracy_options);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -30,6 +33,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (select->parsed()) return gmcc::cli::run_select(select_options);
+    if (accuracy->parsed()) return gmcc::cli::run_accuracy(accuracy_options);
   } catch (const gmcc::InputError& e) {
     std::cerr << "gmcc: error: " << e.what() << "\n";
     return 2;

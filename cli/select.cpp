@@ -1,5 +1,6 @@
 #include "select.h"
 
+#include "integer_option.h"
 #include "json_output.h"
 
 #include <gmcc/geometry/feasible_set.h>
@@ -51,15 +52,13 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
       ->check(CLI::IsMember({"analytic", "quadrature", "monte-carlo"}))
       ->capture_default_str();
   cmd->add_option("--precision", o.precision_bits,
-                  "analytic: force the working precision in bits (default: automatic)")
-      ->check(CLI::Range(53u, 1u << 20));
-  cmd->add_option("--order", o.order, "quadrature: Gauss–Legendre points per direction")
-      ->check(CLI::Range(1u, 1000u))
+                  "analytic: force one MPFI evaluation at this many bits, 53 to 2^20 "
+                  "(default 0: automatic)");
+  cmd->add_option("--order", o.order, "quadrature: Gauss–Legendre points per direction, 1 to 1000")
       ->capture_default_str();
-  cmd->add_option("--samples", o.samples, "monte-carlo: points drawn in the unit cube")
-      ->check(CLI::Range(std::uint64_t(1), std::uint64_t(1) << 40))
+  cmd->add_option("--samples", o.samples, "monte-carlo: points drawn in the unit cube, 1 to 2^40")
       ->capture_default_str();
-  cmd->add_option("--seed", o.seed, "monte-carlo: seed of the mt19937_64 generator")
+  cmd->add_option("--seed", o.seed, "monte-carlo: seed of the mt19937_64 generator, 0 to 2^64-1")
       ->capture_default_str();
   cmd->add_option("--canonical-illuminant", o.canonical_illuminant,
                   "r,g,b of the canonical light, for the illuminant-space worst case "
@@ -98,6 +97,15 @@ int run_select(const SelectOptions& o) {
                      "'" + o.canonical_illuminant + "' is not a light r,g,b with channels > 0");
   }
 
+  Mean3dOptions mean3d;
+  mean3d.method = mean3d_method_from_string(o.mean3d_method);
+  mean3d.precision_bits = static_cast<unsigned>(integer_option("--precision", o.precision_bits, 0, 1u << 20));
+  if (mean3d.precision_bits != 0 && mean3d.precision_bits < 53)
+    throw InputError("--precision", 0, "must be 0 (automatic) or from 53 to 1048576 bits");
+  mean3d.order = static_cast<unsigned>(integer_option("--order", o.order, 1, 1000));
+  mean3d.samples = integer_option("--samples", o.samples, 1, std::uint64_t(1) << 40);
+  mean3d.seed = integer_option("--seed", o.seed, 0, ~std::uint64_t(0));
+
   const ColourTable canonical = read_colour_csv(o.canonical_path);
   const ColourTable image = read_colour_csv(o.image_path);
   const Chromaticities cq = chromaticities_of(canonical, policy);
@@ -113,12 +121,6 @@ int run_select(const SelectOptions& o) {
   } catch (const UnboundedFeasibleSet& e) {
     throw InputError(o.image_path, 0, e.what());
   }
-  Mean3dOptions mean3d;
-  mean3d.method = mean3d_method_from_string(o.mean3d_method);
-  mean3d.precision_bits = o.precision_bits;
-  mean3d.order = o.order;
-  mean3d.samples = o.samples;
-  mean3d.seed = o.seed;
   r.selections = select_maps(r.feasible, mean3d, r.canonical_illuminant);
 
   const std::string out = o.json ? select_json(r) : select_text(r);

@@ -20,10 +20,10 @@ struct SelectOptions {
   std::string expand_policy = "none";
   std::string expand_factor = "0";  // read exactly, like every number gmcc reads
   std::string mean3d_method = "analytic";
-  unsigned precision_bits = 0;
-  unsigned order = 12;
-  std::uint64_t samples = 1000000;
-  std::uint64_t seed = 1;
+  std::string precision_bits = "0";
+  std::string order = "12";  // integers are read exactly and range-checked (integer_option)
+  std::string samples = "1000000";
+  std::string seed = "1";
   std::string nonpositive_blue = "drop";
   std::string canonical_illuminant = "1,1,1";
 };

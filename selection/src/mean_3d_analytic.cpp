@@ -94,7 +94,7 @@ std::array<LDInterval, 2> direction_map_fast(const ConvexSet2& F) {
 }
 
 // The fast path is kept when its enclosure is this tight (relative): with the rounding to
-// double the bound is then at most 2^-51 + 2^-53 relative, under SPEC §6's 1e-15.
+// double the bound is then at most 2^-51 + 2^-53 relative, under SPEC §6's 1e-15 relative.
 constexpr int fast_path_bits = 51;
 
 bool tight(const LDInterval& x, int bits) {
@@ -133,7 +133,7 @@ MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options
     const auto m = direction_map_fast(F);
     // A τ3 enclosure that straddles 0 yields quotients of both signs, never a tight result.
     if (tight(m[0], fast_path_bits) && tight(m[1], fast_path_bits)) {
-      e.precision_bits = 53;
+      e.precision_bits = 64;  // the x87 extended significand
       report(e, 0, m[0]);
       report(e, 1, m[1]);
       return e;

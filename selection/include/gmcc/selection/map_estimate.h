@@ -19,12 +19,12 @@ struct MapEstimate {
   std::optional<Point2> exact;  ///< the exact map, where the rule's answer is rational
   /// The error statement for max_k |map[k] − true map_k|, by method:
   /// exact and analytic: a rigorous bound (rounding, or the certified enclosure's reach);
-  /// quadrature: an a-posteriori estimate (order n against 2n, at least one ulp);
+  /// quadrature: an a-posteriori estimate, 2·|Q_n − Q_2n| and at least one ulp;
   /// monte-carlo: the larger standard error of the two components (one sigma).
   double error_bound = 0;
   /// exact and analytic: certified enclosure of each component (lo, hi), rounded outward.
   std::optional<std::array<std::array<double, 2>, 2>> enclosure;
-  unsigned precision_bits = 0;  ///< analytic: working precision (53: the double fast path)
+  unsigned precision_bits = 0;  ///< analytic: working precision (64: the x87 extended fast path)
 
   /// False when the method could not produce a map (Monte Carlo with too few samples in the
   /// cone, or on a set with no volume); `note` says why and `map` is not meaningful.

@@ -18,8 +18,8 @@ namespace gmcc {
 /// singularities: larger triangles are split in four (at most 8 levels) until it is.
 /// A segment is integrated the same way along its length with w = |(a, b, 1)|^-3 (the planar
 /// fan's centroid: the bisector of SPEC §2); a point is itself (exact).
-/// `error_bound` is an a-posteriori estimate: |Q_n − Q_2n| (the reported map is Q_n), and at
-/// least one ulp of the map. method `quadrature`, `quadrature_order` = n.
+/// `error_bound` is an a-posteriori estimate: 2·|Q_n − Q_2n| (the reported map is Q_n; the factor
+/// covers a Q_2n that is not yet exact on wide polygons), and at least one ulp of the map. method `quadrature`, `quadrature_order` = n.
 /// \pre F not empty, order >= 1. Complexity O(n²·|F|) double operations.
 MapEstimate mean_3d_quadrature(const ConvexSet2& F, unsigned order = 12);
 

@@ -1,0 +1,26 @@
+#include "integer_option.h"
+
+#include <gmcc/geometry/rational.h>
+#include <gmcc/validation/colour_csv.h>
+
+#include <stdexcept>
+
+namespace gmcc::cli {
+
+std::uint64_t integer_option(const std::string& name, const std::string& text, std::uint64_t lo,
+                             std::uint64_t hi) {
+  const std::string wanted =
+      "must be an integer from " + std::to_string(lo) + " to " + std::to_string(hi);
+  Rational value;
+  try {
+    value = parse_rational(text);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(name, 0, wanted + ": " + e.what());
+  }
+  if (value.get_den() != 1 || value < Rational(mpz_class(std::to_string(lo))) ||
+      value > Rational(mpz_class(std::to_string(hi))))
+    throw InputError(name, 0, wanted + ", not '" + text + "'");
+  return std::stoull(value.get_num().get_str());
+}
+
+}  // namespace gmcc::cli
