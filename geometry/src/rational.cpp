@@ -6,6 +6,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace gmcc {
@@ -120,6 +121,15 @@ double to_double_nearest(const Rational& value) {
   mpfr_init2(x, 53);
   mpfr_set_q(x, value.get_mpq_t(), MPFR_RNDN);
   const double d = mpfr_get_d(x, MPFR_RNDN);
+  mpfr_clear(x);
+  return d;
+}
+
+long double to_long_double_nearest(const Rational& value) {
+  mpfr_t x;
+  mpfr_init2(x, std::numeric_limits<long double>::digits);
+  mpfr_set_q(x, value.get_mpq_t(), MPFR_RNDN);
+  const long double d = mpfr_get_ld(x, MPFR_RNDN);
   mpfr_clear(x);
   return d;
 }

@@ -94,7 +94,8 @@ std::array<LDInterval, 2> direction_map_fast(const ConvexSet2& F) {
 }
 
 // The fast path is kept when its enclosure is this tight (relative): with the rounding to
-// double the bound is then at most 2^-51 + 2^-53 relative, under SPEC §6's 1e-15 relative.
+// double the bound is then at most 2^-51 + 2^-53 relative, within SPEC §6's bar of
+// 10^-15 relative.
 constexpr int fast_path_bits = 51;
 
 bool tight(const LDInterval& x, int bits) {

@@ -35,15 +35,6 @@ void gauss_legendre_01(unsigned n, std::vector<long double>& x, std::vector<long
   }
 }
 
-long double nearest_ld(const Rational& q) {
-  mpfr_t t;
-  mpfr_init2(t, 64);
-  mpfr_set_q(t, q.get_mpq_t(), MPFR_RNDN);
-  const long double r = mpfr_get_ld(t, MPFR_RNDN);
-  mpfr_clear(t);
-  return r;
-}
-
 // apex + offset, rounded once to the nearest double.
 double add_exact(const Rational& apex, long double offset) {
   mpfr_t a, o;
@@ -132,10 +123,10 @@ std::array<double, 2> quadrature_map(const ConvexSet2& F, unsigned n) {
   Rule rule;
   gauss_legendre_01(n, rule.x, rule.w);
   const auto& v = F.vertices;
-  rule.ax = nearest_ld(v[0].x), rule.ay = nearest_ld(v[0].y);
+  rule.ax = to_long_double_nearest(v[0].x), rule.ay = to_long_double_nearest(v[0].y);
   auto offset = [&](const Point2& p, long double out[2]) {
-    out[0] = nearest_ld(Rational(p.x - v[0].x));
-    out[1] = nearest_ld(Rational(p.y - v[0].y));
+    out[0] = to_long_double_nearest(Rational(p.x - v[0].x));
+    out[1] = to_long_double_nearest(Rational(p.y - v[0].y));
   };
   Sums s;
   const long double origin[2] = {0, 0};

@@ -7,7 +7,6 @@
 #include <gmcc/geometry/convex_set.h>
 
 #include <Eigen/Dense>
-#include <mpfr.h>
 
 #include <array>
 #include <cmath>
@@ -37,14 +36,7 @@ inline std::array<long double, 2> weighted_centroid_reference(const ConvexSet2& 
   std::vector<long double> x, w;
   gauss_legendre01(n, x, w);
   const auto& v = F.vertices;
-  auto ld = [](const Rational& q) {  // nearest long double, via MPFR at 64 bits
-    mpfr_t t;
-    mpfr_init2(t, 64);
-    mpfr_set_q(t, q.get_mpq_t(), MPFR_RNDN);
-    const long double r = mpfr_get_ld(t, MPFR_RNDN);
-    mpfr_clear(t);
-    return r;
-  };
+  auto ld = [](const Rational& q) { return to_long_double_nearest(q); };
   // Offsets from the apex are formed exactly, then rounded once.
   const long double ax = ld(v[0].x), ay = ld(v[0].y);
   long double sw = 0, sx = 0, sy = 0;

@@ -34,4 +34,8 @@ std::string to_string(const Rational& value);
 /// Unlike mpq_get_d, which truncates, this is correctly rounded.
 double to_double_nearest(const Rational& value);
 
+/// The long double nearest to an exact rational (round to nearest; via MPFR at the long double's
+/// precision, 64 bits on x86_64).
+long double to_long_double_nearest(const Rational& value);
+
 }  // namespace gmcc
