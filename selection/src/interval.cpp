@@ -68,8 +68,6 @@ long double top_bits(mpz_srcptr z, long& e) {
 }  // namespace
 
 LDInterval enclose_ld(const Rational& q) {
-  static_assert(sizeof(mp_limb_t) == 8 && std::numeric_limits<long double>::digits == 64,
-                "the fast path assumes 64-bit limbs and x87 extended precision");
   if (sgn(q) == 0) return {0, 0};
   long en, ed;
   const long double n = top_bits(q.get_num_mpz_t(), en), d = top_bits(q.get_den_mpz_t(), ed);

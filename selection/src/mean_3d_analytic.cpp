@@ -130,7 +130,7 @@ MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options
   e.enclosure.emplace();
 
   // Fast path: rigorous extended-precision intervals, kept only when tight enough.
-  if (options.precision_bits == 0) {
+  if (internal::fast_path_available && options.precision_bits == 0) {
     const auto m = direction_map_fast(F);
     // A τ3 enclosure that straddles 0 yields quotients of both signs, never a tight result.
     if (tight(m[0], fast_path_bits) && tight(m[1], fast_path_bits)) {

@@ -63,6 +63,11 @@ inline LDInterval atan2(LDInterval y, LDInterval x) {
   return LDInterval::around(lo, hi, LDInterval::push_transcendental);
 }
 
+/// The fast path's error analysis is for x87 extended precision (64-bit significand) and 64-bit
+/// GMP limbs; elsewhere (e.g. aarch64's 113-bit long double) it is skipped and MPFI is used.
+inline constexpr bool fast_path_available =
+    std::numeric_limits<long double>::digits == 64 && sizeof(mp_limb_t) == 8;
+
 /// An enclosure of an exact rational, from the top 64 bits of numerator and denominator
 /// (each truncated: relative error < 2^-63; exact when they fit in 64 bits) and one division:
 /// relative error < 2^-61 (2^-64 when both parts fit).
