@@ -121,7 +121,7 @@ int run_select(const SelectOptions& o) {
   } catch (const UnboundedFeasibleSet& e) {
     throw InputError(o.image_path, 0, e.what());
   }
-  r.selections = select_maps(r.feasible, mean3d, r.canonical_illuminant);
+  r.selections = select_maps(r.feasible, {mean3d, r.canonical_illuminant});
 
   const std::string out = o.json ? select_json(r) : select_text(r);
   std::cout << out << std::flush;

@@ -10,23 +10,24 @@ namespace gmcc {
 namespace {
 bool positive(const Point2& p) { return sgn(p.x) > 0 && sgn(p.y) > 0; }
 
-Selection with_worst_case(const ConvexSet2& F, MapEstimate e, const Colour& c) {
+Selection with_worst_case(const ConvexSet2& F, MapEstimate e, const std::optional<Colour>& c) {
   if (!e.valid) return {std::move(e), std::nullopt, std::nullopt};
   const Point2 m = e.exact ? *e.exact
                            : Point2{rational_from_double(e.map[0]), rational_from_double(e.map[1])};
   Selection s{std::move(e), worst_case_map_deg(F, m), std::nullopt};
-  if (positive(m) && std::all_of(F.vertices.begin(), F.vertices.end(), positive))
-    s.worst_case_illuminant_deg = worst_case_illuminant_deg(F, m, c);
+  if (c && positive(m) && std::all_of(F.vertices.begin(), F.vertices.end(), positive))
+    s.worst_case_illuminant_deg = worst_case_illuminant_deg(F, m, *c);
   return s;
 }
 }  // namespace
 
-Selections select_maps(const ConvexSet2& F, const Mean3dOptions& mean3d, const Colour& c) {
+Selections select_maps(const ConvexSet2& F, const SelectionOptions& options) {
   Selections s;
   if (F.kind == ConvexKind::empty) return s;
+  const auto& c = options.illuminant_worst_case_for;
   s.max_area = with_worst_case(F, max_area(F), c);
   s.mean_2d = with_worst_case(F, mean_2d(F), c);
-  s.mean_3d = with_worst_case(F, mean_3d(F, mean3d), c);
+  s.mean_3d = with_worst_case(F, mean_3d(F, options.mean3d), c);
   return s;
 }
 

@@ -29,10 +29,16 @@ struct Selections {
   std::optional<Selection> max_area, mean_2d, mean_3d;
 };
 
-/// Apply max_area, mean_2d and mean_3d (by the route in `mean3d`) to F with their worst cases,
-/// in map space and in illuminant space for the canonical illuminant c. The worst cases of an
+/// What to compute besides the three maps and their map-space worst cases.
+struct SelectionOptions {
+  Mean3dOptions mean3d;  ///< the 3-D mean's route
+  /// The canonical illuminant c: when given, each rule's illuminant-space worst case too (exact
+  /// edge quartics: costly when the exact map has hundreds of digits, as the 2-D mean can).
+  std::optional<Colour> illuminant_worst_case_for;
+};
+
+/// Apply max_area, mean_2d and mean_3d to F with their worst cases. The worst cases of an
 /// irrational estimate are measured from its reported double map, taken exactly.
-Selections select_maps(const ConvexSet2& F, const Mean3dOptions& mean3d = {},
-                       const Colour& canonical_illuminant = {1, 1, 1});
+Selections select_maps(const ConvexSet2& F, const SelectionOptions& options = {});
 
 }  // namespace gmcc
