@@ -1,6 +1,7 @@
 #include "accuracy.h"
 
 #include "integer_option.h"
+#include "output_files.h"
 
 #include <gmcc/geometry/convex_hull.h>
 #include <gmcc/geometry/rational.h>
@@ -375,74 +376,6 @@ std::string plot_script(const std::vector<Series>& series) {
   return out;
 }
 
-// ---- Files: written under a temporary name, renamed when complete -------------------------------
-
-class PendingFile {
- public:
-  // Opens the temporary file now, so an unusable path is reported before the study runs.
-  explicit PendingFile(fs::path path) : path_(std::move(path)) {
-    std::error_code ec;
-    if (fs::is_directory(path_, ec))
-      throw InputError(path_.string(), 0, "is a directory; give a file name");
-    temp_ = path_;
-    temp_ += ".tmp-" + std::to_string(::getpid());
-    out_.open(temp_, std::ios::binary | std::ios::trunc);
-    if (!out_) throw InputError(path_.string(), 0, std::string("cannot write: ") + std::strerror(errno));
-  }
-  PendingFile(const PendingFile&) = delete;
-  PendingFile& operator=(const PendingFile&) = delete;
-  ~PendingFile() {
-    if (committed_) return;
-    out_.close();
-    std::error_code ec;
-    fs::remove(temp_, ec);
-  }
-  void commit(const std::string& content) {
-    out_ << content;
-    out_.close();
-    if (!out_) throw InputError(path_.string(), 0, "cannot write (disk full?)");
-    std::error_code ec;
-    fs::rename(temp_, path_, ec);
-    if (ec) throw InputError(path_.string(), 0, "cannot write: " + ec.message());
-    committed_ = true;
-  }
-
- private:
-  fs::path path_, temp_;
-  std::ofstream out_;
-  bool committed_ = false;
-};
-
-std::optional<std::string> find_on_path(const std::string& program) {
-  const char* path = std::getenv("PATH");
-  std::istringstream dirs(path ? path : "");
-  for (std::string dir; std::getline(dirs, dir, ':');) {
-    const std::string candidate = (dir.empty() ? "." : dir) + "/" + program;
-    if (::access(candidate.c_str(), X_OK) == 0 && !fs::is_directory(candidate)) return candidate;
-  }
-  return std::nullopt;
-}
-
-// Runs `gnuplot -e "png_file=…; svg_file=…" accuracy.gp` in `dir` (its stdout to our stderr, so
-// stdout holds only the table); returns its exit status, 127 if it could not be started.
-int run_gnuplot(const std::string& gnuplot, const fs::path& dir, const std::string& settings) {
-  std::cout.flush();
-  std::cerr.flush();
-  const pid_t pid = ::fork();
-  if (pid < 0) return 127;
-  if (pid == 0) {
-    ::dup2(STDERR_FILENO, STDOUT_FILENO);
-    if (::chdir(dir.c_str()) != 0) ::_exit(127);
-    ::execl(gnuplot.c_str(), "gnuplot", "-e", settings.c_str(), "accuracy.gp",
-            static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) return 127;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
 }  // namespace
 
 CLI::App* add_accuracy_command(CLI::App& app, AccuracyOptions& o) {
@@ -482,11 +415,8 @@ int run_accuracy(const AccuracyOptions& options) {
   if (!options.csv_path.empty()) csv_file.emplace(options.csv_path);
   const fs::path dir = options.plot_dir;
   if (!options.plot_dir.empty()) {
+    ensure_directory(options.plot_dir);
     std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec || !fs::is_directory(dir))
-      throw InputError(options.plot_dir, 0, "cannot create the plot directory" +
-                                          (ec ? ": " + ec.message() : std::string()));
     if (!options.csv_path.empty()) {
       const fs::path csv_path = fs::weakly_canonical(options.csv_path, ec);
       for (const char* name : {"accuracy.dat", "accuracy.gp", "accuracy.png", "accuracy.svg"})
@@ -511,30 +441,7 @@ int run_accuracy(const AccuracyOptions& options) {
   std::cout << table(results, o) << std::flush;
   if (options.plot_dir.empty()) return 0;
 
-  const std::optional<std::string> gnuplot = find_on_path("gnuplot");
-  if (!gnuplot) {
-    std::cerr << "gmcc accuracy: gnuplot not found on PATH: to draw the figure run\n  cd "
-              << options.plot_dir << " && gnuplot accuracy.gp\n(Debian: apt-get install gnuplot-nox)\n";
-    return 0;
-  }
-  const std::string suffix = ".tmp-" + std::to_string(::getpid());
-  const std::string png = "accuracy.png" + suffix, svg = "accuracy.svg" + suffix;
-  const int status =
-      run_gnuplot(*gnuplot, dir, "png_file='" + png + "'; svg_file='" + svg + "'");
-  std::error_code ec;
-  if (status == 0) {
-    fs::rename(dir / png, dir / "accuracy.png", ec);
-    if (!ec) fs::rename(dir / svg, dir / "accuracy.svg", ec);
-    if (!ec) return 0;
-  }
-  std::error_code ignored;
-  fs::remove(dir / png, ignored);
-  fs::remove(dir / svg, ignored);
-  std::cerr << "gmcc: error: "
-            << (status != 0 ? "gnuplot failed (exit status " + std::to_string(status) + ")"
-                            : "cannot rename gnuplot's output: " + ec.message())
-            << " on " << (dir / "accuracy.gp").string() << "; the data and script are written\n";
-  return 1;
+  return draw_with_gnuplot(dir, "accuracy", "gmcc accuracy");
 }
 
 }  // namespace gmcc::cli

@@ -1,6 +1,7 @@
 // gmcc: gamut-mapping colour constancy with exact geometry. The command line's one edge where
 // errors become messages and exit statuses: 0 success, 2 bad input or usage, 1 internal error.
 #include "accuracy.h"
+#include "reproduce.h"
 #include "select.h"
 
 #include <gmcc/validation/colour_csv.h>
@@ -19,6 +20,8 @@ int main(int argc, char** argv) {
   CLI::App* select = gmcc::cli::add_select_command(app, select_options);
   gmcc::cli::AccuracyOptions accuracy_options;
   CLI::App* accuracy = gmcc::cli::add_accuracy_command(app, accuracy_options);
+  gmcc::cli::ReproduceOptions reproduce_options;
+  CLI::App* reproduce = gmcc::cli::add_reproduce_command(app, reproduce_options);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -34,6 +37,7 @@ int main(int argc, char** argv) {
   try {
     if (select->parsed()) return gmcc::cli::run_select(select_options);
     if (accuracy->parsed()) return gmcc::cli::run_accuracy(accuracy_options);
+    if (reproduce->parsed()) return gmcc::cli::run_reproduce(*reproduce, reproduce_options);
   } catch (const gmcc::InputError& e) {
     std::cerr << "gmcc: error: " << e.what() << "\n";
     return 2;

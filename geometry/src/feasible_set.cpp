@@ -6,6 +6,73 @@
 #include <algorithm>
 
 namespace gmcc {
+namespace {
+
+// Exact clipping in homogeneous integer coordinates. A line (a, b, c) means a·x + b·y <= c with
+// coprime integer coefficients; a vertex is (X, Y, W), W > 0, the point (X/W, Y/W). Every new
+// vertex is the intersection of two *input* lines (the edge's and the clip line), so coordinate
+// sizes stay bounded by the inputs' instead of growing clip after clip, and side tests are
+// integer arithmetic with no gcd (MATH §3b, item 4: keep constructions shallow).
+struct Line {
+  mpz_class a, b, c;
+};
+struct Vertex {
+  mpz_class x, y, w;
+  std::size_t out;  // index of the line carrying the edge from this vertex to the next
+};
+
+Line integer_line(const internal::HalfPlane& h) {
+  mpz_class l;
+  mpz_lcm(l.get_mpz_t(), h.a.get_den_mpz_t(), h.b.get_den_mpz_t());
+  mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), h.c.get_den_mpz_t());
+  Line line{h.a.get_num() * (l / h.a.get_den()), h.b.get_num() * (l / h.b.get_den()),
+            h.c.get_num() * (l / h.c.get_den())};
+  mpz_class g;
+  mpz_gcd(g.get_mpz_t(), line.a.get_mpz_t(), line.b.get_mpz_t());
+  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), line.c.get_mpz_t());
+  if (g > 1) line.a /= g, line.b /= g, line.c /= g;
+  return line;
+}
+
+// The sign of a·x + b·y − c at v (W > 0).
+int side(const Line& h, const Vertex& v) { return sgn(h.a * v.x + h.b * v.y - h.c * v.w); }
+
+// The intersection of two non-parallel lines (Cramer), with W > 0.
+Vertex meet(const Line& p, const Line& q, std::size_t out) {
+  Vertex v{p.c * q.b - q.c * p.b, p.a * q.c - q.a * p.c, p.a * q.b - q.a * p.b, out};
+  if (sgn(v.w) < 0) v.x = -v.x, v.y = -v.y, v.w = -v.w;
+  return v;
+}
+
+// Sutherland–Hodgman against line `h` (index hi), tracking each output vertex's outgoing line.
+std::vector<Vertex> clip(const std::vector<Vertex>& cycle, const std::vector<Line>& lines, std::size_t hi) {
+  const Line& h = lines[hi];
+  const std::size_t n = cycle.size();
+  std::vector<int> s(n);
+  bool all_inside = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    s[i] = side(h, cycle[i]);
+    all_inside = all_inside && s[i] <= 0;
+  }
+  if (all_inside) return cycle;
+  std::vector<Vertex> out;
+  out.reserve(n + 1);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = (i + 1) % n;
+    const std::size_t edge = cycle[i].out;
+    if (s[i] <= 0) {
+      Vertex v = cycle[i];
+      // Leaving the half-plane from a point on its line: the boundary follows h from here.
+      if (s[i] == 0 && s[j] > 0) v.out = hi;
+      out.push_back(std::move(v));
+    }
+    if (s[i] * s[j] < 0)  // a strict crossing: exiting continues along h, entering along the edge
+      out.push_back(meet(lines[edge], h, s[i] < 0 ? hi : edge));
+  }
+  return out;
+}
+
+}  // namespace
 
 ConvexSet2 feasible_set(const ConvexSet2& canonical, const std::vector<Point2>& image) {
   if (canonical.kind == ConvexKind::empty)
@@ -36,17 +103,29 @@ ConvexSet2 feasible_set(const ConvexSet2& canonical, const std::vector<Point2>& 
   // coordinate of a point of G_c, so 0 <= m1·Q1 <= X (likewise m2). Clip it to F.
   const Rational x_max = max_of(canonical.vertices, &Point2::x) / q1;
   const Rational y_max = max_of(canonical.vertices, &Point2::y) / q2;
-  std::vector<Point2> cycle{{0, 0}, {x_max, 0}, {x_max, y_max}, {0, y_max}};
+  std::vector<Line> lines{integer_line({0, -1, 0}), integer_line({1, 0, x_max}),
+                          integer_line({0, 1, y_max}), integer_line({-1, 0, 0})};
+  std::vector<Vertex> cycle{meet(lines[3], lines[0], 0), meet(lines[0], lines[1], 1),
+                            meet(lines[1], lines[2], 2), meet(lines[2], lines[3], 3)};
 
   const std::vector<internal::HalfPlane> gamut = internal::half_planes(canonical);
   for (const Point2& q : qs) {
     for (const internal::HalfPlane& h : gamut) {
       // m ⊙ q ∈ {a·x + b·y <= c}  ⟺  (a·q1)·m1 + (b·q2)·m2 <= c
-      cycle = internal::clip(cycle, {Rational(h.a * q.x), Rational(h.b * q.y), h.c});
+      lines.push_back(integer_line({Rational(h.a * q.x), Rational(h.b * q.y), h.c}));
+      cycle = clip(cycle, lines, lines.size() - 1);
       if (cycle.empty()) return {};
     }
   }
-  return canonical_convex_set(std::move(cycle));
+  std::vector<Point2> points;
+  points.reserve(cycle.size());
+  for (const Vertex& v : cycle) {
+    Rational x(v.x, v.w), y(v.y, v.w);
+    x.canonicalize();
+    y.canonicalize();
+    points.push_back({std::move(x), std::move(y)});
+  }
+  return canonical_convex_set(std::move(points));
 }
 
 }  // namespace gmcc

@@ -9,8 +9,8 @@ namespace gmcc {
 
 /// max_{x ∈ F} ∠((m, 1), (x, 1)) in degrees (map space).
 /// The angle to a fixed m is quasi-convex on the plane, so the maximum is at a vertex of F
-/// (MATH §1e). The maximising vertex is found exactly by comparing cos² in ℚ; its angle is then
-/// evaluated as map_angular_error_deg. \pre F not empty. Complexity O(n).
+/// (MATH §1e): the largest vertex angle, each evaluated from the exact values as
+/// map_angular_error_deg does (certified extended precision, else MPFR). \pre F not empty. Complexity O(n).
 double worst_case_map_deg(const ConvexSet2& F, const Point2& m);
 
 }  // namespace gmcc

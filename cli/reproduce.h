@@ -1,0 +1,30 @@
+#pragma once
+// `gmcc reproduce`: the experiments of Finlayson & Hordley (1999) §4 from spectral data
+// (docs/reproduction.md): `synthetic` (Fig. 3), `camera` (a Fig. 5 analogue), `expansion`
+// (the canonical-gamut expansion sensitivity table).
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace gmcc::cli {
+
+struct ReproduceOptions {
+  std::string data_dir;  // default: the shipped data/ (GMCC_DATA_DIR)
+  std::string scenes = "500", seed = "1", max_surfaces = "11", threads = "0";
+  std::string canonical;                 // default per experiment
+  std::vector<std::string> lights;       // default per experiment
+  std::string expand_factor = "0", expand_policy = "none";
+  std::string noise = "0";
+  std::string mean3d_method = "analytic";
+  std::string csv_path, plot_dir;
+};
+
+/// Register `reproduce` with its subcommands `synthetic`, `camera`, `expansion`.
+CLI::App* add_reproduce_command(CLI::App& app, ReproduceOptions& options);
+
+/// Run whichever subcommand was given. Returns the exit status.
+int run_reproduce(const CLI::App& reproduce, const ReproduceOptions& options);
+
+}  // namespace gmcc::cli

@@ -1,0 +1,70 @@
+#include "internal/angle.h"
+
+#include "internal/ld_interval.h"
+
+#include <mpfr.h>
+
+#include <cmath>
+
+namespace gmcc::internal {
+namespace {
+
+// 180/π as an enclosure (π to 21 digits brackets the x87 value of the constant).
+const LDInterval degrees_per_radian = LDInterval{180.0L, 180.0L} /
+    LDInterval{3.14159265358979323846L - 0x1p-62L, 3.14159265358979323846L + 0x1p-62L};
+
+double angle_mpfr(const std::array<Rational, 3>& u_exact, const std::array<Rational, 3>& v_exact) {
+  constexpr mpfr_prec_t bits = 160;
+  mpfr_t u[3], v[3], t, s, cross2, dot, a;
+  for (int k = 0; k < 3; ++k) {
+    mpfr_init2(u[k], bits);
+    mpfr_init2(v[k], bits);
+    mpfr_set_q(u[k], u_exact[k].get_mpq_t(), MPFR_RNDN);
+    mpfr_set_q(v[k], v_exact[k].get_mpq_t(), MPFR_RNDN);
+  }
+  mpfr_inits2(bits, t, s, cross2, dot, a, static_cast<mpfr_ptr>(nullptr));
+  mpfr_set_zero(cross2, 1);
+  for (int k = 0; k < 3; ++k) {  // (u×v)_k = u_i v_j − u_j v_i
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    mpfr_mul(t, u[i], v[j], MPFR_RNDN);
+    mpfr_mul(s, u[j], v[i], MPFR_RNDN);
+    mpfr_sub(t, t, s, MPFR_RNDN);
+    mpfr_fma(cross2, t, t, cross2, MPFR_RNDN);
+  }
+  mpfr_sqrt(cross2, cross2, MPFR_RNDN);
+  mpfr_mul(dot, u[0], v[0], MPFR_RNDN);
+  mpfr_fma(dot, u[1], v[1], dot, MPFR_RNDN);
+  mpfr_fma(dot, u[2], v[2], dot, MPFR_RNDN);
+  mpfr_atan2(a, cross2, dot, MPFR_RNDN);
+  mpfr_const_pi(t, MPFR_RNDN);
+  mpfr_mul_ui(a, a, 180, MPFR_RNDN);
+  mpfr_div(a, a, t, MPFR_RNDN);
+  const double deg = mpfr_get_d(a, MPFR_RNDN);
+  mpfr_clears(t, s, cross2, dot, a, static_cast<mpfr_ptr>(nullptr));
+  for (int k = 0; k < 3; ++k) mpfr_clear(u[k]), mpfr_clear(v[k]);
+  return deg;
+}
+
+}  // namespace
+
+double angle_deg(const std::array<Rational, 3>& u_exact, const std::array<Rational, 3>& v_exact) {
+  if (fast_path_available) {
+    LDInterval u[3], v[3];
+    for (int k = 0; k < 3; ++k) u[k] = enclose_ld(u_exact[k]), v[k] = enclose_ld(v_exact[k]);
+    LDInterval cross2{0, 0};
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      const LDInterval c = u[i] * v[j] - u[j] * v[i];
+      cross2 = cross2 + c * c;
+    }
+    const LDInterval dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+    if (cross2.lo > 0) {  // a positive angle, bounded away from 0
+      const LDInterval deg = atan2(sqrt(cross2), dot) * degrees_per_radian;
+      if (deg.hi - deg.lo <= std::ldexp(deg.lo, -56))
+        return static_cast<double>(deg.lo + (deg.hi - deg.lo) / 2);
+    }
+  }
+  return angle_mpfr(u_exact, v_exact);
+}
+
+}  // namespace gmcc::internal

@@ -1,0 +1,18 @@
+#pragma once
+// Angles between exact 3-vectors: the one implementation behind every angular error and worst
+// case. Internal to gmcc::selection.
+
+#include <gmcc/geometry/rational.h>
+
+#include <array>
+
+namespace gmcc::internal {
+
+/// ∠(u, v) in degrees as atan2(|u×v|, u·v) (well conditioned for small angles, unlike acos),
+/// rounded to double. First in x87 extended-precision intervals from enclosures of the exact
+/// inputs (cheap even when they have hundreds of digits), kept when the enclosure pins the angle
+/// to 2^-56 relative; otherwise (tiny angles, where the cross product cancels) in MPFR at
+/// 160 bits from the exact inputs rounded once. Either way the double is within about one ulp.
+double angle_deg(const std::array<Rational, 3>& u, const std::array<Rational, 3>& v);
+
+}  // namespace gmcc::internal

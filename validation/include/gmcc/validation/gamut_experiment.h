@@ -1,0 +1,85 @@
+#pragma once
+/// \file gamut_experiment.h
+/// The experiment of Finlayson & Hordley (1999) §4: scenes of n distinct surfaces under a test
+/// light, the feasible set against a canonical gamut, the three selection rules, and their
+/// angular errors against the true map, averaged over many seeded scenes for n = 1…11.
+
+#include <gmcc/geometry/canonical_gamut.h>
+#include <gmcc/geometry/colour.h>
+#include <gmcc/geometry/convex_set.h>
+#include <gmcc/selection/mean_3d.h>
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace gmcc {
+
+/// A test light: every surface's colour under it, and the true perspective map that takes its
+/// colours to the canonical ones (exact where the diagonal model holds exactly).
+struct TestLight {
+  std::string name;
+  std::vector<Colour> surfaces;  ///< surfaces[i]: surface i under this light
+  Point2 true_map;
+};
+
+/// What an experiment is made of (built by synthetic_setup or camera_setup).
+struct ExperimentSetup {
+  std::string name;
+  std::vector<Colour> canonical_surfaces;  ///< the canonical gamut's colours
+  Colour canonical_light;                  ///< the canonical light as the sensors see it
+  std::vector<TestLight> lights;
+};
+
+/// How to run it.
+struct ExperimentConfig {
+  int min_surfaces = 1, max_surfaces = 11;
+  std::uint64_t scenes = 500;  ///< per light and surface count
+  std::uint64_t seed = 1;
+  Expansion expansion;         ///< of the canonical gamut (default none)
+  double noise = 0;            ///< relative Gaussian sensor noise σ on image colours (0: none)
+  Mean3dOptions mean3d;        ///< the 3-D mean's route (default: certified closed form)
+  unsigned threads = 0;        ///< worker threads (0: the hardware's); results do not depend on it
+  /// Called now and then from the calling thread with (scenes done, scenes in all).
+  std::function<void(std::uint64_t, std::uint64_t)> progress;
+};
+
+/// The rules in report order: max_area, mean_2d, mean_3d.
+inline const std::array<const char*, 3> experiment_rules{"max_area", "mean_2d", "mean_3d"};
+
+/// Statistics of one rule over the scenes of a cell that had a feasible map.
+struct RuleStats {
+  double mean_error_deg = 0, median_error_deg = 0;            ///< map space (the paper's)
+  double mean_worst_case_deg = 0, median_worst_case_deg = 0;  ///< map space, over F
+  double mean_illuminant_error_deg = 0, median_illuminant_error_deg = 0;
+  double mean_reproduction_error_deg = 0;  ///< Finlayson & Zakizadeh (2014)
+  double max_error_deg = 0;
+  /// Scenes in which the true map lay in F (always, for an exact noise-free experiment).
+  std::uint64_t truth_in_feasible_set = 0;
+};
+
+/// One (light, surface count) cell.
+struct ExperimentCell {
+  std::string light;
+  int surfaces = 0;
+  std::uint64_t scenes = 0;        ///< drawn
+  std::uint64_t empty = 0;         ///< of those, with an empty feasible set (no map)
+  std::array<RuleStats, 3> rules;  ///< in experiment_rules order, over the non-empty scenes
+};
+
+struct ExperimentResult {
+  std::string name;
+  ExperimentConfig config;
+  ConvexSet2 canonical_gamut;
+  std::vector<ExperimentCell> cells;  ///< lights in setup order, then surfaces ascending
+};
+
+/// Run the experiment. Scene (light ℓ, count n, index s) draws n distinct surfaces uniformly with
+/// its own generator, std::mt19937_64 seeded by std::seed_seq{seed, ℓ, n, s} (both fully specified
+/// by the C++ standard), so the result is identical for any thread count and on any platform.
+/// \throws std::invalid_argument if a cell asks for more surfaces than there are.
+ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const ExperimentConfig& config);
+
+}  // namespace gmcc

@@ -1,0 +1,45 @@
+#pragma once
+/// \file spectral_table.h
+/// Spectral data files: a wavelength column and one column per sample (reflectances, SPDs,
+/// sensor sensitivities), read exactly (data/SOURCES.md gives provenance and units).
+
+#include <gmcc/geometry/rational.h>
+
+#include <string>
+#include <vector>
+
+namespace gmcc {
+
+/// One sampled spectrum: values at strictly increasing wavelengths (nm), exact.
+struct Spectrum {
+  std::string name;
+  std::vector<Rational> wavelengths;
+  std::vector<Rational> values;
+
+  /// The value at a sampled wavelength. \throws std::out_of_range if λ is not sampled.
+  const Rational& at(const Rational& wavelength) const;
+};
+
+/// A spectral CSV: header `wavelength_nm,NAME,…`, one row per wavelength (strictly increasing).
+struct SpectralTable {
+  std::string file;
+  std::vector<Rational> wavelengths;
+  std::vector<Spectrum> spectra;  ///< in column order
+
+  /// The spectrum named `name`. \throws InputError naming the file if there is none.
+  const Spectrum& spectrum(const std::string& name) const;
+};
+
+/// Parse spectral CSV text exactly (decimals as rationals). `file` names it in messages.
+/// \throws InputError (file:line) on a bad header, ragged rows, malformed numbers, or
+///         wavelengths that do not strictly increase.
+SpectralTable parse_spectral_csv(const std::string& text, const std::string& file);
+
+/// Read and parse a spectral CSV file. \throws InputError.
+SpectralTable read_spectral_csv(const std::string& path);
+
+/// The spectrum linearly interpolated onto `grid` (exact rational interpolation between the two
+/// neighbouring samples). \throws std::out_of_range if the grid leaves the sampled range.
+Spectrum resample(const Spectrum& s, const std::vector<Rational>& grid);
+
+}  // namespace gmcc

@@ -1,0 +1,187 @@
+#include <gmcc/validation/gamut_experiment.h>
+
+#include <gmcc/geometry/chromaticity.h>
+#include <gmcc/geometry/feasible_set.h>
+#include <gmcc/selection/angular_error.h>
+#include <gmcc/selection/select_maps.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <mutex>
+#include <thread>
+
+namespace gmcc {
+namespace {
+
+// Uniform integer in [0, n), unbiased (Lemire's multiply-and-reject), platform-independent.
+std::uint64_t below(std::mt19937_64& g, std::uint64_t n) {
+  unsigned __int128 m = static_cast<unsigned __int128>(g()) * n;
+  auto low = static_cast<std::uint64_t>(m);
+  if (low < n) {
+    const std::uint64_t threshold = (0 - n) % n;
+    while (low < threshold) {
+      m = static_cast<unsigned __int128>(g()) * n;
+      low = static_cast<std::uint64_t>(m);
+    }
+  }
+  return static_cast<std::uint64_t>(m >> 64);
+}
+
+double uniform01(std::mt19937_64& g) { return static_cast<double>(g() >> 11) * 0x1p-53; }
+
+// Standard normal by Box–Muller (one of the pair), from the scene's own generator.
+double normal(std::mt19937_64& g) {
+  const double u = 1 - uniform01(g), v = uniform01(g);  // u in (0, 1]
+  return std::sqrt(-2 * std::log(u)) * std::cos(2 * M_PI * v);
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  const std::size_t h = v.size() / 2;
+  std::nth_element(v.begin(), v.begin() + static_cast<long>(h), v.end());
+  const double upper = v[h];
+  if (v.size() % 2) return upper;
+  const double lower = *std::max_element(v.begin(), v.begin() + static_cast<long>(h));
+  return (lower + upper) / 2;
+}
+
+double mean(const std::vector<double>& v) {
+  double s = 0;
+  for (double x : v) s += x;  // in scene order: deterministic
+  return v.empty() ? 0 : s / static_cast<double>(v.size());
+}
+
+Point2 exact_map(const MapEstimate& e) {
+  return e.exact ? *e.exact : Point2{rational_from_double(e.map[0]), rational_from_double(e.map[1])};
+}
+
+ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& config,
+                        const ConvexSet2& gamut, std::size_t light_index, int n,
+                        std::atomic<std::uint64_t>& done) {
+  const TestLight& light = setup.lights[light_index];
+  ExperimentCell cell;
+  cell.light = light.name;
+  cell.surfaces = n;
+  std::array<std::vector<double>, 3> error, worst, illuminant, reproduction;
+  std::vector<std::size_t> pool(light.surfaces.size());
+  SelectionOptions selection;
+  selection.mean3d = config.mean3d;
+  for (std::uint64_t s = 0; s < config.scenes; ++s, ++done) {
+    std::seed_seq seq{static_cast<std::uint32_t>(config.seed), static_cast<std::uint32_t>(config.seed >> 32),
+                      static_cast<std::uint32_t>(light_index), static_cast<std::uint32_t>(n),
+                      static_cast<std::uint32_t>(s), static_cast<std::uint32_t>(s >> 32)};
+    std::mt19937_64 g(seq);
+    for (std::size_t i = 0; i < pool.size(); ++i) pool[i] = i;
+    std::vector<Point2> image;
+    for (int i = 0; i < n; ++i) {  // partial Fisher–Yates: n distinct surfaces
+      std::swap(pool[static_cast<std::size_t>(i)],
+                pool[static_cast<std::size_t>(i) + below(g, pool.size() - static_cast<std::size_t>(i))]);
+      Colour c = light.surfaces[pool[static_cast<std::size_t>(i)]];
+      if (config.noise > 0)
+        for (Rational* x : {&c.r, &c.g, &c.b})
+          *x *= rational_from_double(std::max(0.0, 1 + config.noise * normal(g)));
+      if (sgn(c.b) > 0) image.push_back(perspective_chromaticity(c));
+    }
+    ++cell.scenes;
+    const ConvexSet2 F = image.empty() ? ConvexSet2{} : feasible_set(gamut, image);
+    if (F.kind == ConvexKind::empty) {
+      ++cell.empty;
+      continue;
+    }
+    const bool truth_inside = contains(F, light.true_map);
+    const Selections sel = select_maps(F, selection);
+    const std::array<const std::optional<Selection>*, 3> rules{&sel.max_area, &sel.mean_2d, &sel.mean_3d};
+    for (int r = 0; r < 3; ++r) {
+      const Selection& x = **rules[r];
+      if (!x.estimate.valid) continue;
+      const Point2 m = exact_map(x.estimate);
+      error[r].push_back(map_angular_error_deg(m, light.true_map));
+      worst[r].push_back(*x.worst_case_deg);
+      if (sgn(m.x) > 0 && sgn(m.y) > 0) {
+        illuminant[r].push_back(illuminant_angular_error_deg(m, light.true_map, setup.canonical_light));
+        reproduction[r].push_back(reproduction_angular_error_deg(m, light.true_map));
+      }
+      cell.rules[r].truth_in_feasible_set += truth_inside;
+    }
+  }
+  for (int r = 0; r < 3; ++r) {
+    RuleStats& st = cell.rules[r];
+    st.mean_error_deg = mean(error[r]);
+    st.median_error_deg = median(error[r]);
+    st.max_error_deg = error[r].empty() ? 0 : *std::max_element(error[r].begin(), error[r].end());
+    st.mean_worst_case_deg = mean(worst[r]);
+    st.median_worst_case_deg = median(worst[r]);
+    st.mean_illuminant_error_deg = mean(illuminant[r]);
+    st.median_illuminant_error_deg = median(illuminant[r]);
+    st.mean_reproduction_error_deg = mean(reproduction[r]);
+  }
+  return cell;
+}
+
+}  // namespace
+
+ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const ExperimentConfig& config) {
+  if (config.min_surfaces < 1 || config.max_surfaces < config.min_surfaces)
+    throw std::invalid_argument("surface counts must satisfy 1 <= min <= max");
+  for (const TestLight& l : setup.lights)
+    if (static_cast<std::size_t>(config.max_surfaces) > l.surfaces.size())
+      throw std::invalid_argument("light " + l.name + " has only " +
+                                  std::to_string(l.surfaces.size()) + " surfaces");
+  ExperimentResult result;
+  result.name = setup.name;
+  result.config = config;
+  result.config.progress = nullptr;
+  result.canonical_gamut =
+      canonical_gamut(perspective_chromaticities(setup.canonical_surfaces, NonPositiveBluePolicy::drop).points,
+                      config.expansion);
+
+  struct Job {
+    std::size_t light;
+    int n;
+  };
+  std::vector<Job> jobs;
+  for (std::size_t l = 0; l < setup.lights.size(); ++l)
+    for (int n = config.min_surfaces; n <= config.max_surfaces; ++n) jobs.push_back({l, n});
+  result.cells.resize(jobs.size());
+
+  std::atomic<std::size_t> next{0};
+  std::atomic<std::uint64_t> done{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  std::atomic<bool> failed{false};
+  auto worker = [&] {
+    for (std::size_t j; (j = next++) < jobs.size();) {
+      try {
+        result.cells[j] = run_cell(setup, config, result.canonical_gamut, jobs[j].light, jobs[j].n, done);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+        failed = true;
+      }
+    }
+  };
+  const unsigned threads = config.threads ? config.threads : std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < std::min<std::size_t>(threads, jobs.size()); ++t) pool.emplace_back(worker);
+  const std::uint64_t total = config.scenes * jobs.size();
+  if (config.progress) {  // report from this thread while the others work, then join in
+    std::thread reporter_free_worker(worker);
+    while (done < total && !failed) {
+      config.progress(done, total);
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    reporter_free_worker.join();
+    config.progress(done, total);
+  } else {
+    worker();
+  }
+  for (std::thread& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+  return result;
+}
+
+}  // namespace gmcc
