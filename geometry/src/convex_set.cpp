@@ -52,12 +52,39 @@ ConvexSet2 canonical_convex_set(std::vector<Point2> cycle) {
   return out;
 }
 
+namespace {
+// The vertices over one common denominator d (the lcm of theirs): v_i = (x_i/d, y_i/d) with
+// integers, so sums of products need no gcd until the single final division.
+struct ScaledVertices {
+  std::vector<mpz_class> x, y;
+  mpz_class d = 1;
+};
+ScaledVertices scaled(const std::vector<Point2>& v) {
+  ScaledVertices s;
+  for (const Point2& p : v) {
+    mpz_lcm(s.d.get_mpz_t(), s.d.get_mpz_t(), p.x.get_den_mpz_t());
+    mpz_lcm(s.d.get_mpz_t(), s.d.get_mpz_t(), p.y.get_den_mpz_t());
+  }
+  for (const Point2& p : v) {
+    s.x.push_back(p.x.get_num() * (s.d / p.x.get_den()));
+    s.y.push_back(p.y.get_num() * (s.d / p.y.get_den()));
+  }
+  return s;
+}
+// Twice the signed area of fan triangle (0, i, i+1), times d².
+mpz_class fan_weight(const ScaledVertices& s, std::size_t i) {
+  return (s.x[i] - s.x[0]) * (s.y[i + 1] - s.y[0]) - (s.y[i] - s.y[0]) * (s.x[i + 1] - s.x[0]);
+}
+}  // namespace
+
 Rational area(const ConvexSet2& set) {
   if (set.kind != ConvexKind::polygon) return 0;
-  const auto& v = set.vertices;
-  Rational twice = 0;
-  for (std::size_t i = 1; i + 1 < v.size(); ++i) twice += orientation(v[0], v[i], v[i + 1]);
-  return Rational(twice / 2);
+  const ScaledVertices s = scaled(set.vertices);
+  mpz_class twice = 0;
+  for (std::size_t i = 1; i + 1 < s.x.size(); ++i) twice += fan_weight(s, i);
+  Rational a(twice, 2 * s.d * s.d);
+  a.canonicalize();
+  return a;
 }
 
 bool contains(const ConvexSet2& set, const Point2& p) {
@@ -67,10 +94,21 @@ bool contains(const ConvexSet2& set, const Point2& p) {
     case ConvexKind::point: return v[0] == p;
     case ConvexKind::segment:
       return sgn(orientation(v[0], v[1], p)) == 0 && !(p < v[0]) && !(v[1] < p);
-    case ConvexKind::polygon:
-      for (std::size_t i = 0; i < v.size(); ++i)
-        if (sgn(orientation(v[i], v[(i + 1) % v.size()], p)) < 0) return false;
+    case ConvexKind::polygon: {
+      // Orientation tests with p scaled by the same denominator as the vertices: integers only.
+      const ScaledVertices s = scaled(v);
+      mpz_class pd;
+      mpz_lcm(pd.get_mpz_t(), p.x.get_den_mpz_t(), p.y.get_den_mpz_t());
+      const mpz_class px = p.x.get_num() * (pd / p.x.get_den()), py = p.y.get_num() * (pd / p.y.get_den());
+      // p = (px/pd, py/pd): orientation(v_i, v_j, p)·d²·pd = (xj−xi)(py·d − yi·pd) − (yj−yi)(px·d − xi·pd)
+      const mpz_class pxd = px * s.d, pyd = py * s.d;
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        const std::size_t j = (i + 1) % v.size();
+        if (sgn((s.x[j] - s.x[i]) * (pyd - s.y[i] * pd) - (s.y[j] - s.y[i]) * (pxd - s.x[i] * pd)) < 0)
+          return false;
+      }
       return true;
+    }
   }
   return false;
 }
@@ -88,15 +126,21 @@ Point2 centroid(const ConvexSet2& set) {
       return {Rational((v[0].x + v[1].x) / 2), Rational((v[0].y + v[1].y) / 2)};
     case ConvexKind::polygon: break;
   }
-  // Σ w_i (a + b + c)/3 / Σ w_i with w_i twice the signed area of fan triangle (v0, vi, vi+1).
-  Rational w_sum = 0, x_sum = 0, y_sum = 0;
+  // Σ w_i (a + b + c)/3 / Σ w_i with w_i twice the signed area of fan triangle (v0, vi, vi+1),
+  // in integers over the common denominator, divided once at the end.
+  const ScaledVertices s = scaled(v);
+  mpz_class w_sum = 0, x_sum = 0, y_sum = 0;
   for (std::size_t i = 1; i + 1 < v.size(); ++i) {
-    const Rational w = orientation(v[0], v[i], v[i + 1]);
+    const mpz_class w = fan_weight(s, i);
     w_sum += w;
-    x_sum += w * (v[0].x + v[i].x + v[i + 1].x);
-    y_sum += w * (v[0].y + v[i].y + v[i + 1].y);
+    x_sum += w * (s.x[0] + s.x[i] + s.x[i + 1]);
+    y_sum += w * (s.y[0] + s.y[i] + s.y[i + 1]);
   }
-  return {Rational(x_sum / (3 * w_sum)), Rational(y_sum / (3 * w_sum))};
+  const mpz_class den = 3 * s.d * w_sum;
+  Rational cx(x_sum, den), cy(y_sum, den);
+  cx.canonicalize();
+  cy.canonicalize();
+  return {cx, cy};
 }
 
 }  // namespace gmcc

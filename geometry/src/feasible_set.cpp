@@ -34,6 +34,21 @@ Line integer_line(const internal::HalfPlane& h) {
   return line;
 }
 
+// x = (X/W, Y/W) with W the lcm of the denominators: integers, no gcd per operation after.
+struct HomogeneousPoint {
+  mpz_class x, y, w;
+};
+HomogeneousPoint homogeneous(const Point2& p) {
+  HomogeneousPoint h;
+  mpz_lcm(h.w.get_mpz_t(), p.x.get_den_mpz_t(), p.y.get_den_mpz_t());
+  h.x = p.x.get_num() * (h.w / p.x.get_den());
+  h.y = p.y.get_num() * (h.w / p.y.get_den());
+  return h;
+}
+
+// m ⊙ q ∈ {a·x + b·y <= c}  ⟺  (a·X)·m1 + (b·Y)·m2 <= c·W for q = (X/W, Y/W), W > 0.
+Line scaled_line(const Line& g, const HomogeneousPoint& q) { return {g.a * q.x, g.b * q.y, g.c * q.w}; }
+
 // The sign of a·x + b·y − c at v (W > 0).
 int side(const Line& h, const Vertex& v) { return sgn(h.a * v.x + h.b * v.y - h.c * v.w); }
 
@@ -72,6 +87,37 @@ std::vector<Vertex> clip(const std::vector<Vertex>& cycle, const std::vector<Lin
   return out;
 }
 
+// Drop repeated and collinear vertices in homogeneous coordinates (integer determinants, no
+// gcd), so that only the final vertices are turned into reduced rationals.
+bool same_point(const Vertex& p, const Vertex& q) { return p.x * q.w == q.x * p.w && p.y * q.w == q.y * p.w; }
+int turn(const Vertex& p, const Vertex& q, const Vertex& r) {  // sign of det[p; q; r] (W's > 0)
+  return sgn(p.x * (q.y * r.w - r.y * q.w) - p.y * (q.x * r.w - r.x * q.w) + p.w * (q.x * r.y - r.x * q.y));
+}
+std::vector<Vertex> reduced(std::vector<Vertex> cycle) {
+  std::vector<Vertex> v;
+  for (Vertex& p : cycle)
+    if (v.empty() || !same_point(v.back(), p)) v.push_back(std::move(p));
+  while (v.size() > 1 && same_point(v.back(), v.front())) v.pop_back();
+  if (v.size() < 3) return v;
+  std::vector<Vertex> out;
+  const std::size_t n = v.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if (turn(v[(i + n - 1) % n], v[i], v[(i + 1) % n]) != 0) out.push_back(v[i]);
+  // All collinear: keep the cycle for canonical_convex_set to take the extreme points of.
+  return out.size() >= 3 ? out : v;
+}
+std::vector<Point2> to_points(const std::vector<Vertex>& cycle) {
+  std::vector<Point2> points;
+  points.reserve(cycle.size());
+  for (const Vertex& v : cycle) {
+    Rational x(v.x, v.w), y(v.y, v.w);
+    x.canonicalize();
+    y.canonicalize();
+    points.push_back({std::move(x), std::move(y)});
+  }
+  return points;
+}
+
 }  // namespace
 
 ConvexSet2 feasible_set(const ConvexSet2& canonical, const std::vector<Point2>& image) {
@@ -108,24 +154,17 @@ ConvexSet2 feasible_set(const ConvexSet2& canonical, const std::vector<Point2>& 
   std::vector<Vertex> cycle{meet(lines[3], lines[0], 0), meet(lines[0], lines[1], 1),
                             meet(lines[1], lines[2], 2), meet(lines[2], lines[3], 3)};
 
-  const std::vector<internal::HalfPlane> gamut = internal::half_planes(canonical);
+  std::vector<Line> gamut;
+  for (const internal::HalfPlane& h : internal::half_planes(canonical)) gamut.push_back(integer_line(h));
   for (const Point2& q : qs) {
-    for (const internal::HalfPlane& h : gamut) {
-      // m ⊙ q ∈ {a·x + b·y <= c}  ⟺  (a·q1)·m1 + (b·q2)·m2 <= c
-      lines.push_back(integer_line({Rational(h.a * q.x), Rational(h.b * q.y), h.c}));
+    const HomogeneousPoint hq = homogeneous(q);
+    for (const Line& g : gamut) {
+      lines.push_back(scaled_line(g, hq));
       cycle = clip(cycle, lines, lines.size() - 1);
       if (cycle.empty()) return {};
     }
   }
-  std::vector<Point2> points;
-  points.reserve(cycle.size());
-  for (const Vertex& v : cycle) {
-    Rational x(v.x, v.w), y(v.y, v.w);
-    x.canonicalize();
-    y.canonicalize();
-    points.push_back({std::move(x), std::move(y)});
-  }
-  return canonical_convex_set(std::move(points));
+  return canonical_convex_set(to_points(reduced(std::move(cycle))));
 }
 
 }  // namespace gmcc
