@@ -15,43 +15,6 @@ std::string to_string(ConvexKind kind) {
   return "empty";
 }
 
-ConvexSet2 canonical_convex_set(std::vector<Point2> cycle) {
-  // 1. Drop repeated consecutive vertices, cyclically.
-  std::vector<Point2> v;
-  v.reserve(cycle.size());
-  for (Point2& p : cycle)
-    if (v.empty() || v.back() != p) v.push_back(std::move(p));
-  while (v.size() > 1 && v.back() == v.front()) v.pop_back();
-
-  ConvexSet2 out;
-  if (v.empty()) return out;
-  if (v.size() == 1) {
-    out.kind = ConvexKind::point;
-    out.vertices = std::move(v);
-    return out;
-  }
-  // 2. All collinear: a segment between the extreme vertices.
-  const bool collinear = std::all_of(v.begin() + 2, v.end(), [&](const Point2& p) {
-    return sgn(orientation(v[0], v[1], p)) == 0;
-  });
-  if (v.size() == 2 || collinear) {
-    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-    out.kind = ConvexKind::segment;
-    out.vertices = {*lo, *hi};
-    return out;
-  }
-  // 3. A proper polygon: drop vertices where the boundary goes straight on.
-  const std::size_t n = v.size();
-  for (std::size_t i = 0; i < n; ++i)
-    if (sgn(orientation(v[(i + n - 1) % n], v[i], v[(i + 1) % n])) != 0)
-      out.vertices.push_back(v[i]);
-  // 4. Canonical start: the lexicographically smallest vertex.
-  std::rotate(out.vertices.begin(),
-              std::min_element(out.vertices.begin(), out.vertices.end()), out.vertices.end());
-  out.kind = ConvexKind::polygon;
-  return out;
-}
-
 namespace {
 // The vertices over one common denominator d (the lcm of theirs): v_i = (x_i/d, y_i/d) with
 // integers, so sums of products need no gcd until the single final division.
@@ -71,11 +34,51 @@ ScaledVertices scaled(const std::vector<Point2>& v) {
   }
   return s;
 }
+// Sign of orientation(v_i, v_j, v_k), in integers.
+int turn(const ScaledVertices& s, std::size_t i, std::size_t j, std::size_t k) {
+  return sgn((s.x[j] - s.x[i]) * (s.y[k] - s.y[i]) - (s.y[j] - s.y[i]) * (s.x[k] - s.x[i]));
+}
 // Twice the signed area of fan triangle (0, i, i+1), times d².
 mpz_class fan_weight(const ScaledVertices& s, std::size_t i) {
   return (s.x[i] - s.x[0]) * (s.y[i + 1] - s.y[0]) - (s.y[i] - s.y[0]) * (s.x[i + 1] - s.x[0]);
 }
 }  // namespace
+
+ConvexSet2 canonical_convex_set(std::vector<Point2> cycle) {
+  // 1. Drop repeated consecutive vertices, cyclically.
+  std::vector<Point2> v;
+  v.reserve(cycle.size());
+  for (Point2& p : cycle)
+    if (v.empty() || v.back() != p) v.push_back(std::move(p));
+  while (v.size() > 1 && v.back() == v.front()) v.pop_back();
+
+  ConvexSet2 out;
+  if (v.empty()) return out;
+  if (v.size() == 1) {
+    out.kind = ConvexKind::point;
+    out.vertices = std::move(v);
+    return out;
+  }
+  // 2. All collinear: a segment between the extreme vertices.
+  const ScaledVertices s = scaled(v);
+  bool collinear = true;
+  for (std::size_t k = 2; k < v.size() && collinear; ++k) collinear = turn(s, 0, 1, k) == 0;
+  if (v.size() == 2 || collinear) {
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    out.kind = ConvexKind::segment;
+    out.vertices = {*lo, *hi};
+    return out;
+  }
+  // 3. A proper polygon: drop vertices where the boundary goes straight on.
+  const std::size_t n = v.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if (turn(s, (i + n - 1) % n, i, (i + 1) % n) != 0) out.vertices.push_back(v[i]);
+  // 4. Canonical start: the lexicographically smallest vertex.
+  std::rotate(out.vertices.begin(),
+              std::min_element(out.vertices.begin(), out.vertices.end()), out.vertices.end());
+  out.kind = ConvexKind::polygon;
+  return out;
+}
 
 Rational area(const ConvexSet2& set) {
   if (set.kind != ConvexKind::polygon) return 0;
