@@ -127,6 +127,9 @@ ExperimentSetup synthetic(const ReproduceOptions& o) {
 
 ExperimentSetup camera(const ReproduceOptions& o) {
   return camera_setup(read_spectral_csv(data_file(o, "camera_sony_dxc930_sfu_4nm.csv")),
+                      read_spectral_csv(data_file(o, o.canonical_surfaces == "macbeth"
+                                                         ? "sfu_macbeth_24_4nm.csv"
+                                                         : "sfu_reflect_db_1995_4nm.csv")),
                       read_spectral_csv(data_file(o, "sfu_macbeth_24_4nm.csv")),
                       read_spectral_csv(data_file(o, "sfu_lab_11_illuminants_4nm.csv")),
                       o.canonical.empty() ? "solux-4700" : o.canonical,
@@ -184,10 +187,15 @@ CLI::App* add_reproduce_command(CLI::App& app, ReproduceOptions& o) {
   add_common_options(syn, o);
   add_output_options(syn, o);
   CLI::App* cam = cmd->add_subcommand(
-      "camera", "Fig. 5 analogue: SONY DXC-930, 24 Macbeth patches, SFU lab lights (canonical "
-                "solux-4700; tests syl-50MR16Q, solux-4700+3202)");
+      "camera", "Fig. 5 analogue: SONY DXC-930; canonical gamut of SFU's 1995 reflectances under "
+                "solux-4700; scenes of the 24 Macbeth patches under syl-50MR16Q and solux-4700+3202");
   add_common_options(cam, o);
   add_output_options(cam, o);
+  cam->add_option("--canonical-surfaces", o.canonical_surfaces,
+                  "the canonical gamut's reflectances: sfu1995 (all 1995 SFU surfaces, as Barnard "
+                  "et al. 2002) or macbeth (the 24 patches the scenes are drawn from)")
+      ->check(CLI::IsMember({"sfu1995", "macbeth"}))
+      ->capture_default_str();
   cam->add_option("--noise", o.noise, "relative Gaussian sensor noise on image colours (e.g. 0.02)")
       ->capture_default_str();
   CLI::App* exp = cmd->add_subcommand(

@@ -17,6 +17,7 @@ struct ReproduceOptions {
   std::vector<std::string> lights;       // default per experiment
   std::string expand_factor = "0", expand_policy = "none";
   std::string noise = "0";
+  std::string canonical_surfaces = "sfu1995";  // camera: sfu1995 | macbeth
   std::string mean3d_method = "analytic";
   std::string csv_path, plot_dir;
 };

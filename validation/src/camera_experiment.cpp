@@ -3,8 +3,9 @@
 
 namespace gmcc {
 
-ExperimentSetup camera_setup(const SpectralTable& sensor_table, const SpectralTable& reflectances,
-                             const SpectralTable& lights, const std::string& canonical_light,
+ExperimentSetup camera_setup(const SpectralTable& sensor_table, const SpectralTable& canonical_reflectances,
+                             const SpectralTable& scene_reflectances, const SpectralTable& lights,
+                             const std::string& canonical_light,
                              const std::vector<std::string>& test_lights) {
   const std::array<const Spectrum*, 3> sensors{&sensor_table.spectrum("R"), &sensor_table.spectrum("G"),
                                                &sensor_table.spectrum("B")};
@@ -12,12 +13,13 @@ ExperimentSetup camera_setup(const SpectralTable& sensor_table, const SpectralTa
   ExperimentSetup setup;
   setup.name = "camera";
   setup.canonical_light = render_white(canonical, sensors);
-  for (const Spectrum& r : reflectances.spectra) setup.canonical_surfaces.push_back(render(r, canonical, sensors));
+  for (const Spectrum& r : canonical_reflectances.spectra)
+    setup.canonical_surfaces.push_back(render(r, canonical, sensors));
   for (const std::string& name : test_lights) {
     const Spectrum& light = lights.spectrum(name);
     TestLight t;
     t.name = name;
-    for (const Spectrum& r : reflectances.spectra) t.surfaces.push_back(render(r, light, sensors));
+    for (const Spectrum& r : scene_reflectances.spectra) t.surfaces.push_back(render(r, light, sensors));
     const Colour white = render_white(light, sensors);
     const Colour& c = setup.canonical_light;
     const Rational d0 = c.r / white.r, d1 = c.g / white.g, d2 = c.b / white.b;

@@ -11,14 +11,16 @@
 
 namespace gmcc {
 
-/// The setup: every reflectance rendered (exactly, render()) under the canonical light and
-/// under each test light through the camera's sensors; the true map is the diagonal map between
+/// The setup: the canonical gamut from `canonical_reflectances` under the canonical light, and
+/// scenes drawn from `scene_reflectances` under each test light, all rendered exactly (render())
+/// through the camera's sensors; the true map is the diagonal map between
 /// the lights' white points, d_k = white_canonical,k / white_test,k → (d1/d3, d2/d3). With
 /// broad-band sensors the diagonal model is only approximate, so scenes may have an empty
 /// feasible set or one that misses the true map; the experiment counts both.
 /// \param sensors a table with columns R, G, B; reflectances and lights on the same grid.
-ExperimentSetup camera_setup(const SpectralTable& sensors, const SpectralTable& reflectances,
-                             const SpectralTable& lights, const std::string& canonical_light,
+ExperimentSetup camera_setup(const SpectralTable& sensors, const SpectralTable& canonical_reflectances,
+                             const SpectralTable& scene_reflectances, const SpectralTable& lights,
+                             const std::string& canonical_light,
                              const std::vector<std::string>& test_lights);
 
 }  // namespace gmcc
