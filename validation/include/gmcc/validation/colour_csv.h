@@ -3,26 +3,13 @@
 /// Reading colour files: one linear RGB per line, numbers read exactly (SPEC §5).
 
 #include <gmcc/geometry/colour.h>
+#include <gmcc/validation/input_error.h>
 
 #include <cstddef>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace gmcc {
-
-/// Bad input in a file: a message a person can act on, with the file and (when the problem is
-/// on one line) the 1-based line number. what() reads `FILE:LINE: problem`.
-class InputError : public std::runtime_error {
- public:
-  InputError(std::string file, std::size_t line, const std::string& problem);
-  const std::string& file() const { return file_; }
-  std::size_t line() const { return line_; }  ///< 0 when the problem is the whole file
-
- private:
-  std::string file_;
-  std::size_t line_;
-};
 
 /// Largest colour file accepted, in bytes (a clear error instead of exhausting memory).
 inline constexpr std::size_t max_colour_file_bytes = std::size_t(256) << 20;
