@@ -1,0 +1,27 @@
+# gmcc reproduce camera: laid out like Finlayson & Hordley (1999) Fig. 3
+if (!exists('png_file')) png_file = 'camera.png'
+if (!exists('svg_file')) svg_file = 'camera.svg'
+set datafile commentschars '#'
+set xlabel 'number of surfaces'
+set xrange [0.5:11.5]
+set yrange [0:*]
+set grid lc rgb '#dddddd'
+set key top right
+set style line 1 lc rgb '#d62728' lw 2 pt 7
+set style line 2 lc rgb '#1f77b4' lw 2 pt 5
+set style line 3 lc rgb '#2ca02c' lw 2 pt 9
+do for [term = 1:2] {
+  if (term == 1) { set terminal pngcairo size 1000,520 font ',9'; set output png_file }
+  if (term == 2) { set terminal svg size 1000,520 font 'sans,9'; set output svg_file }
+  set multiplot layout 2,2
+  set ylabel 'syl-50MR16Q: mean error (deg)'
+  plot 'camera.dat' index 0 using 1:2 with linespoints ls 1 title 'max-area', '' index 0 using 1:3 with linespoints ls 2 title '2-D mean', '' index 0 using 1:4 with linespoints ls 3 title '3-D mean'
+  set ylabel 'syl-50MR16Q: mean worst case (deg)'
+  plot 'camera.dat' index 0 using 1:5 with linespoints ls 1 title 'max-area', '' index 0 using 1:6 with linespoints ls 2 title '2-D mean', '' index 0 using 1:7 with linespoints ls 3 title '3-D mean'
+  set ylabel 'solux-4700+3202: mean error (deg)'
+  plot 'camera.dat' index 1 using 1:2 with linespoints ls 1 title 'max-area', '' index 1 using 1:3 with linespoints ls 2 title '2-D mean', '' index 1 using 1:4 with linespoints ls 3 title '3-D mean'
+  set ylabel 'solux-4700+3202: mean worst case (deg)'
+  plot 'camera.dat' index 1 using 1:5 with linespoints ls 1 title 'max-area', '' index 1 using 1:6 with linespoints ls 2 title '2-D mean', '' index 1 using 1:7 with linespoints ls 3 title '3-D mean'
+  unset multiplot
+  set output
+}
