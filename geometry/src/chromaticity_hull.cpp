@@ -1,0 +1,150 @@
+#include <gmcc/geometry/chromaticity_hull.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace gmcc {
+namespace {
+
+using Colour3 = std::array<double, 3>;
+
+// u = 2^-53. Error bounds (Higham; products and sums of non-negative magnitudes): a computed
+// a·b − c·d is within 3u·(|ab| + |cd|) of the exact value, and the 3×3 cofactor expansion below
+// within 8u·(its magnitude sum); the factors used here (4u, 16u) leave room, and a decision is
+// taken in double only when |value| exceeds the bound.
+constexpr double u = 0x1p-53;
+
+Rational exact(double x) { return rational_from_double(x); }
+
+// sign(r1·b2 − r2·b1): the order of x = r/b.
+int compare_x(const Colour3& p, const Colour3& q) {
+  const double a = p[0] * q[2], b = q[0] * p[2];
+  const double d = a - b, bound = 4 * u * (std::fabs(a) + std::fabs(b));
+  if (d > bound) return 1;
+  if (d < -bound) return -1;
+  return sgn(Rational(exact(p[0]) * exact(q[2]) - exact(q[0]) * exact(p[2])));
+}
+int compare_y(const Colour3& p, const Colour3& q) {
+  const double a = p[1] * q[2], b = q[1] * p[2];
+  const double d = a - b, bound = 4 * u * (std::fabs(a) + std::fabs(b));
+  if (d > bound) return 1;
+  if (d < -bound) return -1;
+  return sgn(Rational(exact(p[1]) * exact(q[2]) - exact(q[1]) * exact(p[2])));
+}
+bool less_xy(const Colour3& p, const Colour3& q) {
+  const int c = compare_x(p, q);
+  return c != 0 ? c < 0 : compare_y(p, q) < 0;
+}
+
+// Orientation of the chromaticities of p, q, s: sign of det[p; q; s] (all b > 0).
+int orientation3(const Colour3& p, const Colour3& q, const Colour3& s) {
+  const double m0 = q[1] * s[2] - s[1] * q[2], m1 = q[0] * s[2] - s[0] * q[2],
+               m2 = q[0] * s[1] - s[0] * q[1];
+  const double det = p[0] * m0 - p[1] * m1 + p[2] * m2;
+  const double mag = std::fabs(p[0]) * (std::fabs(q[1] * s[2]) + std::fabs(s[1] * q[2])) +
+                     std::fabs(p[1]) * (std::fabs(q[0] * s[2]) + std::fabs(s[0] * q[2])) +
+                     std::fabs(p[2]) * (std::fabs(q[0] * s[1]) + std::fabs(s[0] * q[1]));
+  const double bound = 16 * u * mag;
+  if (det > bound) return 1;
+  if (det < -bound) return -1;
+  const Rational P[3] = {exact(p[0]), exact(p[1]), exact(p[2])},
+                 Q[3] = {exact(q[0]), exact(q[1]), exact(q[2])},
+                 S[3] = {exact(s[0]), exact(s[1]), exact(s[2])};
+  return sgn(Rational(P[0] * (Q[1] * S[2] - S[1] * Q[2]) - P[1] * (Q[0] * S[2] - S[0] * Q[2]) +
+                      P[2] * (Q[0] * S[1] - S[0] * Q[1])));
+}
+
+}  // namespace
+
+ChromaticityHull chromaticity_hull(const std::vector<std::array<double, 3>>& colours) {
+  ChromaticityHull out;
+  std::vector<Colour3> pts;
+  pts.reserve(colours.size());
+  for (const Colour3& c : colours) {
+    for (double x : c)
+      if (!std::isfinite(x) || x < 0)
+        throw std::invalid_argument("chromaticity_hull: channels must be finite and >= 0");
+    if (c[2] > 0)
+      pts.push_back(c);
+    else
+      ++out.dropped;
+  }
+  if (pts.empty()) return out;
+
+  // Akl–Toussaint: any polygon of input points lies inside the hull, so a point strictly inside
+  // it is no vertex. Its corners are the input points extreme (approximately) in the eight
+  // directions −x, −x−y, −y, x−y, x, x+y, y, y−x, in counter-clockwise order (approximation only
+  // chooses them: they are input points either way, and coinciding corners merely weaken the
+  // filter).
+  constexpr int sides = 8;
+  static const double dir[sides][2] = {{-1, 0}, {-1, -1}, {0, -1}, {1, -1}, {1, 0}, {1, 1}, {0, 1}, {-1, 1}};
+  std::size_t corner[sides] = {};
+  double best[sides];
+  for (int k = 0; k < sides; ++k) best[k] = -INFINITY;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const double x = pts[i][0] / pts[i][2], y = pts[i][1] / pts[i][2];
+    for (int k = 0; k < sides; ++k) {
+      const double v = dir[k][0] * x + dir[k][1] * y;
+      if (v > best[k]) best[k] = v, corner[k] = i;
+    }
+  }
+  // Edge k of the octagon, from its exact corners: A·x + B·y + C > 0 strictly inside.
+  // Its coefficients rounded to double, and x, y computed in double, the test value is within
+  // 8u·(|A x| + |B y| + |C|) of the exact one (each factor off by at most 2u relative, sums
+  // by 3u): a point is discarded only if every edge's value exceeds 16u of that magnitude.
+  struct Edge {
+    double a, b, c;
+  };
+  Edge edges[sides];
+  for (int k = 0; k < sides; ++k) {
+    const Colour3& p = pts[corner[k]];
+    const Colour3& q = pts[corner[(k + 1) % sides]];
+    const Rational px = exact(p[0]) / exact(p[2]), py = exact(p[1]) / exact(p[2]);
+    const Rational qx = exact(q[0]) / exact(q[2]), qy = exact(q[1]) / exact(q[2]);
+    // orientation(p, q, x) = (qx − px)(y − py) − (qy − py)(x − px) = A x + B y + C
+    const Rational A = py - qy, B = qx - px, C = (qy - py) * px - (qx - px) * py;
+    edges[k] = {to_double_nearest(A), to_double_nearest(B), to_double_nearest(C)};
+  }
+  std::vector<Colour3> survivors;
+  for (const Colour3& p : pts) {
+    const double x = p[0] / p[2], y = p[1] / p[2];
+    bool inside = true;
+    for (int k = 0; k < sides && inside; ++k) {
+      const Edge& e = edges[k];
+      const double ax = e.a * x, by = e.b * y;
+      const double value = ax + by + e.c;
+      inside = value > 16 * u * (std::fabs(ax) + std::fabs(by) + std::fabs(e.c));
+    }
+    if (!inside) survivors.push_back(p);
+  }
+
+  // Andrew's monotone chain on the survivors, with exact (filtered) predicates.
+  std::sort(survivors.begin(), survivors.end(), less_xy);
+  std::vector<Colour3> hull;
+  auto chain = [&](auto begin, auto end) {
+    const std::size_t base = hull.size();
+    for (auto it = begin; it != end; ++it) {
+      while (hull.size() >= base + 2 && orientation3(hull[hull.size() - 2], hull.back(), *it) <= 0)
+        hull.pop_back();
+      hull.push_back(*it);
+    }
+    hull.pop_back();  // the last point starts the other chain
+  };
+  chain(survivors.begin(), survivors.end());
+  chain(survivors.rbegin(), survivors.rend());
+
+  std::vector<Point2> cycle;
+  cycle.reserve(hull.size());
+  for (const Colour3& c : hull) {
+    const Rational b = exact(c[2]);
+    cycle.push_back({Rational(exact(c[0]) / b), Rational(exact(c[1]) / b)});
+  }
+  if (cycle.empty()) cycle.push_back({Rational(exact(pts[0][0]) / exact(pts[0][2])),
+                                      Rational(exact(pts[0][1]) / exact(pts[0][2]))});
+  out.hull = canonical_convex_set(std::move(cycle));
+  return out;
+}
+
+}  // namespace gmcc

@@ -1,0 +1,60 @@
+#include "../test_support.h"
+
+#include <gmcc/geometry/chromaticity.h>
+#include <gmcc/geometry/chromaticity_hull.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+
+using namespace gmcc;
+using gmcc::test::Rng;
+
+namespace {
+// The reference: exact chromaticities (rationals), then CGAL's exact hull.
+ConvexSet2 reference(const std::vector<std::array<double, 3>>& colours) {
+  std::vector<Colour> exact;
+  for (const auto& c : colours)
+    exact.push_back({rational_from_double(c[0]), rational_from_double(c[1]), rational_from_double(c[2])});
+  return convex_hull(perspective_chromaticities(exact, NonPositiveBluePolicy::drop).points);
+}
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(chromaticity_hull_filtered)
+
+BOOST_AUTO_TEST_CASE(equals_the_exact_hull_on_random_colours) {
+  Rng rng(2026);
+  std::uniform_real_distribution<double> channel(0.0, 1.0);
+  for (int trial = 0; trial < 40; ++trial) {
+    std::vector<std::array<double, 3>> colours(10 + 50 * trial);
+    for (auto& c : colours) c = {channel(rng), channel(rng), channel(rng) + 0.01};
+    if (trial % 5 == 0) colours.push_back({0.5, 0.5, 0.0});  // no chromaticity: dropped
+    const ChromaticityHull h = chromaticity_hull(colours);
+    BOOST_TEST(h.hull == reference(colours));
+    BOOST_TEST(h.dropped == (trial % 5 == 0 ? 1u : 0u));
+  }
+}
+
+// Nearly collinear and nearly coincident chromaticities, one ulp apart: the double filter
+// cannot decide these and the exact fallback must.
+BOOST_AUTO_TEST_CASE(ulp_level_degeneracies_are_decided_exactly) {
+  std::vector<std::array<double, 3>> colours;
+  for (int k = 0; k < 200; ++k) {
+    const double t = 1 + k * 0x1p-20;
+    colours.push_back({t, 2 * t, 1.0});                                   // on the line y = 2x
+    colours.push_back({std::nextafter(t, 2.0), 2 * t, 1.0});              // one ulp off it
+    colours.push_back({3 * t, 6 * t, 3.0});                               // the same point again
+  }
+  BOOST_TEST(chromaticity_hull(colours).hull == reference(colours));
+  // All on one line: a segment; all one chromaticity: a point.
+  std::vector<std::array<double, 3>> line{{1, 2, 1}, {2, 4, 2}, {3, 6, 1}, {0.5, 1, 0.25}};
+  BOOST_TEST(chromaticity_hull(line).hull == reference(line));
+  BOOST_TEST(chromaticity_hull(line).hull.kind == ConvexKind::segment);
+  std::vector<std::array<double, 3>> same{{1, 2, 1}, {2, 4, 2}, {0.25, 0.5, 0.25}};
+  BOOST_TEST(chromaticity_hull(same).hull.kind == ConvexKind::point);
+  BOOST_TEST(chromaticity_hull({}).hull.kind == ConvexKind::empty);
+  BOOST_CHECK_THROW(chromaticity_hull({{1, -1, 1}}), std::invalid_argument);
+  BOOST_CHECK_THROW(chromaticity_hull({{1, NAN, 1}}), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
