@@ -26,6 +26,8 @@ struct SelectOptions {
   std::string seed = "1";
   std::string nonpositive_blue = "drop";
   std::string canonical_illuminant = "1,1,1";
+  std::string illuminants_path;      // plausible lights: Finlayson's illumination constraint
+  std::string on_empty = "none";     // none | grow-canonical | min-violation
 };
 
 /// Register the subcommand and its options on `app`; returns the subcommand.
