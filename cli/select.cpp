@@ -2,6 +2,7 @@
 
 #include "integer_option.h"
 #include "json_output.h"
+#include "select_3d.h"
 
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/illumination_constraint.h>
@@ -109,10 +110,19 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
                   "Chebyshev violation, exact LP)")
       ->check(CLI::IsMember({"none", "grow-canonical", "min-violation"}))
       ->capture_default_str();
+  cmd->add_option("--space", o.space,
+                  "2d: perspective maps (d1/d3, d2/d3), the paper's rules; 3d: Forsyth's CRULE, "
+                  "diagonal maps (d1, d2, d3) as an exact polytope, max-volume and centroid")
+      ->check(CLI::IsMember({"2d", "3d"}))
+      ->capture_default_str();
+  cmd->add_option("--black", o.black, "3d: include or exclude black (0,0,0) in the canonical gamut")
+      ->check(CLI::IsMember({"include", "exclude"}))
+      ->capture_default_str();
   return cmd;
 }
 
 int run_select(const SelectOptions& o) {
+  if (o.space == "3d") return run_select_3d(o);
   SelectReport r;
   const NonPositiveBluePolicy policy =
       o.nonpositive_blue == "reject" ? NonPositiveBluePolicy::reject : NonPositiveBluePolicy::drop;

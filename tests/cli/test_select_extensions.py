@@ -126,6 +126,50 @@ def main():
                                  "grow-canonical")
             expect(rc == 2 and out == "" and "--on-empty" in err, (rc, out, err))
 
+        cube = r.file("".join(f"{1 + (i & 1)},{1 + (i >> 1 & 1)},{1 + (i >> 2 & 1)}\n"
+                              for i in range(8)))
+
+        def crule_3d_cube():
+            # Without black F3 is the cube [1,2]^3: volume 1, max-volume (2,2,2), centroid (3/2)^3.
+            d = r.json("--space", "3d", "--black", "exclude", "--canonical", cube, "--image", one)
+            f = d["feasible_set"]
+            expect(d["space"] == "3d" and f["kind"] == "polytope" and f["volume"] == "1", f)
+            expect(len(f["vertices"]) == 8 and len(f["faces"]) == 6, f)
+            expect(all(len(face) == 4 for face in f["faces"]), f)
+            expect(d["selections"]["max_volume"]["map_exact"] == ["2", "2", "2"], d["selections"])
+            expect(d["selections"]["centroid"]["map_exact"] == ["3/2", "3/2", "3/2"], d["selections"])
+            # With black: conv(0, cube), volume 1 + 3 pyramids of 1/3 = 2, and 0 is a vertex.
+            d = r.json("--space", "3d", "--canonical", cube, "--image", one)
+            expect(d["feasible_set"]["volume"] == "2", d["feasible_set"])
+            expect(["0", "0", "0"] in d["feasible_set"]["vertices"], d["feasible_set"])
+            expect(d["canonical_gamut"]["black"] == "include", d)
+
+        def crule_3d_kinds_and_irrational():
+            pt = r.json("--space", "3d", "--black", "exclude", "--canonical", cube, "--image",
+                        r.file("1,1,1\n2,2,2\n"))
+            expect(pt["feasible_set"]["kind"] == "point", pt["feasible_set"])
+            empty = r.json("--space", "3d", "--black", "exclude", "--canonical", cube, "--image", wide)
+            expect(empty["feasible_set"]["kind"] == "empty" and empty["selections"] == {}, empty)
+            # The segment (1,4,1)-(4,1,2): max of (1+3t)(4-3t)(1+t) at t = sqrt(13/27).
+            d = r.json("--space", "3d", "--black", "exclude", "--canonical",
+                       r.file("1,4,1\n4,1,2\n"), "--image", one)
+            mv = d["selections"]["max_volume"]
+            t = (13 / 27) ** 0.5
+            expect(mv["method"] == "certified" and "map_exact" not in mv, mv)
+            expect(abs(mv["map"][0] - (1 + 3 * t)) < 1e-14, mv)
+            expect(mv["exact_form"]["quadratic"] == ["-27", "0", "13"], mv)
+            for (lo, hi), x in zip(mv["enclosure"], mv["map"]):
+                expect(lo <= x <= hi, mv)
+
+        def crule_3d_rejects_2d_options():
+            for extra in (["--expand", "0.1", "--expand-policy", "multiplicative"],
+                          ["--on-empty", "min-violation"], ["--illuminants", square]):
+                rc, out, err = r.run("--space", "3d", "--canonical", cube, "--image", one, *extra)
+                expect(rc == 2 and out == "" and "3d" in err, (extra, rc, out, err))
+            rc, out, err = r.run("--space", "3d", "--canonical", cube, "--image",
+                                 r.file("0,1,1\n0,2,1\n"))
+            expect(rc == 2 and out == "" and "unbounded" in err, (rc, out, err))
+
         for name, fn in list(locals().items()):
             if callable(fn) and name not in ("r",) and fn.__code__.co_argcount == 0:
                 r.check(name, fn)
