@@ -68,11 +68,52 @@ std::string fmt(double x) {
   return buf;
 }
 
+Json constraint_json(const ConstraintReport& c) {
+  Json j = convex_set_json(c.maps);
+  j["illuminants"] = c.illuminants;
+  j["unconstrained_feasible_set"] = convex_set_json(c.unconstrained);
+  return j;
+}
+
+Json exact_number(const Rational& x) { return to_string(x); }
+
+Json recovery_json(const RecoveryReport& rec) {
+  Json j;
+  j["policy"] = rec.policy;
+  j["applied"] = rec.applied;
+  if (!rec.reason.empty()) j["reason"] = rec.reason;
+  if (rec.grown) {
+    const GrownFeasibleSet& g = *rec.grown;
+    j["expansion_policy"] = "multiplicative";
+    j["precision"] = exact_number(rec.precision);
+    if (g.found) {
+      j["factor"] = exact_number(g.factor);
+      j["factor_approx"] = to_double_nearest(g.factor);
+      if (g.empty_below) j["empty_below"] = exact_number(*g.empty_below);
+      j["canonical_gamut"] = convex_set_json(g.canonical);
+    } else {
+      j["note"] = "still empty at the largest factor tried, " + to_string(*g.empty_below);
+    }
+  }
+  if (rec.min_violation) {
+    const MinViolation& v = *rec.min_violation;
+    j["measure"] = "chebyshev: max over image colours q of the L-infinity distance from m*q to "
+                   "the canonical gamut, in chromaticity units";
+    j["violation"] = exact_number(v.violation);
+    j["violation_approx"] = to_double_nearest(v.violation);
+    j["canonical_gamut"] = convex_set_json(v.canonical);
+  }
+  return j;
+}
+
 }  // namespace
 
 std::string select_json(const SelectReport& r) {
   Json j;
   j["feasible_set"] = convex_set_json(r.feasible);
+  if (!r.empty_reason.empty()) j["feasible_set"]["reason"] = r.empty_reason;
+  if (r.constraint) j["constraint"] = constraint_json(*r.constraint);
+  if (r.recovery) j["recovery"] = recovery_json(*r.recovery);
   Json sel = Json::object();
   if (r.selections.max_area) sel["max_area"] = selection_json(*r.selections.max_area);
   if (r.selections.mean_2d) sel["mean_2d"] = selection_json(*r.selections.mean_2d);
@@ -103,6 +144,25 @@ std::string select_text(const SelectReport& r) {
         << to_string(r.expansion.policy) << ")";
   out << "\nimage: " << r.image_colours << " colours";
   if (r.image_dropped) out << " (" << r.image_dropped << " with b <= 0 dropped)";
+  if (r.constraint)
+    out << "\nillumination constraint: " << r.constraint->illuminants << " illuminants, maps "
+        << to_string(r.constraint->maps.kind) << "; feasible set before it "
+        << to_string(r.constraint->unconstrained.kind) << ", area "
+        << fmt(to_double_nearest(area(r.constraint->unconstrained)));
+  if (r.recovery && r.recovery->applied) {
+    out << "\nthe feasible set was empty (" << r.recovery->reason << "); recovered by "
+        << r.recovery->policy << ": ";
+    if (r.recovery->grown)
+      out << "canonical gamut grown multiplicatively by "
+          << fmt(to_double_nearest(r.recovery->grown->factor)) << " (least factor in ("
+          << to_string(*r.recovery->grown->empty_below) << ", "
+          << to_string(r.recovery->grown->factor) << "])";
+    if (r.recovery->min_violation)
+      out << "least Chebyshev violation "
+          << to_string(r.recovery->min_violation->violation) << " ≈ "
+          << fmt(to_double_nearest(r.recovery->min_violation->violation))
+          << " (chromaticity units)";
+  }
   out << "\nfeasible set: " << to_string(r.feasible.kind);
   if (r.feasible.kind == ConvexKind::polygon)
     out << ", " << r.feasible.vertices.size() << " vertices, area "
@@ -113,7 +173,10 @@ std::string select_text(const SelectReport& r) {
     out << "  (" << fmt(d[0]) << ", " << fmt(d[1]) << ")\n";
   }
   if (r.feasible.kind == ConvexKind::empty) {
-    out << "no diagonal map takes every image colour into the canonical gamut\n";
+    out << r.empty_reason << "\n";
+    if (r.recovery && r.recovery->grown && !r.recovery->grown->found)
+      out << "grow-canonical: still empty at factor " << to_string(*r.recovery->grown->empty_below)
+          << "\n";
     return out.str();
   }
   out << "selections (perspective map d1/d3, d2/d3; worst-case map-space error):\n";

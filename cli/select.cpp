@@ -2,8 +2,11 @@
 
 #include "integer_option.h"
 #include "json_output.h"
+#include "select_3d.h"
 
 #include <gmcc/geometry/feasible_set.h>
+#include <gmcc/geometry/illumination_constraint.h>
+#include <gmcc/geometry/intersection.h>
 #include <gmcc/validation/colour_csv.h>
 
 #include <iostream>
@@ -25,6 +28,36 @@ Chromaticities chromaticities_of(const ColourTable& table, NonPositiveBluePolicy
     throw InputError(table.file, 0,
                      "no usable colour: every colour has b = 0 and so no chromaticity");
   return c;
+}
+
+// --on-empty: when F is empty, apply the policy and replace F by what it recovers.
+RecoveryReport recover(const std::string& policy, const Expansion& expansion,
+                       const std::vector<Point2>& canonical, const std::vector<Point2>& image,
+                       SelectReport& r) {
+  RecoveryReport rec;
+  rec.policy = policy;
+  if (r.feasible.kind != ConvexKind::empty) return rec;
+  rec.reason = r.empty_reason;
+  const std::optional<ConvexSet2> C =
+      r.constraint ? std::optional<ConvexSet2>(r.constraint->maps) : std::nullopt;
+  if (policy == "grow-canonical") {
+    if (expansion.policy == ExpansionPolicy::centroid_clip)
+      throw InputError("--on-empty", 0,
+                       "grow-canonical grows the gamut by the multiplicative policy; it cannot "
+                       "continue a centroid-clip expansion (use --expand-policy multiplicative)");
+    GrowCanonicalOptions g;
+    g.start = expansion.factor;
+    rec.precision = g.precision;
+    rec.grown = grow_canonical_until_feasible(canonical, image, C, g);
+    if (!rec.grown->found) return rec;
+    r.feasible = rec.grown->feasible;
+  } else {
+    rec.min_violation = min_violation(r.canonical_gamut, image, C);
+    r.feasible = rec.min_violation->feasible;
+  }
+  rec.applied = true;
+  r.empty_reason.clear();
+  return rec;
 }
 
 }  // namespace
@@ -68,10 +101,28 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
                   "colours with b <= 0 have no chromaticity: drop (count them) or reject")
       ->check(CLI::IsMember({"drop", "reject"}))
       ->capture_default_str();
+  cmd->add_option("--illuminants", o.illuminants_path,
+                  "plausible lights, one r,g,b per line (as the camera sees them): keep only the "
+                  "maps in the convex hull of their maps c ⊘ e (Finlayson 1996)");
+  cmd->add_option("--on-empty", o.on_empty,
+                  "when F is empty: none (report it), grow-canonical (least multiplicative "
+                  "expansion of the canonical gamut, by bisection) or min-violation (maps of least "
+                  "Chebyshev violation, exact LP)")
+      ->check(CLI::IsMember({"none", "grow-canonical", "min-violation"}))
+      ->capture_default_str();
+  cmd->add_option("--space", o.space,
+                  "2d: perspective maps (d1/d3, d2/d3), the paper's rules; 3d: Forsyth's CRULE, "
+                  "diagonal maps (d1, d2, d3) as an exact polytope, max-volume and centroid")
+      ->check(CLI::IsMember({"2d", "3d"}))
+      ->capture_default_str();
+  cmd->add_option("--black", o.black, "3d: include or exclude black (0,0,0) in the canonical gamut")
+      ->check(CLI::IsMember({"include", "exclude"}))
+      ->capture_default_str();
   return cmd;
 }
 
 int run_select(const SelectOptions& o) {
+  if (o.space == "3d") return run_select_3d(o);
   SelectReport r;
   const NonPositiveBluePolicy policy =
       o.nonpositive_blue == "reject" ? NonPositiveBluePolicy::reject : NonPositiveBluePolicy::drop;
@@ -121,6 +172,26 @@ int run_select(const SelectOptions& o) {
   } catch (const UnboundedFeasibleSet& e) {
     throw InputError(o.image_path, 0, e.what());
   }
+  if (!o.illuminants_path.empty()) {
+    const ColourTable lights = read_colour_csv(o.illuminants_path);
+    ConstraintReport c;
+    c.illuminants = lights.colours.size();
+    try {
+      c.maps = illumination_constraint(lights.colours, r.canonical_illuminant);
+    } catch (const NonPositiveIlluminant& e) {
+      throw InputError(lights.file, lights.lines[e.index],
+                       "an illuminant needs every channel > 0 (its map c ⊘ e is undefined)");
+    }
+    c.unconstrained = r.feasible;
+    r.feasible = intersection(r.feasible, c.maps);
+    r.constraint = std::move(c);
+  }
+  if (r.feasible.kind == ConvexKind::empty)
+    r.empty_reason = r.constraint && r.constraint->unconstrained.kind != ConvexKind::empty
+                         ? "the feasible set is not empty, but it holds no map of a plausible "
+                           "illuminant (--illuminants)"
+                         : "no diagonal map takes every image colour into the canonical gamut";
+  if (o.on_empty != "none") r.recovery = recover(o.on_empty, expansion, cq.points, iq.points, r);
   r.selections = select_maps(r.feasible, {mean3d, r.canonical_illuminant});
 
   const std::string out = o.json ? select_json(r) : select_text(r);

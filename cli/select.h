@@ -26,6 +26,10 @@ struct SelectOptions {
   std::string seed = "1";
   std::string nonpositive_blue = "drop";
   std::string canonical_illuminant = "1,1,1";
+  std::string illuminants_path;      // plausible lights: Finlayson's illumination constraint
+  std::string on_empty = "none";     // none | grow-canonical | min-violation
+  std::string space = "2d";          // 2d (perspective, the paper) | 3d (Forsyth's CRULE)
+  std::string black = "include";     // 3d: add black (0,0,0) to the canonical gamut
 };
 
 /// Register the subcommand and its options on `app`; returns the subcommand.

@@ -1,0 +1,45 @@
+#pragma once
+/// \file feasible_set_3d.h
+/// Forsyth's CRULE feasible set in 3-D (Forsyth 1990, §3; Barnard, Cardei & Funt 2002 Part I):
+/// the diagonal maps d = (d1, d2, d3) that take every image colour into the canonical gamut,
+///   F3 = { d : d ⊙ p ∈ G_c3 for every image colour p } = ⋂_p (G_c3 ⊘ p),
+/// G_c3 the exact convex hull of the canonical RGBs (optionally with black).
+
+#include <gmcc/geometry/colour.h>
+#include <gmcc/geometry/convex_set_3.h>
+
+#include <vector>
+
+namespace gmcc {
+
+/// Whether the canonical gamut G_c3 includes black (0, 0, 0).
+enum class CanonicalBlack {
+  include,  ///< the default: darker versions of canonical surfaces are canonical too (intensity
+            ///< variation, shading), as in Gijsenij et al. (2010)'s public gamut-mapping code and
+            ///< Barnard's CRULE; then 0 ∈ F3, so F3 is never empty and is star-shaped about 0
+  exclude,  ///< Forsyth's hull of the canonical colours alone; F3 may be empty
+};
+
+/// F3, exactly, with its kind (polytope, polygon, segment, point or empty).
+///
+/// G_c3 is written as closed half-spaces a·x <= b: its facets (CGAL::convex_hull_3 over
+/// Epeck) when it is 3-dimensional; for a planar, collinear or one-point gamut its affine hull
+/// as pairs of opposite half-spaces plus the hull's edges in that plane (or its end caps). Only
+/// the image hull's vertices p matter; each gives the half-spaces (a ⊙ p)·d <= b. With the
+/// implied box 0 <= d_k <= X_k/P_k (X, P the largest canonical and image channels), an exact LP
+/// maximises the common slack s of all inequalities (CGAL's QP solver): s* < 0 means F3 is
+/// empty; s* = 0 means some inequalities hold with equality on all of F3 — the LP's non-zero
+/// multipliers name them (complementary slackness) and they become equalities, until s* > 0.
+/// The equalities' rank r gives the dimension 3 − r: a polytope by CGAL::halfspace_intersection_3
+/// around the strictly interior LP point (MATH §3c; facets re-derived exactly from the
+/// constraint planes), a polygon by exact 2-D clipping in its plane, a segment by an exact
+/// interval on its line, or the LP point itself.
+/// \param canonical non-empty, channels >= 0. \param image non-empty, channels >= 0.
+/// \throws std::invalid_argument on empty or negative input; UnboundedFeasibleSet (from
+///         feasible_set.h) when every image colour has some channel 0 (that d_k is free).
+/// Complexity: hulls O(n log n); one LP per detected equality set (at most 4) over
+/// k·f + 6 rows for k image-hull vertices and f canonical facets; the intersection O(kf log kf).
+ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical, const std::vector<Colour>& image,
+                           CanonicalBlack black = CanonicalBlack::include);
+
+}  // namespace gmcc

@@ -1,0 +1,143 @@
+#include <gmcc/geometry/convex_set_3.h>
+
+#include "internal/vector3.h"
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+
+namespace gmcc {
+using internal::cross;
+using internal::dot;
+using internal::sub;
+namespace {
+Rational det(const Point3& a, const Point3& b, const Point3& c) { return dot(a, cross(b, c)); }
+}  // namespace
+
+std::string to_string(ConvexKind3 kind) {
+  switch (kind) {
+    case ConvexKind3::polytope: return "polytope";
+    case ConvexKind3::polygon: return "polygon";
+    case ConvexKind3::segment: return "segment";
+    case ConvexKind3::point: return "point";
+    case ConvexKind3::empty: return "empty";
+  }
+  return "empty";
+}
+
+ConvexSet3 canonical_convex_set_3(ConvexKind3 kind, std::vector<Point3> vertices,
+                                  std::vector<std::vector<std::size_t>> faces) {
+  std::vector<std::size_t> order(vertices.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return vertices[a] < vertices[b]; });
+  std::vector<std::size_t> rank(vertices.size());
+  ConvexSet3 out;
+  out.kind = kind;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    rank[order[i]] = i;
+    out.vertices.push_back(vertices[order[i]]);
+  }
+  for (auto& f : faces) {
+    for (std::size_t& i : f) i = rank[i];
+    std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+    if (kind == ConvexKind3::polygon && f.size() > 2 && f.back() < f[1])
+      std::reverse(f.begin() + 1, f.end());
+  }
+  if (kind == ConvexKind3::polytope || kind == ConvexKind3::polygon) {
+    std::sort(faces.begin(), faces.end());
+    out.faces = std::move(faces);
+  }
+  return out;
+}
+
+Rational volume(const ConvexSet3& s) {
+  if (s.kind != ConvexKind3::polytope) return 0;
+  const Point3& o = s.vertices[0];
+  Rational six = 0;
+  for (const auto& f : s.faces) {
+    if (f[0] == 0) continue;  // facets through the apex add nothing
+    for (std::size_t i = 1; i + 1 < f.size(); ++i)
+      six += det(sub(s.vertices[f[0]], o), sub(s.vertices[f[i]], o), sub(s.vertices[f[i + 1]], o));
+  }
+  return Rational(six / 6);
+}
+
+Point3 centroid(const ConvexSet3& s) {
+  const auto& v = s.vertices;
+  switch (s.kind) {
+    case ConvexKind3::empty: throw std::invalid_argument("centroid of an empty set");
+    case ConvexKind3::point: return v[0];
+    case ConvexKind3::segment:
+      return {Rational((v[0].x + v[1].x) / 2), Rational((v[0].y + v[1].y) / 2),
+              Rational((v[0].z + v[1].z) / 2)};
+    case ConvexKind3::polygon: {
+      const auto& f = s.faces[0];
+      const Point3 n = cross(sub(v[f[1]], v[f[0]]), sub(v[f[2]], v[f[0]]));
+      // Project on the coordinate plane where the normal is largest: areas scale by one factor.
+      const int k = abs(n.x) >= abs(n.y) && abs(n.x) >= abs(n.z) ? 0 : abs(n.y) >= abs(n.z) ? 1 : 2;
+      const Point3 axis{k == 0 ? 1 : 0, k == 1 ? 1 : 0, k == 2 ? 1 : 0};
+      Rational w_sum = 0;
+      Point3 acc{0, 0, 0};
+      for (std::size_t i = 1; i + 1 < f.size(); ++i) {
+        const Rational w = dot(cross(sub(v[f[i]], v[f[0]]), sub(v[f[i + 1]], v[f[0]])), axis);
+        w_sum += w;
+        acc = {Rational(acc.x + w * (v[f[0]].x + v[f[i]].x + v[f[i + 1]].x)),
+               Rational(acc.y + w * (v[f[0]].y + v[f[i]].y + v[f[i + 1]].y)),
+               Rational(acc.z + w * (v[f[0]].z + v[f[i]].z + v[f[i + 1]].z))};
+      }
+      return {Rational(acc.x / (3 * w_sum)), Rational(acc.y / (3 * w_sum)), Rational(acc.z / (3 * w_sum))};
+    }
+    case ConvexKind3::polytope: break;
+  }
+  const Point3& o = v[0];
+  Rational w_sum = 0;
+  Point3 acc{0, 0, 0};
+  for (const auto& f : s.faces) {
+    if (f[0] == 0) continue;
+    for (std::size_t i = 1; i + 1 < f.size(); ++i) {
+      const Point3 &a = v[f[0]], &b = v[f[i]], &c = v[f[i + 1]];
+      const Rational w = det(sub(a, o), sub(b, o), sub(c, o));
+      w_sum += w;
+      acc = {Rational(acc.x + w * (o.x + a.x + b.x + c.x)), Rational(acc.y + w * (o.y + a.y + b.y + c.y)),
+             Rational(acc.z + w * (o.z + a.z + b.z + c.z))};
+    }
+  }
+  return {Rational(acc.x / (4 * w_sum)), Rational(acc.y / (4 * w_sum)), Rational(acc.z / (4 * w_sum))};
+}
+
+bool contains(const ConvexSet3& s, const Point3& p) {
+  const auto& v = s.vertices;
+  switch (s.kind) {
+    case ConvexKind3::empty: return false;
+    case ConvexKind3::point: return v[0] == p;
+    case ConvexKind3::segment: {
+      const Point3 u = sub(v[1], v[0]), w = sub(p, v[0]);
+      const Point3 c = cross(u, w);
+      if (sgn(c.x) != 0 || sgn(c.y) != 0 || sgn(c.z) != 0) return false;
+      const Rational t = dot(u, w);
+      return sgn(t) >= 0 && t <= dot(u, u);
+    }
+    case ConvexKind3::polygon: {
+      const auto& f = s.faces[0];
+      const Point3 n = cross(sub(v[f[1]], v[f[0]]), sub(v[f[2]], v[f[0]]));
+      if (sgn(dot(n, sub(p, v[f[0]]))) != 0) return false;
+      // Inside iff p is on the inner side of every edge, within the plane: (e × (p − a))·n >= 0.
+      for (std::size_t i = 0; i < f.size(); ++i) {
+        const Point3& a = v[f[i]];
+        const Point3& b = v[f[(i + 1) % f.size()]];
+        if (sgn(dot(cross(sub(b, a), sub(p, a)), n)) < 0) return false;
+      }
+      return true;
+    }
+    case ConvexKind3::polytope:
+      for (const auto& f : s.faces) {
+        const Point3 n = cross(sub(v[f[1]], v[f[0]]), sub(v[f[2]], v[f[0]]));  // outward
+        if (sgn(dot(n, sub(p, v[f[0]]))) > 0) return false;
+      }
+      return true;
+  }
+  return false;
+}
+
+}  // namespace gmcc

@@ -1,0 +1,115 @@
+#include <gmcc/geometry/convex_hull.h>
+#include <gmcc/geometry/feasible_set.h>
+#include <gmcc/geometry/min_violation.h>
+
+#include "internal/half_plane.h"
+#include "internal/linear_program.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace gmcc {
+namespace {
+using internal::HalfPlane;
+
+// G's edges (half_planes) and its bounding box: supporting half-planes whose normals contain
+// the axes, so that offsetting each by t·‖n‖₁ gives exactly G ⊕ t·[−1, 1]².
+std::vector<HalfPlane> supporting_half_planes(const ConvexSet2& G) {
+  std::vector<HalfPlane> h = internal::half_planes(G);
+  Rational x_lo = G.vertices[0].x, x_hi = x_lo, y_lo = G.vertices[0].y, y_hi = y_lo;
+  for (const Point2& v : G.vertices) {
+    x_lo = std::min(x_lo, v.x), x_hi = std::max(x_hi, v.x);
+    y_lo = std::min(y_lo, v.y), y_hi = std::max(y_hi, v.y);
+  }
+  h.push_back({1, 0, x_hi});
+  h.push_back({-1, 0, Rational(-x_lo)});
+  h.push_back({0, 1, y_hi});
+  h.push_back({0, -1, Rational(-y_lo)});
+  return h;
+}
+
+Rational l1(const HalfPlane& h) { return Rational(abs(h.a) + abs(h.b)); }
+
+// Image-hull vertices after feasible_set's own checks (empty, negative, unbounded).
+std::vector<Point2> image_vertices(const ConvexSet2& canonical, const std::vector<Point2>& image) {
+  if (canonical.kind == ConvexKind::empty)
+    throw std::invalid_argument("min_violation: the canonical gamut is empty");
+  feasible_set(canonical, image);  // validates exactly as feasible_set does
+  return convex_hull(image).vertices;
+}
+}  // namespace
+
+Rational gamut_violation(const ConvexSet2& canonical, const std::vector<Point2>& image,
+                         const Point2& m) {
+  if (canonical.kind == ConvexKind::empty || image.empty())
+    throw std::invalid_argument("gamut_violation: empty input");
+  const std::vector<HalfPlane> planes = supporting_half_planes(canonical);
+  bool first = true;
+  Rational worst;
+  for (const Point2& q : image)
+    for (const HalfPlane& h : planes) {
+      const Rational v = (h.a * m.x * q.x + h.b * m.y * q.y - h.c) / l1(h);
+      if (first || v > worst) worst = v, first = false;
+    }
+  return worst;
+}
+
+MinViolation min_violation(const ConvexSet2& canonical, const std::vector<Point2>& image,
+                           const std::optional<ConvexSet2>& constraint) {
+  const std::vector<Point2> qs = image_vertices(canonical, image);
+  const std::vector<HalfPlane> planes = supporting_half_planes(canonical);
+  const std::vector<HalfPlane> hard =
+      constraint ? internal::half_planes(*constraint) : std::vector<HalfPlane>{};
+  if (constraint && constraint->kind == ConvexKind::empty)
+    throw std::invalid_argument("min_violation: the constraint set is empty");
+
+  // minimise t over (m1, m2, t): (a·q1)·m1 + (b·q2)·m2 − ‖(a, b)‖₁·t <= c; m >= 0; m ∈ C.
+  internal::LinearProgram lp;
+  lp.variables = 3;
+  lp.objective = {0, 0, 1};
+  for (const Point2& q : qs)
+    for (const HalfPlane& h : planes) {
+      lp.rows.push_back({Rational(h.a * q.x), Rational(h.b * q.y), Rational(-l1(h))});
+      lp.rhs.push_back(h.c);
+    }
+  lp.rows.push_back({-1, 0, 0}), lp.rhs.push_back(0);
+  lp.rows.push_back({0, -1, 0}), lp.rhs.push_back(0);
+  for (const HalfPlane& h : hard) lp.rows.push_back({h.a, h.b, 0}), lp.rhs.push_back(h.c);
+  const internal::LpSolution s = internal::solve_linear_program(lp);
+  if (s.status != internal::LpStatus::optimal)  // t is bounded below by the box half-planes
+    throw std::logic_error("min_violation: the linear program is not optimal: a bug");
+
+  MinViolation out;
+  out.violation = s.value;
+  const Rational& t = out.violation;
+
+  // The minimisers: every row at t = t*, clipped from the box these rows imply.
+  Rational q1 = 0, q2 = 0, x_hi = canonical.vertices[0].x, y_hi = canonical.vertices[0].y;
+  for (const Point2& q : qs) q1 = std::max(q1, q.x), q2 = std::max(q2, q.y);
+  for (const Point2& v : canonical.vertices) x_hi = std::max(x_hi, v.x), y_hi = std::max(y_hi, v.y);
+  const Rational mx = (x_hi + t) / q1, my = (y_hi + t) / q2;
+  std::vector<Point2> cycle{{0, 0}, {mx, 0}, {mx, my}, {0, my}};
+  for (const Point2& q : qs)
+    for (const HalfPlane& h : planes) {
+      cycle = internal::clip(cycle, {Rational(h.a * q.x), Rational(h.b * q.y), Rational(h.c + t * l1(h))});
+      if (cycle.empty()) throw std::logic_error("min_violation: no minimiser at t*: a bug");
+    }
+  for (const HalfPlane& h : hard) cycle = internal::clip(cycle, h);
+  out.feasible = canonical_convex_set(std::move(cycle));
+  if (out.feasible.kind == ConvexKind::empty)
+    throw std::logic_error("min_violation: no minimiser at t*: a bug");
+
+  // The offset gamut G ⊕ t*·[−1, 1]², clipped from its own bounding box.
+  const Rational r = abs(t);
+  Rational x_lo = canonical.vertices[0].x, y_lo = canonical.vertices[0].y;
+  for (const Point2& v : canonical.vertices) x_lo = std::min(x_lo, v.x), y_lo = std::min(y_lo, v.y);
+  std::vector<Point2> g{{Rational(x_lo - r), Rational(y_lo - r)},
+                        {Rational(x_hi + r), Rational(y_lo - r)},
+                        {Rational(x_hi + r), Rational(y_hi + r)},
+                        {Rational(x_lo - r), Rational(y_hi + r)}};
+  for (const HalfPlane& h : planes) g = internal::clip(g, {h.a, h.b, Rational(h.c + t * l1(h))});
+  out.canonical = canonical_convex_set(std::move(g));
+  return out;
+}
+
+}  // namespace gmcc

@@ -1,0 +1,45 @@
+#pragma once
+/// \file crule_3d.h
+/// Forsyth's (1990) CRULE in 3-D, end to end: the feasible set of diagonal maps and its two
+/// selections, max-volume (CRULE-MV) and the centroid (CRULE-AVE, Barnard et al. 2002 Part I),
+/// with their worst cases. The entry point for experiments comparing 3-D and 2-D rules.
+
+#include <gmcc/geometry/colour.h>
+#include <gmcc/geometry/feasible_set_3d.h>
+#include <gmcc/selection/map_estimate_3.h>
+
+#include <optional>
+#include <vector>
+
+namespace gmcc {
+
+/// The angle, in degrees, between two diagonal maps as 3-vectors (the map-space angular error of
+/// Finlayson & Hordley 1999 §4, in 3-D; a 2-D map m compares as (m1, m2, 1)). Exact cross and dot
+/// products, atan2 in 128-bit MPFR. \pre neither is 0.
+double diagonal_map_angular_error_deg(const Point3& estimate, const Point3& truth);
+
+/// max over d ∈ F3 \ {0} of the angle to m: the angle to a fixed direction is quasi-convex on
+/// the octant, so it is attained at a non-zero vertex; chosen exactly by cos² in ℚ.
+/// \pre F3 has a non-zero vertex, m != 0. O(|F3|).
+double worst_case_map_deg_3d(const ConvexSet3& F3, const Point3& m);
+
+/// One 3-D rule's answer and its worst case within F3.
+struct Selection3 {
+  MapEstimate3 estimate;
+  std::optional<double> worst_case_deg;  ///< absent when the map or F3 is only {0}
+};
+
+/// CRULE in 3-D: F3 and its selections (absent when F3 is empty).
+struct Crule3d {
+  ConvexSet3 feasible;
+  Rational volume;
+  std::optional<Selection3> max_volume, centroid;
+};
+
+/// feasible_set_3d(canonical, image, black), then max_volume and the exact centroid, each with
+/// worst_case_map_deg_3d (an irrational map is measured from its double map, taken exactly).
+/// \throws as feasible_set_3d.
+Crule3d crule_3d(const std::vector<Colour>& canonical, const std::vector<Colour>& image,
+                 CanonicalBlack black = CanonicalBlack::include);
+
+}  // namespace gmcc
