@@ -3,6 +3,7 @@
 #include "integer_option.h"
 #include "output_files.h"
 
+#include <gmcc/geometry/illumination_constraint.h>
 #include <gmcc/validation/camera_experiment.h>
 #include <gmcc/validation/colour_csv.h>
 #include <gmcc/validation/experiment_report.h>
@@ -43,6 +44,9 @@ void add_output_options(CLI::App* cmd, ReproduceOptions& o) {
   cmd->add_option("--plot", o.plot_dir,
                   "write <experiment>.dat/.gp to this folder and draw .png/.svg with gnuplot");
   cmd->add_option("--canonical", o.canonical, "the canonical light");
+  cmd->add_option("--illuminants", o.illuminants_path,
+                  "plausible lights (r,g,b as the sensors see them): intersect every feasible set "
+                  "with their maps (Finlayson 1996's illumination constraint)");
   cmd->add_option("--lights", o.lights, "the test lights")->delimiter(',');
   cmd->add_option("--expand", o.expand_factor, "expand the canonical gamut by this factor (0.1 = 10%)")
       ->capture_default_str();
@@ -91,7 +95,15 @@ ExperimentConfig config_from(const ReproduceOptions& o) {
 }
 
 // Runs an experiment and writes its table, CSV and figure, each file whole or not at all.
-int report(const ExperimentSetup& setup, const ExperimentConfig& config, const ReproduceOptions& o) {
+int report(const ExperimentSetup& setup, ExperimentConfig config, const ReproduceOptions& o) {
+  if (!o.illuminants_path.empty()) {
+    const ColourTable lights = read_colour_csv(o.illuminants_path);
+    try {
+      config.constraint = illumination_constraint(lights.colours, setup.canonical_light);
+    } catch (const NonPositiveIlluminant& e) {
+      throw InputError(lights.file, lights.lines[e.index], "an illuminant needs every channel > 0");
+    }
+  }
   std::optional<PendingFile> csv_file, dat_file, gp_file;
   if (!o.csv_path.empty()) csv_file.emplace(o.csv_path);
   if (!o.plot_dir.empty()) {

@@ -20,6 +20,7 @@ struct ReproduceOptions {
   std::string canonical_surfaces = "sfu1995";  // camera: sfu1995 | macbeth
   std::string mean3d_method = "analytic";
   std::string csv_path, plot_dir;
+  std::string illuminants_path;  // plausible lights for the illumination constraint
 };
 
 /// Register `reproduce` with its subcommands `synthetic`, `camera`, `expansion`.

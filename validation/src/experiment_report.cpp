@@ -42,6 +42,9 @@ std::string experiment_table(const ExperimentResult& r) {
       << to_string(r.config.expansion.policy);
   if (r.config.expansion.policy != ExpansionPolicy::none) out << " by " << to_string(r.config.expansion.factor);
   if (r.config.noise > 0) out << ", noise " << num(r.config.noise, "%g");
+  if (r.config.constraint)
+    out << ", illumination constraint (" << to_string(r.config.constraint->kind) << " with "
+        << r.config.constraint->vertices.size() << " vertices)";
   out << "\nangular error of the perspective map in degrees (Finlayson & Hordley 1999, Fig. 3)\n";
   std::string light;
   for (const ExperimentCell& c : r.cells) {

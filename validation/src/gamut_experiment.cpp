@@ -2,6 +2,7 @@
 
 #include <gmcc/geometry/chromaticity.h>
 #include <gmcc/geometry/feasible_set.h>
+#include <gmcc/geometry/intersection.h>
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/select_maps.h>
 
@@ -87,7 +88,8 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
       if (sgn(c.b) > 0) image.push_back(perspective_chromaticity(c));
     }
     ++cell.scenes;
-    const ConvexSet2 F = image.empty() ? ConvexSet2{} : feasible_set(gamut, image);
+    ConvexSet2 F = image.empty() ? ConvexSet2{} : feasible_set(gamut, image);
+    if (config.constraint && F.kind != ConvexKind::empty) F = intersection(F, *config.constraint);
     if (F.kind == ConvexKind::empty) {
       ++cell.empty;
       continue;

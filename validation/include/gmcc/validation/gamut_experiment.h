@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,9 @@ struct ExperimentConfig {
   Expansion expansion;         ///< of the canonical gamut (default none)
   double noise = 0;            ///< relative Gaussian sensor noise σ on image colours (0: none)
   Mean3dOptions mean3d;        ///< the 3-D mean's route (default: certified closed form)
+  /// Finlayson's (1996) illumination constraint: when given, each scene's F is intersected with
+  /// these plausible maps (illumination_constraint of a set of lights) before selection.
+  std::optional<ConvexSet2> constraint;
   unsigned threads = 0;        ///< worker threads (0: the hardware's); results do not depend on it
   /// Called now and then from the calling thread with (scenes done, scenes in all).
   std::function<void(std::uint64_t, std::uint64_t)> progress;
