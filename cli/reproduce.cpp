@@ -44,6 +44,13 @@ void add_output_options(CLI::App* cmd, ReproduceOptions& o) {
   cmd->add_option("--plot", o.plot_dir,
                   "write <experiment>.dat/.gp to this folder and draw .png/.svg with gnuplot");
   cmd->add_option("--canonical", o.canonical, "the canonical light");
+  cmd->add_flag("--crule", o.crule,
+                "also Forsyth's 3-D CRULE (max-volume and centroid), scored by their perspective "
+                "maps; slow: ~0.2 s per scene");
+  cmd->add_option("--shading", o.shading,
+                  "intensity variation: each image colour scaled by a factor drawn from [S, 1] "
+                  "(0: none); the 2-D rules do not see it, 3-D CRULE does")
+      ->capture_default_str();
   cmd->add_option("--illuminants", o.illuminants_path,
                   "plausible lights (r,g,b as the sensors see them): intersect every feasible set "
                   "with their maps (Finlayson 1996's illumination constraint)");
@@ -81,6 +88,14 @@ ExperimentConfig config_from(const ReproduceOptions& o) {
     c.noise = to_double_nearest(noise);
   } catch (const std::invalid_argument& e) {
     throw InputError("--noise", 0, e.what());
+  }
+  c.crule = o.crule;
+  try {
+    const Rational shading = parse_rational(o.shading);
+    if (sgn(shading) < 0 || shading >= 1) throw std::invalid_argument("must be from 0 to below 1");
+    c.shading = to_double_nearest(shading);
+  } catch (const std::invalid_argument& e) {
+    throw InputError("--shading", 0, e.what());
   }
   if (::isatty(STDERR_FILENO))
     c.progress = [](std::uint64_t done, std::uint64_t total) {

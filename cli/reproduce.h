@@ -21,6 +21,8 @@ struct ReproduceOptions {
   std::string mean3d_method = "analytic";
   std::string csv_path, plot_dir;
   std::string illuminants_path;  // plausible lights for the illumination constraint
+  bool crule = false;            // also 3-D CRULE
+  std::string shading = "0";     // intensity variation: image colours scaled by U[shading, 1]
 };
 
 /// Register `reproduce` with its subcommands `synthetic`, `camera`, `expansion`.

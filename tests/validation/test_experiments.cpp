@@ -91,3 +91,39 @@ BOOST_AUTO_TEST_CASE(camera_experiment_counts_what_the_diagonal_model_misses) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(reproduction_options)
+
+// Shading scales colours, not chromaticities: the 2-D rules must not move at all.
+BOOST_AUTO_TEST_CASE(shading_leaves_the_2d_rules_unchanged) {
+  ExperimentConfig plain;
+  plain.scenes = 5;
+  plain.max_surfaces = 4;
+  ExperimentConfig shaded = plain;
+  shaded.shading = 0.2;
+  const ExperimentResult a = run_gamut_experiment(paper_setup(), plain);
+  const ExperimentResult b = run_gamut_experiment(paper_setup(), shaded);
+  for (std::size_t i = 0; i < a.cells.size(); ++i)
+    for (int k = 0; k < 3; ++k) BOOST_TEST(a.cells[i].rules[k].mean_error_deg == b.cells[i].rules[k].mean_error_deg);
+}
+
+// Without shading the diagonal model holds exactly, so the true 3-D map lies in CRULE's F3.
+BOOST_AUTO_TEST_CASE(crule_contains_the_true_diagonal_map_without_shading) {
+  ExperimentSetup one = paper_setup();
+  one.lights.resize(1);
+  ExperimentConfig c;
+  c.scenes = 2;
+  c.max_surfaces = 3;
+  c.crule = true;
+  const ExperimentResult r = run_gamut_experiment(one, c);
+  BOOST_REQUIRE(r.rules.size() == 5u);
+  BOOST_TEST(r.rules[3] == "crule_max_volume");
+  for (const ExperimentCell& cell : r.cells)
+    for (std::size_t k = 3; k < 5; ++k) {
+      BOOST_TEST(cell.rules[k].truth_in_feasible_set == cell.scenes);
+      BOOST_TEST(cell.rules[k].mean_error_deg < 45.0);
+    }
+  BOOST_TEST(experiment_csv(r).find(",crule_centroid,") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

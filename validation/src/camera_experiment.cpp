@@ -24,6 +24,7 @@ ExperimentSetup camera_setup(const SpectralTable& sensor_table, const SpectralTa
     const Colour& c = setup.canonical_light;
     const Rational d0 = c.r / white.r, d1 = c.g / white.g, d2 = c.b / white.b;
     t.true_map = {Rational(d0 / d2), Rational(d1 / d2)};
+    t.true_diagonal_map = {d0, d1, d2};
     setup.lights.push_back(std::move(t));
   }
   return setup;

@@ -22,9 +22,9 @@ std::string experiment_csv(const ExperimentResult& r) {
          "median_worst_case_deg,mean_illuminant_error_deg,median_illuminant_error_deg,"
          "mean_reproduction_error_deg,max_error_deg,empty_scenes,truth_in_feasible_set\n";
   for (const ExperimentCell& c : r.cells)
-    for (std::size_t k = 0; k < 3; ++k) {
+    for (std::size_t k = 0; k < c.rules.size(); ++k) {
       const RuleStats& s = c.rules[k];
-      out << c.light << ',' << c.surfaces << ',' << experiment_rules[k] << ','
+      out << c.light << ',' << c.surfaces << ',' << r.rules[k] << ','
           << num(s.mean_error_deg) << ',' << num(s.mean_worst_case_deg) << ','
           << c.scenes - c.empty << ',' << num(s.median_error_deg) << ','
           << num(s.median_worst_case_deg) << ',' << num(s.mean_illuminant_error_deg) << ','
@@ -52,18 +52,24 @@ std::string experiment_table(const ExperimentResult& r) {
       light = c.light;
       out << "\n" << light << "\n"
           << "  n   mean error:  max-area  2-D mean  3-D mean   worst case:  max-area  2-D mean  "
-             "3-D mean   3-D gain  empty\n";
+             "3-D mean   3-D gain  empty"
+          << (c.rules.size() > 3 ? "   CRULE mean error: max-volume  centroid" : "") << "\n";
     }
     const auto& s = c.rules;
     const double best_other = std::min(s[0].mean_error_deg, s[1].mean_error_deg);
     const double gain = s[2].mean_error_deg > 0 ? best_other / s[2].mean_error_deg - 1 : 0;
     char line[256];
     std::snprintf(line, sizeof line,
-                  "  %-3d %22.3f %9.3f %9.3f %22.3f %9.3f %9.3f %9.0f%% %6llu\n", c.surfaces,
+                  "  %-3d %22.3f %9.3f %9.3f %22.3f %9.3f %9.3f %9.0f%% %6llu", c.surfaces,
                   s[0].mean_error_deg, s[1].mean_error_deg, s[2].mean_error_deg,
                   s[0].mean_worst_case_deg, s[1].mean_worst_case_deg, s[2].mean_worst_case_deg,
                   100 * gain, static_cast<unsigned long long>(c.empty));
     out << line;
+    if (s.size() > 3) {
+      std::snprintf(line, sizeof line, " %30.3f %9.3f", s[3].mean_error_deg, s[4].mean_error_deg);
+      out << line;
+    }
+    out << "\n";
   }
   out << "\n3-D gain: how much larger the better of max-area and 2-D mean's mean error is than the "
          "3-D mean's.\n";
@@ -102,20 +108,23 @@ std::string experiment_plot_script(const ExperimentResult& r, const std::string&
     << "set style line 1 lc rgb '#d62728' lw 2 pt 7\n"
     << "set style line 2 lc rgb '#1f77b4' lw 2 pt 5\n"
     << "set style line 3 lc rgb '#2ca02c' lw 2 pt 9\n"
+    << "set style line 4 lc rgb '#9467bd' lw 2 pt 11 dt 2\n"
+    << "set style line 5 lc rgb '#8c564b' lw 2 pt 13 dt 2\n"
     << "do for [term = 1:2] {\n"
     << "  if (term == 1) { set terminal pngcairo size 1000," << 260 * rows << " font ',9'; set output png_file }\n"
     << "  if (term == 2) { set terminal svg size 1000," << 260 * rows << " font 'sans,9'; set output svg_file }\n"
     << "  set multiplot layout " << rows << ",2\n";
-  for (std::size_t i = 0; i < rows; ++i) {
-    g << "  set ylabel '" << lights[i] << ": mean error (deg)'\n"
-      << "  plot '" << stem << ".dat' index " << i << " using 1:2 with linespoints ls 1 title 'max-area', "
-      << "'' index " << i << " using 1:3 with linespoints ls 2 title '2-D mean', "
-      << "'' index " << i << " using 1:4 with linespoints ls 3 title '3-D mean'\n"
-      << "  set ylabel '" << lights[i] << ": mean worst case (deg)'\n"
-      << "  plot '" << stem << ".dat' index " << i << " using 1:5 with linespoints ls 1 title 'max-area', "
-      << "'' index " << i << " using 1:6 with linespoints ls 2 title '2-D mean', "
-      << "'' index " << i << " using 1:7 with linespoints ls 3 title '3-D mean'\n";
-  }
+  const std::size_t R = r.rules.size();
+  const char* titles[] = {"max-area", "2-D mean", "3-D mean", "CRULE max-volume", "CRULE centroid"};
+  for (std::size_t i = 0; i < rows; ++i)
+    for (int panel = 0; panel < 2; ++panel) {  // mean error, then mean worst case
+      g << "  set ylabel '" << lights[i] << (panel ? ": mean worst case (deg)'\n" : ": mean error (deg)'\n")
+        << "  plot ";
+      for (std::size_t k = 0; k < R; ++k)
+        g << (k ? ", '' " : ("'" + stem + ".dat' ")) << "index " << i << " using 1:"
+          << 2 + panel * R + k << " with linespoints ls " << k + 1 << " title '" << titles[k] << "'";
+      g << "\n";
+    }
   g << "  unset multiplot\n  set output\n}\n";
   return g.str();
 }

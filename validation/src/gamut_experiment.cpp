@@ -4,6 +4,7 @@
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/intersection.h>
 #include <gmcc/selection/angular_error.h>
+#include <gmcc/selection/crule_3d.h>
 #include <gmcc/selection/select_maps.h>
 
 #include <algorithm>
@@ -67,7 +68,9 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
   ExperimentCell cell;
   cell.light = light.name;
   cell.surfaces = n;
-  std::array<std::vector<double>, 3> error, worst, illuminant, reproduction;
+  const std::size_t R = config.crule ? 5 : 3;
+  std::vector<std::vector<double>> error(R), worst(R), illuminant(R), reproduction(R);
+  cell.rules.resize(R);
   std::vector<std::size_t> pool(light.surfaces.size());
   SelectionOptions selection;
   selection.mean3d = config.mean3d;
@@ -78,6 +81,7 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
     std::mt19937_64 g(seq);
     for (std::size_t i = 0; i < pool.size(); ++i) pool[i] = i;
     std::vector<Point2> image;
+    std::vector<Colour> image_colours;
     for (int i = 0; i < n; ++i) {  // partial Fisher–Yates: n distinct surfaces
       std::swap(pool[static_cast<std::size_t>(i)],
                 pool[static_cast<std::size_t>(i) + below(g, pool.size() - static_cast<std::size_t>(i))]);
@@ -85,7 +89,12 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
       if (config.noise > 0)
         for (Rational* x : {&c.r, &c.g, &c.b})
           *x *= rational_from_double(std::max(0.0, 1 + config.noise * normal(g)));
+      if (config.shading > 0) {
+        const Rational scale = rational_from_double(config.shading + (1 - config.shading) * uniform01(g));
+        for (Rational* x : {&c.r, &c.g, &c.b}) *x *= scale;
+      }
       if (sgn(c.b) > 0) image.push_back(perspective_chromaticity(c));
+      image_colours.push_back(std::move(c));
     }
     ++cell.scenes;
     ConvexSet2 F = image.empty() ? ConvexSet2{} : feasible_set(gamut, image);
@@ -95,22 +104,37 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
       continue;
     }
     const bool truth_inside = contains(F, light.true_map);
-    const Selections sel = select_maps(F, selection);
-    const std::array<const std::optional<Selection>*, 3> rules{&sel.max_area, &sel.mean_2d, &sel.mean_3d};
-    for (int r = 0; r < 3; ++r) {
-      const Selection& x = **rules[r];
-      if (!x.estimate.valid) continue;
-      const Point2 m = exact_map(x.estimate);
+    auto score = [&](std::size_t r, const Point2& m, double worst_case, bool truth) {
       error[r].push_back(map_angular_error_deg(m, light.true_map));
-      worst[r].push_back(*x.worst_case_deg);
+      worst[r].push_back(worst_case);
       if (sgn(m.x) > 0 && sgn(m.y) > 0) {
         illuminant[r].push_back(illuminant_angular_error_deg(m, light.true_map, setup.canonical_light));
         reproduction[r].push_back(reproduction_angular_error_deg(m, light.true_map));
       }
-      cell.rules[r].truth_in_feasible_set += truth_inside;
+      cell.rules[r].truth_in_feasible_set += truth;
+    };
+    const Selections sel = select_maps(F, selection);
+    const std::array<const std::optional<Selection>*, 3> rules{&sel.max_area, &sel.mean_2d, &sel.mean_3d};
+    for (std::size_t r = 0; r < 3; ++r) {
+      const Selection& x = **rules[r];
+      if (x.estimate.valid) score(r, exact_map(x.estimate), *x.worst_case_deg, truth_inside);
+    }
+    if (config.crule) {  // the same scene in 3-D; maps scored by their perspective (d1/d3, d2/d3)
+      const Crule3d c3 = crule_3d(setup.canonical_surfaces, image_colours);
+      const bool truth3_inside = contains(c3.feasible, light.true_diagonal_map);
+      const std::array<const std::optional<Selection3>*, 2> rules3{&c3.max_volume, &c3.centroid};
+      for (std::size_t r = 0; r < 2; ++r) {
+        if (!*rules3[r] || !(*rules3[r])->worst_case_deg) continue;
+        const MapEstimate3& e = (*rules3[r])->estimate;
+        const Point3 d = e.exact ? *e.exact
+                                 : Point3{rational_from_double(e.map[0]), rational_from_double(e.map[1]),
+                                          rational_from_double(e.map[2])};
+        if (sgn(d.z) <= 0) continue;  // the zero map has no perspective
+        score(3 + r, {Rational(d.x / d.z), Rational(d.y / d.z)}, *(*rules3[r])->worst_case_deg, truth3_inside);
+      }
     }
   }
-  for (int r = 0; r < 3; ++r) {
+  for (std::size_t r = 0; r < R; ++r) {
     RuleStats& st = cell.rules[r];
     st.mean_error_deg = mean(error[r]);
     st.median_error_deg = median(error[r]);
@@ -137,6 +161,8 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
   result.name = setup.name;
   result.config = config;
   result.config.progress = nullptr;
+  result.rules.assign(experiment_rules.begin(), experiment_rules.end());
+  if (config.crule) result.rules.insert(result.rules.end(), experiment_rules_3d.begin(), experiment_rules_3d.end());
   result.canonical_gamut =
       canonical_gamut(perspective_chromaticities(setup.canonical_surfaces, NonPositiveBluePolicy::drop).points,
                       config.expansion);

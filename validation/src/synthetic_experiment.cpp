@@ -44,6 +44,7 @@ ExperimentSetup synthetic_setup(const SpectralTable& munsell, const SpectralTabl
     Rational d[3];
     for (int k = 0; k < 3; ++k) d[k] = canonical.at(w[k]) / light.at(w[k]);
     t.true_map = {Rational(d[0] / d[2]), Rational(d[1] / d[2])};
+    t.true_diagonal_map = {d[0], d[1], d[2]};
     setup.lights.push_back(std::move(t));
   }
   return setup;

@@ -7,6 +7,7 @@
 #include <gmcc/geometry/canonical_gamut.h>
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/convex_set.h>
+#include <gmcc/geometry/convex_set_3.h>
 #include <gmcc/selection/mean_3d.h>
 
 #include <array>
@@ -24,6 +25,7 @@ struct TestLight {
   std::string name;
   std::vector<Colour> surfaces;  ///< surfaces[i]: surface i under this light
   Point2 true_map;
+  Point3 true_diagonal_map;      ///< d with d ⊙ p = p_canonical (its perspective is true_map)
 };
 
 /// What an experiment is made of (built by synthetic_setup or camera_setup).
@@ -45,13 +47,21 @@ struct ExperimentConfig {
   /// Finlayson's (1996) illumination constraint: when given, each scene's F is intersected with
   /// these plausible maps (illumination_constraint of a set of lights) before selection.
   std::optional<ConvexSet2> constraint;
+  /// Also Forsyth's 3-D CRULE (crule_3d: rules `crule_max_volume`, `crule_centroid`, scored by
+  /// their perspective maps). Costly: the exact 3-D feasible set takes ~0.1–0.3 s per scene.
+  bool crule = false;
+  /// Intensity variation (shading): when > 0, each image surface's colour is scaled by its own
+  /// factor drawn uniformly from [shading, 1]. Chromaticities, hence the 2-D rules, are unchanged;
+  /// 3-D CRULE sees it (Barnard et al. 2002).
+  double shading = 0;
   unsigned threads = 0;        ///< worker threads (0: the hardware's); results do not depend on it
   /// Called now and then from the calling thread with (scenes done, scenes in all).
   std::function<void(std::uint64_t, std::uint64_t)> progress;
 };
 
-/// The rules in report order: max_area, mean_2d, mean_3d.
+/// The 2-D rules in report order, then (with ExperimentConfig::crule) the 3-D ones.
 inline const std::array<const char*, 3> experiment_rules{"max_area", "mean_2d", "mean_3d"};
+inline const std::array<const char*, 2> experiment_rules_3d{"crule_max_volume", "crule_centroid"};
 
 /// Statistics of one rule over the scenes of a cell that had a feasible map.
 struct RuleStats {
@@ -70,13 +80,14 @@ struct ExperimentCell {
   int surfaces = 0;
   std::uint64_t scenes = 0;        ///< drawn
   std::uint64_t empty = 0;         ///< of those, with an empty feasible set (no map)
-  std::array<RuleStats, 3> rules;  ///< in experiment_rules order, over the non-empty scenes
+  std::vector<RuleStats> rules;  ///< in ExperimentResult::rules order, over the non-empty scenes
 };
 
 struct ExperimentResult {
   std::string name;
   ExperimentConfig config;
   ConvexSet2 canonical_gamut;
+  std::vector<std::string> rules;     ///< experiment_rules, then experiment_rules_3d with crule
   std::vector<ExperimentCell> cells;  ///< lights in setup order, then surfaces ascending
 };
 
