@@ -80,11 +80,14 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
                       static_cast<std::uint32_t>(s), static_cast<std::uint32_t>(s >> 32)};
     std::mt19937_64 g(seq);
     for (std::size_t i = 0; i < pool.size(); ++i) pool[i] = i;
-    std::vector<Point2> image;
-    std::vector<Colour> image_colours;
-    for (int i = 0; i < n; ++i) {  // partial Fisher–Yates: n distinct surfaces
+    // The surfaces first (partial Fisher–Yates: n distinct), then noise and shading factors from
+    // the same generator, so that options which draw more numbers never change the surfaces.
+    for (int i = 0; i < n; ++i)
       std::swap(pool[static_cast<std::size_t>(i)],
                 pool[static_cast<std::size_t>(i) + below(g, pool.size() - static_cast<std::size_t>(i))]);
+    std::vector<Point2> image;
+    std::vector<Colour> image_colours;
+    for (int i = 0; i < n; ++i) {
       Colour c = light.surfaces[pool[static_cast<std::size_t>(i)]];
       if (config.noise > 0)
         for (Rational* x : {&c.r, &c.g, &c.b})
