@@ -13,6 +13,13 @@ namespace gmcc::internal {
 /// inputs (cheap even when they have hundreds of digits), kept when the enclosure pins the angle
 /// to 2^-56 relative; otherwise (tiny angles, where the cross product cancels) in MPFR at
 /// 160 bits from the exact inputs rounded once. Either way the double is within about one ulp.
+/// Equal vectors give 0 at once; between the two stages above, the cross product is enclosed
+/// from its exact value (integer cross-multiplication), which settles small angles.
 double angle_deg(const std::array<Rational, 3>& u, const std::array<Rational, 3>& v);
+
+/// A rigorous enclosure of ∠(u, v) in degrees from the first stage alone, however wide (for
+/// pruning: a maximum need not evaluate candidates that certainly lose). Needs the x87 fast path.
+struct LDInterval;
+LDInterval angle_deg_enclosure(const std::array<Rational, 3>& u, const std::array<Rational, 3>& v);
 
 }  // namespace gmcc::internal
