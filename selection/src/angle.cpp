@@ -63,8 +63,12 @@ LDInterval exact_cross(const Rational& ui, const Rational& vj, const Rational& u
 }  // namespace
 
 LDInterval angle_deg_enclosure(const std::array<Rational, 3>& u_exact, const std::array<Rational, 3>& v_exact) {
-  LDInterval u[3], v[3];
+  std::array<LDInterval, 3> u, v;
   for (int k = 0; k < 3; ++k) u[k] = enclose_ld(u_exact[k]), v[k] = enclose_ld(v_exact[k]);
+  return angle_deg_enclosure(u, v);
+}
+
+LDInterval angle_deg_enclosure(const std::array<LDInterval, 3>& u, const std::array<LDInterval, 3>& v) {
   LDInterval cross2{0, 0};
   for (int k = 0; k < 3; ++k) {
     const int i = (k + 1) % 3, j = (k + 2) % 3;

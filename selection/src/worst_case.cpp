@@ -25,9 +25,10 @@ double worst_case_map_deg(const ConvexSet2& F, const Point2& m) {
   // like every angle_deg result) cannot exceed the winner's either, so it is not evaluated.
   std::vector<internal::LDInterval> enclosures;
   enclosures.reserve(F.vertices.size());
+  const internal::LDInterval mx = internal::enclose_ld(m.x), my = internal::enclose_ld(m.y);
   long double best_lo = 0;
   for (const Point2& v : F.vertices) {
-    enclosures.push_back(internal::angle_deg_enclosure(lifted_m, lifted(v)));
+    enclosures.push_back(internal::angle_deg_enclosure({mx, my, {1, 1}}, {internal::enclose_ld(v.x), internal::enclose_ld(v.y), {1, 1}}));
     best_lo = std::max(best_lo, enclosures.back().lo);
   }
   const long double threshold = best_lo * (1 - 0x1p-40L);

@@ -4,6 +4,8 @@
 
 #include <gmcc/geometry/rational.h>
 
+#include "ld_interval.h"
+
 #include <array>
 
 namespace gmcc::internal {
@@ -19,7 +21,8 @@ double angle_deg(const std::array<Rational, 3>& u, const std::array<Rational, 3>
 
 /// A rigorous enclosure of ∠(u, v) in degrees from the first stage alone, however wide (for
 /// pruning: a maximum need not evaluate candidates that certainly lose). Needs the x87 fast path.
-struct LDInterval;
 LDInterval angle_deg_enclosure(const std::array<Rational, 3>& u, const std::array<Rational, 3>& v);
+/// The same from enclosures of u and v.
+LDInterval angle_deg_enclosure(const std::array<LDInterval, 3>& u, const std::array<LDInterval, 3>& v);
 
 }  // namespace gmcc::internal
