@@ -47,7 +47,40 @@ double angle_mpfr(const std::array<Rational, 3>& u_exact, const std::array<Ratio
 
 }  // namespace
 
+namespace {
+bool tight_degrees(const LDInterval& deg) { return deg.hi - deg.lo <= std::ldexp(deg.lo, -56); }
+double midpoint(const LDInterval& deg) { return static_cast<double>(deg.lo + (deg.hi - deg.lo) / 2); }
+
+// (u×v)_k = u_i v_j − u_j v_i enclosed from its exact value n/d, formed by integer
+// cross-multiplication (no gcd): accurate however small the angle, unlike the difference of two
+// enclosed products.
+LDInterval exact_cross(const Rational& ui, const Rational& vj, const Rational& uj, const Rational& vi) {
+  const mpz_class d1 = ui.get_den() * vj.get_den(), d2 = uj.get_den() * vi.get_den();
+  const mpz_class n = ui.get_num() * vj.get_num() * d2 - uj.get_num() * vi.get_num() * d1;
+  const mpz_class d = d1 * d2;
+  return enclose_ld(n.get_mpz_t(), d.get_mpz_t());
+}
+}  // namespace
+
+LDInterval angle_deg_enclosure(const std::array<Rational, 3>& u_exact, const std::array<Rational, 3>& v_exact) {
+  std::array<LDInterval, 3> u, v;
+  for (int k = 0; k < 3; ++k) u[k] = enclose_ld(u_exact[k]), v[k] = enclose_ld(v_exact[k]);
+  return angle_deg_enclosure(u, v);
+}
+
+LDInterval angle_deg_enclosure(const std::array<LDInterval, 3>& u, const std::array<LDInterval, 3>& v) {
+  LDInterval cross2{0, 0};
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    const LDInterval c = u[i] * v[j] - u[j] * v[i];
+    cross2 = cross2 + c * c;
+  }
+  const LDInterval dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+  return atan2(sqrt(cross2), dot) * degrees_per_radian;
+}
+
 double angle_deg(const std::array<Rational, 3>& u_exact, const std::array<Rational, 3>& v_exact) {
+  if (u_exact == v_exact) return 0;  // what the MPFR route returns for them, exactly
   if (fast_path_available) {
     LDInterval u[3], v[3];
     for (int k = 0; k < 3; ++k) u[k] = enclose_ld(u_exact[k]), v[k] = enclose_ld(v_exact[k]);
@@ -60,8 +93,18 @@ double angle_deg(const std::array<Rational, 3>& u_exact, const std::array<Ration
     const LDInterval dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
     if (cross2.lo > 0) {  // a positive angle, bounded away from 0
       const LDInterval deg = atan2(sqrt(cross2), dot) * degrees_per_radian;
-      if (deg.hi - deg.lo <= std::ldexp(deg.lo, -56))
-        return static_cast<double>(deg.lo + (deg.hi - deg.lo) / 2);
+      if (tight_degrees(deg)) return midpoint(deg);
+    }
+    // Small angles: the cross product from its exact value.
+    cross2 = LDInterval{0, 0};
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      const LDInterval c = exact_cross(u_exact[i], v_exact[j], u_exact[j], v_exact[i]);
+      cross2 = cross2 + c * c;
+    }
+    if (cross2.lo > 0) {
+      const LDInterval deg = atan2(sqrt(cross2), dot) * degrees_per_radian;
+      if (tight_degrees(deg)) return midpoint(deg);
     }
   }
   return angle_mpfr(u_exact, v_exact);

@@ -67,15 +67,17 @@ long double top_bits(mpz_srcptr z, long& e) {
 }
 }  // namespace
 
-LDInterval enclose_ld(const Rational& q) {
-  if (sgn(q) == 0) return {0, 0};
+LDInterval enclose_ld(mpz_srcptr num, mpz_srcptr den) {
+  if (mpz_sgn(num) == 0) return {0, 0};
   long en, ed;
-  const long double n = top_bits(q.get_num_mpz_t(), en), d = top_bits(q.get_den_mpz_t(), ed);
-  const long double ratio = sgn(q) > 0 ? n / d : -(n / d);
+  const long double n = top_bits(num, en), d = top_bits(den, ed);
+  const long double ratio = mpz_sgn(num) > 0 ? n / d : -(n / d);
   const long double v = en == ed ? ratio : std::ldexp(ratio, static_cast<int>(en - ed));
   // One-limb numerator and denominator are exact: only the division rounds (2^-64).
-  const bool exact_parts = mpz_size(q.get_num_mpz_t()) <= 1 && mpz_size(q.get_den_mpz_t()) <= 1;
+  const bool exact_parts = mpz_size(num) <= 1 && mpz_size(den) <= 1;
   return LDInterval::around(v, v, exact_parts ? LDInterval::push : 0x1p-60L);
 }
+
+LDInterval enclose_ld(const Rational& q) { return enclose_ld(q.get_num_mpz_t(), q.get_den_mpz_t()); }
 
 }  // namespace gmcc::internal

@@ -1,4 +1,5 @@
 #include "../test_support.h"
+#include "feasible_set_reference.h"
 
 #include <gmcc/geometry/chromaticity.h>
 #include <gmcc/geometry/feasible_set.h>
@@ -165,6 +166,64 @@ BOOST_AUTO_TEST_CASE(random_scenes_order_invariance_containment_and_maximality) 
     }
   }
   BOOST_TEST(polygons > 40);  // the generator does exercise proper polygons
+}
+
+// The filtered predicates against the unfiltered reference (every decision in GMP integers), on
+// grid scenes where repeated, collinear and on-the-line vertices are common.
+BOOST_AUTO_TEST_CASE(filtered_clipping_equals_exact_clipping_on_degenerate_grids) {
+  Rng rng(6);
+  int kinds[4] = {};
+  for (int trial = 0; trial < 400; ++trial) {
+    const auto canonical_pts = test::random_points(rng, 1 + trial % 9, 1, 4, 2 + trial % 3);
+    const ConvexSet2 G = convex_hull(canonical_pts);
+    std::vector<Point2> image;
+    const Point2 d{test::random_rational(rng, 1, 6, 2), test::random_rational(rng, 1, 6, 2)};
+    for (int i = 0; i < 1 + trial % 6; ++i) {
+      const Point2& p = canonical_pts[std::uniform_int_distribution<std::size_t>(0, canonical_pts.size() - 1)(rng)];
+      image.push_back(trial % 3 ? Point2{Rational(p.x / d.x), Rational(p.y / d.y)}
+                                : test::random_points(rng, 1, 1, 4, 2)[0]);
+    }
+    const ConvexSet2 F = feasible_set(G, image);
+    BOOST_TEST(F == test::reference::feasible_set_reference(G, image));
+    ++kinds[static_cast<int>(F.kind)];
+  }
+  for (int k = 0; k < 4; ++k) BOOST_TEST(kinds[k] > 5);  // polygons, segments, points, empty sets
+}
+
+// Ulp-level degeneracies: canonical vertices a few ulps of double apart, and image colours whose
+// constraint lines pass within 2^-70 of a vertex of F or exactly through it. The double filter
+// cannot decide these; the exact fallback must, and the result must equal the reference.
+BOOST_AUTO_TEST_CASE(filtered_clipping_on_ulp_level_degeneracies) {
+  Rng rng(7);
+  const Rational ulp(1, mpz_class(1) << 52), tiny(1, mpz_class(1) << 70);
+  for (int trial = 0; trial < 150; ++trial) {
+    const Rational base = test::random_rational(rng, 1, 8, 3);
+    const Rational e = trial % 2 ? ulp : tiny;
+    const int k = 1 + trial % 3;
+    const ConvexSet2 G = convex_hull({{base, base},
+                                      {Rational(base + k * e), base},
+                                      {Rational(base + k * e), Rational(base + e)},
+                                      {base, Rational(base + 2 * e)},
+                                      {Rational(2 * base), Rational(base + e)}});
+    std::vector<Point2> image{{1, 1}};
+    if (trial % 5) image.push_back({Rational(1 + (trial % 4) * e), Rational(1 - (trial % 3) * e)});
+    if (trial % 7 == 0) image.push_back({Rational(2), Rational(1)});
+    const ConvexSet2 F = feasible_set(G, image);
+    BOOST_TEST(F == test::reference::feasible_set_reference(G, image));
+  }
+}
+
+// Inputs beyond the filter's range (coordinates near 2^±200) take the exact path throughout.
+BOOST_AUTO_TEST_CASE(filtered_clipping_out_of_range_inputs_are_exact) {
+  const Rational big(mpz_class(1) << 200), small(1, mpz_class(1) << 200);
+  const ConvexSet2 G = convex_hull({{1, 1}, {3, 1}, {3, 2}, {1, 3}});
+  for (const Rational& s : {big, small}) {
+    const std::vector<Point2> image{{s, s}, {Rational(2 * s), s}};
+    BOOST_TEST(feasible_set(G, image) == test::reference::feasible_set_reference(G, image));
+  }
+  const CanonicalConstraints prepared(G);
+  const std::vector<Point2> image{{1, 1}, {Rational(3, 2), Rational(5, 4)}};
+  BOOST_TEST(feasible_set(prepared, image) == feasible_set(G, image));
 }
 
 BOOST_AUTO_TEST_CASE(bad_arguments_throw) {

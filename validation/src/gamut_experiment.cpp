@@ -62,8 +62,8 @@ Point2 exact_map(const MapEstimate& e) {
 }
 
 ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& config,
-                        const ConvexSet2& gamut, std::size_t light_index, int n,
-                        std::atomic<std::uint64_t>& done) {
+                        const CanonicalConstraints& gamut, const std::vector<Point2>& chromaticities,
+                        std::size_t light_index, int n, std::atomic<std::uint64_t>& done) {
   const TestLight& light = setup.lights[light_index];
   ExperimentCell cell;
   cell.light = light.name;
@@ -88,7 +88,14 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
     std::vector<Point2> image;
     std::vector<Colour> image_colours;
     for (int i = 0; i < n; ++i) {
-      Colour c = light.surfaces[pool[static_cast<std::size_t>(i)]];
+      const std::size_t surface = pool[static_cast<std::size_t>(i)];
+      // Without noise the chromaticities are the light's, computed once (shading scales a
+      // colour, not its chromaticity); the colours themselves are kept only for 3-D CRULE.
+      if (config.noise <= 0 && !config.crule) {
+        if (sgn(light.surfaces[surface].b) > 0) image.push_back(chromaticities[surface]);
+        continue;
+      }
+      Colour c = light.surfaces[surface];
       if (config.noise > 0)
         for (Rational* x : {&c.r, &c.g, &c.b})
           *x *= rational_from_double(std::max(0.0, 1 + config.noise * normal(g)));
@@ -179,6 +186,14 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
     for (int n = config.min_surfaces; n <= config.max_surfaces; ++n) jobs.push_back({l, n});
   result.cells.resize(jobs.size());
 
+  const CanonicalConstraints gamut(result.canonical_gamut);  // prepared once for every scene
+  // Without noise a scene's colours are the light's surfaces as given: their chromaticities are
+  // computed once per light (b <= 0 left as a placeholder; scenes skip those surfaces).
+  std::vector<std::vector<Point2>> chromaticities(setup.lights.size());
+  if (config.noise <= 0)
+    for (std::size_t l = 0; l < setup.lights.size(); ++l)
+      for (const Colour& c : setup.lights[l].surfaces)
+        chromaticities[l].push_back(sgn(c.b) > 0 ? perspective_chromaticity(c) : Point2{});
   std::atomic<std::size_t> next{0};
   std::atomic<std::uint64_t> done{0};
   std::exception_ptr failure;
@@ -187,7 +202,7 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
   auto worker = [&] {
     for (std::size_t j; (j = next++) < jobs.size();) {
       try {
-        result.cells[j] = run_cell(setup, config, result.canonical_gamut, jobs[j].light, jobs[j].n, done);
+        result.cells[j] = run_cell(setup, config, gamut, chromaticities[jobs[j].light], jobs[j].light, jobs[j].n, done);
       } catch (...) {
         std::lock_guard<std::mutex> lock(failure_mutex);
         if (!failure) failure = std::current_exception();

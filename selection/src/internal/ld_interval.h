@@ -73,4 +73,8 @@ inline constexpr bool fast_path_available =
 /// relative error < 2^-61 (2^-64 when both parts fit).
 LDInterval enclose_ld(const Rational& q);
 
+/// The same for num/den given as integers (den > 0, not necessarily coprime): an enclosure of
+/// an exact quotient computed without its gcd.
+LDInterval enclose_ld(mpz_srcptr num, mpz_srcptr den);
+
 }  // namespace gmcc::internal

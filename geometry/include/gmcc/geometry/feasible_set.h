@@ -6,6 +6,7 @@
 
 #include <gmcc/geometry/convex_set.h>
 
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -15,6 +16,20 @@ namespace gmcc {
 /// r = 0, or every one has g = 0): F is then an unbounded set and no rule can select from it.
 struct UnboundedFeasibleSet : std::domain_error {
   using std::domain_error::domain_error;
+};
+
+/// G_c prepared once for many feasible sets (an experiment's scenes): its half-planes as exact
+/// integer lines with their floating-point filters. Immutable, so one object may serve many
+/// threads.
+class CanonicalConstraints {
+ public:
+  /// \throws std::invalid_argument if `canonical` is empty.
+  explicit CanonicalConstraints(const ConvexSet2& canonical);
+  struct Impl;
+
+ private:
+  std::shared_ptr<const Impl> impl_;
+  friend ConvexSet2 feasible_set(const CanonicalConstraints& canonical, const std::vector<Point2>& image);
 };
 
 /// F, exactly, with its kind (polygon, segment, point or empty).
@@ -29,7 +44,15 @@ struct UnboundedFeasibleSet : std::domain_error {
 /// \param image      image chromaticities, non-empty, components >= 0.
 /// \throws std::invalid_argument on empty inputs or negative components;
 ///         UnboundedFeasibleSet as documented above.
+/// Every decision (which side of a line a vertex lies on, whether two vertices coincide) is the
+/// sign of a determinant of input-line coefficients, decided in double with a rigorous error
+/// bound and in exact integers only when the bound does not settle it; vertices are kept as pairs
+/// of input lines and constructed exactly only at the end (docs/performance.md). The result is
+/// the same exact set either way.
 /// Complexity O(k·m·|F|) for k image-hull vertices and m canonical edges.
 ConvexSet2 feasible_set(const ConvexSet2& canonical, const std::vector<Point2>& image);
+
+/// The same, with G_c prepared once.
+ConvexSet2 feasible_set(const CanonicalConstraints& canonical, const std::vector<Point2>& image);
 
 }  // namespace gmcc

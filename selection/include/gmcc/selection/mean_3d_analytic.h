@@ -12,7 +12,8 @@ namespace gmcc {
 /// Options of the closed-form route.
 struct AnalyticOptions {
   /// Working precision in bits, forced; 0 (the default) chooses it: first a rigorous interval
-  /// evaluation in x87 extended precision, kept when it pins both components to 2^-51; otherwise
+  /// evaluation in x87 extended precision (from the vertices, then from exactly formed edge
+  /// vectors), kept when its width is at most 2^-50 of each component (bound 2^-51 + 2^-53); otherwise
   /// MPFI at 53 + 40 + 2·log2(1/ε) bits for a polygon of angular width ε (MATH §1a.7), doubled
   /// until the enclosure pins both components to 2^-60 relative.
   unsigned precision_bits = 0;
