@@ -1,6 +1,7 @@
 #include "accuracy.h"
 
 #include "integer_option.h"
+#include "write_stdout.h"
 
 #include <gmcc/geometry/convex_hull.h>
 #include <gmcc/geometry/rational.h>
@@ -508,7 +509,7 @@ int run_accuracy(const AccuracyOptions& options) {
   const std::vector<Series> series = plot_series(o);
   if (dat_file) dat_file->commit(plot_data(results, series));
   if (gp_file) gp_file->commit(plot_script(series));
-  std::cout << table(results, o) << std::flush;
+  write_stdout(table(results, o));
   if (options.plot_dir.empty()) return 0;
 
   const std::optional<std::string> gnuplot = find_on_path("gnuplot");

@@ -32,6 +32,8 @@ struct Selections {
 /// Apply max_area, mean_2d and mean_3d (by the route in `mean3d`) to F with their worst cases,
 /// in map space and in illuminant space for the canonical illuminant c. The worst cases of an
 /// irrational estimate are measured from its reported double map, taken exactly.
+/// \throws std::domain_error if a vertex of F exceeds the range of doubles (the maps are
+///         reported as doubles).
 Selections select_maps(const ConvexSet2& F, const Mean3dOptions& mean3d = {},
                        const Colour& canonical_illuminant = {1, 1, 1});
 
