@@ -196,6 +196,10 @@ def main():
             unreadable = r.write(GOOD, "unreadable")
             os.chmod(unreadable, 0)
             r.expect_error("unreadable file", unreadable, r.write(GOOD_IMAGE, "image"), unreadable, None)
+        huge = r.write(b"", "huge")  # sparse: 257 MiB of zeros that take no disk space
+        os.truncate(huge, 257 << 20)
+        r.expect_error("file larger than 256 MiB", huge, r.write(GOOD_IMAGE, "image"), huge, None)
+        os.remove(huge)
         big = r.write(b"1e140,1e140,1\n", "canonical")
         small = r.write(b"1e-20,1e-20,1\n", "image")
         r.expect_error("feasible maps beyond 1e150", big, small, small, None)
