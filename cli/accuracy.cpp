@@ -2,6 +2,7 @@
 
 #include "integer_option.h"
 #include "output_files.h"
+#include "write_stdout.h"
 
 #include <gmcc/geometry/convex_hull.h>
 #include <gmcc/geometry/rational.h>
@@ -438,7 +439,7 @@ int run_accuracy(const AccuracyOptions& options) {
   const std::vector<Series> series = plot_series(o);
   if (dat_file) dat_file->commit(plot_data(results, series));
   if (gp_file) gp_file->commit(plot_script(series));
-  std::cout << table(results, o) << std::flush;
+  write_stdout(table(results, o));
   if (options.plot_dir.empty()) return 0;
 
   return draw_with_gnuplot(dir, "accuracy", "gmcc accuracy");

@@ -2,6 +2,7 @@
 
 #include "integer_option.h"
 #include "output_files.h"
+#include "write_stdout.h"
 
 #include <gmcc/geometry/illumination_constraint.h>
 #include <gmcc/validation/camera_experiment.h>
@@ -135,7 +136,7 @@ int report(const ExperimentSetup& setup, ExperimentConfig config, const Reproduc
   if (csv_file) csv_file->commit(experiment_csv(result));
   if (dat_file) dat_file->commit(experiment_plot_data(result));
   if (gp_file) gp_file->commit(experiment_plot_script(result, setup.name));
-  std::cout << experiment_table(result) << std::flush;
+  write_stdout(experiment_table(result));
   return o.plot_dir.empty() ? 0 : draw_with_gnuplot(o.plot_dir, setup.name, "gmcc reproduce");
 }
 

@@ -3,16 +3,24 @@
 #include "integer_option.h"
 #include "json_output.h"
 #include "select_3d.h"
+#include "write_stdout.h"
 
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/illumination_constraint.h>
 #include <gmcc/geometry/intersection.h>
 #include <gmcc/validation/colour_csv.h>
 
-#include <iostream>
-
 namespace gmcc::cli {
 namespace {
+
+// Largest coordinate accepted for chromaticities, gamuts and maps: far beyond any physical
+// value, and small enough that every number gmcc reports as a double (coordinates, enclosures
+// rounded outward, areas up to 1e300) stays finite.
+const Rational& max_coordinate() {
+  static const Rational limit = parse_rational("1e150");
+  return limit;
+}
+bool within_limit(const Point2& p) { return p.x <= max_coordinate() && p.y <= max_coordinate(); }
 
 // Chromaticities of a colour file under the blue policy, with line-accurate errors.
 Chromaticities chromaticities_of(const ColourTable& table, NonPositiveBluePolicy policy) {
@@ -27,6 +35,11 @@ Chromaticities chromaticities_of(const ColourTable& table, NonPositiveBluePolicy
   if (c.points.empty())
     throw InputError(table.file, 0,
                      "no usable colour: every colour has b = 0 and so no chromaticity");
+  for (std::size_t i = 0; i < c.points.size(); ++i)
+    if (!within_limit(c.points[i]))
+      throw InputError(table.file, table.lines[c.source_index[i]],
+                       "the chromaticity r/b or g/b exceeds 1e150, the largest gmcc accepts "
+                       "(it reports doubles): is b nearly 0?");
   return c;
 }
 
@@ -121,65 +134,81 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
   return cmd;
 }
 
-int run_select(const SelectOptions& o) {
-  if (o.space == "3d") return run_select_3d(o);
-  SelectReport r;
-  const NonPositiveBluePolicy policy =
+SelectSettings select_settings(const SelectOptions& o) {
+  SelectSettings s;
+  s.json = o.json;
+  s.on_empty = o.on_empty;
+  s.nonpositive_blue =
       o.nonpositive_blue == "reject" ? NonPositiveBluePolicy::reject : NonPositiveBluePolicy::drop;
-  Expansion expansion;
   try {
-    expansion.policy = expansion_policy_from_string(o.expand_policy);
-    expansion.factor = parse_rational(o.expand_factor);
-    if (sgn(expansion.factor) < 0) throw std::invalid_argument("must be >= 0");
-    if (sgn(expansion.factor) > 0 && expansion.policy == ExpansionPolicy::none)
+    s.expansion.policy = expansion_policy_from_string(o.expand_policy);
+    s.expansion.factor = parse_rational(o.expand_factor);
+    if (sgn(s.expansion.factor) < 0) throw std::invalid_argument("must be >= 0");
+    if (sgn(s.expansion.factor) > 0 && s.expansion.policy == ExpansionPolicy::none)
       throw std::invalid_argument("needs --expand-policy centroid-clip or multiplicative");
   } catch (const std::invalid_argument& e) {
     throw InputError("--expand", 0, e.what());
   }
-  r.expansion = expansion;
   try {
     const ColourTable c = parse_colour_csv(o.canonical_illuminant, "--canonical-illuminant");
     if (c.colours.size() != 1) throw InputError("--canonical-illuminant", 0, "expected one r,g,b");
-    r.canonical_illuminant = c.colours[0];
-    for (const Rational* x : {&r.canonical_illuminant.r, &r.canonical_illuminant.g, &r.canonical_illuminant.b})
+    s.canonical_illuminant = c.colours[0];
+    for (const Rational* x : {&s.canonical_illuminant.r, &s.canonical_illuminant.g, &s.canonical_illuminant.b})
       if (sgn(*x) <= 0) throw InputError("--canonical-illuminant", 0, "every channel must be > 0");
   } catch (const InputError& e) {
     throw InputError("--canonical-illuminant", 0,
                      "'" + o.canonical_illuminant + "' is not a light r,g,b with channels > 0");
   }
 
-  Mean3dOptions mean3d;
-  mean3d.method = mean3d_method_from_string(o.mean3d_method);
-  mean3d.precision_bits = static_cast<unsigned>(integer_option("--precision", o.precision_bits, 0, 1u << 20));
-  if (mean3d.precision_bits != 0 && mean3d.precision_bits < 53)
+  s.mean3d.method = mean3d_method_from_string(o.mean3d_method);
+  s.mean3d.precision_bits = static_cast<unsigned>(integer_option("--precision", o.precision_bits, 0, 1u << 20));
+  if (s.mean3d.precision_bits != 0 && s.mean3d.precision_bits < 53)
     throw InputError("--precision", 0, "must be 0 (automatic) or from 53 to 1048576 bits");
-  mean3d.order = static_cast<unsigned>(integer_option("--order", o.order, 1, 1000));
-  mean3d.samples = integer_option("--samples", o.samples, 1, std::uint64_t(1) << 40);
-  mean3d.seed = integer_option("--seed", o.seed, 0, ~std::uint64_t(0));
+  s.mean3d.order = static_cast<unsigned>(integer_option("--order", o.order, 1, 1000));
+  s.mean3d.samples = integer_option("--samples", o.samples, 1, std::uint64_t(1) << 40);
+  s.mean3d.seed = integer_option("--seed", o.seed, 0, ~std::uint64_t(0));
+  return s;
+}
 
-  const ColourTable canonical = read_colour_csv(o.canonical_path);
-  const ColourTable image = read_colour_csv(o.image_path);
-  const Chromaticities cq = chromaticities_of(canonical, policy);
-  const Chromaticities iq = chromaticities_of(image, policy);
+std::string select_output(const SelectSettings& s, const ColourTable& canonical,
+                          const ColourTable& image, const ColourTable* illuminants) {
+  SelectReport r;
+  r.expansion = s.expansion;
+  r.canonical_illuminant = s.canonical_illuminant;
+  const Chromaticities cq = chromaticities_of(canonical, s.nonpositive_blue);
+  const Chromaticities iq = chromaticities_of(image, s.nonpositive_blue);
   r.canonical_colours = canonical.colours.size();
   r.canonical_dropped = cq.dropped;
   r.image_colours = image.colours.size();
   r.image_dropped = iq.dropped;
 
-  r.canonical_gamut = canonical_gamut(cq.points, expansion);
+  r.canonical_gamut = canonical_gamut(cq.points, s.expansion);
+  for (const Point2& v : r.canonical_gamut.vertices)
+    if (!within_limit(v))
+      throw InputError("--expand", 0,
+                       "the expanded canonical gamut exceeds 1e150, the largest coordinate "
+                       "gmcc accepts (it reports doubles)");
   try {
     r.feasible = feasible_set(r.canonical_gamut, iq.points);
   } catch (const UnboundedFeasibleSet& e) {
-    throw InputError(o.image_path, 0, e.what());
+    throw InputError(image.file, 0, e.what());
   }
-  if (!o.illuminants_path.empty()) {
-    const ColourTable lights = read_colour_csv(o.illuminants_path);
+  // F's coordinates are canonical over image chromaticities: both within the limit can still
+  // give maps beyond it.
+  for (const Point2& v : r.feasible.vertices)
+    if (!within_limit(v))
+      throw InputError(image.file, 0,
+                       "against the canonical gamut of " + canonical.file +
+                           ", the feasible maps exceed 1e150, the largest coordinate gmcc "
+                           "accepts (it reports doubles): the canonical chromaticities are "
+                           "that much larger than this image's");
+  if (illuminants) {
     ConstraintReport c;
-    c.illuminants = lights.colours.size();
+    c.illuminants = illuminants->colours.size();
     try {
-      c.maps = illumination_constraint(lights.colours, r.canonical_illuminant);
+      c.maps = illumination_constraint(illuminants->colours, r.canonical_illuminant);
     } catch (const NonPositiveIlluminant& e) {
-      throw InputError(lights.file, lights.lines[e.index],
+      throw InputError(illuminants->file, illuminants->lines[e.index],
                        "an illuminant needs every channel > 0 (its map c ⊘ e is undefined)");
     }
     c.unconstrained = r.feasible;
@@ -191,11 +220,19 @@ int run_select(const SelectOptions& o) {
                          ? "the feasible set is not empty, but it holds no map of a plausible "
                            "illuminant (--illuminants)"
                          : "no diagonal map takes every image colour into the canonical gamut";
-  if (o.on_empty != "none") r.recovery = recover(o.on_empty, expansion, cq.points, iq.points, r);
-  r.selections = select_maps(r.feasible, {mean3d, r.canonical_illuminant});
+  if (s.on_empty != "none") r.recovery = recover(s.on_empty, s.expansion, cq.points, iq.points, r);
+  r.selections = select_maps(r.feasible, {s.mean3d, r.canonical_illuminant});
+  return s.json ? select_json(r) : select_text(r);
+}
 
-  const std::string out = o.json ? select_json(r) : select_text(r);
-  std::cout << out << std::flush;
+int run_select(const SelectOptions& o) {
+  if (o.space == "3d") return run_select_3d(o);
+  const SelectSettings settings = select_settings(o);
+  const ColourTable canonical = read_colour_csv(o.canonical_path);
+  const ColourTable image = read_colour_csv(o.image_path);
+  std::optional<ColourTable> illuminants;
+  if (!o.illuminants_path.empty()) illuminants = read_colour_csv(o.illuminants_path);
+  write_stdout(select_output(settings, canonical, image, illuminants ? &*illuminants : nullptr));
   return 0;
 }
 

@@ -5,6 +5,7 @@
 #include <gmcc/geometry/canonical_gamut.h>
 #include <gmcc/geometry/chromaticity.h>
 #include <gmcc/selection/mean_3d.h>
+#include <gmcc/validation/colour_csv.h>
 
 #include <CLI/CLI.hpp>
 
@@ -35,8 +36,29 @@ struct SelectOptions {
 /// Register the subcommand and its options on `app`; returns the subcommand.
 CLI::App* add_select_command(CLI::App& app, SelectOptions& options);
 
-/// Run it: the whole output is built first and written at once (never a partial document).
-/// Returns the exit status; bad input throws gmcc::InputError (exit 2 at the edge).
+/// The options of one run, parsed and checked.
+struct SelectSettings {
+  bool json = false;
+  NonPositiveBluePolicy nonpositive_blue = NonPositiveBluePolicy::drop;
+  Expansion expansion;
+  Colour canonical_illuminant{1, 1, 1};
+  Mean3dOptions mean3d;
+  std::string on_empty = "none";  // none | grow-canonical | min-violation
+};
+
+/// Parse and check the options (numbers read exactly, integers range-checked).
+/// \throws InputError naming the option.
+SelectSettings select_settings(const SelectOptions& options);
+
+/// The whole output of `gmcc select` for two parsed colour files: one JSON document (SPEC §5)
+/// or the summary. Split from run_select so that the pipeline runs in-process (fuzz/).
+/// \throws InputError when the files admit no answer (no usable colour, unbounded F).
+/// `illuminants`, when given, are the plausible lights of the illumination constraint.
+std::string select_output(const SelectSettings& settings, const ColourTable& canonical,
+                          const ColourTable& image, const ColourTable* illuminants = nullptr);
+
+/// Run it: options, files, select_output, then the output written at once (never a partial
+/// document). Returns the exit status; bad input throws gmcc::InputError (exit 2 at the edge).
 int run_select(const SelectOptions& options);
 
 }  // namespace gmcc::cli

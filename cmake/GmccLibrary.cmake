@@ -12,6 +12,11 @@ function(gmcc_library)
     $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   target_compile_features(${target} PUBLIC cxx_std_17)
+  if(GMCC_SANITIZE)
+    # An instrumented static library needs the sanitizer runtimes wherever it is linked,
+    # including in projects that find_package(gmcc) from an instrumented install.
+    target_link_options(${target} INTERFACE ${GMCC_SANITIZE_LINK_FLAGS})
+  endif()
   install(TARGETS ${target} EXPORT gmccTargets
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
   install(DIRECTORY include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

@@ -36,7 +36,10 @@ std::pair<double, double> outward_doubles(const Interval& x) {
   return {mpfr_get_d(lo.v, MPFR_RNDD), mpfr_get_d(hi.v, MPFR_RNDU)};
 }
 
+bool bounded(const Interval& x) { return !mpfi_nan_p(x.get()) && mpfi_bounded_p(x.get()); }
+
 bool tight(const Interval& x, int bits) {
+  if (!bounded(x)) return false;
   const mpfr_prec_t p = x.precision();
   Mpfr width(p), mag(p);
   mpfi_diam_abs(width.v, x.get());

@@ -191,6 +191,17 @@ MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options
                       (internal::tight(m[0], target_bits) && internal::tight(m[1], target_bits));
     if (done) {
       e.precision_bits = bits;
+      // Far from the origin τ3 is small against its terms; too few bits leave it straddling 0
+      // and the quotients unbounded (found by fuzz/fuzz_geometry). The automatic precision
+      // doubles past that; a forced one too low says so instead of reporting NaN.
+      if (!internal::bounded(m[0]) || !internal::bounded(m[1])) {
+        e.valid = false;
+        e.enclosure.reset();
+        e.note = "the closed form's enclosure at " + std::to_string(bits) +
+                 " bits is unbounded (its third component is not separated from 0): raise "
+                 "the precision, or leave it automatic";
+        return e;
+      }
       for (int k = 0; k < 2; ++k) {
         const auto [value, bound] = internal::nearest_with_bound(m[k]);
         e.map[k] = value;

@@ -5,6 +5,8 @@
 #include <gmcc/selection/worst_case_illuminant.h>
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 
 namespace gmcc {
 namespace {
@@ -24,6 +26,12 @@ Selection with_worst_case(const ConvexSet2& F, MapEstimate e, const std::optiona
 Selections select_maps(const ConvexSet2& F, const SelectionOptions& options) {
   Selections s;
   if (F.kind == ConvexKind::empty) return s;
+  for (const Point2& v : F.vertices) {
+    const auto d = to_double_nearest(v);
+    if (!std::isfinite(d[0]) || !std::isfinite(d[1]))
+      throw std::domain_error("select_maps: the feasible set exceeds the range of doubles "
+                              "(1.8e308), in which the estimates are reported");
+  }
   const auto& c = options.illuminant_worst_case_for;
   s.max_area = with_worst_case(F, max_area(F), c);
   s.mean_2d = with_worst_case(F, mean_2d(F), c);

@@ -9,9 +9,12 @@
 namespace gmcc {
 namespace {
 
-// A polynomial over ℚ in the edge parameter t: coefficients, constant term first, no trailing
+// A polynomial over ℤ in the edge parameter t: coefficients, constant term first, no trailing
 // zeros (the zero polynomial is empty). Degrees here are at most 5, so plain loops suffice.
-using Poly = std::vector<Rational>;
+// Integer coefficients throughout: over ℚ every operation reduces a fraction by a gcd, and
+// Euclid's remainders grow numerators and denominators at every step; on feasible sets with
+// long exact vertices (inputs of 50 digits and more) that cost seconds to minutes per edge.
+using Poly = std::vector<mpz_class>;
 
 void trim(Poly& p) {
   while (!p.empty() && sgn(p.back()) == 0) p.pop_back();
@@ -24,13 +27,18 @@ Poly add(Poly a, const Poly& b) {
   return a;
 }
 
-Poly scaled(Poly a, const Rational& k) {
-  for (Rational& x : a) x *= k;
+Poly sub(Poly a, const Poly& b) {
+  if (a.size() < b.size()) a.resize(b.size());
+  for (std::size_t i = 0; i < b.size(); ++i) a[i] -= b[i];
   trim(a);
   return a;
 }
 
-Poly sub(const Poly& a, const Poly& b) { return add(a, scaled(b, Rational(-1))); }
+Poly scaled(Poly a, const mpz_class& k) {
+  for (mpz_class& x : a) x *= k;
+  trim(a);
+  return a;
+}
 
 Poly mul(const Poly& a, const Poly& b) {
   if (a.empty() || b.empty()) return {};
@@ -43,60 +51,84 @@ Poly mul(const Poly& a, const Poly& b) {
 
 Poly derivative(const Poly& p) {
   Poly d;
-  for (std::size_t i = 1; i < p.size(); ++i) d.push_back(Rational(p[i] * static_cast<long>(i)));
+  for (std::size_t i = 1; i < p.size(); ++i) d.push_back(p[i] * static_cast<unsigned long>(i));
   trim(d);
   return d;
 }
 
-// Quotient and remainder of a by b ≠ 0 (exact long division over ℚ).
-std::pair<Poly, Poly> divide(Poly a, const Poly& b) {
-  Poly q(a.size() >= b.size() ? a.size() - b.size() + 1 : 0);
+// The rationals xs times the lcm of their denominators: integers in the same proportions
+// (a positive common factor, which changes no sign and no root below).
+std::vector<mpz_class> common_integers(const std::vector<Rational>& xs) {
+  mpz_class den_lcm = 1;
+  for (const Rational& x : xs) mpz_lcm(den_lcm.get_mpz_t(), den_lcm.get_mpz_t(), x.get_den_mpz_t());
+  std::vector<mpz_class> out;
+  for (const Rational& x : xs) {
+    mpz_class k;
+    mpz_divexact(k.get_mpz_t(), den_lcm.get_mpz_t(), x.get_den_mpz_t());
+    out.push_back(x.get_num() * k);
+  }
+  return out;
+}
+
+// p divided by the gcd of its coefficients (> 0): the same signs everywhere.
+Poly primitive(Poly p) {
+  mpz_class content = 0;
+  for (const mpz_class& c : p) mpz_gcd(content.get_mpz_t(), content.get_mpz_t(), c.get_mpz_t());
+  if (content > 1)
+    for (mpz_class& c : p) mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), content.get_mpz_t());
+  return p;
+}
+
+// k·a mod b for some integer k > 0 (b ≠ 0): pseudo-division, each step scaling a by |lc(b)|
+// so that no division is needed; k > 0 keeps a Sturm sequence's signs.
+Poly pseudo_remainder(Poly a, const Poly& b) {
+  const mpz_class lb = abs(b.back());
+  const int sign_lb = sgn(b.back());
   while (!a.empty() && a.size() >= b.size()) {
     const std::size_t shift = a.size() - b.size();
-    const Rational k = a.back() / b.back();
-    q[shift] = k;
-    for (std::size_t i = 0; i < b.size(); ++i) a[i + shift] -= k * b[i];
+    const mpz_class la = sign_lb > 0 ? a.back() : mpz_class(-a.back());
+    for (mpz_class& c : a) c *= lb;
+    for (std::size_t i = 0; i < b.size(); ++i) a[i + shift] -= la * b[i];
     a.pop_back();  // its coefficient is now exactly 0
     trim(a);
   }
-  trim(q);
-  return {std::move(q), std::move(a)};
+  return a;
 }
 
+// A gcd of a and b (up to a constant factor): primitive remainder sequence.
 Poly gcd(Poly a, Poly b) {
   while (!b.empty()) {
-    Poly r = divide(a, b).second;
+    Poly r = primitive(pseudo_remainder(a, b));
     a = std::move(b);
     b = std::move(r);
   }
   return a;
 }
 
-// p scaled by a positive rational to coprime integer coefficients: the same signs everywhere,
-// and integer arithmetic from then on (the coefficients inherit the size of the map m, which for
-// the 2-D mean can have hundreds of digits).
-Poly primitive(Poly p) {
-  if (p.empty()) return p;
-  mpz_class den_lcm = 1, num_gcd = 0;
-  for (const Rational& c : p) {
-    mpz_lcm(den_lcm.get_mpz_t(), den_lcm.get_mpz_t(), c.get_den_mpz_t());
-    mpz_gcd(num_gcd.get_mpz_t(), num_gcd.get_mpz_t(), c.get_num_mpz_t());
+// a / b when b divides a in ℤ[t] (a primitive, b primitive: by Gauss's lemma the quotient then
+// has integer coefficients, so every step divides exactly).
+Poly exact_quotient(Poly a, const Poly& b) {
+  Poly q(a.size() - b.size() + 1);
+  for (std::size_t shift = q.size(); shift-- > 0;) {
+    mpz_class k;
+    mpz_divexact(k.get_mpz_t(), a[shift + b.size() - 1].get_mpz_t(), b.back().get_mpz_t());
+    for (std::size_t i = 0; i < b.size(); ++i) a[i + shift] -= k * b[i];
+    q[shift] = std::move(k);
   }
-  const Rational k(den_lcm, num_gcd);  // > 0
-  return scaled(std::move(p), k);
+  return q;
 }
 
-// The sign of an integer-coefficient p at t = a/b (b > 0), from the homogeneous form
-// Σ c_i a^i b^(d−i): integer arithmetic only, no rational normalisation.
+// The sign of p at t = a/b (b > 0), from the homogeneous form Σ c_i a^i b^(d−i): integer
+// arithmetic only, no rational normalisation.
 int sign_at(const Poly& p, const Rational& t) {
   if (p.empty()) return 0;
   const mpz_class& a = t.get_num();
   const mpz_class& b = t.get_den();
   // Horner on the homogeneous form: r ← r·a + c_i·b^(d−i), from i = d − 1 down to 0.
-  mpz_class r = p.back().get_num(), b_power = 1;
+  mpz_class r = p.back(), b_power = 1;
   for (std::size_t i = p.size() - 1; i-- > 0;) {
     b_power *= b;
-    r = r * a + p[i].get_num() * b_power;
+    r = r * a + p[i] * b_power;
   }
   return sgn(r);
 }
@@ -119,13 +151,15 @@ int variations(const std::vector<Poly>& chain, const Rational& t) {
 // #roots in (lo, hi] = V(lo) − V(hi), also when lo or hi is a root (Basu, Pollack & Roy,
 // "Algorithms in Real Algebraic Geometry", Thm 2.50 and its proof).
 std::vector<Rational> roots_in_unit_interval(const Poly& p) {
-  const Poly s = primitive(divide(p, gcd(p, derivative(p))).first);
+  const Poly pz = primitive(p);
+  const Poly s = primitive(exact_quotient(pz, primitive(gcd(pz, derivative(pz)))));
   if (s.size() < 2) return {};
   const Poly ds = primitive(derivative(s));
   std::vector<Poly> chain{s, ds};
   for (;;) {  // positive scalings keep a Sturm sequence's signs
-    Poly r = primitive(scaled(divide(chain[chain.size() - 2], chain.back()).second, Rational(-1)));
+    Poly r = primitive(pseudo_remainder(chain[chain.size() - 2], chain.back()));
     if (r.empty()) break;
+    for (mpz_class& c : r) c = -c;
     chain.push_back(std::move(r));
   }
   const Rational width = Rational(1) >> 100;
@@ -181,6 +215,7 @@ IlluminantWorstCase worst_case_illuminant(const ConvexSet2& F, const Point2& m, 
   // e: the estimate's illuminant c ⊘ (m, 1). A candidate x implies the direction c ⊘ (x, 1); the
   // angle grows as cos²/|e|² = (e·w)²/|w|² falls, compared exactly (e·w > 0: all positive).
   const std::array<Rational, 3> e{Rational(c.r / m.x), Rational(c.g / m.y), c.b};
+  const std::vector<mpz_class> e_int = common_integers({e[0], e[1], e[2]});
   auto closeness = [&](const Point2& x) {
     const Rational w0 = c.r / x.x, w1 = c.g / x.y;
     const Rational ew = e[0] * w0 + e[1] * w1 + e[2] * c.b;
@@ -207,16 +242,19 @@ IlluminantWorstCase worst_case_illuminant(const ConvexSet2& F, const Point2& m, 
     const Point2& p = vs[i];
     const Point2& q = vs[(i + 1) % vs.size()];
     const Rational da = q.x - p.x, db = q.y - p.y;
-    Poly a{p.x, da}, b{p.y, db};
-    trim(a);
-    trim(b);
-    // v(t) = a·b · (c ⊘ (a, b, 1)) = (c1·b, c2·a, c3·a·b).
-    const std::array<Poly, 3> v{scaled(b, c.r), scaled(a, c.g), scaled(mul(a, b), c.b)};
+    // v(t) = a·b · (c ⊘ (a, b, 1)) = (c1·b, c2·a, c3·a·b) with a = p.x + t·da, b = p.y + t·db,
+    // scaled by a positive integer to integer coefficients (the angle's stationary points are
+    // unchanged by positive scalings of v and of e).
+    const std::vector<mpz_class> k = common_integers(
+        {c.r * p.y, c.r * db, c.g * p.x, c.g * da, c.b * p.x * p.y,
+         c.b * (p.x * db + da * p.y), c.b * da * db});
+    std::array<Poly, 3> v{Poly{k[0], k[1]}, Poly{k[2], k[3]}, Poly{k[4], k[5], k[6]}};
+    for (Poly& vj : v) trim(vj);
     const std::array<Poly, 3> dv{derivative(v[0]), derivative(v[1]), derivative(v[2])};
     Poly e_v, e_dv, v_v, v_dv;
     for (int j = 0; j < 3; ++j) {
-      e_v = add(e_v, scaled(v[j], e[j]));
-      e_dv = add(e_dv, scaled(dv[j], e[j]));
+      e_v = add(e_v, scaled(v[j], e_int[j]));
+      e_dv = add(e_dv, scaled(dv[j], e_int[j]));
       v_v = add(v_v, mul(v[j], v[j]));
       v_dv = add(v_dv, mul(v[j], dv[j]));
     }

@@ -4,10 +4,12 @@
     /usr/bin/python3 tests/cli/test_select_errors.py GMCC_BINARY
 
 Bad input (missing file, malformed number, NaN/inf, negative channel, wrong column count, no
-usable colour, binary garbage) must give exit status 2, NOTHING on stdout, and exactly one
-message line on stderr of the form `gmcc: error: FILE:LINE: what` naming the offending file and,
-for line-level problems, the physical 1-based line number (`FILE:LINE:`).  The bad file is tried
-both as --canonical and as --image (the other file valid).
+usable colour, binary garbage, a line or number beyond the limits of docs/cli.md) must give exit
+status 2, NOTHING on stdout, and exactly one short message line on stderr, free of control
+characters, of the form `gmcc: error: FILE:LINE: what` naming the offending file and, for
+line-level problems, the physical 1-based line number (`FILE:LINE:`).  The bad file is tried
+both as --canonical and as --image (the other file valid).  So are directories, unreadable files
+(unless run as root), maps beyond the limits, and a full disk on stdout (/dev/full).
 
 Odd but valid input (CRLF, UTF-8 BOM, comments, blank lines, spaces around numbers, p/q, the
 header `r,g,b`, colours with b = 0, exponents beyond double range) must give exit status 0 and
@@ -73,6 +75,15 @@ BAD_CONTENT = [
     ("line count after b = 0 lines", b"1,1,1\n1,1,0\n0,0,0\n1,1,1\n1,1,abc\n", 5),
     ("late error", b"".join(b"%d,%d,%d\n" % (i, i + 1, i + 2) for i in range(1, 50))
      + b"1,2,3,4\n", 50),
+    # Limits (docs/cli.md): line length, digits per number, and chromaticities the doubles of
+    # the output can hold; messages quote at most 40 characters, non-printable bytes escaped.
+    ("enormous line", b"1,1,1\n" + b"7" * 100000 + b"\n", 2),
+    ("a megabyte with no line end", b"1" * (1 << 20), 1),
+    ("number with 101 digits", b"1,1,1\n1,2," + b"3" * 101 + b"\n", 2),
+    ("p/q with 101 digits", b"1,1,1\n1,2," + b"3" * 50 + b"/" + b"7" * 51 + b"\n", 2),
+    ("binary garbage without NUL", b"1,1,1\n\x80\x81,\xfe\xff,\x01\x1b[2J\n", 2),
+    ("chromaticity beyond 1e150", b"1,1,1\n1,1,1e-151\n", 2),
+    ("r/b beyond 1e150", b"1,1,1\n1e100,1,1/1" + b"0" * 60 + b"\n", 2),
 ]
 
 
@@ -91,11 +102,12 @@ class Runner:
             f.write(content)
         return path
 
-    def run(self, cpath, ipath):
+    def run(self, cpath, ipath, extra=(), stdout=subprocess.PIPE):
         try:
             p = subprocess.run([self.binary, "select", "--canonical", cpath, "--image", ipath,
-                                "--json"], capture_output=True, timeout=TIMEOUT_S)
-            return p.returncode, p.stdout, p.stderr
+                                "--json", *extra], stdout=stdout, stderr=subprocess.PIPE,
+                               timeout=TIMEOUT_S)
+            return p.returncode, p.stdout or b"", p.stderr
         except subprocess.TimeoutExpired:
             return None, b"", b"(timed out)"
 
@@ -109,9 +121,13 @@ class Runner:
         else:
             self.passed += 1
 
-    def expect_error(self, name, cpath, ipath, bad_path, line):
-        code, out, err = self.run(cpath, ipath)
+    def expect_error(self, name, cpath, ipath, bad_path, line, extra=(), stdout=subprocess.PIPE):
+        code, out, err = self.run(cpath, ipath, extra, stdout)
         problems = []
+        if len(err) > 600:
+            problems.append(f"message of {len(err)} bytes")
+        if any(b < 0x20 and b != 0x0A or b == 0x7F for b in err):
+            problems.append("control characters in the message")
         if code != 2:
             problems.append(f"exit status {code}, expected 2")
         if out != b"":
@@ -174,6 +190,28 @@ def main():
             bad = r.write(content, "bad")
             r.expect_error(f"{name} (image)", r.write(GOOD, "canonical"), bad, bad, line)
 
+        # Whole-file and whole-run problems.
+        r.expect_error("a directory", tmp, r.write(GOOD_IMAGE, "image"), tmp, None)
+        if os.geteuid() != 0:  # as root, mode 000 does not stop reads
+            unreadable = r.write(GOOD, "unreadable")
+            os.chmod(unreadable, 0)
+            r.expect_error("unreadable file", unreadable, r.write(GOOD_IMAGE, "image"), unreadable, None)
+        huge = r.write(b"", "huge")  # sparse: 257 MiB of zeros that take no disk space
+        os.truncate(huge, 257 << 20)
+        r.expect_error("file larger than 256 MiB", huge, r.write(GOOD_IMAGE, "image"), huge, None)
+        os.remove(huge)
+        big = r.write(b"1e140,1e140,1\n", "canonical")
+        small = r.write(b"1e-20,1e-20,1\n", "image")
+        r.expect_error("feasible maps beyond 1e150", big, small, small, None)
+        r.expect_error("expansion beyond 1e150", r.write(GOOD, "canonical"),
+                       r.write(GOOD_IMAGE, "image"), "--expand", None,
+                       extra=("--expand", "1e200", "--expand-policy", "multiplicative"))
+        if os.path.exists("/dev/full"):  # a full disk: the output cut short must not pass
+            with open("/dev/full", "wb") as full:
+                r.expect_error("stdout on a full disk", r.write(GOOD, "canonical"),
+                               r.write(GOOD_IMAGE, "image"), "standard output", None,
+                               stdout=full)
+
         # Odd but valid input.  The square [1,2]^2 with the single image q = (3/2,3/2) gives
         # F = [1,2]^2 / (3/2) = [2/3,4/3]^2.
         box = [(Fr(2, 3), Fr(2, 3)), (Fr(4, 3), Fr(2, 3)), (Fr(4, 3), Fr(4, 3)), (Fr(2, 3), Fr(4, 3))]
@@ -194,6 +232,8 @@ def main():
                          b"1.0,1.00,1\n2.0,1e0,1.0E+0\n20e-1,0.2e1,1\n1,2,1.000\n", b"1.5,1.5,1\n", box)
         r.expect_success("colours with b = 0 are dropped", GOOD + b"1,2,0\n0,0,0\n",
                          b"5,6,0\n3,3,2\n", box)
+        r.expect_success("100-digit numbers", GOOD.replace(b"2,2,1", b"2." + b"0" * 99 + b",2,1"),
+                         b"3" + b"0" * 49 + b"/1" + b"0" * 49 + b",3,2\n", box)
 
         # Exact decimals.  Canonical (0.1,0.2,0.3) -> q_c = (1/3, 2/3); image (0.3,0.1,0.7) ->
         # q = (3/7, 1/7); F = {q_c / q} = the point (7/9, 14/3).  With doubles the coordinates

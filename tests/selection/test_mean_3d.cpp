@@ -3,10 +3,13 @@
 
 #include <gmcc/selection/mean_3d_analytic.h>
 #include <gmcc/selection/mean_3d_double.h>
+#include <gmcc/selection/select_maps.h>
 
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 using namespace gmcc;
 using gmcc::test::Rng;
@@ -113,6 +116,57 @@ BOOST_AUTO_TEST_CASE(the_double_baseline_is_fine_on_large_polygons) {
   const ConvexSet2 F = convex_hull({{Rational(3, 10), Rational(1, 4)}, {4, Rational(1, 2)},
                                     {Rational(43, 10), 3}, {2, Rational(13, 4)}, {Rational(1, 2), 2}});
   BOOST_TEST(max_abs_diff(mean_3d_double(F), mean_3d_analytic(F).map) < 1e-13);
+}
+
+// Regression (fuzz/corpus/geometry/finding_unbounded_enclosure_far_from_origin): vertices near
+// 1e224 and 1e-20. τ3 is small against its terms there, and at the automatic first precision
+// (93 bits) its enclosure held 0: the quotients were unbounded, an unbounded interval passed for
+// tight, and the map came out NaN (select_maps then threw std::invalid_argument).
+BOOST_AUTO_TEST_CASE(far_from_the_origin) {
+  const char* text[][2] = {
+      {"0",
+       "20173827172553973356686868531273530268200826506478308693989526222973809547006571833044"
+       "104322501076808092993531037089792/2602085213965210641617886722087860107421875"},
+      {"1728053263/23530045440000000000000000000",
+       "0"},
+      {"27107023198117403/1798662993913713726562500000000000",
+       "61043095985763859948478366678094130814856598651473977718953278446811502712648653716848"
+       "076524788736951392164900526261037386695058653184/75"},
+      {"0",
+       "89645499105233656223152511086943706894225378577816476943549910893305352950985885181012"
+       "06174807258102384418184237752718737594593571044364224145730124092961720253919112802734"
+       "0531457632509208380784062953619296123331929889046528/225"},
+  };
+  std::vector<Point2> cycle;
+  for (const auto& xy : text) {
+    Rational x(xy[0]), y(xy[1]);
+    x.canonicalize();
+    y.canonicalize();
+    cycle.push_back({x, y});
+  }
+  const ConvexSet2 F = convex_hull(cycle);
+  BOOST_TEST_REQUIRE(F.kind == ConvexKind::polygon);
+  const MapEstimate e = mean_3d_analytic(F);
+  BOOST_TEST_REQUIRE(e.valid);
+  BOOST_TEST(e.precision_bits > 93u);  // it had to double
+  const MapEstimate ref = mean_3d_analytic(F, {4096});
+  BOOST_TEST_REQUIRE(ref.valid);
+  for (int k = 0; k < 2; ++k) {
+    const auto& [lo, hi] = (*e.enclosure)[k];
+    BOOST_TEST((std::isfinite(lo) && std::isfinite(hi) && lo <= e.map[k] && e.map[k] <= hi));
+    // Both enclose the true value, so they overlap.
+    BOOST_TEST(lo <= (*ref.enclosure)[k][1]);
+    BOOST_TEST((*ref.enclosure)[k][0] <= hi);
+  }
+  // A forced precision too low says so, instead of a NaN map.
+  const MapEstimate low = mean_3d_analytic(F, {60});
+  BOOST_TEST(!low.valid);
+  BOOST_TEST(!low.enclosure.has_value());
+  BOOST_TEST(low.note.find("unbounded") != std::string::npos);
+  const Selections s = select_maps(F, SelectionOptions{Mean3dOptions{Mean3dMethod::analytic, 60}, std::nullopt});
+  BOOST_TEST(!s.mean_3d->estimate.valid);
+  BOOST_TEST(!s.mean_3d->worst_case_deg.has_value());
+  BOOST_TEST(s.max_area->worst_case_deg.has_value());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <random>
+#include <string>
 #include <vector>
 
 using namespace gmcc;
@@ -196,6 +198,38 @@ BOOST_AUTO_TEST_CASE(axis_parallel_edges) {
     BOOST_TEST(w >= d.max - 1e-9);
     BOOST_TEST(w <= d.max + d.slack);
   }
+}
+
+// Long exact coordinates, as feasible sets from long inputs have: the edge quartics then have
+// coefficients of thousands of digits, which the root isolation handles in integer arithmetic
+// (it once took minutes per edge over ℚ). The answer must still match the dense search.
+BOOST_AUTO_TEST_CASE(long_exact_vertices) {
+  Rng rng(20260102);
+  std::uniform_int_distribution<int> digit(0, 9);
+  auto long_rational = [&](long lo, long hi) {  // in [lo, hi], 40-digit numerator and denominator
+    std::string den = "1";
+    for (int i = 0; i < 39; ++i) den += static_cast<char>('0' + digit(rng));
+    const Rational unit(mpz_class(den) - 1, mpz_class(den));  // just below 1, 40 digits each
+    return Rational(test::random_rational(rng, lo, hi, 7) * unit);
+  };
+  int edge_maxima = 0;
+  for (int trial = 0; trial < 8; ++trial) {
+    std::vector<Point2> points;
+    for (int i = 0; i < 8; ++i) points.push_back({long_rational(1, 21), long_rational(1, 21)});
+    const ConvexSet2 F = convex_hull(points);
+    if (F.kind != ConvexKind::polygon) continue;
+    const Point2 m = centroid(F);  // the 2-D mean: hundreds of digits
+    const Colour c = trial % 2 ? white : Colour{Rational(2), Rational(1), Rational(3, 7)};
+    BOOST_TEST_CONTEXT("trial " << trial) {
+      const IlluminantWorstCase w = gmcc::worst_case_illuminant(F, m, c);
+      const Dense d = dense_boundary(F, m, c, 2000);
+      BOOST_TEST(w.angle_deg >= d.max - 1e-9);
+      BOOST_TEST(w.angle_deg <= d.max + d.slack);
+      BOOST_TEST(on_boundary(F, w.location));
+      edge_maxima += !w.at_vertex;
+    }
+  }
+  BOOST_TEST(edge_maxima > 0);
 }
 
 BOOST_AUTO_TEST_CASE(degenerate_sets) {

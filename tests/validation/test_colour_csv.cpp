@@ -2,6 +2,10 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 using namespace gmcc;
@@ -50,6 +54,53 @@ BOOST_AUTO_TEST_CASE(bad_input_names_file_line_and_problem) {
 BOOST_AUTO_TEST_CASE(missing_files_are_reported) {
   BOOST_CHECK_THROW(read_colour_csv("/nonexistent/c.csv"), InputError);
   BOOST_CHECK_THROW(read_colour_csv("/"), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(unreadable_files_are_reported) {
+  // As root, mode 000 does not stop reads: nothing to test there.
+  if (::geteuid() == 0) return;
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("gmcc-unreadable-" + std::to_string(::getpid()));
+  std::ofstream(path) << "1,1,1\n";
+  std::filesystem::permissions(path, std::filesystem::perms::none);
+  std::string message;
+  try {
+    read_colour_csv(path.string());
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  std::filesystem::remove(path);
+  BOOST_TEST(message == path.string() + ": cannot open: Permission denied");
+}
+
+BOOST_AUTO_TEST_CASE(lines_are_limited_in_length) {
+  static_assert(max_colour_line_bytes == 65536);
+  // At the limit (spaces around numbers are allowed): read; one byte more: refused, by line.
+  const std::string at_limit = std::string(max_colour_line_bytes - 5, ' ') + "1,2,3";
+  BOOST_TEST(parse_colour_csv("1,1,1\n" + at_limit + "\n", "c.csv").colours.size() == 2u);
+  BOOST_TEST(error_of("1,1,1\n" + at_limit + " \n").find("c.csv:2: line of 65537 bytes") == 0u);
+  // A megabyte of digits with no line end: a one-line message, not the digits.
+  const std::string message = error_of(std::string(1 << 20, '7'));
+  BOOST_TEST(message.find("c.csv:1: line of 1048576 bytes, longer than the 65536-byte limit") == 0u);
+  BOOST_TEST(message.size() < 200u);
+  // Long numbers within a line are refused by parse_rational, and quoted briefly.
+  const std::string long_number = error_of("1,2," + std::string(500, '3') + "\n");
+  BOOST_TEST(long_number.find("c.csv:1: channel b: '3333") == 0u);
+  BOOST_TEST(long_number.find("has 500 digits: at most 100") != std::string::npos);
+  BOOST_TEST(long_number.size() < 200u);
+  const std::string negative = error_of("1,-" + std::string(90, '4') + ",3\n");
+  BOOST_TEST(negative.find("c.csv:1: channel g is negative (-444") == 0u);
+  BOOST_TEST(negative.size() < 200u);
+}
+
+BOOST_AUTO_TEST_CASE(colours_are_limited_in_number) {
+  static_assert(max_colours == 1000000);
+  std::string text;
+  text.reserve(6 * (max_colours + 1));
+  for (std::size_t i = 0; i < max_colours; ++i) text += "0,0,1\n";
+  BOOST_TEST(parse_colour_csv(text, "c.csv").colours.size() == max_colours);
+  text += "# the next colour is one too many\n0,0,1\n";
+  BOOST_TEST(error_of(text).find("c.csv:1000002: more than 1000000 colours") == 0u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

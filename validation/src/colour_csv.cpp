@@ -45,6 +45,11 @@ ColourTable parse_colour_csv(const std::string& text, const std::string& file) {
     rest = end == std::string_view::npos ? std::string_view() : rest.substr(end + 1);
     if (raw.find('\0') != std::string_view::npos)
       throw InputError(file, number, "binary data (a NUL byte): expected text lines r,g,b");
+    if (raw.size() > max_colour_line_bytes)
+      throw InputError(file, number,
+                       "line of " + std::to_string(raw.size()) + " bytes, longer than the " +
+                           std::to_string(max_colour_line_bytes) +
+                           "-byte limit: expected text lines r,g,b");
     const std::string_view line = trim(raw);
     if (line.empty() || line.front() == '#') {
       if (rest.empty()) break;
@@ -77,9 +82,14 @@ ColourTable parse_colour_csv(const std::string& text, const std::string& file) {
       if (sgn(channel[k]) < 0)
         throw InputError(file, number,
                          std::string("channel ") + names[k] + " is negative (" +
-                             std::string(fields[k]) +
+                             std::string(fields[k].substr(0, 40)) +
+                             (fields[k].size() > 40 ? "..." : "") +
                              "): a linear sensor response must be >= 0");
     }
+    if (table.colours.size() == max_colours)
+      throw InputError(file, number,
+                       "more than " + std::to_string(max_colours) +
+                           " colours, the limit for one file (memory and time grow with them)");
     table.colours.push_back({channel[0], channel[1], channel[2]});
     table.lines.push_back(number);
     if (rest.empty()) break;

@@ -73,7 +73,12 @@ std::pair<double, double> nearest_with_bound(const Interval& x);
 /// The interval's ends rounded outward to doubles.
 std::pair<double, double> outward_doubles(const Interval& x);
 
-/// True when the interval's width is at most 2^-bits times its magnitude (or it is a point).
+/// True when neither end is infinite or NaN.
+bool bounded(const Interval& x);
+
+/// True when the interval is bounded and its width is at most 2^-bits times its magnitude (or
+/// it is a point). An unbounded interval is never tight: its width and magnitude are both
+/// infinite, and inf <= inf·2^-bits would call it tight.
 bool tight(const Interval& x, int bits);
 
 }  // namespace gmcc::internal

@@ -27,7 +27,8 @@ struct MapEstimate {
   unsigned precision_bits = 0;  ///< analytic: working precision (64: the x87 extended fast path)
 
   /// False when the method could not produce a map (Monte Carlo with too few samples in the
-  /// cone, or on a set with no volume); `note` says why and `map` is not meaningful.
+  /// cone, or on a set with no volume; the closed form at a forced precision too low to bound
+  /// it); `note` says why and `map` is not meaningful.
   bool valid = true;
   std::string note;
   unsigned quadrature_order = 0;  ///< quadrature: Gauss–Legendre points per direction

@@ -39,6 +39,8 @@ struct SelectionOptions {
 
 /// Apply max_area, mean_2d and mean_3d to F with their worst cases. The worst cases of an
 /// irrational estimate are measured from its reported double map, taken exactly.
+/// \throws std::domain_error if a vertex of F exceeds the range of doubles (the maps are
+///         reported as doubles).
 Selections select_maps(const ConvexSet2& F, const SelectionOptions& options = {});
 
 }  // namespace gmcc

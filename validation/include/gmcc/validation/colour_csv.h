@@ -13,6 +13,12 @@ namespace gmcc {
 
 /// Largest colour file accepted, in bytes (a clear error instead of exhausting memory).
 inline constexpr std::size_t max_colour_file_bytes = std::size_t(256) << 20;
+/// Longest line accepted, in bytes: three numbers of max_number_digits need a few hundred;
+/// a longer line is not a colour (a binary file, or a file with no line ends).
+inline constexpr std::size_t max_colour_line_bytes = 65536;
+/// Most colours accepted in one file: each costs about 1 KB of memory on its way through the
+/// hulls (10^6 colours take about 1 GB and 10 s).
+inline constexpr std::size_t max_colours = 1000000;
 
 /// The colours of a file, with the line each came from.
 struct ColourTable {
@@ -26,8 +32,10 @@ struct ColourTable {
 /// line ends, a UTF-8 byte-order mark and spaces or tabs around numbers are accepted. Numbers
 /// are decimals or `p/q`, read exactly (parse_rational). Channels must be finite and >= 0.
 /// \param file  the name used in messages.
-/// \throws InputError naming the file and line: malformed or non-finite numbers, negative
-///         channels, a wrong number of columns, NUL bytes, no colour at all.
+/// \throws InputError naming the file and line: malformed or non-finite numbers (including
+///         numbers longer than max_number_digits), negative channels, a wrong number of
+///         columns, NUL bytes, lines longer than max_colour_line_bytes, more than max_colours
+///         colours, no colour at all.
 ColourTable parse_colour_csv(const std::string& text, const std::string& file);
 
 /// Read and parse a colour file (parse_colour_csv).

@@ -1,0 +1,323 @@
+// Fuzz target: the exact geometry pipeline and the selection rules on structured random
+// rationals — huge and tiny magnitudes, long numerators and denominators, duplicates, collinear
+// and coincident points. Checked exactly, against the definitions rather than the algorithms:
+//  - hulls, gamuts and feasible sets are in canonical form (ConvexSet2);
+//  - the canonical gamut contains every canonical chromaticity;
+//  - UnboundedFeasibleSet is thrown exactly when every image r/b or every image g/b is 0;
+//  - F does not depend on the order of the image chromaticities;
+//  - every vertex of F maps every image chromaticity into the gamut, and candidate maps
+//    (vertices, edge midpoints, nudged vertices, gamut vertex ⊘ image chromaticity, random
+//    points) lie in F exactly when m ⊙ q ∈ G_c for every q (brute force);
+//  - max-area and the 2-D mean lie in F, and max-area's m1·m2 beats every candidate in F;
+//  - the 3-D mean's certified enclosure meets F (the mean is irrational: an exact box test);
+//  - every rule's worst cases are at least the angle to every vertex and candidate in F.
+
+#include "fuzz_support.h"
+
+#include <gmcc/geometry/canonical_gamut.h>
+#include <gmcc/geometry/convex_hull.h>
+#include <gmcc/geometry/feasible_set.h>
+#include <gmcc/selection/angular_error.h>
+#include <gmcc/selection/max_area.h>
+#include <gmcc/selection/mean_2d.h>
+#include <gmcc/selection/select_maps.h>
+#include <gmcc/selection/worst_case.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+using gmcc::ConvexKind;
+using gmcc::ConvexSet2;
+using gmcc::Point2;
+using gmcc::Rational;
+using gmcc::fuzz::ByteReader;
+
+Rational reduced(const mpz_class& num, const mpz_class& den) {
+  Rational r(num, den);
+  r.canonicalize();
+  return r;
+}
+
+mpz_class power_of_two(unsigned k) { return mpz_class(1) << k; }
+
+// One non-negative coordinate; `pool` holds earlier ones, for duplicates and near-duplicates.
+Rational coordinate(ByteReader& in, const std::vector<Rational>& pool) {
+  const unsigned a = in.byte(), b = in.byte();
+  switch (in.byte() % 8) {
+    case 0: return reduced(a, 1 + b % 16);                            // small
+    case 1: return pool.empty() ? Rational(a) : pool[b % pool.size()];  // duplicate
+    case 2: return reduced(mpz_class(1 + a) * power_of_two(b * 2), 1);  // huge, up to 2^518
+    case 3: return reduced(1 + a, power_of_two(b * 2));                 // tiny
+    case 4: return Rational(0);
+    case 5: return reduced(mpz_class(std::to_string(in.bytes(4))), mpz_class(std::to_string(1 + in.bytes(4))));
+    case 6: {  // a hair above an earlier value
+      const Rational base = pool.empty() ? Rational(1) : pool[a % pool.size()];
+      return Rational(base + reduced(1, power_of_two(1 + b % 128)));
+    }
+    default: {  // decimal scales
+      mpz_class ten;
+      mpz_ui_pow_ui(ten.get_mpz_t(), 10, b % 64);
+      return a % 2 ? reduced(1 + a, ten) : reduced(mpz_class(1 + a) * ten, 1);
+    }
+  }
+}
+
+std::vector<Point2> points(ByteReader& in, int n, std::vector<Rational>& pool) {
+  std::vector<Point2> p;
+  for (int i = 0; i < n; ++i) {
+    const unsigned how = in.byte() % 4;
+    if (how == 0 && !p.empty()) {  // coincident
+      p.push_back(p[in.byte() % p.size()]);
+    } else if (how == 1 && p.size() >= 2) {  // collinear: on the segment between two earlier
+      const Point2 a = p[in.byte() % p.size()], b = p[in.byte() % p.size()];
+      const Rational t = reduced(in.byte(), 255);
+      p.push_back({Rational(a.x + t * (b.x - a.x)), Rational(a.y + t * (b.y - a.y))});
+    } else {
+      Rational x = coordinate(in, pool);
+      Rational y = coordinate(in, pool);
+      p.push_back({x, y});
+    }
+    pool.push_back(p.back().x);
+    pool.push_back(p.back().y);
+  }
+  return p;
+}
+
+std::string text(const Point2& p) { return "(" + gmcc::to_string(p.x) + ", " + gmcc::to_string(p.y) + ")"; }
+
+void check_canonical(const ConvexSet2& s, const char* what) {
+  const auto& v = s.vertices;
+  const std::size_t n = v.size();
+  switch (s.kind) {
+    case ConvexKind::empty: FUZZ_CHECK(n == 0, what); break;
+    case ConvexKind::point: FUZZ_CHECK(n == 1, what); break;
+    case ConvexKind::segment: FUZZ_CHECK(n == 2 && v[0] < v[1], what); break;
+    case ConvexKind::polygon:
+      FUZZ_CHECK(n >= 3, what);
+      for (std::size_t i = 0; i < n; ++i) {
+        FUZZ_CHECK(sgn(gmcc::orientation(v[i], v[(i + 1) % n], v[(i + 2) % n])) > 0,
+                   std::string(what) + ": not strictly convex counter-clockwise");
+        FUZZ_CHECK(!(v[i] < v[0]), std::string(what) + ": does not start at the smallest vertex");
+      }
+      break;
+  }
+}
+
+// m ⊙ q ∈ G for every q: the definition of the feasible set.
+bool feasible(const ConvexSet2& G, const std::vector<Point2>& image, const Point2& m) {
+  for (const Point2& q : image)
+    if (!gmcc::contains(G, {Rational(m.x * q.x), Rational(m.y * q.y)})) return false;
+  return true;
+}
+
+// Does the closed box [lo0, hi0] × [lo1, hi1] meet the convex set F? Two compact convex
+// polygons (degenerate ones too) are disjoint iff their projections on one of their edge
+// normals are disjoint (separating axis theorem); the box's normals are the coordinate axes.
+bool box_meets(const ConvexSet2& F, const Rational (&lo)[2], const Rational (&hi)[2]) {
+  std::vector<Point2> axes{{1, 0}, {0, 1}};
+  const auto& v = F.vertices;
+  for (std::size_t i = 0; v.size() >= 2 && i < v.size(); ++i) {
+    const Point2& p = v[i];
+    const Point2& q = v[(i + 1) % v.size()];
+    axes.push_back({Rational(p.y - q.y), Rational(q.x - p.x)});
+  }
+  const Point2 corners[4] = {{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}};
+  for (const Point2& a : axes) {
+    auto dot = [&a](const Point2& p) { return Rational(a.x * p.x + a.y * p.y); };
+    Rational f_lo = dot(v[0]), f_hi = f_lo, b_lo = dot(corners[0]), b_hi = b_lo;
+    for (const Point2& p : v) f_lo = std::min(f_lo, dot(p)), f_hi = std::max(f_hi, dot(p));
+    for (const Point2& p : corners) b_lo = std::min(b_lo, dot(p)), b_hi = std::max(b_hi, dot(p));
+    if (f_hi < b_lo || b_hi < f_lo) return false;
+  }
+  return true;
+}
+
+bool finite_doubles(const ConvexSet2& F) {
+  for (const Point2& v : F.vertices) {
+    const auto d = gmcc::to_double_nearest(v);
+    if (!std::isfinite(d[0]) || !std::isfinite(d[1])) return false;
+  }
+  return true;
+}
+
+bool positive(const Point2& p) { return sgn(p.x) > 0 && sgn(p.y) > 0; }
+
+// A worst case w is the maximum of `angle` over F: at least its value at every point given.
+// Both are MPFR values rounded to double; when two points' angles agree to ~2^-100 their
+// roundings may be a unit apart, hence the relative allowance.
+template <class Angle>
+void check_worst(double w, const std::vector<Point2>& in_F, Angle angle, const std::string& what) {
+  FUZZ_CHECK(std::isfinite(w) && w >= 0 && w <= 180, what + " = " + std::to_string(w));
+  for (const Point2& x : in_F) {
+    const double a = angle(x);
+    FUZZ_CHECK(a <= w + 1e-12 * (1 + w), what + " " + std::to_string(w) + " below the angle " +
+                                             std::to_string(a) + " at " + text(x));
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  ByteReader in(data, size);
+  const std::uint8_t flags = in.byte();
+  std::vector<Rational> pool;
+  // Few points keep each run to milliseconds (10^6 runs); degeneracies need only a few.
+  const int n_canonical = 1 + in.byte() % 7, n_image = 1 + in.byte() % 5;
+  const std::vector<Point2> canonical = points(in, n_canonical, pool);
+  const std::vector<Point2> image = points(in, n_image, pool);
+
+  gmcc::Expansion expansion;
+  if (flags % 4 == 1) expansion = {gmcc::ExpansionPolicy::centroid_clip, Rational(1, 10)};
+  if (flags % 4 == 2) expansion = {gmcc::ExpansionPolicy::multiplicative, Rational(1, 3)};
+  const ConvexSet2 G = gmcc::canonical_gamut(canonical, expansion);
+  check_canonical(G, "canonical gamut");
+  FUZZ_CHECK(G.kind != ConvexKind::empty, "empty gamut from points");
+  for (const Point2& p : canonical) FUZZ_CHECK(gmcc::contains(G, p), "gamut misses " + text(p));
+  if (expansion.policy == gmcc::ExpansionPolicy::none)
+    for (const Point2& v : G.vertices)
+      FUZZ_CHECK(std::find(canonical.begin(), canonical.end(), v) != canonical.end(),
+                 "hull vertex not an input point: " + text(v));
+
+  const bool unbounded = std::all_of(image.begin(), image.end(), [](const Point2& q) { return sgn(q.x) == 0; }) ||
+                         std::all_of(image.begin(), image.end(), [](const Point2& q) { return sgn(q.y) == 0; });
+  ConvexSet2 F;
+  try {
+    F = gmcc::feasible_set(G, image);
+  } catch (const gmcc::UnboundedFeasibleSet&) {
+    FUZZ_CHECK(unbounded, "UnboundedFeasibleSet for a bounded feasible set");
+    return 0;
+  }
+  FUZZ_CHECK(!unbounded, "no UnboundedFeasibleSet though a component is unconstrained");
+  check_canonical(F, "feasible set");
+  std::vector<Point2> reordered(image.rbegin(), image.rend());
+  FUZZ_CHECK(gmcc::feasible_set(G, reordered) == F, "F depends on the image order (reversed)");
+  std::rotate(reordered.begin(), reordered.begin() + 1, reordered.end());
+  FUZZ_CHECK(gmcc::feasible_set(G, reordered) == F, "F depends on the image order (rotated)");
+  for (const Point2& v : F.vertices)
+    FUZZ_CHECK(feasible(G, image, v), "vertex " + text(v) + " of F is not feasible");
+
+  // Candidate maps, each checked against the definition.
+  std::vector<Point2> candidates = F.vertices;
+  const auto& fv = F.vertices;
+  for (std::size_t i = 0; fv.size() >= 2 && i < fv.size(); ++i) {
+    const Point2& p = fv[i];
+    const Point2& q = fv[(i + 1) % fv.size()];
+    candidates.push_back({Rational((p.x + q.x) / 2), Rational((p.y + q.y) / 2)});
+  }
+  for (const Point2& v : fv) {
+    const Rational d = Rational(v.x + v.y + 1) / Rational(power_of_two(1 + in.byte() % 64));
+    for (int sx = -1; sx <= 1; sx += 2)
+      for (int sy = -1; sy <= 1; sy += 2)
+        candidates.push_back({Rational(v.x + sx * d), Rational(v.y + sy * d)});
+  }
+  for (std::size_t i = 0; i < G.vertices.size() * image.size() && i < 8; ++i) {
+    const Point2& g = G.vertices[i % G.vertices.size()];
+    const Point2& q = image[i / G.vertices.size()];
+    if (positive(q)) candidates.push_back({Rational(g.x / q.x), Rational(g.y / q.y)});
+  }
+  for (int i = 0; i < 4 && !in.empty(); ++i) {
+    Rational x = coordinate(in, pool);
+    Rational y = coordinate(in, pool);
+    candidates.push_back({x, y});
+  }
+  std::vector<Point2> in_F;
+  for (const Point2& m : candidates) {
+    const bool inside = gmcc::contains(F, m);
+    FUZZ_CHECK(inside == feasible(G, image, m),
+               "map " + text(m) + (inside ? " in F but not feasible" : " feasible but not in F"));
+    if (inside) in_F.push_back(m);
+  }
+  if (F.kind == ConvexKind::empty) return 0;
+
+  gmcc::Mean3dOptions mean3d;
+  if (flags & 4) mean3d.precision_bits = 60;
+  const gmcc::Colour c = flags & 8 ? gmcc::Colour{2, 1, Rational(3, 7)} : gmcc::Colour{1, 1, 1};
+  // Half the runs take the rules one by one without the illuminant worst case, by far the
+  // costliest part, so that 10^6 runs take hours rather than days; the other half call
+  // select_maps, all of it.
+  const bool whole = flags & 16;
+  gmcc::Selections s;
+  if (whole) {
+    try {
+      s = gmcc::select_maps(F, gmcc::SelectionOptions{mean3d, c});
+    } catch (const std::domain_error&) {
+      FUZZ_CHECK(!finite_doubles(F), "domain_error though F is within the double range");
+      return 0;
+    }
+    FUZZ_CHECK(finite_doubles(F), "no domain_error though F is beyond the double range");
+  } else {
+    if (!finite_doubles(F)) return 0;
+    auto rule = [&F](gmcc::MapEstimate e) {
+      gmcc::Selection sel{e, std::nullopt, std::nullopt};
+      if (e.valid)
+        sel.worst_case_deg = gmcc::worst_case_map_deg(
+            F, e.exact ? *e.exact
+                       : Point2{gmcc::rational_from_double(e.map[0]), gmcc::rational_from_double(e.map[1])});
+      return sel;
+    };
+    s.max_area = rule(gmcc::max_area(F));
+    s.mean_2d = rule(gmcc::mean_2d(F));
+    s.mean_3d = rule(gmcc::mean_3d(F, mean3d));
+  }
+  FUZZ_CHECK(s.max_area && s.mean_2d && s.mean_3d, "a rule is missing for a non-empty F");
+
+  const Point2 best = *s.max_area->estimate.exact;
+  FUZZ_CHECK(gmcc::contains(F, best), "max-area " + text(best) + " not in F");
+  for (const Point2& m : in_F)
+    FUZZ_CHECK(m.x * m.y <= best.x * best.y, "max-area beaten by " + text(m));
+  FUZZ_CHECK(*s.mean_2d->estimate.exact == gmcc::centroid(F) && gmcc::contains(F, gmcc::centroid(F)),
+             "2-D mean not the centroid in F");
+
+  const gmcc::MapEstimate& m3 = s.mean_3d->estimate;
+  FUZZ_CHECK(m3.method == "analytic", "3-D mean: method " + m3.method);
+  // Only a forced precision may be too low to bound the closed form.
+  FUZZ_CHECK(m3.valid || mean3d.precision_bits != 0, "3-D mean not valid: " + m3.note);
+  FUZZ_CHECK(m3.valid == m3.enclosure.has_value(), "3-D mean: enclosure iff valid");
+  if (!m3.valid) {
+    FUZZ_CHECK(!m3.note.empty() && !s.mean_3d->worst_case_deg, "3-D mean: invalid without a note");
+  } else if (F.kind == ConvexKind::point) {
+    FUZZ_CHECK(m3.exact && *m3.exact == F.vertices[0], "3-D mean of a point is not the point");
+  } else {
+    const auto& e = *m3.enclosure;
+    FUZZ_CHECK(std::isfinite(e[0][0]) && std::isfinite(e[0][1]) && std::isfinite(e[1][0]) &&
+                   std::isfinite(e[1][1]),
+               "3-D mean: enclosure not finite");
+    const Rational lo[2] = {gmcc::rational_from_double(e[0][0]), gmcc::rational_from_double(e[1][0])};
+    const Rational hi[2] = {gmcc::rational_from_double(e[0][1]), gmcc::rational_from_double(e[1][1])};
+    FUZZ_CHECK(lo[0] <= hi[0] && lo[1] <= hi[1], "3-D mean: enclosure upside down");
+    FUZZ_CHECK(box_meets(F, lo, hi), "3-D mean: the enclosure misses F");
+    for (int k = 0; k < 2; ++k)
+      FUZZ_CHECK(e[k][0] <= m3.map[k] && m3.map[k] <= e[k][1], "3-D mean: map outside its enclosure");
+  }
+
+  // Worst cases against the vertices and a few other points of F (each angle costs an MPFR
+  // evaluation).
+  std::vector<Point2> probes = F.vertices;
+  for (std::size_t i = F.vertices.size(); i < in_F.size() && i < F.vertices.size() + 4; ++i)
+    probes.push_back(in_F[i]);
+  for (const auto* sel : {&*s.max_area, &*s.mean_2d, &*s.mean_3d}) {
+    const gmcc::MapEstimate& est = sel->estimate;
+    if (!est.valid) continue;
+    const Point2 m = est.exact ? *est.exact
+                               : Point2{gmcc::rational_from_double(est.map[0]),
+                                        gmcc::rational_from_double(est.map[1])};
+    FUZZ_CHECK(sel->worst_case_deg.has_value(), est.rule + ": no worst case");
+    check_worst(*sel->worst_case_deg, probes,
+                [&m](const Point2& x) { return gmcc::map_angular_error_deg(m, x); },
+                est.rule + " worst case");
+    const bool all_positive = positive(m) && std::all_of(fv.begin(), fv.end(), positive);
+    if (!whole) continue;
+    FUZZ_CHECK(sel->worst_case_illuminant_deg.has_value() == all_positive,
+               est.rule + ": illuminant worst case present iff F and the map are positive");
+    if (all_positive)
+      check_worst(*sel->worst_case_illuminant_deg, probes,
+                  [&m, &c](const Point2& x) { return gmcc::illuminant_angular_error_deg(m, x, c); },
+                  est.rule + " illuminant worst case");
+  }
+  return 0;
+}
