@@ -149,7 +149,8 @@ namespace {
 // q rounded to nearest in the floating type F, subnormals included. MPFR's documented emulation
 // of a binary format: its exponent range set to F's, then mpfr_subnormalize. Rounding to F's
 // precision and then to the subnormal grid would round twice: a value just below a subnormal
-// midpoint becomes the midpoint, then goes to even (caught by the strtod check of fuzz/fuzz_parse_rational).
+// midpoint becomes the midpoint, then goes to even (caught by the strtod check of
+// fuzz/fuzz_parse_rational).
 template <class F>
 F nearest(const Rational& q, F (*get)(mpfr_srcptr, mpfr_rnd_t)) {
   using limits = std::numeric_limits<F>;

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace gmcc {
 namespace {
@@ -192,22 +194,25 @@ MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options
     if (done) {
       e.precision_bits = bits;
       // Far from the origin τ3 is small against its terms; too few bits leave it straddling 0
-      // and the quotients unbounded (found by fuzz/fuzz_geometry). The automatic precision
-      // doubles past that; a forced one too low says so instead of reporting NaN.
-      if (!internal::bounded(m[0]) || !internal::bounded(m[1])) {
-        e.valid = false;
-        e.enclosure.reset();
-        e.note = "the closed form's enclosure at " + std::to_string(bits) +
-                 " bits is unbounded (its third component is not separated from 0): raise "
-                 "the precision, or leave it automatic";
-        return e;
-      }
+      // (or barely above it) and the quotients unbounded or beyond the doubles (found by
+      // fuzz/fuzz_geometry and fuzz/fuzz_select). The automatic precision doubles past that;
+      // a forced one too low says so instead of reporting NaN or infinity.
       for (int k = 0; k < 2; ++k) {
+        const auto [lo, hi] = internal::bounded(m[k]) ? internal::outward_doubles(m[k])
+                                                      : std::pair<double, double>(NAN, NAN);
+        if (!std::isfinite(lo) || !std::isfinite(hi)) {
+          e.valid = false;
+          e.enclosure.reset();
+          e.error_bound = 0;
+          e.note = "the closed form's enclosure at " + std::to_string(bits) +
+                   " bits is too wide to give a map (its third component is not separated "
+                   "from 0): raise the precision, or leave it automatic";
+          return e;
+        }
+        (*e.enclosure)[k] = {lo, hi};
         const auto [value, bound] = internal::nearest_with_bound(m[k]);
         e.map[k] = value;
         e.error_bound = std::max(e.error_bound, bound);
-        const auto [lo, hi] = internal::outward_doubles(m[k]);
-        (*e.enclosure)[k] = {lo, hi};
       }
       return e;
     }

@@ -80,6 +80,7 @@ BAD_CONTENT = [
     ("enormous line", b"1,1,1\n" + b"7" * 100000 + b"\n", 2),
     ("a megabyte with no line end", b"1" * (1 << 20), 1),
     ("number with 101 digits", b"1,1,1\n1,2," + b"3" * 101 + b"\n", 2),
+    ("exponent beyond 400", b"1,1,1\n1,1,4e+3619\n", 2),
     ("p/q with 101 digits", b"1,1,1\n1,2," + b"3" * 50 + b"/" + b"7" * 51 + b"\n", 2),
     ("binary garbage without NUL", b"1,1,1\n\x80\x81,\xfe\xff,\x01\x1b[2J\n", 2),
     ("chromaticity beyond 1e150", b"1,1,1\n1,1,1e-151\n", 2),

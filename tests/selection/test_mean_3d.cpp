@@ -1,6 +1,8 @@
 #include "../test_support.h"
 #include "quadrature_reference.h"
 
+#include <gmcc/geometry/canonical_gamut.h>
+#include <gmcc/geometry/feasible_set.h>
 #include <gmcc/selection/mean_3d_analytic.h>
 #include <gmcc/selection/mean_3d_double.h>
 #include <gmcc/selection/select_maps.h>
@@ -162,11 +164,36 @@ BOOST_AUTO_TEST_CASE(far_from_the_origin) {
   const MapEstimate low = mean_3d_analytic(F, {60});
   BOOST_TEST(!low.valid);
   BOOST_TEST(!low.enclosure.has_value());
-  BOOST_TEST(low.note.find("unbounded") != std::string::npos);
+  BOOST_TEST(low.note.find("too wide to give a map") != std::string::npos);
   const Selections s = select_maps(F, SelectionOptions{Mean3dOptions{Mean3dMethod::analytic, 60}, std::nullopt});
   BOOST_TEST(!s.mean_3d->estimate.valid);
   BOOST_TEST(!s.mean_3d->worst_case_deg.has_value());
   BOOST_TEST(s.max_area->worst_case_deg.has_value());
+}
+
+// Regression (fuzz_select, 606,436th run): colours (3, 2, 4e2409) and (0, 2, 3), expanded
+// multiplicatively by 1/10, against the image colour (1, 1, 277777), at a forced 60 bits. The
+// enclosure was bounded but far beyond the doubles: the map came out infinite and select_maps
+// threw std::invalid_argument. (gmcc select now refuses exponents beyond 400; the library does
+// not parse, so the set is built here.)
+BOOST_AUTO_TEST_CASE(forced_precision_too_low_is_not_a_map) {
+  const Rational big(mpz_class(4) * mpz_class("1" + std::string(2409, '0')));
+  const ConvexSet2 G = canonical_gamut({{Rational(3 / big), Rational(2 / big)}, {0, Rational(2, 3)}},
+                                       {ExpansionPolicy::multiplicative, Rational(1, 10)});
+  const ConvexSet2 F = feasible_set(G, {{Rational(1, 277777), Rational(1, 277777)}});
+  BOOST_TEST_REQUIRE(F.kind == ConvexKind::polygon);
+  const MapEstimate low = mean_3d_analytic(F, {60});
+  BOOST_TEST(!low.valid);
+  BOOST_TEST(!low.enclosure.has_value());
+  const Selections s = select_maps(F, SelectionOptions{Mean3dOptions{Mean3dMethod::analytic, 60}, std::nullopt});
+  BOOST_TEST(!s.mean_3d->estimate.valid);
+  const MapEstimate automatic = mean_3d_analytic(F);
+  BOOST_TEST_REQUIRE(automatic.valid);
+  for (int k = 0; k < 2; ++k) {
+    const auto& [lo, hi] = (*automatic.enclosure)[k];
+    BOOST_TEST((std::isfinite(lo) && lo <= automatic.map[k] && automatic.map[k] <= hi &&
+                std::isfinite(hi)));
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -30,8 +30,9 @@ struct AnalyticOptions {
 /// fast path relies on the x87 fpatan's < 1 ulp error and allows 4 ulps).
 /// Degenerate F (SPEC §2, MATH §1a.6): a segment gives the perspective of the bisector
 /// u1/|u1| + u2/|u2| of its end rays (the centroid of the planar fan ∩ unit disk); a point is
-/// itself (exact). A forced precision too low to bound the quotient (τ3's enclosure holding 0)
-/// gives an estimate that is not `valid`, with a note; the automatic precision never does.
+/// itself (exact). A forced precision too low to bound the quotient within the doubles (τ3's
+/// enclosure holding 0, or nearly) gives an estimate that is not `valid`, with a note; the
+/// automatic precision doubles until it is tight instead.
 /// \pre F is not empty. Complexity O(n) interval operations.
 MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options = {});
 
