@@ -68,6 +68,51 @@ BOOST_AUTO_TEST_CASE(vertex_maximum_equals_a_dense_boundary_search) {
   }
 }
 
+// Regression (fuzz/corpus/geometry/finding_obtuse_worst_case): a map outside the quadrant (the
+// closed form at a forced 60 bits reported the midpoint of a wide enclosure) makes obtuse
+// angles with part of F; the angle is then not quasi-convex and its maximum can lie inside an
+// edge. Only vertices were compared, and by cos² with the sign dropped.
+BOOST_AUTO_TEST_CASE(maps_outside_the_quadrant) {
+  // u = (−1, −1, 1) against v = (4t, 4 − 4t, 1): u·v = −3 everywhere, |v| smallest at t = 1/2,
+  // so the angle is largest at the midpoint (2, 2): acos(−1/√3) = 125.26°; 114.8° at the ends.
+  const ConvexSet2 seg{ConvexKind::segment, {{0, 4}, {4, 0}}};
+  const Point2 m{-1, -1};
+  const double w = worst_case_map_deg(seg, m);
+  BOOST_TEST(w == map_angular_error_deg(m, {2, 2}));
+  BOOST_TEST(w == std::acos(-1 / std::sqrt(3.0)) * 180 / 3.14159265358979323846,
+             boost::test_tools::tolerance(1e-13));
+  BOOST_TEST(w > map_angular_error_deg(m, {0, 4}) + 10);
+
+  // Random polygons and maps with a negative component: the dense search never beats it.
+  Rng rng(20260103);
+  int above_vertices = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const ConvexSet2 F = convex_hull(test::random_points(rng, 3 + trial % 7, 0, 6, 4));
+    if (F.kind != ConvexKind::polygon) continue;
+    const Point2 mm{test::random_rational(rng, -40, 8, 4), test::random_rational(rng, -40, 8, 4)};
+    const double wf = worst_case_map_deg(F, mm);
+    const auto md = to_double_nearest(mm);
+    double dense = 0, at_vertices = 0;
+    const auto& v = F.vertices;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const auto p = to_double_nearest(v[i]), q = to_double_nearest(v[(i + 1) % v.size()]);
+      at_vertices = std::max(at_vertices, map_angular_error_deg(mm, v[i]));
+      for (int s = 0; s <= 2000; ++s) {
+        const double t = s / 2000.0;
+        dense = std::max(dense, angle_double(md[0], md[1], p[0] + t * (q[0] - p[0]),
+                                             p[1] + t * (q[1] - p[1])));
+      }
+    }
+    BOOST_TEST_CONTEXT("trial " << trial << " F " << F << " m " << mm) {
+      BOOST_TEST(wf >= dense - 1e-9);
+      BOOST_TEST(wf <= dense + 1e-4);  // the dense steps miss an interior maximum by O(h²)
+      BOOST_TEST(wf >= at_vertices);
+    }
+    above_vertices += wf > at_vertices + 1e-6;
+  }
+  BOOST_TEST(above_vertices > 0);  // interior maxima were met
+}
+
 BOOST_AUTO_TEST_CASE(degenerate_sets) {
   const ConvexSet2 pt{ConvexKind::point, {{2, 1}}};
   BOOST_TEST(worst_case_map_deg(pt, {2, 1}) == 0.0);
