@@ -385,6 +385,7 @@ class Experiment:
         return (r / b, g / b)
 
     def scene(self, light, picks):
+        """{rule: (error, worst case, *extras)} for one scene, None if F is empty."""
         qs = [self.image_q[light][i] for i in picks]
         hull = convex_hull(qs)
         poly = feasible_set(self.gamut, hull)
@@ -397,7 +398,12 @@ class Experiment:
             err = angle_deg(m, truth)
             worst = max(angle_deg(m, v) for v in poly)
             out[rule] = (err, worst)
+        self.scene_extras(poly, truth, maps, out)
         return out
+
+    def scene_extras(self, poly, truth, maps, out):
+        """Hook: a subclass may append further per-rule results to out[rule]
+        (bench/baseline_reproduce.py does).  The oracle itself adds none."""
 
     def run(self, scenes, seed, lights=LIGHTS, surfaces=range(1, 12)):
         rows = []
@@ -454,8 +460,9 @@ def parse_range(text):
     return out
 
 
-def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+def main(argv=None, experiment=Experiment, doc=__doc__):
+    """The command line; experiment and doc let bench/baseline_reproduce.py reuse it."""
+    ap = argparse.ArgumentParser(description=doc.split("\n\n")[0])
     ap.add_argument("--scenes", type=int, default=100)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--data", default=DEFAULT_DATA)
@@ -470,7 +477,7 @@ def main(argv=None):
         worst = check_illuminants(args.data, sys.stdout)
         return 0 if worst < 0.01 else 1
 
-    exp = Experiment(args.data)
+    exp = experiment(args.data)
     if not args.quiet:
         check_illuminants(args.data)
         print("# canonical gamut: %d vertices; true maps: %s" % (
