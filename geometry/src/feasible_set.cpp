@@ -1,4 +1,5 @@
 #include <gmcc/geometry/convex_hull.h>
+#include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/geometry/feasible_set.h>
 
 #include "internal/half_plane.h"
@@ -6,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace gmcc {
@@ -95,6 +97,44 @@ std::optional<double> approx(const Rational& q) {
   return mpq_get_d(q.get_mpq_t());
 }
 
+// An integer's top 64 bits as an extended-precision number (exact below 2^64; otherwise
+// truncated: relative error below 2^-63), or nothing beyond 2^16000.
+std::optional<long double> top_bits(mpz_srcptr z) {
+  const std::size_t n = mpz_size(z);
+  if (n == 0) return 0.0L;
+  if (n > 250) return std::nullopt;
+  const mp_limb_t hi = mpz_getlimbn(z, static_cast<mp_size_t>(n - 1));
+  long double v;
+  long shift;
+  if (n == 1) {
+    v = static_cast<long double>(hi), shift = 0;
+  } else {
+    const mp_limb_t lo = mpz_getlimbn(z, static_cast<mp_size_t>(n - 2));
+    const int lz = __builtin_clzll(hi);
+    const mp_limb_t top = lz ? (hi << lz) | (lo >> (64 - lz)) : hi;
+    v = static_cast<long double>(top), shift = 64 * static_cast<long>(n - 1) - lz;
+  }
+  v = std::ldexp(v, static_cast<int>(shift));
+  return mpz_sgn(z) < 0 ? -v : v;
+}
+
+// A rational in extended precision: numerator and denominator truncated (2^-63 each) and one
+// rounded division (2^-64): relative error below 2^-61.6.
+std::optional<long double> top_bits(const Rational& q) {
+  const auto n = top_bits(q.get_num_mpz_t()), d = top_bits(q.get_den_mpz_t());
+  if (!n || !d) return std::nullopt;
+  return *n / *d;
+}
+
+// A line in extended precision: each coefficient within a relative 2^-61 of the same positive
+// multiple of the exact line (for vertex enclosures).
+struct LongLine {
+  long double a, b, c;
+};
+
+// Extended-precision arithmetic has the 64-bit significand this analysis assumes (x86's x87).
+constexpr bool long_lines_available = std::numeric_limits<long double>::digits == 64;
+
 // The sign of orientation(a, b, c) = (b−a)×(c−a) of exact points, filtered: from coordinates
 // truncated to double (relative error below 2u each) each difference is within 3.01u of
 // |b_x| + |a_x| (and so on), each product within 6.1u of (|b_x|+|a_x|)(|c_y|+|a_y|), and the last
@@ -158,6 +198,8 @@ std::vector<Point2> image_hull_vertices(const std::vector<Point2>& image) {
 struct CanonicalConstraints::Impl {
   std::vector<Line> lines;
   std::vector<ApproxLine> approx;
+  std::vector<LongLine> long_lines;  // empty when not available
+  bool polygon = false;  // lines[i] carries the edge from vertex i to vertex i+1 of G_c
   bool filtered = true;  // every approximation is in the filter's range
   Rational x_max, y_max;
 };
@@ -172,7 +214,12 @@ CanonicalConstraints::CanonicalConstraints(const ConvexSet2& canonical) {
     ApproxLine a{};
     g.filtered = g.filtered && approx_line(g.lines.back(), a);
     g.approx.push_back(a);
+    const Line& l = g.lines.back();
+    const auto la = top_bits(l.a.get_mpz_t()), lb = top_bits(l.b.get_mpz_t()), lc = top_bits(l.c.get_mpz_t());
+    if (la && lb && lc) g.long_lines.push_back({*la, *lb, *lc});
   }
+  if (!long_lines_available || g.long_lines.size() != g.lines.size()) g.long_lines.clear();
+  g.polygon = canonical.kind == ConvexKind::polygon;
   g.x_max = canonical.vertices.front().x, g.y_max = canonical.vertices.front().y;
   for (const Point2& p : canonical.vertices) g.x_max = std::max(g.x_max, p.x), g.y_max = std::max(g.y_max, p.y);
   impl_ = std::move(impl);
@@ -190,9 +237,15 @@ class Clipper {
     std::size_t out;   // the line carrying the edge from this vertex to the next
   };
 
-  Clipper(const CanonicalConstraints::Impl& g, const std::vector<Point2>& qs) : g_(g), qs_(qs), hq_(qs.size()) {
-    filtered_ = g.filtered;
-    for (const Point2& q : qs) {
+  Clipper(std::shared_ptr<const CanonicalConstraints::Impl> g, std::vector<Point2> qs, std::size_t lines)
+      : keep_(std::move(g)), g_(*keep_), qs_(std::move(qs)), hq_(qs_.size()) {
+    lines_.reserve(lines);
+    filtered_ = g_.filtered;
+    long_ = !g_.long_lines.empty();
+    for (const Point2& q : qs_) {
+      const auto lx = top_bits(q.x), ly = top_bits(q.y);
+      long_ = long_ && lx && ly;
+      q_long_.push_back({lx.value_or(0), ly.value_or(0)});
       const auto x = approx(q.x), y = approx(q.y);
       filtered_ = filtered_ && x && y;
       q_approx_.push_back({x.value_or(0), y.value_or(0)});
@@ -235,6 +288,67 @@ class Clipper {
     return true;
   }
 
+  bool filtered() const { return filtered_; }
+  const ApproxLine& approximate(std::size_t h) const { return lines_[h].approx; }
+
+  // Certified enclosures of vertex v's coordinates: x = (c_p b_q − c_q b_p)/w,
+  // y = (a_p c_q − a_q c_p)/w, w = a_p b_q − a_q b_p, all invariant under positive scalings of
+  // the lines. From extended-precision lines where available (then the double rounding of the
+  // result dominates the radius), else from the double lines (only when filtered()).
+  EnclosedVertex enclose(const Vertex& v) {
+    const auto lp = long_ ? long_line(v.p) : std::nullopt, lq = long_ ? long_line(v.q) : std::nullopt;
+    if (lp && lq) {
+      const LongLine &p = *lp, &q = *lq;
+      // Each 2×2 determinant: products within (1+ρ)²(1+2^-64) − 1 < 1.07·2^-60 of the exact
+      // (scaled) terms for ρ = 2^-61, the difference rounds by 2^-64 of the magnitude sum: 2^-59
+      // of the computed magnitude covers both.
+      struct Det {
+        long double value, bound;
+      };
+      auto det = [](long double a, long double d, long double b, long double c) {
+        const long double l = a * d, r = b * c;
+        return Det{l - r, 0x1p-59L * (std::fabs(l) + std::fabs(r))};
+      };
+      const Det w = det(p.a, q.b, q.a, p.b);
+      const long double gap = std::fabs(w.value) - w.bound;
+      auto coordinate = [&](const Det& n) -> Enclosure {
+        if (!(gap > 0)) return {0, HUGE_VAL};
+        const long double x = n.value / w.value;
+        const double xd = static_cast<double>(x);
+        // |exact − n/w| <= (e_n + |n/w|·e_w)/(|w| − e_w); then x rounds by 2^-64, xd by u.
+        const long double spread = (n.bound + std::fabs(x) * (1 + 0x1p-62L) * w.bound) / gap;
+        const long double rad = spread * (1 + 0x1p-60L) + 0x1p-63L * std::fabs(x) + u * std::fabs(xd);
+        return {xd, Enclosure::round_up(static_cast<double>(rad))};
+      };
+      return {coordinate(det(p.c, q.b, q.c, p.b)), coordinate(det(p.a, q.c, q.a, p.c))};
+    }
+    // Double lines: each 2×2 determinant within 16u of its computed magnitude sum (the bound of
+    // weight_sign, the same expression shape).
+    const ApproxLine &p = lines_[v.p].approx, &q = lines_[v.q].approx;
+    auto det = [](double a, double d, double b, double c) {  // a·d − b·c
+      const double l = a * d, r = b * c;
+      return Enclosure{l - r, Enclosure::round_up(16 * u * (std::fabs(l) + std::fabs(r)))};
+    };
+    const Enclosure w = det(p.a, q.b, q.a, p.b);
+    return {det(p.c, q.b, q.c, p.b) / w, det(p.a, q.c, q.a, p.c) / w};
+  }
+
+  // The sign of a·m1 + b·m2 − c for line h at the exact point m, with fm its truncation to
+  // doubles (each within 2u) when in the filter's range. Filter: each product is within
+  // (1+6u)(1+2u)(1+u) − 1 < 9.01u of the exact (scaled) term and the two additions add at most
+  // 2.01u of the magnitude sum: 16u of the computed magnitude covers it.
+  int side_of_point(std::size_t h, const Point2& m, const std::optional<std::array<double, 2>>& fm) {
+    if (filtered_ && fm) {
+      const ApproxLine& l = lines_[h].approx;
+      const double x = l.a * (*fm)[0], y = l.b * (*fm)[1];
+      const double s = x + y - l.c, bound = 16 * u * (std::fabs(x) + std::fabs(y) + std::fabs(l.c));
+      if (s > bound) return 1;
+      if (s < -bound) return -1;
+    }
+    const Line& l = exact(h);
+    return sgn(Rational(l.a * m.x + l.b * m.y - l.c));
+  }
+
   // The exact vertex, reduced.
   Point2 point(const Vertex& v) {
     const Line& p = exact(v.p);
@@ -254,6 +368,21 @@ class Clipper {
     std::optional<Line> exact;
     std::size_t gamut_edge, image_vertex;  // its source, when not given exactly
   };
+
+  // The extended-precision line: the gamut line's coefficients times the image vertex's
+  // coordinates (each factor within 2^-63 resp. 2^-61.6, the product rounds by 2^-64: within
+  // 2^-61 of (a·X, b·Y, c·W)/W), or the exact box line truncated.
+  std::optional<LongLine> long_line(std::size_t i) {
+    const Entry& l = lines_[i];
+    if (l.gamut_edge == npos) {
+      const Line& e = *l.exact;
+      const auto a = top_bits(e.a.get_mpz_t()), b = top_bits(e.b.get_mpz_t()), c = top_bits(e.c.get_mpz_t());
+      if (!a || !b || !c) return std::nullopt;
+      return LongLine{*a, *b, *c};
+    }
+    const LongLine& g = g_.long_lines[l.gamut_edge];
+    return LongLine{g.a * q_long_[l.image_vertex][0], g.b * q_long_[l.image_vertex][1], g.c};
+  }
 
   static bool in_range(const ApproxLine& a) { return in_filter_range(a.a) && in_filter_range(a.b) && in_filter_range(a.c); }
 
@@ -308,10 +437,13 @@ class Clipper {
                          h.c * (p.a * q.b - q.a * p.b)));
   }
 
+  std::shared_ptr<const CanonicalConstraints::Impl> keep_;
   const CanonicalConstraints::Impl& g_;
-  const std::vector<Point2>& qs_;
+  std::vector<Point2> qs_;
   std::vector<std::optional<HomogeneousPoint>> hq_;
   std::vector<std::array<double, 2>> q_approx_;
+  std::vector<std::array<long double, 2>> q_long_;
+  bool long_ = false;
   std::vector<Entry> lines_;
   bool filtered_ = true;
 };
@@ -372,7 +504,17 @@ std::vector<Vertex> reduced(Clipper& c, const std::vector<Vertex>& cycle) {
 
 }  // namespace
 
-ConvexSet2 feasible_set(const CanonicalConstraints& canonical, const std::vector<Point2>& image) {
+struct FeasiblePolygon::State {
+  std::optional<Clipper> clipper;   // absent when F is empty before clipping ends
+  std::vector<Vertex> cycle;        // reduced; strictly convex when enclosed
+  ConvexKind kind = ConvexKind::empty;
+  bool strictly_convex = false;
+  std::vector<EnclosedVertex> vertices;
+  std::vector<ApproximateLine> edges;
+  std::optional<ConvexSet2> exact;
+};
+
+FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const std::vector<Point2>& image) {
   if (image.empty()) throw std::invalid_argument("feasible_set: no image chromaticities");
   for (const Point2& q : image)
     if (sgn(q.x) < 0 || sgn(q.y) < 0)
@@ -380,7 +522,7 @@ ConvexSet2 feasible_set(const CanonicalConstraints& canonical, const std::vector
   const CanonicalConstraints::Impl& g = *canonical.impl_;
 
   // Only the image hull's vertices constrain F (interior colours add implied constraints).
-  const std::vector<Point2> qs = image_hull_vertices(image);
+  std::vector<Point2> qs = image_hull_vertices(image);
 
   auto max_of = [](const std::vector<Point2>& ps, Rational Point2::*c) {
     const Rational* m = &(ps.front().*c);
@@ -395,35 +537,103 @@ ConvexSet2 feasible_set(const CanonicalConstraints& canonical, const std::vector
     throw UnboundedFeasibleSet("every image colour has g = 0: the map's green component is "
                                "unconstrained and the feasible set is unbounded");
 
-  // The box [0, X/Q1] × [0, Y/Q2] contains F: for q with q1 = Q1 > 0, m1·Q1 is the first
-  // coordinate of a point of G_c, so 0 <= m1·Q1 <= X (likewise m2). Clip it to F.
-  Clipper c(g, qs);
-  const std::size_t bottom = c.add_exact(integer_line({0, -1, 0}));
-  const std::size_t right = c.add_exact(integer_line({1, 0, Rational(g.x_max / q1)}));
-  const std::size_t top = c.add_exact(integer_line({0, 1, Rational(g.y_max / q2)}));
-  const std::size_t left = c.add_exact(integer_line({-1, 0, 0}));
-  std::vector<Vertex> cycle{c.vertex(left, bottom, bottom), c.vertex(bottom, right, right),
-                            c.vertex(right, top, top), c.vertex(top, left, left)};
+  FeasiblePolygon result;
+  result.state_ = std::make_shared<FeasiblePolygon::State>();
+  FeasiblePolygon::State& st = *result.state_;
+  const std::size_t k_count = qs.size(), m = g.lines.size();
+  // The clipping starts from G_c ⊘ q for an image vertex q > 0 when G_c is a polygon: its
+  // vertices are the meets of consecutive scaled edges (a positive diagonal scaling keeps the
+  // order counter-clockwise), which saves q's clips and any box.
+  std::size_t first = k_count;
+  if (g.polygon)
+    for (std::size_t k = 0; k < k_count && first == k_count; ++k)
+      if (sgn(qs[k].x) > 0 && sgn(qs[k].y) > 0) first = k;
+  Clipper& c = st.clipper.emplace(canonical.impl_, std::move(qs), m * k_count + 4);
+  std::vector<Vertex> cycle;
+  if (first < k_count) {
+    std::vector<std::size_t> lines(m);
+    for (std::size_t e = 0; e < m; ++e) lines[e] = c.add_scaled(e, first);
+    for (std::size_t e = 0; e < m; ++e) cycle.push_back(c.vertex(lines[(e + m - 1) % m], lines[e], lines[e]));
+  } else {
+    // The box [0, X/Q1] × [0, Y/Q2] contains F: for q with q1 = Q1 > 0, m1·Q1 is the first
+    // coordinate of a point of G_c, so 0 <= m1·Q1 <= X (likewise m2). Clip it to F.
+    const std::size_t bottom = c.add_exact(integer_line({0, -1, 0}));
+    const std::size_t right = c.add_exact(integer_line({1, 0, Rational(g.x_max / q1)}));
+    const std::size_t top = c.add_exact(integer_line({0, 1, Rational(g.y_max / q2)}));
+    const std::size_t left = c.add_exact(integer_line({-1, 0, 0}));
+    cycle = {c.vertex(left, bottom, bottom), c.vertex(bottom, right, right), c.vertex(right, top, top),
+             c.vertex(top, left, left)};
+  }
   std::vector<Vertex> next;
   std::vector<int> sides;
-  for (std::size_t k = 0; k < qs.size(); ++k) {
-    for (std::size_t e = 0; e < g.lines.size(); ++e) {
+  for (std::size_t k = 0; k < k_count; ++k) {
+    if (k == first) continue;
+    for (std::size_t e = 0; e < m; ++e) {
       clip(c, cycle, c.add_scaled(e, k), next, sides);
       cycle.swap(next);
-      if (cycle.empty()) return {};
+      if (cycle.empty()) {
+        st.exact = ConvexSet2{};
+        return result;
+      }
     }
   }
-  const std::vector<Vertex> v = reduced(c, cycle);
+  st.cycle = reduced(c, cycle);
+  st.strictly_convex = st.cycle.size() >= 3 && c.strictly_convex(st.cycle);
+  if (!st.strictly_convex) {  // degenerate (or collinear leftovers): the exact set decides the kind
+    st.kind = result.exact().kind;
+    return result;
+  }
+  st.kind = ConvexKind::polygon;
+  if (c.filtered()) {
+    bool ok = true;
+    for (const Vertex& v : st.cycle) {
+      const EnclosedVertex e = c.enclose(v);
+      ok = ok && std::isfinite(e.x.rad) && std::isfinite(e.y.rad);
+      st.vertices.push_back(e);
+      const ApproxLine& l = c.approximate(v.out);
+      st.edges.push_back({l.a, l.b, l.c});
+    }
+    if (!ok) st.vertices.clear(), st.edges.clear();
+  }
+  return result;
+}
+
+ConvexKind FeasiblePolygon::kind() const { return state_->kind; }
+bool FeasiblePolygon::enclosed() const { return !state_->vertices.empty(); }
+const std::vector<EnclosedVertex>& FeasiblePolygon::vertices() const { return state_->vertices; }
+const std::vector<ApproximateLine>& FeasiblePolygon::edges() const { return state_->edges; }
+
+const ConvexSet2& FeasiblePolygon::exact() const {
+  State& st = *state_;
+  if (st.exact) return *st.exact;
+  Clipper& c = *st.clipper;
   std::vector<Point2> points;
-  points.reserve(v.size());
-  for (const Vertex& p : v) points.push_back(c.point(p));
-  if (v.size() < 3 || !c.strictly_convex(v)) return canonical_convex_set(std::move(points));
+  points.reserve(st.cycle.size());
+  for (const Vertex& p : st.cycle) points.push_back(c.point(p));
+  if (!st.strictly_convex) return st.exact.emplace(canonical_convex_set(std::move(points)));
   // Already strictly convex and counter-clockwise: only the canonical start is left to do.
   ConvexSet2 F;
   F.kind = ConvexKind::polygon;
   std::rotate(points.begin(), std::min_element(points.begin(), points.end()), points.end());
   F.vertices = std::move(points);
-  return F;
+  return st.exact.emplace(std::move(F));
+}
+
+bool FeasiblePolygon::contains(const Point2& m) const {
+  State& st = *state_;
+  if (st.kind == ConvexKind::empty) return false;
+  if (!st.strictly_convex) return gmcc::contains(exact(), m);
+  // F is the intersection of the half-planes carrying its edges.
+  std::optional<std::array<double, 2>> fm;
+  const auto x = approx(m.x), y = approx(m.y);
+  if (x && y && in_filter_range(*x) && in_filter_range(*y)) fm = std::array<double, 2>{*x, *y};
+  for (const Vertex& v : st.cycle)
+    if (st.clipper->side_of_point(v.out, m, fm) > 0) return false;
+  return true;
+}
+
+ConvexSet2 feasible_set(const CanonicalConstraints& canonical, const std::vector<Point2>& image) {
+  return feasible_polygon(canonical, image).exact();
 }
 
 ConvexSet2 feasible_set(const ConvexSet2& canonical, const std::vector<Point2>& image) {

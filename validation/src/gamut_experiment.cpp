@@ -1,10 +1,12 @@
 #include <gmcc/validation/gamut_experiment.h>
 
 #include <gmcc/geometry/chromaticity.h>
+#include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/intersection.h>
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/crule_3d.h>
+#include <gmcc/selection/rule_errors.h>
 #include <gmcc/selection/select_maps.h>
 
 #include <mpfr.h>
@@ -109,27 +111,57 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
       image_colours.push_back(std::move(c));
     }
     ++cell.scenes;
-    ConvexSet2 F = image.empty() ? ConvexSet2{} : feasible_set(gamut, image);
-    if (config.constraint && F.kind != ConvexKind::empty) F = intersection(F, *config.constraint);
-    if (F.kind == ConvexKind::empty) {
+    if (image.empty()) {
       ++cell.empty;
       continue;
     }
-    const bool truth_inside = contains(F, light.true_map);
-    auto score = [&](std::size_t r, const Point2& m, double worst_case, bool truth) {
-      error[r].push_back(map_angular_error_deg(m, light.true_map));
+    const FeasiblePolygon P = feasible_polygon(gamut, image);
+    if (P.kind() == ConvexKind::empty) {
+      ++cell.empty;
+      continue;
+    }
+    std::optional<ConvexSet2> constrained;
+    if (config.constraint) {
+      constrained = intersection(P.exact(), *config.constraint);
+      if (constrained->kind == ConvexKind::empty) {
+        ++cell.empty;
+        continue;
+      }
+    }
+    const bool truth_inside = constrained ? contains(*constrained, light.true_map) : P.contains(light.true_map);
+    auto record = [&](std::size_t r, double map_error, double worst_case, bool truth) {
+      error[r].push_back(map_error);
       worst[r].push_back(worst_case);
+      cell.rules[r].truth_in_feasible_set += truth;
+    };
+    auto score = [&](std::size_t r, const Point2& m, double worst_case, bool truth) {
+      record(r, map_angular_error_deg(m, light.true_map), worst_case, truth);
       if (sgn(m.x) > 0 && sgn(m.y) > 0) {
         illuminant[r].push_back(illuminant_angular_error_deg(m, light.true_map, setup.canonical_light));
         reproduction[r].push_back(reproduction_angular_error_deg(m, light.true_map));
       }
-      cell.rules[r].truth_in_feasible_set += truth;
     };
-    const Selections sel = select_maps(F, selection);
-    const std::array<const std::optional<Selection>*, 3> rules{&sel.max_area, &sel.mean_2d, &sel.mean_3d};
-    for (std::size_t r = 0; r < 3; ++r) {
-      const Selection& x = **rules[r];
-      if (x.estimate.valid) score(r, exact_map(x.estimate), *x.worst_case_deg, truth_inside);
+    // The fast certified route (rule_errors.h) where it applies and can certify its angles;
+    // otherwise the exact maps and angles. Both agree within rule_errors_accuracy.
+    std::optional<std::array<RuleErrors, 3>> fast;
+    if (!constrained && config.mean3d.method == Mean3dMethod::analytic && config.mean3d.precision_bits == 0)
+      fast = rule_errors(P, light.true_map, setup.canonical_light);
+    if (fast) {
+      for (std::size_t r = 0; r < 3; ++r) {
+        const RuleErrors& x = (*fast)[r];
+        record(r, x.map_error_deg, x.worst_case_deg, truth_inside);
+        if (x.positive_map) {
+          illuminant[r].push_back(x.illuminant_error_deg);
+          reproduction[r].push_back(x.reproduction_error_deg);
+        }
+      }
+    } else {
+      const Selections sel = select_maps(constrained ? *constrained : P.exact(), selection);
+      const std::array<const std::optional<Selection>*, 3> rules{&sel.max_area, &sel.mean_2d, &sel.mean_3d};
+      for (std::size_t r = 0; r < 3; ++r) {
+        const Selection& x = **rules[r];
+        if (x.estimate.valid) score(r, exact_map(x.estimate), *x.worst_case_deg, truth_inside);
+      }
     }
     if (config.crule) {  // the same scene in 3-D; maps scored by their perspective (d1/d3, d2/d3)
       const Crule3d c3 = crule_3d(setup.canonical_surfaces, image_colours);

@@ -12,6 +12,8 @@
 
 namespace gmcc {
 
+class FeasiblePolygon;
+
 /// Thrown when the image leaves a map component unconstrained (every image chromaticity has
 /// r = 0, or every one has g = 0): F is then an unbounded set and no rule can select from it.
 struct UnboundedFeasibleSet : std::domain_error {
@@ -29,7 +31,8 @@ class CanonicalConstraints {
 
  private:
   std::shared_ptr<const Impl> impl_;
-  friend ConvexSet2 feasible_set(const CanonicalConstraints& canonical, const std::vector<Point2>& image);
+  friend class FeasiblePolygon;
+  friend FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const std::vector<Point2>& image);
 };
 
 /// F, exactly, with its kind (polygon, segment, point or empty).

@@ -1,0 +1,64 @@
+#pragma once
+/// \file feasible_polygon.h
+/// The feasible set F of perspective diagonal maps (Finlayson & Hordley 1999 eqs. 7–9 in
+/// perspective; Finlayson 1996) kept as the clipping leaves it: every vertex the meet of two
+/// input lines. Its exact vertices are built only when asked for; certified floating-point
+/// enclosures of them cost a few flops each. This is what lets an experiment evaluate thousands
+/// of feasible sets at nearly the speed of doubles without giving up exactness
+/// (docs/performance.md): decisions are exact, values are enclosed, and the exact set is one
+/// call away.
+
+#include <gmcc/geometry/convex_set.h>
+#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/feasible_set.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace gmcc {
+
+/// A vertex of F as certified enclosures of its two coordinates.
+struct EnclosedVertex {
+  Enclosure x, y;
+};
+
+/// An approximate line a·x + b·y <= c: each coefficient within a relative 6·2^-53 of the same
+/// positive multiple of the exact line (so the signs of a, b and c are exact).
+struct ApproximateLine {
+  double a, b, c;
+};
+
+/// F as a clipped cycle of input lines. A value type; its exact form is built on first use and
+/// cached, so one object must not be used by two threads at once (distinct objects may).
+class FeasiblePolygon {
+ public:
+  /// The kind of F (exact: decided by the clipping's exact predicates).
+  ConvexKind kind() const;
+  /// True when kind() is polygon and every vertex has a certified enclosure; then vertices()
+  /// and edges() describe F, counter-clockwise, from an unspecified start.
+  bool enclosed() const;
+  /// Certified enclosures of F's vertices (empty unless enclosed()).
+  const std::vector<EnclosedVertex>& vertices() const;
+  /// edges()[i] carries the edge from vertex i to vertex i+1 (empty unless enclosed()).
+  const std::vector<ApproximateLine>& edges() const;
+  /// F exactly, as feasible_set returns it (built on the first call).
+  const ConvexSet2& exact() const;
+  /// m ∈ F, decided exactly (a filtered side test per edge, exact arithmetic only when the
+  /// filter cannot decide). Complexity O(|F|).
+  bool contains(const Point2& m) const;
+
+  struct State;
+
+ private:
+  std::shared_ptr<State> state_;
+  friend FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical,
+                                          const std::vector<Point2>& image);
+};
+
+/// F for a prepared canonical gamut and an image (Finlayson & Hordley 1999 §2, eqs. 7–9): the
+/// same clipping, decisions and preconditions as feasible_set, which is feasible_polygon(…)
+/// .exact(). \throws as feasible_set.
+FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const std::vector<Point2>& image);
+
+}  // namespace gmcc

@@ -1,0 +1,178 @@
+#include <gmcc/selection/rule_errors.h>
+
+#include <cmath>
+#include <vector>
+
+namespace gmcc {
+namespace {
+using E = Enclosure;
+using Vec3 = std::array<E, 3>;
+constexpr double u = E::u;
+
+// An exact rational as an enclosure: mpq_get_d truncates (relative error below 2u) within
+// [2^-138, 2^138]; outside that range an unbounded enclosure, which no result accepts.
+E enclose(const Rational& q) {
+  if (sgn(q) == 0) return E::exact(0);
+  const long bits = static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) -
+                    static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
+  if (bits < -138 || bits > 138) return {0, HUGE_VAL};
+  return E::relative(mpq_get_d(q.get_mpq_t()), 2 * u);
+}
+
+// |x| for x in the enclosure: [max(0, |mid| − rad), |mid| + rad], made certain.
+double abs_lo(const E& x) { return std::max(0.0, std::fabs(x.mid) - x.rad) * (1 - 4 * u); }
+double abs_hi(const E& x) { return (std::fabs(x.mid) + x.rad) * (1 + 4 * u) + DBL_MIN; }
+
+// A correctly padded libm result: atan2 is within one ulp on x86_64 glibc (and every platform
+// we know); with the product by the double nearest 180/π (another two roundings), a relative
+// 2^-49 covers the total four times over.
+constexpr double degrees_per_radian = 180 / M_PI;
+double deg_lo(double radians) { return radians * degrees_per_radian * (1 - 0x1p-49); }
+double deg_hi(double radians) { return radians * degrees_per_radian * (1 + 0x1p-49) + DBL_MIN; }
+
+// ∠(u, v) = atan2(|u×v|, u·v) in degrees. atan2(s, d) (s >= 0) falls as d grows and, for d > 0,
+// rises with s (for d < 0 it falls), so the corners of the (s, d) box bound it.
+E angle_deg(const Vec3& a, const Vec3& b) {
+  double s2_lo = 0, s2_hi = 0;
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    const E c = a[i] * b[j] - a[j] * b[i];
+    const double lo = abs_lo(c), hi = abs_hi(c);
+    s2_lo += lo * lo, s2_hi += hi * hi;
+  }
+  // Three products and two sums of non-negatives: a relative 6u, covered by 8u.
+  const double s_lo = std::sqrt(s2_lo * (1 - 8 * u)) * (1 - 2 * u);
+  const double s_hi = std::sqrt(s2_hi * (1 + 8 * u)) * (1 + 2 * u) + DBL_MIN;
+  const E d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  const double d_lo = d.lo(), d_hi = d.hi();
+  double lo, hi;
+  if (d_lo > 0) {
+    lo = std::atan2(s_lo, d_hi), hi = std::atan2(s_hi, d_lo);
+  } else if (d_hi < 0) {
+    lo = std::atan2(s_hi, d_hi), hi = std::atan2(s_lo, d_lo);
+  } else {
+    lo = std::min(std::atan2(s_lo, d_hi), std::atan2(s_hi, d_hi));
+    hi = std::max(std::atan2(s_lo, d_lo), std::atan2(s_hi, d_lo));
+  }
+  return E::between(deg_lo(lo), deg_hi(hi));
+}
+
+// θ(s, d)/s = atan2(s, d)/s for d > 0: falls as s grows (to 1/d at s = 0) and as d grows. Its
+// value from libm is within a relative 2^-51 (one ulp of atan2, one rounding); padded by 2^-49.
+double theta_over_s(double s, double d) { return s > 0 ? std::atan2(s, d) / s : 1 / d; }
+
+struct Candidate {
+  E value, x, y;
+};
+
+std::optional<std::array<E, 2>> max_area_map(const std::vector<EnclosedVertex>& v,
+                                              const std::vector<ApproximateLine>& edges) {
+  const std::size_t n = v.size();
+  std::vector<Candidate> c;
+  c.reserve(2 * n);
+  for (const EnclosedVertex& p : v) c.push_back({p.x * p.y, p.x, p.y});
+  for (std::size_t i = 0; i < n; ++i) {
+    const ApproximateLine& l = edges[i];
+    // The edge's direction (−b, a) has Δx·Δy < 0 iff a·b > 0: there m1·m2 is concave along the
+    // edge, with its stationary point at (c/2a, c/2b) (m1·m2 on a·x + b·y = c), value c²/4ab.
+    if (!((l.a > 0 && l.b > 0) || (l.a < 0 && l.b < 0))) continue;
+    const E a = E::relative(l.a, 6 * u), b = E::relative(l.b, 6 * u), k = E::relative(l.c, 6 * u);
+    const E x = k / (E::exact(2) * a), y = k / (E::exact(2) * b);
+    const E& p = v[i].x;
+    const E& q = v[(i + 1) % n].x;
+    const E to_p = x - p, to_q = x - q;  // strictly inside iff these have opposite signs
+    if (to_p.uncertain_sign() || to_q.uncertain_sign()) return std::nullopt;
+    if (to_p.positive() == to_q.positive()) continue;
+    c.push_back({k * k / (E::exact(4) * a * b), x, y});
+  }
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < c.size(); ++k)
+    if (c[k].value.lo() > c[best].value.lo()) best = k;
+  const double floor = c[best].value.lo();
+  for (std::size_t k = 0; k < c.size(); ++k)
+    if (k != best && c[k].value.hi() >= floor) return std::nullopt;
+  return std::array<E, 2>{c[best].x, c[best].y};
+}
+
+std::optional<std::array<E, 2>> centroid(const std::vector<EnclosedVertex>& v) {
+  // The fan from vertex 0, in offsets from it: Σ w_i (d_i + d_{i+1})/3 / Σ w_i.
+  E w_sum{}, x_sum{}, y_sum{};
+  for (std::size_t i = 1; i + 1 < v.size(); ++i) {
+    const E ax = v[i].x - v[0].x, ay = v[i].y - v[0].y, bx = v[i + 1].x - v[0].x, by = v[i + 1].y - v[0].y;
+    const E w = ax * by - ay * bx;
+    w_sum = w_sum + w, x_sum = x_sum + w * (ax + bx), y_sum = y_sum + w * (ay + by);
+  }
+  if (!w_sum.positive()) return std::nullopt;
+  const E den = E::exact(3) * w_sum;
+  return std::array<E, 2>{v[0].x + x_sum / den, v[0].y + y_sum / den};
+}
+
+std::optional<std::array<E, 2>> mean_3d_map(const std::vector<EnclosedVertex>& v) {
+  // τ = ½ Σ θ_i c_i/|c_i| with c_i = p_i × p_{i+1}, p = (x, y, 1) (MATH §1a); the ½ and the
+  // orientation cancel in (τ1/τ3, τ2/τ3). c_i from the edge e = p_{i+1} − p_i:
+  // (−e_y, e_x, x_i·e_y − y_i·e_x), exact in direction however short the edge.
+  Vec3 tau{};
+  const std::size_t n = v.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const EnclosedVertex& p = v[i];
+    const EnclosedVertex& q = v[(i + 1) % n];
+    const E ex = q.x - p.x, ey = q.y - p.y;
+    const Vec3 c{-ey, ex, p.x * ey - p.y * ex};
+    double s2_lo = 0, s2_hi = 0;
+    for (const E& ck : c) s2_lo += abs_lo(ck) * abs_lo(ck), s2_hi += abs_hi(ck) * abs_hi(ck);
+    const double s_lo = std::sqrt(s2_lo * (1 - 8 * u)) * (1 - 2 * u);
+    const double s_hi = std::sqrt(s2_hi * (1 + 8 * u)) * (1 + 2 * u) + DBL_MIN;
+    const E d = p.x * q.x + p.y * q.y + E::exact(1);
+    if (!d.positive()) return std::nullopt;
+    const E g = E::between(theta_over_s(s_hi, d.hi()) * (1 - 0x1p-49), theta_over_s(s_lo, d.lo()) * (1 + 0x1p-49));
+    for (int k = 0; k < 3; ++k) tau[k] = tau[k] + g * c[k];
+  }
+  if (tau[2].uncertain_sign()) return std::nullopt;
+  return std::array<E, 2>{tau[0] / tau[2], tau[1] / tau[2]};
+}
+
+bool accurate(const E& angle) { return angle.rad <= rule_errors_accuracy * (1 + std::fabs(angle.mid)); }
+
+}  // namespace
+
+std::optional<std::array<RuleErrors, 3>> rule_errors(const FeasiblePolygon& F, const Point2& truth,
+                                                     const Colour& canonical_illuminant) {
+  if (!F.enclosed()) return std::nullopt;
+  const auto& v = F.vertices();
+  std::array<std::optional<std::array<E, 2>>, 3> maps{max_area_map(v, F.edges()), centroid(v), mean_3d_map(v)};
+  const E t1 = enclose(truth.x), t2 = enclose(truth.y), one = E::exact(1);
+  const E cr = enclose(canonical_illuminant.r), cg = enclose(canonical_illuminant.g),
+          cb = enclose(canonical_illuminant.b);
+  std::array<RuleErrors, 3> out{};
+  for (std::size_t r = 0; r < 3; ++r) {
+    if (!maps[r]) return std::nullopt;
+    const E m1 = (*maps[r])[0], m2 = (*maps[r])[1];
+    if (m1.uncertain_sign() || m2.uncertain_sign()) return std::nullopt;
+    const Vec3 lifted{m1, m2, one};
+    const E error = angle_deg(lifted, {t1, t2, one});
+    // Worst case: every vertex at an acute angle to the map (u·v > 0), so the maximum is at a
+    // vertex (MATH §1e); the enclosure of a maximum is the maximum of the ends.
+    double worst_lo = 0, worst_hi = 0;
+    for (const EnclosedVertex& p : v) {
+      if (!(m1 * p.x + m2 * p.y + one).positive()) return std::nullopt;
+      const E a = angle_deg(lifted, {p.x, p.y, one});
+      worst_lo = std::max(worst_lo, a.lo()), worst_hi = std::max(worst_hi, a.hi());
+    }
+    const E worst = E::between(worst_lo, worst_hi);
+    if (!accurate(error) || !accurate(worst)) return std::nullopt;
+    RuleErrors& e = out[r];
+    e.map_error_deg = error.mid;
+    e.worst_case_deg = worst.mid;
+    e.positive_map = m1.positive() && m2.positive();
+    if (e.positive_map) {  // e = c ⊘ (m, 1); the reproduction error compares d_est ⊘ d_true with white
+      const E illuminant = angle_deg({cr / m1, cg / m2, cb}, {cr / t1, cg / t2, cb});
+      const E reproduction = angle_deg({m1 / t1, m2 / t2, one}, {one, one, one});
+      if (!accurate(illuminant) || !accurate(reproduction)) return std::nullopt;
+      e.illuminant_error_deg = illuminant.mid;
+      e.reproduction_error_deg = reproduction.mid;
+    }
+  }
+  return out;
+}
+
+}  // namespace gmcc
