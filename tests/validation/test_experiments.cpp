@@ -6,6 +6,8 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <cmath>
+
 using namespace gmcc;
 
 namespace {
@@ -53,6 +55,28 @@ BOOST_AUTO_TEST_CASE(the_true_map_lies_in_every_feasible_set_and_the_paper_claim
     if (c.surfaces >= 9) gain_many += gain;
   }
   BOOST_TEST(gain_few > gain_many);  // "the gap narrows as surfaces are added"
+}
+
+// The certified fast route (rule_errors.h) and the exact route for every scene give the same
+// statistics within the fast route's accuracy (means of angles, each within 2^-36(1 + θ)).
+BOOST_AUTO_TEST_CASE(fast_and_exact_routes_agree) {
+  ExperimentConfig config;
+  config.scenes = 25;
+  config.seed = 7;
+  const ExperimentResult fast = run_gamut_experiment(paper_setup(), config);
+  config.certified_fast_route = false;
+  const ExperimentResult exact = run_gamut_experiment(paper_setup(), config);
+  BOOST_REQUIRE(fast.cells.size() == exact.cells.size());
+  for (std::size_t i = 0; i < fast.cells.size(); ++i)
+    for (std::size_t r = 0; r < 3; ++r) {
+      const RuleStats &a = fast.cells[i].rules[r], &b = exact.cells[i].rules[r];
+      BOOST_TEST(a.truth_in_feasible_set == b.truth_in_feasible_set);
+      for (auto [x, y] : {std::pair{a.mean_error_deg, b.mean_error_deg}, {a.median_error_deg, b.median_error_deg},
+                          {a.max_error_deg, b.max_error_deg}, {a.mean_worst_case_deg, b.mean_worst_case_deg},
+                          {a.mean_illuminant_error_deg, b.mean_illuminant_error_deg},
+                          {a.mean_reproduction_error_deg, b.mean_reproduction_error_deg}})
+        BOOST_TEST(std::fabs(x - y) <= 1e-9 * (1 + std::fabs(y)), "cell " << i << " rule " << r << ": " << x << " vs " << y);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(a_seed_gives_the_same_bytes_whatever_the_thread_count) {

@@ -144,7 +144,7 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
     // The fast certified route (rule_errors.h) where it applies and can certify its angles;
     // otherwise the exact maps and angles. Both agree within rule_errors_accuracy.
     std::optional<std::array<RuleErrors, 3>> fast;
-    if (!constrained && config.mean3d.method == Mean3dMethod::analytic && config.mean3d.precision_bits == 0)
+    if (config.certified_fast_route && !constrained && config.mean3d.method == Mean3dMethod::analytic && config.mean3d.precision_bits == 0)
       fast = rule_errors(P, light.true_map, setup.canonical_light);
     if (fast) {
       for (std::size_t r = 0; r < 3; ++r) {

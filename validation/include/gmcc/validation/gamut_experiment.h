@@ -54,6 +54,11 @@ struct ExperimentConfig {
   /// factor drawn uniformly from [shading, 1]. Chromaticities, hence the 2-D rules, are unchanged;
   /// 3-D CRULE sees it (Barnard et al. 2002).
   double shading = 0;
+  /// Score scenes by the certified floating-point route (rule_errors.h) where it applies and
+  /// certifies its angles (the default analytic 3-D mean, no constraint), else exactly. false:
+  /// the exact route for every scene (for cross-checks; results agree within
+  /// rule_errors_accuracy).
+  bool certified_fast_route = true;
   unsigned threads = 0;        ///< worker threads (0: the hardware's); results do not depend on it
   /// Called now and then from the calling thread with (scenes done, scenes in all).
   std::function<void(std::uint64_t, std::uint64_t)> progress;
