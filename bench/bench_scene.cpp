@@ -1,26 +1,34 @@
-// Per-scene cost of the synthetic experiment (issue "Performance"): the exact pipeline gmcc runs
-// for every scene (exact feasible set, the three rules with their map-space worst cases, the
-// map, illuminant and reproduction errors), against the same pipeline on plain doubles written
-// the straightforward way (the ratio's baseline; no filters, no certification, no exactness).
-// Both run on the same scenes, one after the other, in this one process; CPU time is reported.
+// Per-scene cost of the synthetic experiment (issue "Performance"), as Google Benchmark targets
+// on the same scenes in one process:
+//   scene_double     the pipeline on plain doubles, written the straightforward way (the ratio's
+//                    baseline: no filters, no certification, no exactness; wrong sometimes);
+//   scene_certified  what `gmcc reproduce` runs per scene: the exact feasible set kept symbolic
+//                    (feasible_polygon), the truth's membership decided exactly, and the three
+//                    rules' map, worst-case, illuminant and reproduction errors certified by
+//                    rule_errors (exact route where it declines);
+//   scene_exact      the exact route for every scene: exact F, select_maps (exact max-area and
+//                    2-D mean, certified 3-D mean) and the exact angles.
+// Scenes: per test light (D75, D100, P2856, P15000), K Munsell chips each (--surfaces K,
+// default 11, the issue's "11 image colours"; 0 cycles K through 1..11 like the experiment).
 //
-//   bench_scene [--scenes N] [--surfaces K] [--data DIR]
-//
-// Scenes: N per test light (D75, D100, P2856, P15000), K Munsell chips each (default 11, the
-// issue's "11 image colours"; 0 cycles K through 1..11 like the experiment).
+//   bench_scene [--surfaces K] [--scenes N] [benchmark flags, e.g. --benchmark_format=json]
 #include <gmcc/geometry/chromaticity.h>
+#include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/selection/angular_error.h>
+#include <gmcc/selection/rule_errors.h>
 #include <gmcc/selection/select_maps.h>
 #include <gmcc/validation/spectral_table.h>
 #include <gmcc/validation/synthetic_experiment.h>
+
+#include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
+#include <memory>
 #include <map>
 #include <random>
 #include <string>
@@ -32,12 +40,6 @@
 
 namespace {
 using namespace gmcc;
-
-double cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
 
 // ---------------------------------------------------------------- the plain-double pipeline
 using P = std::array<double, 2>;
@@ -158,9 +160,9 @@ DoubleScene double_scene(const std::vector<DLine>& gamut, const P& gamut_max, co
   return s;
 }
 
-// ---------------------------------------------------------------- the exact pipeline (as run_cell)
+// ---------------------------------------------------------------- the exact routes
 double exact_scene(const CanonicalConstraints& gamut, const std::vector<Point2>& image, const Point2& truth,
-                   const Colour& c, std::map<unsigned, int>& mean3d_bits, int& truth_inside) {
+                   const Colour& c, int& truth_inside) {
   const ConvexSet2 F = feasible_set(gamut, image);
   if (F.kind == ConvexKind::empty) return 0;
   truth_inside += contains(F, truth);
@@ -173,87 +175,138 @@ double exact_scene(const CanonicalConstraints& gamut, const std::vector<Point2>&
     if (sgn(m.x) > 0 && sgn(m.y) > 0)
       sum += illuminant_angular_error_deg(m, truth, c) + reproduction_angular_error_deg(m, truth);
   }
-  ++mean3d_bits[sel.mean_3d->estimate.precision_bits];
   return sum;
 }
+
+// As run_cell does it: the certified route, the exact one where it declines.
+double certified_scene(const CanonicalConstraints& gamut, const std::vector<Point2>& image, const Point2& truth,
+                       const Colour& c, int& truth_inside, int& declined) {
+  const FeasiblePolygon P = feasible_polygon(gamut, image);
+  if (P.kind() == ConvexKind::empty) return 0;
+  const bool inside = P.contains(truth);
+  const auto errors = rule_errors(P, truth, c);
+  if (!errors) {
+    ++declined;
+    return exact_scene(gamut, image, truth, c, truth_inside);
+  }
+  truth_inside += inside;
+  double sum = 0;
+  for (const RuleErrors& e : *errors)
+    sum += e.map_error_deg + e.worst_case_deg + e.illuminant_error_deg + e.reproduction_error_deg;
+  return sum;
+}
+
+struct Scene {
+  std::size_t light;
+  std::vector<Point2> exact;
+  std::vector<P> approx;
+};
+struct Workload {
+  ExperimentSetup setup;
+  std::unique_ptr<CanonicalConstraints> prepared;
+  std::vector<Scene> scenes;
+  std::vector<DLine> dgamut;
+  P gmax{0, 0};
+  std::array<double, 3> cd{};
+};
+std::uint64_t scenes_per_light = 200;
+int surfaces = 11;
+std::string data_dir = GMCC_DATA_DIR;
+
+const Workload& workload() {
+  static const Workload w = [] {
+    Workload w;
+    w.setup = synthetic_setup(read_spectral_csv(data_dir + "/munsell_matt_1269_joensuu_5nm.csv"),
+                              read_spectral_csv(data_dir + "/cie_daylight_basis_S0_S1_S2.csv"), "D55",
+                              {"D75", "D100", "P2856", "P15000"});
+    const ConvexSet2 G = canonical_gamut(
+        perspective_chromaticities(w.setup.canonical_surfaces, NonPositiveBluePolicy::drop).points, {});
+    w.prepared = std::make_unique<CanonicalConstraints>(G);
+    std::mt19937_64 g(6);
+    for (std::size_t l = 0; l < w.setup.lights.size(); ++l)
+      for (std::uint64_t s = 0; s < scenes_per_light; ++s) {
+        const int k = surfaces > 0 ? surfaces : static_cast<int>(1 + s % 11);
+        std::vector<std::size_t> pool(w.setup.lights[l].surfaces.size());
+        for (std::size_t i = 0; i < pool.size(); ++i) pool[i] = i;
+        std::shuffle(pool.begin(), pool.end(), g);
+        Scene sc{l, {}, {}};
+        for (int i = 0; i < k; ++i) {
+          const Point2 q = perspective_chromaticity(w.setup.lights[l].surfaces[pool[static_cast<std::size_t>(i)]]);
+          sc.approx.push_back(to_double_nearest(q));
+          sc.exact.push_back(q);
+        }
+        w.scenes.push_back(std::move(sc));
+      }
+    // The gamut's edges as double lines a·x + b·y <= c (outward normals of the CCW edges).
+    for (std::size_t i = 0; i < G.vertices.size(); ++i) {
+      const P p = to_double_nearest(G.vertices[i]), q = to_double_nearest(G.vertices[(i + 1) % G.vertices.size()]);
+      w.dgamut.push_back({q[1] - p[1], p[0] - q[0], (q[1] - p[1]) * p[0] + (p[0] - q[0]) * p[1]});
+      w.gmax = {std::max(w.gmax[0], p[0]), std::max(w.gmax[1], p[1])};
+    }
+    const Colour& c = w.setup.canonical_light;
+    w.cd = {to_double_nearest(c.r), to_double_nearest(c.g), to_double_nearest(c.b)};
+    return w;
+  }();
+  return w;
+}
+
+// One benchmark iteration is one scene, cycling through the workload; counters per scene.
+void scene_double(benchmark::State& state) {
+  const Workload& w = workload();
+  std::size_t i = 0;
+  double sink = 0;
+  for (auto _ : state) {
+    const Scene& s = w.scenes[i++ % w.scenes.size()];
+    const DoubleScene d = double_scene(w.dgamut, w.gmax, s.approx, to_double_nearest(w.setup.lights[s.light].true_map), w.cd);
+    sink += d.empty ? 0 : d.error[0] + d.worst[2] + d.illuminant[1] + d.reproduction[2];
+  }
+  benchmark::DoNotOptimize(sink);
+}
+void scene_certified(benchmark::State& state) {
+  const Workload& w = workload();
+  std::size_t i = 0;
+  int inside = 0, declined = 0;
+  double sink = 0;
+  for (auto _ : state) {
+    const Scene& s = w.scenes[i++ % w.scenes.size()];
+    sink += certified_scene(*w.prepared, s.exact, w.setup.lights[s.light].true_map, w.setup.canonical_light, inside, declined);
+  }
+  benchmark::DoNotOptimize(sink);
+  state.counters["declined"] = benchmark::Counter(declined, benchmark::Counter::kAvgIterations);
+  state.counters["truth_in_F"] = benchmark::Counter(inside, benchmark::Counter::kAvgIterations);
+}
+void scene_exact(benchmark::State& state) {
+  const Workload& w = workload();
+  std::size_t i = 0;
+  int inside = 0;
+  double sink = 0;
+  for (auto _ : state) {
+    const Scene& s = w.scenes[i++ % w.scenes.size()];
+    sink += exact_scene(*w.prepared, s.exact, w.setup.lights[s.light].true_map, w.setup.canonical_light, inside);
+  }
+  benchmark::DoNotOptimize(sink);
+  state.counters["truth_in_F"] = benchmark::Counter(inside, benchmark::Counter::kAvgIterations);
+}
+BENCHMARK(scene_double)->Unit(benchmark::kMicrosecond);
+BENCHMARK(scene_certified)->Unit(benchmark::kMicrosecond);
+BENCHMARK(scene_exact)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::uint64_t scenes = 500;
-  int surfaces = 11;
-  std::string data = GMCC_DATA_DIR;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--scenes")) scenes = std::stoull(argv[i + 1]);
-    if (!std::strcmp(argv[i], "--surfaces")) surfaces = std::stoi(argv[i + 1]);
-    if (!std::strcmp(argv[i], "--data")) data = argv[i + 1];
+  // Our flags first (removed from argv), then Google Benchmark's.
+  std::vector<char*> rest{argv[0]};
+  for (int i = 1; i < argc; ++i) {
+    if (i + 1 < argc && !std::strcmp(argv[i], "--scenes")) scenes_per_light = std::stoull(argv[++i]);
+    else if (i + 1 < argc && !std::strcmp(argv[i], "--surfaces")) surfaces = std::stoi(argv[++i]);
+    else if (i + 1 < argc && !std::strcmp(argv[i], "--data")) data_dir = argv[++i];
+    else rest.push_back(argv[i]);
   }
-  const ExperimentSetup setup = synthetic_setup(read_spectral_csv(data + "/munsell_matt_1269_joensuu_5nm.csv"),
-                                                read_spectral_csv(data + "/cie_daylight_basis_S0_S1_S2.csv"), "D55",
-                                                {"D75", "D100", "P2856", "P15000"});
-  const ConvexSet2 G =
-      canonical_gamut(perspective_chromaticities(setup.canonical_surfaces, NonPositiveBluePolicy::drop).points, {});
-  const CanonicalConstraints prepared(G);
-
-  // The scenes, as exact chromaticities and as doubles (nearest).
-  struct Scene {
-    std::size_t light;
-    std::vector<Point2> exact;
-    std::vector<P> approx;
-  };
-  std::vector<Scene> all;
-  std::mt19937_64 g(6);
-  for (std::size_t l = 0; l < setup.lights.size(); ++l)
-    for (std::uint64_t s = 0; s < scenes; ++s) {
-      const int k = surfaces > 0 ? surfaces : static_cast<int>(1 + s % 11);
-      std::vector<std::size_t> pool(setup.lights[l].surfaces.size());
-      for (std::size_t i = 0; i < pool.size(); ++i) pool[i] = i;
-      std::shuffle(pool.begin(), pool.end(), g);
-      Scene sc{l, {}, {}};
-      for (int i = 0; i < k; ++i) {
-        const Point2 q = perspective_chromaticity(setup.lights[l].surfaces[pool[static_cast<std::size_t>(i)]]);
-        sc.approx.push_back(to_double_nearest(q));
-        sc.exact.push_back(q);
-      }
-      all.push_back(std::move(sc));
-    }
-  // The gamut's edges as double lines a·x + b·y <= c (outward normals of the CCW edges).
-  std::vector<DLine> dgamut;
-  P gmax{0, 0};
-  for (std::size_t i = 0; i < G.vertices.size(); ++i) {
-    const P p = to_double_nearest(G.vertices[i]), q = to_double_nearest(G.vertices[(i + 1) % G.vertices.size()]);
-    dgamut.push_back({q[1] - p[1], p[0] - q[0], (q[1] - p[1]) * p[0] + (p[0] - q[0]) * p[1]});
-    gmax = {std::max(gmax[0], p[0]), std::max(gmax[1], p[1])};
-  }
-  const std::array<double, 3> cd{to_double_nearest(setup.canonical_light.r), to_double_nearest(setup.canonical_light.g),
-                                 to_double_nearest(setup.canonical_light.b)};
-
-  // Plain doubles first, then exact; each over every scene, repeated for a second reading.
-  double sink = 0;
-  std::map<unsigned, int> bits;
-  int inside = 0;
-  double t_double = 1e30, t_exact = 1e30;
-  for (int rep = 0; rep < 2; ++rep) {
-    double t0 = cpu_seconds();
-    for (const Scene& s : all) {
-      const DoubleScene d = double_scene(dgamut, gmax, s.approx, to_double_nearest(setup.lights[s.light].true_map), cd);
-      sink += d.empty ? 0 : d.error[0] + d.worst[2] + d.illuminant[1] + d.reproduction[2];
-    }
-    t_double = std::min(t_double, cpu_seconds() - t0);
-    bits.clear();
-    inside = 0;
-    t0 = cpu_seconds();
-    for (const Scene& s : all)
-      sink += exact_scene(prepared, s.exact, setup.lights[s.light].true_map, setup.canonical_light, bits, inside);
-    t_exact = std::min(t_exact, cpu_seconds() - t0);
-  }
-  const double n = static_cast<double>(all.size());
-  std::printf("scenes: %zu (%s surfaces), canonical gamut %zu vertices\n", all.size(),
-              surfaces > 0 ? std::to_string(surfaces).c_str() : "1-11", G.vertices.size());
-  std::printf("exact pipeline:        %8.2f us CPU per scene\n", 1e6 * t_exact / n);
-  std::printf("plain-double pipeline: %8.2f us CPU per scene\n", 1e6 * t_double / n);
-  std::printf("ratio exact/double:    %8.2f\n", t_exact / t_double);
-  std::printf("3-D mean precision (64 = extended fast path):");
-  for (const auto& [b, count] : bits) std::printf(" %u bits x%d", b, count);
-  std::printf("\ntrue map in F: %d; checksum %.6g\n", inside, sink);
+  int n = static_cast<int>(rest.size());
+  benchmark::Initialize(&n, rest.data());
+  workload();  // built before any timing
+  benchmark::AddCustomContext("surfaces", surfaces > 0 ? std::to_string(surfaces) : "1-11");
+  benchmark::AddCustomContext("canonical_vertices", std::to_string(workload().dgamut.size()));
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
 }

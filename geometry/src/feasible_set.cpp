@@ -86,44 +86,53 @@ HomogeneousPoint homogeneous(const Point2& p) {
   return h;
 }
 
-// A rational truncated to double (mpq_get_d: relative error below 2^-52 = 2u in the normal
-// range), or nothing when it is outside [2^-140, 2^140] (checked from its size before
-// converting, since mpq_get_d's behaviour out of range is unspecified).
+// An integer's top 64 bits: |z| ≈ mant·2^shift with mant an integer below 2^64 (exact in
+// extended precision); exact below 2^64, otherwise truncated (relative error below 2^-63).
+struct TopBits {
+  long double mant;
+  long shift;
+};
+TopBits top64(mpz_srcptr z) {
+  const std::size_t n = mpz_size(z);
+  if (n == 0) return {0.0L, 0};
+  const mp_limb_t hi = mpz_getlimbn(z, static_cast<mp_size_t>(n - 1));
+  if (n == 1) return {static_cast<long double>(hi), 0};
+  const mp_limb_t lo = mpz_getlimbn(z, static_cast<mp_size_t>(n - 2));
+  const int lz = __builtin_clzll(hi);
+  const mp_limb_t top = lz ? (hi << lz) | (lo >> (64 - lz)) : hi;
+  return {static_cast<long double>(top), 64 * static_cast<long>(n - 2) + (64 - lz)};
+}
+
+// An integer in extended precision (relative error below 2^-63), or nothing beyond 2^16000.
+std::optional<long double> top_bits(mpz_srcptr z) {
+  if (mpz_size(z) > 250) return std::nullopt;
+  const TopBits t = top64(z);
+  const long double v = std::ldexp(t.mant, static_cast<int>(t.shift));
+  return mpz_sgn(z) < 0 ? -v : v;
+}
+
+// A rational in extended precision: numerator and denominator truncated (2^-63 each) and one
+// rounded division (2^-64): relative error below 2^-61.6. Nothing beyond 2^±16000.
+std::optional<long double> top_bits(const Rational& q) {
+  if (mpz_size(q.get_num_mpz_t()) > 250 || mpz_size(q.get_den_mpz_t()) > 250) return std::nullopt;
+  const TopBits n = top64(q.get_num_mpz_t()), d = top64(q.get_den_mpz_t());
+  const long double v = std::ldexp(n.mant / d.mant, static_cast<int>(n.shift - d.shift));
+  return sgn(q) < 0 ? -v : v;
+}
+
+// Extended-precision arithmetic has the 64-bit significand this analysis assumes (x86's x87).
+constexpr bool long_lines_available = std::numeric_limits<long double>::digits == 64;
+
+// A rational as a double within a relative 2u (u = 2^-53) of it, or nothing when it is outside
+// [2^-140, 2^140] (checked from its size). From the extended-precision quotient (2^-61.6) rounded
+// to double (u) where available, else mpq_get_d (truncation: below 2u in the normal range).
 std::optional<double> approx(const Rational& q) {
   if (sgn(q) == 0) return 0.0;
   const long bits = static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) -
                     static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
   if (bits < -138 || bits > 138) return std::nullopt;
+  if (long_lines_available) return static_cast<double>(*top_bits(q));
   return mpq_get_d(q.get_mpq_t());
-}
-
-// An integer's top 64 bits as an extended-precision number (exact below 2^64; otherwise
-// truncated: relative error below 2^-63), or nothing beyond 2^16000.
-std::optional<long double> top_bits(mpz_srcptr z) {
-  const std::size_t n = mpz_size(z);
-  if (n == 0) return 0.0L;
-  if (n > 250) return std::nullopt;
-  const mp_limb_t hi = mpz_getlimbn(z, static_cast<mp_size_t>(n - 1));
-  long double v;
-  long shift;
-  if (n == 1) {
-    v = static_cast<long double>(hi), shift = 0;
-  } else {
-    const mp_limb_t lo = mpz_getlimbn(z, static_cast<mp_size_t>(n - 2));
-    const int lz = __builtin_clzll(hi);
-    const mp_limb_t top = lz ? (hi << lz) | (lo >> (64 - lz)) : hi;
-    v = static_cast<long double>(top), shift = 64 * static_cast<long>(n - 1) - lz;
-  }
-  v = std::ldexp(v, static_cast<int>(shift));
-  return mpz_sgn(z) < 0 ? -v : v;
-}
-
-// A rational in extended precision: numerator and denominator truncated (2^-63 each) and one
-// rounded division (2^-64): relative error below 2^-61.6.
-std::optional<long double> top_bits(const Rational& q) {
-  const auto n = top_bits(q.get_num_mpz_t()), d = top_bits(q.get_den_mpz_t());
-  if (!n || !d) return std::nullopt;
-  return *n / *d;
 }
 
 // A line in extended precision: each coefficient within a relative 2^-61 of the same positive
@@ -131,9 +140,6 @@ std::optional<long double> top_bits(const Rational& q) {
 struct LongLine {
   long double a, b, c;
 };
-
-// Extended-precision arithmetic has the 64-bit significand this analysis assumes (x86's x87).
-constexpr bool long_lines_available = std::numeric_limits<long double>::digits == 64;
 
 // The sign of orientation(a, b, c) = (b−a)×(c−a) of exact points, filtered: from coordinates
 // truncated to double (relative error below 2u each) each difference is within 3.01u of
@@ -275,7 +281,10 @@ class Clipper {
   Vertex vertex(std::size_t p, std::size_t q, std::size_t out) { return {p, q, weight_sign(p, q), out}; }
 
   // The sign of a·x + b·y − c at vertex v for line h (v's weight taken positive).
-  int side(std::size_t h, const Vertex& v) { return side_raw(v.p, v.q, h) * v.w_sign; }
+  int side(std::size_t h, const Vertex& v) {
+    if (h == v.p || h == v.q) return 0;  // on its own lines: symbolically, no arithmetic
+    return side_raw(v.p, v.q, h) * v.w_sign;
+  }
 
   bool same_point(const Vertex& v, const Vertex& w) { return side(w.p, v) == 0 && side(w.q, v) == 0; }
 
