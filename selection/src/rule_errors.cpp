@@ -30,8 +30,10 @@ constexpr double degrees_per_radian = 180 / M_PI;
 double deg_lo(double radians) { return radians * degrees_per_radian * (1 - 0x1p-49); }
 double deg_hi(double radians) { return radians * degrees_per_radian * (1 + 0x1p-49) + DBL_MIN; }
 
-// ∠(u, v) = atan2(|u×v|, u·v) in degrees. atan2(s, d) (s >= 0) falls as d grows and, for d > 0,
-// rises with s (for d < 0 it falls), so the corners of the (s, d) box bound it.
+// ∠(u, v) = atan2(|u×v|, u·v) in degrees, from s = |u×v| ∈ [s_lo, s_hi] and d = u·v ∈ d. One
+// atan2 at the box's centre; over the box |∂θ/∂s| = |d|/(s² + d²) <= max|d|/R² and
+// |∂θ/∂d| = s/(s² + d²) <= s_hi/R², R² the least s² + d² on it, which bounds the rest. When the box
+// reaches the origin (R = 0: the vectors' enclosures allow a zero vector) the result is unbounded.
 E angle_deg(const Vec3& a, const Vec3& b) {
   double s2_lo = 0, s2_hi = 0;
   for (int k = 0; k < 3; ++k) {
@@ -45,21 +47,29 @@ E angle_deg(const Vec3& a, const Vec3& b) {
   const double s_hi = std::sqrt(s2_hi * (1 + 8 * u)) * (1 + 2 * u) + DBL_MIN;
   const E d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
   const double d_lo = d.lo(), d_hi = d.hi();
-  double lo, hi;
-  if (d_lo > 0) {
-    lo = std::atan2(s_lo, d_hi), hi = std::atan2(s_hi, d_lo);
-  } else if (d_hi < 0) {
-    lo = std::atan2(s_hi, d_hi), hi = std::atan2(s_lo, d_lo);
-  } else {
-    lo = std::min(std::atan2(s_lo, d_hi), std::atan2(s_hi, d_hi));
-    hi = std::max(std::atan2(s_lo, d_lo), std::atan2(s_hi, d_lo));
-  }
-  return E::between(deg_lo(lo), deg_hi(hi));
+  const double d_min = d_lo > 0 ? d_lo : d_hi < 0 ? -d_hi : 0, d_max = std::max(std::fabs(d_lo), std::fabs(d_hi));
+  const double r2 = (s_lo * s_lo + d_min * d_min) * (1 - 4 * u);
+  if (!(r2 > 0)) return {0, HUGE_VAL};
+  const double s_mid = s_lo + (s_hi - s_lo) / 2;
+  const double ds = (s_hi - s_lo) / 2 * (1 + 4 * u) + u * s_hi, dd = d.rad + u * std::fabs(d.mid);
+  const double theta = std::atan2(s_mid, d.mid);  // radians, within one ulp (2^-52 relative)
+  const double spread = (d_max * ds + s_hi * dd) / r2 * (1 + 0x1p-48) + std::fabs(theta) * 0x1p-50 + DBL_MIN;
+  const double mid = theta * degrees_per_radian;  // 180/π and the product: two more roundings
+  return {mid, E::round_up(spread * degrees_per_radian * (1 + 0x1p-50) + std::fabs(mid) * 0x1p-51)};
 }
 
-// θ(s, d)/s = atan2(s, d)/s for d > 0: falls as s grows (to 1/d at s = 0) and as d grows. Its
-// value from libm is within a relative 2^-51 (one ulp of atan2, one rounding); padded by 2^-49.
-double theta_over_s(double s, double d) { return s > 0 ? std::atan2(s, d) / s : 1 / d; }
+// g(s, d) = θ/s = atan2(s, d)/s for d > 0 (1/d at s = 0), enclosed from one evaluation at the
+// box's centre. With t = s/d, g = h(t)/d for h(t) = atan(t)/t: |h′| < 0.2923 on t >= 0 (its
+// maximum, checked numerically on a fine grid), so |∂g/∂s| = |h′|/d² < 0.3/d², and
+// ∂g/∂d = −(t·h)′/d² = −1/((1 + t²)·d²), at most 1/d² in size. libm's atan2 (one ulp) and the
+// division: a relative 2^-50 covers them.
+E theta_over_s(double s_lo, double s_hi, const E& d) {
+  const double d_lo = d.lo();
+  const double s_mid = s_lo + (s_hi - s_lo) / 2;
+  const double ds = (s_hi - s_lo) / 2 * (1 + 4 * u) + u * s_hi, dd = d.rad + u * std::fabs(d.mid);
+  const double g = s_mid > 0 ? std::atan2(s_mid, d.mid) / s_mid : 1 / d.mid;
+  return {g, E::round_up((0.3 * ds + dd) / (d_lo * d_lo) * (1 + 0x1p-48) + g * 0x1p-50)};
+}
 
 struct Candidate {
   E value, x, y;
@@ -124,7 +134,7 @@ std::optional<std::array<E, 2>> mean_3d_map(const std::vector<EnclosedVertex>& v
     const double s_hi = std::sqrt(s2_hi * (1 + 8 * u)) * (1 + 2 * u) + DBL_MIN;
     const E d = p.x * q.x + p.y * q.y + E::exact(1);
     if (!d.positive()) return std::nullopt;
-    const E g = E::between(theta_over_s(s_hi, d.hi()) * (1 - 0x1p-49), theta_over_s(s_lo, d.lo()) * (1 + 0x1p-49));
+    const E g = theta_over_s(s_lo, s_hi, d);
     for (int k = 0; k < 3; ++k) tau[k] = tau[k] + g * c[k];
   }
   if (tau[2].uncertain_sign()) return std::nullopt;
@@ -144,6 +154,8 @@ std::optional<std::array<RuleErrors, 3>> rule_errors(const FeasiblePolygon& F, c
   const E cr = enclose(canonical_illuminant.r), cg = enclose(canonical_illuminant.g),
           cb = enclose(canonical_illuminant.b);
   std::array<RuleErrors, 3> out{};
+  std::vector<E> keys;
+  keys.reserve(v.size());
   for (std::size_t r = 0; r < 3; ++r) {
     if (!maps[r]) return std::nullopt;
     const E m1 = (*maps[r])[0], m2 = (*maps[r])[1];
@@ -151,11 +163,21 @@ std::optional<std::array<RuleErrors, 3>> rule_errors(const FeasiblePolygon& F, c
     const Vec3 lifted{m1, m2, one};
     const E error = angle_deg(lifted, {t1, t2, one});
     // Worst case: every vertex at an acute angle to the map (u·v > 0), so the maximum is at a
-    // vertex (MATH §1e); the enclosure of a maximum is the maximum of the ends.
-    double worst_lo = 0, worst_hi = 0;
+    // vertex (MATH §1e). There the angle falls as (u·v)²/|v|² rises (|u| is common): only vertices
+    // whose key may be the least need their angle; the enclosure of a maximum is the maximum of
+    // the ends.
+    keys.clear();
+    double least_hi = HUGE_VAL;
     for (const EnclosedVertex& p : v) {
-      if (!(m1 * p.x + m2 * p.y + one).positive()) return std::nullopt;
-      const E a = angle_deg(lifted, {p.x, p.y, one});
+      const E dot = m1 * p.x + m2 * p.y + one;
+      if (!dot.positive()) return std::nullopt;
+      keys.push_back(dot * dot / (p.x * p.x + p.y * p.y + one));
+      least_hi = std::min(least_hi, keys.back().hi());
+    }
+    double worst_lo = 0, worst_hi = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (keys[i].lo() > least_hi) continue;  // certainly a smaller angle than another vertex's
+      const E a = angle_deg(lifted, {v[i].x, v[i].y, one});
       worst_lo = std::max(worst_lo, a.lo()), worst_hi = std::max(worst_hi, a.hi());
     }
     const E worst = E::between(worst_lo, worst_hi);
