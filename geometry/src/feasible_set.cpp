@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <optional>
 
@@ -103,11 +105,25 @@ TopBits top64(mpz_srcptr z) {
   return {static_cast<long double>(top), 64 * static_cast<long>(n - 2) + (64 - lz)};
 }
 
+// 2^e, exactly, for |e| < 1000 (built from its bits: cheaper than ldexp).
+double pow2(long e) {
+  const std::uint64_t bits = static_cast<std::uint64_t>(e + 1023) << 52;
+  double x;
+  std::memcpy(&x, &bits, sizeof x);
+  return x;
+}
+// x·2^e exactly in extended precision (no overflow or underflow there for |e| < 16000).
+long double scale(long double x, long e) {
+  while (e > 900) x *= pow2(900), e -= 900;
+  while (e < -900) x *= pow2(-900), e += 900;
+  return x * pow2(e);
+}
+
 // An integer in extended precision (relative error below 2^-63), or nothing beyond 2^16000.
 std::optional<long double> top_bits(mpz_srcptr z) {
   if (mpz_size(z) > 250) return std::nullopt;
   const TopBits t = top64(z);
-  const long double v = std::ldexp(t.mant, static_cast<int>(t.shift));
+  const long double v = scale(t.mant, t.shift);
   return mpz_sgn(z) < 0 ? -v : v;
 }
 
@@ -116,7 +132,7 @@ std::optional<long double> top_bits(mpz_srcptr z) {
 std::optional<long double> top_bits(const Rational& q) {
   if (mpz_size(q.get_num_mpz_t()) > 250 || mpz_size(q.get_den_mpz_t()) > 250) return std::nullopt;
   const TopBits n = top64(q.get_num_mpz_t()), d = top64(q.get_den_mpz_t());
-  const long double v = std::ldexp(n.mant / d.mant, static_cast<int>(n.shift - d.shift));
+  const long double v = scale(n.mant / d.mant, n.shift - d.shift);
   return sgn(q) < 0 ? -v : v;
 }
 
@@ -133,6 +149,35 @@ std::optional<double> approx(const Rational& q) {
   if (bits < -138 || bits > 138) return std::nullopt;
   if (long_lines_available) return static_cast<double>(*top_bits(q));
   return mpq_get_d(q.get_mpq_t());
+}
+
+// An image chromaticity with its approximations, computed once: doubles within a relative 2u
+// (when `filtered`) and extended-precision values within 2^-61.6 (when `extended`).
+struct ImagePoint {
+  const Point2* exact;
+  std::array<double, 2> f;
+  std::array<long double, 2> l;
+  bool filtered, extended;
+};
+ImagePoint image_point(const Point2& q) {
+  ImagePoint p{&q, {0, 0}, {0, 0}, true, long_lines_available};
+  for (int k = 0; k < 2; ++k) {
+    const Rational& c = k ? q.y : q.x;
+    const auto l = long_lines_available ? top_bits(c) : std::nullopt;
+    p.extended = p.extended && l;
+    p.l[k] = l.value_or(0);
+    std::optional<double> f;
+    if (sgn(c) == 0) {
+      f = 0.0;
+    } else {
+      const long bits = static_cast<long>(mpz_sizeinbase(c.get_num_mpz_t(), 2)) -
+                        static_cast<long>(mpz_sizeinbase(c.get_den_mpz_t(), 2));
+      if (bits >= -138 && bits <= 138) f = l ? static_cast<double>(*l) : mpq_get_d(c.get_mpq_t());
+    }
+    p.filtered = p.filtered && f;
+    p.f[k] = f.value_or(0);
+  }
+  return p;
 }
 
 // A line in extended precision: each coefficient within a relative 2^-61 of the same positive
@@ -159,30 +204,39 @@ int orientation_sign(const Point2& a, const Point2& b, const Point2& c, const st
 }
 
 // The image hull's vertices (extreme points, counter-clockwise): Andrew's monotone chain with the
-// lexicographic order compared exactly (mpq_cmp: no gcd) and orientations filtered. Image hulls
-// are small (a scene's colours), so this beats building exact-kernel points for CGAL.
-std::vector<Point2> image_hull_vertices(const std::vector<Point2>& image) {
-  std::vector<const Point2*> p;
+// lexicographic order and orientations filtered (doubles within 2u decide when they differ by
+// more than their error; mpq_cmp, no gcd, otherwise). Image hulls are small (a scene's colours),
+// so this beats building exact-kernel points for CGAL.
+std::vector<ImagePoint> image_hull_vertices(const std::vector<Point2>& image) {
+  std::vector<ImagePoint> p;
   p.reserve(image.size());
-  for (const Point2& q : image) p.push_back(&q);
-  std::sort(p.begin(), p.end(), [](const Point2* a, const Point2* b) { return *a < *b; });
-  p.erase(std::unique(p.begin(), p.end(), [](const Point2* a, const Point2* b) { return *a == *b; }), p.end());
-  if (p.size() < 3) {
-    std::vector<Point2> out;
-    for (const Point2* q : p) out.push_back(*q);
-    return out;
-  }
   bool filtered = true;
-  std::vector<std::array<double, 2>> f(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const auto x = approx(p[i]->x), y = approx(p[i]->y);
-    filtered = filtered && x && y;
-    f[i] = {x.value_or(0), y.value_or(0)};
+  for (const Point2& q : image) {
+    p.push_back(image_point(q));
+    filtered = filtered && p.back().filtered;
   }
+  // x̂ within 2u|x| of x: x̂_a − x̂_b beyond 4.01u(|x̂_a| + |x̂_b|) (with the subtraction's own
+  // rounding) has the sign of x_a − x_b.
+  auto compare = [filtered](const ImagePoint& a, const ImagePoint& b, int k) {
+    if (filtered) {
+      const double d = a.f[k] - b.f[k], bound = 5 * u * (std::fabs(a.f[k]) + std::fabs(b.f[k]));
+      if (d > bound) return 1;
+      if (d < -bound) return -1;
+    }
+    return cmp(k ? a.exact->y : a.exact->x, k ? b.exact->y : b.exact->x);
+  };
+  auto less = [&](const ImagePoint& a, const ImagePoint& b) {
+    const int x = compare(a, b, 0);
+    return x ? x < 0 : compare(a, b, 1) < 0;
+  };
+  auto equal = [&](const ImagePoint& a, const ImagePoint& b) { return compare(a, b, 0) == 0 && compare(a, b, 1) == 0; };
+  std::sort(p.begin(), p.end(), less);
+  p.erase(std::unique(p.begin(), p.end(), equal), p.end());
+  if (p.size() < 3) return p;
   std::vector<std::size_t> h(2 * p.size());
   std::size_t k = 0;
   auto turn = [&](std::size_t a, std::size_t b, std::size_t c) {
-    return orientation_sign(*p[a], *p[b], *p[c], f[a], f[b], f[c], filtered);
+    return orientation_sign(*p[a].exact, *p[b].exact, *p[c].exact, p[a].f, p[b].f, p[c].f, filtered);
   };
   for (std::size_t i = 0; i < p.size(); ++i) {
     while (k >= 2 && turn(h[k - 2], h[k - 1], i) <= 0) --k;
@@ -192,9 +246,9 @@ std::vector<Point2> image_hull_vertices(const std::vector<Point2>& image) {
     while (k >= t && turn(h[k - 2], h[k - 1], i) <= 0) --k;
     h[k++] = i;
   }
-  std::vector<Point2> out;
+  std::vector<ImagePoint> out;
   out.reserve(k - 1);
-  for (std::size_t i = 0; i + 1 < k; ++i) out.push_back(*p[h[i]]);
+  for (std::size_t i = 0; i + 1 < k; ++i) out.push_back(p[h[i]]);
   return out;  // all collinear: the two extreme points
 }
 
@@ -243,18 +297,18 @@ class Clipper {
     std::size_t out;   // the line carrying the edge from this vertex to the next
   };
 
-  Clipper(std::shared_ptr<const CanonicalConstraints::Impl> g, std::vector<Point2> qs, std::size_t lines)
-      : keep_(std::move(g)), g_(*keep_), qs_(std::move(qs)), hq_(qs_.size()) {
+  Clipper(std::shared_ptr<const CanonicalConstraints::Impl> g, const std::vector<ImagePoint>& qs, std::size_t lines)
+      : keep_(std::move(g)), g_(*keep_), hq_(qs.size()) {
     lines_.reserve(lines);
     filtered_ = g_.filtered;
     long_ = !g_.long_lines.empty();
-    for (const Point2& q : qs_) {
-      const auto lx = top_bits(q.x), ly = top_bits(q.y);
-      long_ = long_ && lx && ly;
-      q_long_.push_back({lx.value_or(0), ly.value_or(0)});
-      const auto x = approx(q.x), y = approx(q.y);
-      filtered_ = filtered_ && x && y;
-      q_approx_.push_back({x.value_or(0), y.value_or(0)});
+    qs_.reserve(qs.size());
+    for (const ImagePoint& q : qs) {
+      qs_.push_back(*q.exact);
+      long_ = long_ && q.extended;
+      q_long_.push_back(q.l);
+      filtered_ = filtered_ && q.filtered;
+      q_approx_.push_back(q.f);
     }
   }
 
@@ -531,11 +585,11 @@ FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const st
   const CanonicalConstraints::Impl& g = *canonical.impl_;
 
   // Only the image hull's vertices constrain F (interior colours add implied constraints).
-  std::vector<Point2> qs = image_hull_vertices(image);
+  const std::vector<ImagePoint> qs = image_hull_vertices(image);
 
-  auto max_of = [](const std::vector<Point2>& ps, Rational Point2::*c) {
-    const Rational* m = &(ps.front().*c);
-    for (const Point2& p : ps) m = std::max(m, &(p.*c), [](auto a, auto b) { return *a < *b; });
+  auto max_of = [](const std::vector<ImagePoint>& ps, Rational Point2::*c) {
+    const Rational* m = &(ps.front().exact->*c);
+    for (const ImagePoint& p : ps) m = std::max(m, &(p.exact->*c), [](auto a, auto b) { return *a < *b; });
     return *m;
   };
   const Rational q1 = max_of(qs, &Point2::x), q2 = max_of(qs, &Point2::y);
@@ -556,8 +610,8 @@ FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const st
   std::size_t first = k_count;
   if (g.polygon)
     for (std::size_t k = 0; k < k_count && first == k_count; ++k)
-      if (sgn(qs[k].x) > 0 && sgn(qs[k].y) > 0) first = k;
-  Clipper& c = st.clipper.emplace(canonical.impl_, std::move(qs), m * k_count + 4);
+      if (sgn(qs[k].exact->x) > 0 && sgn(qs[k].exact->y) > 0) first = k;
+  Clipper& c = st.clipper.emplace(canonical.impl_, qs, m * k_count + 4);
   std::vector<Vertex> cycle;
   if (first < k_count) {
     std::vector<std::size_t> lines(m);
