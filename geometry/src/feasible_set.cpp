@@ -295,6 +295,7 @@ class Clipper {
     std::size_t p, q;  // the vertex is the meet of lines p and q (not parallel)
     int w_sign;        // the sign of det[(a_p, b_p); (a_q, b_q)], the homogeneous weight
     std::size_t out;   // the line carrying the edge from this vertex to the next
+    double lo[2], hi[2];  // certain bounds of its coordinates (infinite when unknown)
   };
 
   Clipper(std::shared_ptr<const CanonicalConstraints::Impl> g, const std::vector<ImagePoint>& qs, std::size_t lines)
@@ -332,7 +333,33 @@ class Clipper {
     return lines_.size() - 1;
   }
 
-  Vertex vertex(std::size_t p, std::size_t q, std::size_t out) { return {p, q, weight_sign(p, q), out}; }
+  Vertex vertex(std::size_t p, std::size_t q, std::size_t out) {
+    Vertex v{p, q, weight_sign(p, q), out, {-HUGE_VAL, -HUGE_VAL}, {HUGE_VAL, HUGE_VAL}};
+    if (filtered_) {
+      const EnclosedVertex e = enclose_double(v);
+      if (std::isfinite(e.x.rad) && std::isfinite(e.y.rad))
+        v.lo[0] = e.x.lo(), v.hi[0] = e.x.hi(), v.lo[1] = e.y.lo(), v.hi[1] = e.y.hi();
+    }
+    return v;
+  }
+
+  // True when every vertex of the cycle lies strictly inside the half-plane of canonical edge e
+  // scaled by image vertex k (then clipping by it changes nothing), decided from the vertices'
+  // certain bounds: the line's approximation is add_scaled's, a·x + b·y is largest over a
+  // vertex's box at the corner the normal points to, and a·x + b·y − c there is within 16u of its
+  // computed magnitude sum (the bound of side_of_point, for exact corner coordinates).
+  bool all_inside(std::size_t e, std::size_t k, const std::vector<Vertex>& cycle) const {
+    if (!filtered_) return false;
+    const ApproxLine& ge = g_.approx[e];
+    const double a = ge.a * q_approx_[k][0], b = ge.b * q_approx_[k][1];
+    const int ia = a > 0, ib = b > 0;
+    for (const Vertex& v : cycle) {
+      const double x = a * (ia ? v.hi[0] : v.lo[0]), y = b * (ib ? v.hi[1] : v.lo[1]);
+      const double s = x + y - ge.c;
+      if (!(s < -16 * u * (std::fabs(x) + std::fabs(y) + std::fabs(ge.c)))) return false;
+    }
+    return true;
+  }
 
   // The sign of a·x + b·y − c at vertex v for line h (v's weight taken positive).
   int side(std::size_t h, const Vertex& v) {
@@ -385,8 +412,12 @@ class Clipper {
       };
       return {coordinate(det(p.c, q.b, q.c, p.b)), coordinate(det(p.a, q.c, q.a, p.c))};
     }
-    // Double lines: each 2×2 determinant within 16u of its computed magnitude sum (the bound of
-    // weight_sign, the same expression shape).
+    return enclose_double(v);
+  }
+
+  // The same from the double lines: each 2×2 determinant within 16u of its computed magnitude
+  // sum (the bound of weight_sign, the same expression shape). Only when filtered().
+  EnclosedVertex enclose_double(const Vertex& v) const {
     const ApproxLine &p = lines_[v.p].approx, &q = lines_[v.q].approx;
     auto det = [](double a, double d, double b, double c) {  // a·d − b·c
       const double l = a * d, r = b * c;
@@ -632,6 +663,8 @@ FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const st
   for (std::size_t k = 0; k < k_count; ++k) {
     if (k == first) continue;
     for (std::size_t e = 0; e < m; ++e) {
+      // A line every vertex lies strictly inside of cannot cut: it is not even added.
+      if (c.all_inside(e, k, cycle)) continue;
       clip(c, cycle, c.add_scaled(e, k), next, sides);
       cycle.swap(next);
       if (cycle.empty()) {
