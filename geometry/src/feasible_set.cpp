@@ -207,12 +207,12 @@ int orientation_sign(const Point2& a, const Point2& b, const Point2& c, const st
 // lexicographic order and orientations filtered (doubles within 2u decide when they differ by
 // more than their error; mpq_cmp, no gcd, otherwise). Image hulls are small (a scene's colours),
 // so this beats building exact-kernel points for CGAL.
-std::vector<ImagePoint> image_hull_vertices(const std::vector<Point2>& image) {
+std::vector<ImagePoint> image_hull_vertices(const std::vector<const Point2*>& image) {
   std::vector<ImagePoint> p;
   p.reserve(image.size());
   bool filtered = true;
-  for (const Point2& q : image) {
-    p.push_back(image_point(q));
+  for (const Point2* q : image) {
+    p.push_back(image_point(*q));
     filtered = filtered && p.back().filtered;
   }
   // x̂ within 2u|x| of x: x̂_a − x̂_b beyond 4.01u(|x̂_a| + |x̂_b|) (with the subtraction's own
@@ -305,7 +305,7 @@ class Clipper {
     long_ = !g_.long_lines.empty();
     qs_.reserve(qs.size());
     for (const ImagePoint& q : qs) {
-      qs_.push_back(*q.exact);
+      qs_.push_back(q.exact);
       long_ = long_ && q.extended;
       q_long_.push_back(q.l);
       filtered_ = filtered_ && q.filtered;
@@ -483,7 +483,7 @@ class Clipper {
   const Line& exact(std::size_t i) {
     Entry& l = lines_[i];
     if (!l.exact) {
-      if (!hq_[l.image_vertex]) hq_[l.image_vertex] = homogeneous(qs_[l.image_vertex]);
+      if (!hq_[l.image_vertex]) hq_[l.image_vertex] = homogeneous(*qs_[l.image_vertex]);
       const HomogeneousPoint& q = *hq_[l.image_vertex];
       const Line& g = g_.lines[l.gamut_edge];
       // m ⊙ q ∈ {a·x + b·y <= c}  ⟺  (a·X)·m1 + (b·Y)·m2 <= c·W for q = (X/W, Y/W), W > 0.
@@ -533,7 +533,7 @@ class Clipper {
 
   std::shared_ptr<const CanonicalConstraints::Impl> keep_;
   const CanonicalConstraints::Impl& g_;
-  std::vector<Point2> qs_;
+  std::vector<const Point2*> qs_;  // the image hull's vertices (owned by the caller or State)
   std::vector<std::optional<HomogeneousPoint>> hq_;
   std::vector<std::array<double, 2>> q_approx_;
   std::vector<std::array<long double, 2>> q_long_;
@@ -599,6 +599,7 @@ std::vector<Vertex> reduced(Clipper& c, const std::vector<Vertex>& cycle) {
 }  // namespace
 
 struct FeasiblePolygon::State {
+  std::vector<Point2> owned;        // the image hull's vertices, when the caller's may not outlive F
   std::optional<Clipper> clipper;   // absent when F is empty before clipping ends
   std::vector<Vertex> cycle;        // reduced; strictly convex when enclosed
   ConvexKind kind = ConvexKind::empty;
@@ -608,15 +609,40 @@ struct FeasiblePolygon::State {
   std::optional<ConvexSet2> exact;
 };
 
+// Builds FeasiblePolygon (a friend of it and of CanonicalConstraints).
+struct FeasiblePolygonBuilder {
+  static FeasiblePolygon build(const CanonicalConstraints& canonical, const std::vector<const Point2*>& image,
+                              bool copy_image);
+};
+
 FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const std::vector<Point2>& image) {
+  std::vector<const Point2*> pointers;
+  pointers.reserve(image.size());
+  for (const Point2& q : image) pointers.push_back(&q);
+  return FeasiblePolygonBuilder::build(canonical, pointers, true);
+}
+
+FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const std::vector<const Point2*>& image) {
+  return FeasiblePolygonBuilder::build(canonical, image, false);
+}
+
+FeasiblePolygon FeasiblePolygonBuilder::build(const CanonicalConstraints& canonical,
+                                             const std::vector<const Point2*>& image, bool copy_image) {
   if (image.empty()) throw std::invalid_argument("feasible_set: no image chromaticities");
-  for (const Point2& q : image)
-    if (sgn(q.x) < 0 || sgn(q.y) < 0)
+  for (const Point2* q : image)
+    if (sgn(q->x) < 0 || sgn(q->y) < 0)
       throw std::invalid_argument("feasible_set: an image chromaticity is negative");
   const CanonicalConstraints::Impl& g = *canonical.impl_;
 
+  FeasiblePolygon result;
+  result.state_ = std::make_shared<FeasiblePolygon::State>();
+  FeasiblePolygon::State& st = *result.state_;
   // Only the image hull's vertices constrain F (interior colours add implied constraints).
-  const std::vector<ImagePoint> qs = image_hull_vertices(image);
+  std::vector<ImagePoint> qs = image_hull_vertices(image);
+  if (copy_image) {  // F may outlive the caller's image: keep its hull's vertices
+    st.owned.reserve(qs.size());
+    for (ImagePoint& q : qs) st.owned.push_back(*q.exact), q.exact = &st.owned.back();
+  }
 
   auto max_of = [](const std::vector<ImagePoint>& ps, Rational Point2::*c) {
     const Rational* m = &(ps.front().exact->*c);
@@ -631,9 +657,6 @@ FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const st
     throw UnboundedFeasibleSet("every image colour has g = 0: the map's green component is "
                                "unconstrained and the feasible set is unbounded");
 
-  FeasiblePolygon result;
-  result.state_ = std::make_shared<FeasiblePolygon::State>();
-  FeasiblePolygon::State& st = *result.state_;
   const std::size_t k_count = qs.size(), m = g.lines.size();
   // The clipping starts from G_c ⊘ q for an image vertex q > 0 when G_c is a polygon: its
   // vertices are the meets of consecutive scaled edges (a positive diagonal scaling keeps the

@@ -89,14 +89,17 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
     for (int i = 0; i < n; ++i)
       std::swap(pool[static_cast<std::size_t>(i)],
                 pool[static_cast<std::size_t>(i) + below(g, pool.size() - static_cast<std::size_t>(i))]);
-    std::vector<Point2> image;
+    // The scene's chromaticities by address: the light's precomputed ones, or this scene's own.
+    std::vector<const Point2*> image;
+    std::vector<Point2> own;
+    own.reserve(static_cast<std::size_t>(n));
     std::vector<Colour> image_colours;
     for (int i = 0; i < n; ++i) {
       const std::size_t surface = pool[static_cast<std::size_t>(i)];
       // Without noise the chromaticities are the light's, computed once (shading scales a
       // colour, not its chromaticity); the colours themselves are kept only for 3-D CRULE.
       if (config.noise <= 0 && !config.crule) {
-        if (sgn(light.surfaces[surface].b) > 0) image.push_back(chromaticities[surface]);
+        if (sgn(light.surfaces[surface].b) > 0) image.push_back(&chromaticities[surface]);
         continue;
       }
       Colour c = light.surfaces[surface];
@@ -107,7 +110,7 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
         const Rational scale = rational_from_double(config.shading + (1 - config.shading) * uniform01(g));
         for (Rational* x : {&c.r, &c.g, &c.b}) *x *= scale;
       }
-      if (sgn(c.b) > 0) image.push_back(perspective_chromaticity(c));
+      if (sgn(c.b) > 0) own.push_back(perspective_chromaticity(c)), image.push_back(&own.back());
       image_colours.push_back(std::move(c));
     }
     ++cell.scenes;

@@ -52,13 +52,17 @@ class FeasiblePolygon {
 
  private:
   std::shared_ptr<State> state_;
-  friend FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical,
-                                          const std::vector<Point2>& image);
+  friend struct FeasiblePolygonBuilder;
 };
 
 /// F for a prepared canonical gamut and an image (Finlayson & Hordley 1999 §2, eqs. 7–9): the
 /// same clipping, decisions and preconditions as feasible_set, which is feasible_polygon(…)
 /// .exact(). \throws as feasible_set.
 FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const std::vector<Point2>& image);
+
+/// The same for image chromaticities given by address, without copying them: for experiments
+/// that draw scenes from one list of colours. The pointed-to colours must outlive the result
+/// (its exact() and contains() may read them again).
+FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const std::vector<const Point2*>& image);
 
 }  // namespace gmcc

@@ -13,6 +13,7 @@
 namespace gmcc {
 
 class FeasiblePolygon;
+struct FeasiblePolygonBuilder;
 
 /// Thrown when the image leaves a map component unconstrained (every image chromaticity has
 /// r = 0, or every one has g = 0): F is then an unbounded set and no rule can select from it.
@@ -32,7 +33,7 @@ class CanonicalConstraints {
  private:
   std::shared_ptr<const Impl> impl_;
   friend class FeasiblePolygon;
-  friend FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const std::vector<Point2>& image);
+  friend struct FeasiblePolygonBuilder;
 };
 
 /// F, exactly, with its kind (polygon, segment, point or empty).
