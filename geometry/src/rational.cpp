@@ -6,6 +6,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 
@@ -127,6 +128,20 @@ Rational parse_rational(std::string_view text) {
   // |power| <= max_decimal_exponent + max_number_digits: both were checked above.
   const long power = exponent - fraction_digits;
 
+  // Short decimals (the spectral tables' every number) in machine integers: m/10^k is reduced by
+  // removing the factors 2 and 5 it shares with 10^k, the only ones it can share.
+  if (digits.size() <= 18 && power <= 0 && power >= -18) {
+    std::uint64_t m = 0, d = 1;
+    for (char c : digits) m = m * 10 + static_cast<std::uint64_t>(c - '0');
+    for (long k = 0; k < -power; ++k) d *= 10;
+    if (m == 0) d = 1;
+    while (d % 2 == 0 && m % 2 == 0) m /= 2, d /= 2;
+    while (d % 5 == 0 && m % 5 == 0) m /= 5, d /= 5;
+    Rational r;
+    mpq_set_ui(r.get_mpq_t(), static_cast<unsigned long>(m), static_cast<unsigned long>(d));
+    if (negative) mpq_neg(r.get_mpq_t(), r.get_mpq_t());
+    return r;
+  }
   mpz_class mantissa(digits, 10);
   if (negative) mantissa = -mantissa;
   mpz_class scale;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <fstream>
 #include <sstream>
+#include <utility>
 #include <stdexcept>
 
 namespace gmcc {
@@ -59,6 +60,7 @@ SpectralTable parse_spectral_csv(const std::string& text, const std::string& fil
       throw InputError(file, number, "expected " + std::to_string(t.spectra.size() + 1) +
                                          " values, found " + std::to_string(fields.size()));
     std::vector<Rational> row;
+    row.reserve(fields.size());
     for (std::size_t j = 0; j < fields.size(); ++j) {
       try {
         row.push_back(parse_rational(fields[j]));
@@ -69,7 +71,7 @@ SpectralTable parse_spectral_csv(const std::string& text, const std::string& fil
     if (!t.wavelengths.empty() && row[0] <= t.wavelengths.back())
       throw InputError(file, number, "wavelengths must increase strictly");
     t.wavelengths.push_back(row[0]);
-    for (std::size_t j = 1; j < row.size(); ++j) t.spectra[j - 1].values.push_back(row[j]);
+    for (std::size_t j = 1; j < row.size(); ++j) t.spectra[j - 1].values.push_back(std::move(row[j]));
   }
   if (t.spectra.empty() || t.wavelengths.empty())
     throw InputError(file, 0, "no spectral data (expected a header and rows)");
