@@ -364,6 +364,18 @@ class Clipper {
   // The sign of a·x + b·y − c at vertex v for line h (v's weight taken positive).
   int side(std::size_t h, const Vertex& v) {
     if (h == v.p || h == v.q) return 0;  // on its own lines: symbolically, no arithmetic
+    if (filtered_) {
+      // From the vertex's certain bounds (cheaper than the 3×3 determinant): a·x + b·y − c over
+      // its box, each end within 16u of its computed magnitude sum (as in all_inside).
+      const ApproxLine& l = lines_[h].approx;
+      const int ia = l.a > 0, ib = l.b > 0;
+      const double x_hi = l.a * (ia ? v.hi[0] : v.lo[0]), y_hi = l.b * (ib ? v.hi[1] : v.lo[1]);
+      const double top = x_hi + y_hi - l.c;
+      if (top < -16 * u * (std::fabs(x_hi) + std::fabs(y_hi) + std::fabs(l.c))) return -1;
+      const double x_lo = l.a * (ia ? v.lo[0] : v.hi[0]), y_lo = l.b * (ib ? v.lo[1] : v.hi[1]);
+      const double bottom = x_lo + y_lo - l.c;
+      if (bottom > 16 * u * (std::fabs(x_lo) + std::fabs(y_lo) + std::fabs(l.c))) return 1;
+    }
     return side_raw(v.p, v.q, h) * v.w_sign;
   }
 
