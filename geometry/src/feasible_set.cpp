@@ -100,7 +100,7 @@ TopBits top64(mpz_srcptr z) {
   const mp_limb_t hi = mpz_getlimbn(z, static_cast<mp_size_t>(n - 1));
   if (n == 1) return {static_cast<long double>(hi), 0};
   const mp_limb_t lo = mpz_getlimbn(z, static_cast<mp_size_t>(n - 2));
-  const int lz = __builtin_clzll(hi);
+  const int lz = __builtin_clzll(static_cast<unsigned long long>(hi));
   const mp_limb_t top = lz ? (hi << lz) | (lo >> (64 - lz)) : hi;
   return {static_cast<long double>(top), 64 * static_cast<long>(n - 2) + (64 - lz)};
 }
@@ -136,8 +136,16 @@ std::optional<long double> top_bits(const Rational& q) {
   return sgn(q) < 0 ? -v : v;
 }
 
-// Extended-precision arithmetic has the 64-bit significand this analysis assumes (x86's x87).
-constexpr bool long_lines_available = std::numeric_limits<long double>::digits == 64;
+// Extended-precision arithmetic has the 64-bit significand this analysis assumes (x86's x87),
+// and GMP's limbs the 64 bits top64 reads; at run time, the x87 must also be set to its full
+// precision (some systems or libraries set it to 53 bits).
+constexpr bool long_lines_compiled = std::numeric_limits<long double>::digits == 64 && GMP_NUMB_BITS == 64 &&
+                                     GMP_NAIL_BITS == 0;
+bool full_extended_precision() {
+  volatile long double one = 1, tiny = 0x1p-63L;
+  return one + tiny != one;
+}
+const bool long_lines_available = long_lines_compiled && full_extended_precision();
 
 // A rational as a double within a relative 2u (u = 2^-53) of it, or nothing when it is outside
 // [2^-140, 2^140] (checked from its size). From the extended-precision quotient (2^-61.6) rounded
@@ -147,7 +155,8 @@ std::optional<double> approx(const Rational& q) {
   const long bits = static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) -
                     static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
   if (bits < -138 || bits > 138) return std::nullopt;
-  if (long_lines_available) return static_cast<double>(*top_bits(q));
+  if (long_lines_available)
+    if (const auto l = top_bits(q)) return static_cast<double>(*l);
   return mpq_get_d(q.get_mpq_t());
 }
 
@@ -677,13 +686,19 @@ FeasiblePolygon FeasiblePolygonBuilder::build(const CanonicalConstraints& canoni
   if (g.polygon)
     for (std::size_t k = 0; k < k_count && first == k_count; ++k)
       if (sgn(qs[k].exact->x) > 0 && sgn(qs[k].exact->y) > 0) first = k;
-  Clipper& c = st.clipper.emplace(canonical.impl_, qs, m * k_count + 4);
+  Clipper& c = st.clipper.emplace(canonical.impl_, qs, m * (k_count + 1) + 4);
   std::vector<Vertex> cycle;
   if (first < k_count) {
     std::vector<std::size_t> lines(m);
     for (std::size_t e = 0; e < m; ++e) lines[e] = c.add_scaled(e, first);
     for (std::size_t e = 0; e < m; ++e) cycle.push_back(c.vertex(lines[(e + m - 1) % m], lines[e], lines[e]));
-  } else {
+    // Consecutive parallel edges (a G_c given with collinear vertices, not in canonical form)
+    // have no meet: start from the box instead, which needs no such assumption.
+    for (const Vertex& v : cycle)
+      if (v.w_sign == 0) first = k_count;
+    if (first == k_count) cycle.clear();
+  }
+  if (first == k_count) {
     // The box [0, X/Q1] × [0, Y/Q2] contains F: for q with q1 = Q1 > 0, m1·Q1 is the first
     // coordinate of a point of G_c, so 0 <= m1·Q1 <= X (likewise m2). Clip it to F.
     const std::size_t bottom = c.add_exact(integer_line({0, -1, 0}));
@@ -729,13 +744,23 @@ FeasiblePolygon FeasiblePolygonBuilder::build(const CanonicalConstraints& canoni
   return result;
 }
 
-ConvexKind FeasiblePolygon::kind() const { return state_->kind; }
-bool FeasiblePolygon::enclosed() const { return !state_->vertices.empty(); }
-const std::vector<EnclosedVertex>& FeasiblePolygon::vertices() const { return state_->vertices; }
-const std::vector<ApproximateLine>& FeasiblePolygon::edges() const { return state_->edges; }
+// A default-constructed FeasiblePolygon is the empty set.
+FeasiblePolygon::State& FeasiblePolygon::state() const {
+  static State empty = [] {
+    State e;
+    e.exact = ConvexSet2{};
+    return e;
+  }();
+  return state_ ? *state_ : empty;
+}
+
+ConvexKind FeasiblePolygon::kind() const { return state().kind; }
+bool FeasiblePolygon::enclosed() const { return !state().vertices.empty(); }
+const std::vector<EnclosedVertex>& FeasiblePolygon::vertices() const { return state().vertices; }
+const std::vector<ApproximateLine>& FeasiblePolygon::edges() const { return state().edges; }
 
 const ConvexSet2& FeasiblePolygon::exact() const {
-  State& st = *state_;
+  State& st = state();
   if (st.exact) return *st.exact;
   Clipper& c = *st.clipper;
   std::vector<Point2> points;
@@ -751,7 +776,7 @@ const ConvexSet2& FeasiblePolygon::exact() const {
 }
 
 bool FeasiblePolygon::contains(const Point2& m) const {
-  State& st = *state_;
+  State& st = state();
   if (st.kind == ConvexKind::empty) return false;
   if (!st.strictly_convex) return gmcc::contains(exact(), m);
   // F is the intersection of the half-planes carrying its edges.

@@ -1,6 +1,7 @@
 #include <gmcc/selection/rule_errors.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 namespace gmcc {
@@ -46,6 +47,7 @@ E angle_deg(const Vec3& a, const Vec3& b) {
   const double s_lo = std::sqrt(s2_lo * (1 - 8 * u)) * (1 - 2 * u);
   const double s_hi = std::sqrt(s2_hi * (1 + 8 * u)) * (1 + 2 * u) + DBL_MIN;
   const E d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  if (!std::isfinite(s2_hi) || !d.finite()) return {0, HUGE_VAL};
   const double d_lo = d.lo(), d_hi = d.hi();
   const double d_min = d_lo > 0 ? d_lo : d_hi < 0 ? -d_hi : 0, d_max = std::max(std::fabs(d_lo), std::fabs(d_hi));
   const double r2 = (s_lo * s_lo + d_min * d_min) * (1 - 4 * u);
@@ -95,6 +97,8 @@ std::optional<std::array<E, 2>> max_area_map(const std::vector<EnclosedVertex>& 
     if (to_p.positive() == to_q.positive()) continue;
     c.push_back({k * k / (E::exact(4) * a * b), x, y});
   }
+  for (const Candidate& k : c)
+    if (!k.value.finite()) return std::nullopt;
   std::size_t best = 0;
   for (std::size_t k = 1; k < c.size(); ++k)
     if (c[k].value.lo() > c[best].value.lo()) best = k;
@@ -133,33 +137,48 @@ std::optional<std::array<E, 2>> mean_3d_map(const std::vector<EnclosedVertex>& v
     const double s_lo = std::sqrt(s2_lo * (1 - 8 * u)) * (1 - 2 * u);
     const double s_hi = std::sqrt(s2_hi * (1 + 8 * u)) * (1 + 2 * u) + DBL_MIN;
     const E d = p.x * q.x + p.y * q.y + E::exact(1);
-    if (!d.positive()) return std::nullopt;
+    if (!d.finite() || !d.positive() || !std::isfinite(s2_hi)) return std::nullopt;
     const E g = theta_over_s(s_lo, s_hi, d);
     for (int k = 0; k < 3; ++k) tau[k] = tau[k] + g * c[k];
   }
-  if (tau[2].uncertain_sign()) return std::nullopt;
+  if (!tau[0].finite() || !tau[1].finite() || !tau[2].finite() || tau[2].uncertain_sign()) return std::nullopt;
   return std::array<E, 2>{tau[0] / tau[2], tau[1] / tau[2]};
 }
 
-bool accurate(const E& angle) { return angle.rad <= rule_errors_accuracy * (1 + std::fabs(angle.mid)); }
+bool accurate(const E& angle) {
+  return angle.finite() && angle.rad <= rule_errors_accuracy * (1 + std::fabs(angle.mid));
+}
+
+// The range the double analysis is made for: magnitudes within [2^-100, 2^100] (or 0), far from
+// overflow in products of four and from underflow; anything else goes to the exact route.
+bool in_range(const E& x) {
+  const double a = std::fabs(x.mid);
+  return x.finite() && (a == 0 || (a >= 0x1p-100 && a <= 0x1p100)) && x.rad <= 0x1p100;
+}
 
 }  // namespace
 
 std::optional<std::array<RuleErrors, 3>> rule_errors(const FeasiblePolygon& F, const Point2& truth,
                                                      const Colour& canonical_illuminant) {
+  for (const Rational* x : {&truth.x, &truth.y, &canonical_illuminant.r, &canonical_illuminant.g, &canonical_illuminant.b})
+    if (sgn(*x) <= 0) throw std::invalid_argument("rule_errors: the true map and the illuminant must be > 0");
   if (!F.enclosed()) return std::nullopt;
   const auto& v = F.vertices();
+  for (const EnclosedVertex& p : v)
+    if (!in_range(p.x) || !in_range(p.y)) return std::nullopt;
   std::array<std::optional<std::array<E, 2>>, 3> maps{max_area_map(v, F.edges()), centroid(v), mean_3d_map(v)};
   const E t1 = enclose(truth.x), t2 = enclose(truth.y), one = E::exact(1);
   const E cr = enclose(canonical_illuminant.r), cg = enclose(canonical_illuminant.g),
           cb = enclose(canonical_illuminant.b);
+  for (const E* x : {&t1, &t2, &cr, &cg, &cb})
+    if (!in_range(*x)) return std::nullopt;
   std::array<RuleErrors, 3> out{};
   std::vector<E> keys;
   keys.reserve(v.size());
   for (std::size_t r = 0; r < 3; ++r) {
     if (!maps[r]) return std::nullopt;
     const E m1 = (*maps[r])[0], m2 = (*maps[r])[1];
-    if (m1.uncertain_sign() || m2.uncertain_sign()) return std::nullopt;
+    if (!in_range(m1) || !in_range(m2) || m1.uncertain_sign() || m2.uncertain_sign()) return std::nullopt;
     const Vec3 lifted{m1, m2, one};
     const E error = angle_deg(lifted, {t1, t2, one});
     // Worst case: every vertex at an acute angle to the map (u·v > 0), so the maximum is at a

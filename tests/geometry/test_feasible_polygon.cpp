@@ -162,4 +162,24 @@ BOOST_AUTO_TEST_CASE(symbolic_feasible_set_is_exact_and_its_enclosures_contain_i
   for (int k = 0; k < 4; ++k) BOOST_TEST(kinds[k] > 5, "kind " << k << ": " << kinds[k]);  // G_c a polygon: every kind of F
 }
 
+// Found in review: a G_c given with a collinear (or repeated) vertex, not in canonical form, has
+// consecutive parallel edges with no meet; the clipping must not start from them.
+BOOST_AUTO_TEST_CASE(non_canonical_canonical_gamut_and_the_default_object) {
+  Rng rng(4);
+  int enclosed = 0;
+  const ConvexSet2 collinear{ConvexKind::polygon, {{1, 1}, {2, 1}, {3, 1}, {3, 3}, {1, 3}}};
+  const ConvexSet2 repeated{ConvexKind::polygon, {{1, 1}, {3, 1}, {3, 1}, {3, 3}, {1, 3}}};
+  for (const ConvexSet2& G : {collinear, repeated})
+    for (const std::vector<Point2>& image : {std::vector<Point2>{{1, 1}}, std::vector<Point2>{{1, 1}, {Rational(3, 2), 1}}}) {
+      const FeasiblePolygon P = feasible_polygon(CanonicalConstraints(G), image);
+      BOOST_TEST(P.exact() == test::reference::feasible_set_reference(G, image));
+      check_scene(rng, G, image, enclosed);
+    }
+  const FeasiblePolygon none;
+  BOOST_TEST(none.kind() == ConvexKind::empty);
+  BOOST_TEST(!none.enclosed());
+  BOOST_TEST(!none.contains({1, 1}));
+  BOOST_TEST(none.exact() == ConvexSet2{});
+}
+
 BOOST_AUTO_TEST_SUITE_END()

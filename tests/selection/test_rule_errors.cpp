@@ -86,4 +86,28 @@ BOOST_AUTO_TEST_CASE(declines_segments_and_points) {
   }
 }
 
+// Found in review: a feasible set near 2^253 (G_c × 2^116, one colour at 2^-137) passes every
+// filter, and the double arithmetic then overflows (90° worst cases, a 3-D mean of the wrong
+// sign). Such sets are beyond the route's range: it must decline, and the exact route answers.
+BOOST_AUTO_TEST_CASE(declines_feasible_sets_beyond_its_range) {
+  const Rational big(mpz_class(1) << 116);
+  const ConvexSet2 G = convex_hull({{Rational(1 * big), Rational(11 * big)}, {Rational(9 * big), Rational(4 * big)},
+                                    {Rational(11 * big), Rational(9 * big)}, {Rational(3 * big), Rational(11 * big)}});
+  const Rational tiny(1, mpz_class(1) << 137);
+  const FeasiblePolygon P = feasible_polygon(CanonicalConstraints(G), std::vector<Point2>{{tiny, tiny}});
+  BOOST_TEST(P.kind() == ConvexKind::polygon);
+  BOOST_TEST(!rule_errors(P, {1, 1}, Colour{1, 1, 1}).has_value());
+  // The exact route's worst case for the max-area map, for the record: far from 90°.
+  const Selections sel = select_maps(P.exact());
+  BOOST_TEST(*sel.max_area->worst_case_deg < 50.0);
+}
+
+BOOST_AUTO_TEST_CASE(requires_a_positive_truth_and_illuminant) {
+  const ConvexSet2 G = convex_hull({{1, 1}, {2, 1}, {2, 2}, {1, 2}});
+  const FeasiblePolygon P = feasible_polygon(CanonicalConstraints(G), std::vector<Point2>{{1, 1}});
+  BOOST_CHECK_THROW(rule_errors(P, {1, 1}, Colour{1, 1, 0}), std::invalid_argument);
+  BOOST_CHECK_THROW(rule_errors(P, {-1, 1}, Colour{1, 1, 1}), std::invalid_argument);
+  BOOST_TEST(rule_errors(P, {1, 1}, Colour{1, 1, 1}).has_value());
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -29,8 +29,9 @@ struct Enclosure {
   static Enclosure exact(double x) { return {x, 0}; }
   /// A double known to be within a relative `rel` of the real number it stands for.
   static Enclosure relative(double x, double rel) { return {x, round_up(std::fabs(x) * rel)}; }
-  /// [lo, hi] (lo <= hi).
+  /// [lo, hi]; unbounded unless lo <= hi (so a NaN end never passes for a tight enclosure).
   static Enclosure between(double lo, double hi) {
+    if (!(lo <= hi)) return {0, HUGE_VAL};
     const double m = lo + (hi - lo) / 2;
     return {m, round_up(std::max(m - lo, hi - m) + u * std::fabs(m))};
   }
@@ -39,6 +40,8 @@ struct Enclosure {
   /// correction's own subtraction.
   double lo() const { return (mid - rad) - round_up(2 * u * (std::fabs(mid) + rad)); }
   double hi() const { return (mid + rad) + round_up(2 * u * (std::fabs(mid) + rad)); }
+  /// A finite midpoint and a finite, non-negative radius (false for anything NaN touched).
+  bool finite() const { return std::isfinite(mid) && rad >= 0 && rad < HUGE_VAL; }
   bool positive() const { return lo() > 0; }
   bool negative() const { return hi() < 0; }
   /// Neither positive nor negative for certain.
@@ -70,6 +73,7 @@ struct Enclosure {
 
 /// √x over the non-negative part of x: |√y − √a| <= min(ra/√a, √ra).
 inline Enclosure sqrt(const Enclosure& x) {
+  if (!(x.mid + x.rad >= 0) || !std::isfinite(x.mid + x.rad)) return {0, HUGE_VAL};  // NaN, or no real root
   if (x.mid <= 0) {  // [0, √(mid + rad)]: half of it either side of its middle
     const double top = std::sqrt(std::max(0.0, x.mid + x.rad)) * (1 + 0x1p-50);
     return {top / 2, Enclosure::round_up(top / 2)};

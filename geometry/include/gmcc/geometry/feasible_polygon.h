@@ -29,8 +29,9 @@ struct ApproximateLine {
   double a, b, c;
 };
 
-/// F as a clipped cycle of input lines. A value type; its exact form is built on first use and
-/// cached, so one object must not be used by two threads at once (distinct objects may).
+/// F as a clipped cycle of input lines; default-constructed, the empty set. Its exact form and
+/// exact lines are built on first use and cached in state that copies share: an object and its
+/// copies must not be used by two threads at once (objects built by separate calls may).
 class FeasiblePolygon {
  public:
   /// The kind of F (exact: decided by the clipping's exact predicates).
@@ -51,6 +52,7 @@ class FeasiblePolygon {
   struct State;
 
  private:
+  State& state() const;
   std::shared_ptr<State> state_;
   friend struct FeasiblePolygonBuilder;
 };

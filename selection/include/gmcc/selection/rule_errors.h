@@ -43,7 +43,9 @@ inline constexpr double rule_errors_accuracy = 0x1p-36;
 /// decision is uncertain (near-tied max-area candidates, a stationary point at an edge's end, a
 /// map component of uncertain sign) or when an angle's enclosure is wider than the accuracy
 /// above. The caller then uses the exact routes (select_maps and angular_error.h), which agree
-/// within that accuracy (tested on thousands of scenes). \pre truth and c are > 0.
+/// within that accuracy (tested on thousands of scenes). Also nothing when F's vertices, the truth,
+/// c or a map leave [2^-100, 2^100] in magnitude, the range its double analysis is made for.
+/// \throws std::invalid_argument unless truth and c are > 0.
 std::optional<std::array<RuleErrors, 3>> rule_errors(const FeasiblePolygon& F, const Point2& truth,
                                                      const Colour& canonical_illuminant);
 
