@@ -1,0 +1,86 @@
+#!/usr/bin/python3
+"""Run every performance benchmark of issue 6 and print the target table (docs/performance.md).
+
+    bench/performance_table.py [--build build] [--threads 2] [--quick]
+
+Rows, each a ratio measured within one run (or one process) so that machine load cancels:
+  - whole experiment: `gmcc reproduce synthetic` (22,000 scenes) against the Python plain-double
+    baseline (bench/baseline_reproduce.py), wall and CPU;
+  - per scene: bench_scene's certified route (what the experiment runs) and exact route against
+    the same pipeline on plain doubles, 11 colours and 1-11 colours, 12-vertex canonical hull;
+  - many colours: bench_hull, the exact image-gamut hull of 10 ... 10^7 chromaticities;
+  - 3-D mean: bench_mean_3d, the closed form against the paper's Monte Carlo at 10^6 samples.
+--quick runs 50 scenes per cell for the whole experiment (about 1/10 of it) instead of 500.
+Needs a Release build with the benchmarks (cmake -DCMAKE_BUILD_TYPE=Release; target bench).
+"""
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import run_reproduce_bench  # noqa: E402  (the whole-experiment timing)
+
+
+def google_benchmark(binary, *flags):
+    out = subprocess.run([binary, "--benchmark_format=json", *flags], check=True,
+                         stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True).stdout
+    unit = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
+    return {b["name"]: b["cpu_time"] * unit[b["time_unit"]] for b in json.loads(out)["benchmarks"]
+            if b.get("run_type", "iteration") == "iteration"}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--build", default=os.path.join(HERE, "..", "build"))
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--quick", action="store_true")
+    args = ap.parse_args()
+    bench = os.path.join(args.build, "bench")
+    rows = []
+
+    scenes = 50 if args.quick else 500
+    total = 4 * 11 * scenes
+    g_wall, g_cpu = run_reproduce_bench.timed_gmcc(os.path.join(args.build, "cli", "gmcc"), scenes, args.threads)
+    p_wall, p_cpu = run_reproduce_bench.timed_baseline(scenes)
+    rows.append(("whole experiment, %d scenes: gmcc wall" % total, "%.3f s" % g_wall, "< 1 s (moonshot 0.25 s)",
+                 g_wall < 1))
+    rows.append(("whole experiment: Python baseline / gmcc, wall", "%.1f× (%.2f s / %.3f s)" % (p_wall / g_wall, p_wall, g_wall),
+                 ">= 6×", p_wall / g_wall >= 6))
+    rows.append(("whole experiment: Python baseline / gmcc, CPU", "%.1f× (%.2f s / %.3f s)" % (p_cpu / g_cpu, p_cpu, g_cpu),
+                 "(work, not waiting)", None))
+
+    for surfaces, label in (("11", "11 colours"), ("0", "1-11 colours")):
+        t = google_benchmark(os.path.join(bench, "bench_scene"), "--surfaces", surfaces)
+        d, c, e = t["scene_double"], t["scene_certified"], t["scene_exact"]
+        rows.append(("per scene, %s: certified / plain doubles" % label,
+                     "%.2f× (%.1f µs / %.1f µs)" % (c / d, c * 1e6, d * 1e6), "<= 3×", c / d <= 3))
+        rows.append(("per scene, %s: all-exact route / plain doubles" % label,
+                     "%.0f× (%.0f µs)" % (e / d, e * 1e6), "(for reference)", None))
+
+    hull = google_benchmark(os.path.join(bench, "bench_hull"), "--benchmark_filter=filtered")
+    for n, target in ((10**6, 0.05), (10**7, 0.5)):
+        t = hull["filtered/%d" % n]
+        rows.append(("image hull of 10^%d colours" % len(str(n)[1:]), "%.1f ms" % (t * 1e3), "< %g ms" % (target * 1e3),
+                     t < target))
+    scaling = ", ".join("10^%d: %.3g ms" % (len(str(n)[1:]), hull["filtered/%d" % n] * 1e3)
+                        for n in (10, 100, 1000, 10**4, 10**5, 10**6, 10**7))
+
+    m3 = google_benchmark(os.path.join(bench, "bench_mean_3d"), "--benchmark_filter=analytic_auto|monte_carlo/1000000")
+    r = m3["monte_carlo/1000000"] / m3["analytic_auto"]
+    rows.append(("3-D mean: Monte Carlo 10^6 / closed form", "%.0f×" % r, ">= 10^4×", r >= 1e4))
+
+    print("| measurement | result | target | met |")
+    print("|---|---|---|---|")
+    for name, result, target, met in rows:
+        print("| %s | %s | %s | %s |" % (name, result, target, "" if met is None else ("yes" if met else "**no**")))
+    print()
+    print("image hull scaling (CPU): " + scaling)
+    print("load average at the end: %.2f %.2f %.2f" % os.getloadavg())
+
+
+if __name__ == "__main__":
+    main()
