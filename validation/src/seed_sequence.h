@@ -22,8 +22,8 @@ class SeedSequence {
   template <class It>
   void param(It out) const { std::copy(v_.begin(), v_.end(), out); }
 
-  // [rand.util.seedseq]/8, with the indices k mod n, (k + p) mod n, (k + q) mod n and
-  // (k − 1) mod n stepped instead of divided.
+  // [rand.util.seedseq]/8, with the indices k mod n, (k + p) mod n and (k + q) mod n stepped
+  // instead of divided.
   template <class It>
   void generate(It begin, It end) const {
     const std::size_t n = static_cast<std::size_t>(end - begin);
@@ -34,24 +34,29 @@ class SeedSequence {
     const std::size_t p = (n - t) / 2, q = p + t, m = std::max(s + 1, n);
     auto T = [](std::uint32_t x) { return x ^ (x >> 27); };
     auto at = [&](std::size_t i) -> std::uint32_t& { return *(begin + static_cast<std::ptrdiff_t>(i)); };
-    std::size_t k0 = 0, kp = p % n, kq = q % n, km = n - 1;  // k, k+p, k+q, k−1, all mod n
+    std::size_t k0 = 0, kp = p % n, kq = q % n;  // k, k+p, k+q, all mod n
+    // Element (k − 1) mod n is always the value the previous step stored last (its own k), so it
+    // is kept in a register: the loops' dependency chain no longer passes through memory.
+    std::uint32_t previous = at(n - 1);
     auto step = [n](std::size_t& i) { i = i + 1 == n ? 0 : i + 1; };
     for (std::size_t k = 0; k < m; ++k) {
-      const std::uint32_t r1 = 1664525u * T(at(k0) ^ at(kp) ^ at(km));
+      const std::uint32_t r1 = 1664525u * T(at(k0) ^ at(kp) ^ previous);
       const std::uint32_t r2 = r1 + static_cast<std::uint32_t>(
                                         k == 0 ? s : k <= s ? k0 + v_[k - 1] : k0);
       at(kp) += r1;
       at(kq) += r2;
       at(k0) = r2;
-      step(k0), step(kp), step(kq), step(km);
+      previous = r2;
+      step(k0), step(kp), step(kq);
     }
     for (std::size_t k = m; k < m + n; ++k) {
-      const std::uint32_t r3 = 1566083941u * T(at(k0) + at(kp) + at(km));
+      const std::uint32_t r3 = 1566083941u * T(at(k0) + at(kp) + previous);
       const std::uint32_t r4 = r3 - static_cast<std::uint32_t>(k0);
       at(kp) ^= r3;
       at(kq) ^= r4;
       at(k0) = r4;
-      step(k0), step(kp), step(kq), step(km);
+      previous = r4;
+      step(k0), step(kp), step(kq);
     }
   }
 
