@@ -53,7 +53,13 @@ SpectralTable parse_spectral_csv(const std::string& text, const std::string& fil
     if (t.spectra.empty()) {  // the header
       if (fields.size() < 2 || fields[0] != "wavelength_nm")
         throw InputError(file, number, "expected a header 'wavelength_nm,NAME,...'");
-      for (std::size_t j = 1; j < fields.size(); ++j) t.spectra.push_back({fields[j], {}, {}});
+      const auto rows = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+      t.wavelengths.reserve(rows);
+      t.spectra.reserve(fields.size() - 1);
+      for (std::size_t j = 1; j < fields.size(); ++j) {
+        t.spectra.push_back({fields[j], {}, {}});
+        t.spectra.back().values.reserve(rows);
+      }
       continue;
     }
     if (fields.size() != t.spectra.size() + 1)
