@@ -24,12 +24,9 @@ E enclose(const Rational& q) {
 double abs_lo(const E& x) { return std::max(0.0, std::fabs(x.mid) - x.rad) * (1 - 4 * u); }
 double abs_hi(const E& x) { return (std::fabs(x.mid) + x.rad) * (1 + 4 * u) + DBL_MIN; }
 
-// A correctly padded libm result: atan2 is within one ulp on x86_64 glibc (and every platform
-// we know); with the product by the double nearest 180/π (another two roundings), a relative
-// 2^-49 covers the total four times over.
+// libm's atan2 is within one ulp on x86_64 glibc (and every platform we know); the double
+// nearest 180/π and the product by it add two roundings. The pads below cover these.
 constexpr double degrees_per_radian = 180 / M_PI;
-double deg_lo(double radians) { return radians * degrees_per_radian * (1 - 0x1p-49); }
-double deg_hi(double radians) { return radians * degrees_per_radian * (1 + 0x1p-49) + DBL_MIN; }
 
 // ∠(u, v) = atan2(|u×v|, u·v) in degrees, from s = |u×v| ∈ [s_lo, s_hi] and d = u·v ∈ d. One
 // atan2 at the box's centre; over the box |∂θ/∂s| = |d|/(s² + d²) <= max|d|/R² and
