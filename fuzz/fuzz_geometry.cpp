@@ -10,20 +10,32 @@
 //    points) lie in F exactly when m ⊙ q ∈ G_c for every q (brute force);
 //  - max-area and the 2-D mean lie in F, and max-area's m1·m2 beats every candidate in F;
 //  - the 3-D mean's certified enclosure meets F (the mean is irrational: an exact box test);
-//  - every rule's worst cases are at least the angle to every vertex and candidate in F.
+//  - every rule's worst cases are at least the angle to every vertex and candidate in F;
+//  - the certified route (feasible_polygon.h, rule_errors.h): feasible_polygon throws
+//    UnboundedFeasibleSet exactly when feasible_set does; its kind() is F's kind, exact() is F
+//    (also from the image by address); when enclosed(), each vertex of F lies in its enclosure
+//    (mid ± rad, exactly, for one rotation of the cycle) and each edge's approximate line is
+//    within a relative 6·2^-53 of a positive multiple of the exact one; contains() agrees with
+//    F on every candidate; rule_errors answers only when enclosed(), and then every angle (map
+//    error against a positive truth, worst case, illuminant and reproduction errors under a
+//    positive light, all from fuzz bytes) is within its stated accuracy of the exact route's.
 
 #include "fuzz_support.h"
 
 #include <gmcc/geometry/canonical_gamut.h>
 #include <gmcc/geometry/convex_hull.h>
+#include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/max_area.h>
 #include <gmcc/selection/mean_2d.h>
+#include <gmcc/selection/rule_errors.h>
 #include <gmcc/selection/select_maps.h>
 #include <gmcc/selection/worst_case.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <iterator>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -147,6 +159,59 @@ bool finite_doubles(const ConvexSet2& F) {
 
 bool positive(const Point2& p) { return sgn(p.x) > 0 && sgn(p.y) > 0; }
 
+// The real number x lies in mid ± rad (exactly: the enclosure's own claim, not its lo()/hi()).
+bool in_enclosure(const Rational& x, const gmcc::Enclosure& e) {
+  if (!e.finite()) return false;
+  const Rational d = x - gmcc::rational_from_double(e.mid);
+  return abs(d) <= gmcc::rational_from_double(e.rad);
+}
+
+// The certified vertices and edges of an enclosed P against F's exact vertices: some rotation r
+// puts F's vertex i in enclosure (i + r) mod n and makes edge (i + r) the line from F's vertex i
+// to i + 1, each coefficient within a relative 6u of the same positive multiple of the exact
+// line's (so with its exact sign).
+void check_enclosed(const gmcc::FeasiblePolygon& P, const ConvexSet2& F) {
+  const auto& ev = P.vertices();
+  const auto& el = P.edges();
+  const auto& v = F.vertices;
+  const std::size_t n = v.size();
+  FUZZ_CHECK(F.kind == ConvexKind::polygon && ev.size() == n && el.size() == n,
+             "enclosed: " + std::to_string(ev.size()) + " enclosures, " + std::to_string(el.size()) +
+                 " edges for " + std::to_string(n) + " vertices");
+  const Rational six_u(6, power_of_two(53));
+  auto edge_ok = [&](const gmcc::ApproximateLine& l, const Point2& p, const Point2& q) {
+    // p → q counter-clockwise: F lies left of it, in (q.y − p.y)·x + (p.x − q.x)·y <= c.
+    const Rational ea(q.y - p.y), eb(p.x - q.x), ec(ea * p.x + eb * p.y);
+    const double approx[3] = {l.a, l.b, l.c};
+    const Rational* exact[3] = {&ea, &eb, &ec};
+    std::optional<Rational> lo, hi;
+    for (int k = 0; k < 3; ++k) {
+      if (!std::isfinite(approx[k])) return false;
+      const Rational a = gmcc::rational_from_double(approx[k]);
+      if (sgn(a) != sgn(*exact[k])) return false;
+      if (sgn(a) == 0) continue;
+      const Rational ratio(a / *exact[k]);
+      if (!lo || ratio < *lo) lo = ratio;
+      if (!hi || *hi < ratio) hi = ratio;
+    }
+    // Some λ > 0 with every ratio in [λ(1 − 6u), λ(1 + 6u)].
+    return lo && sgn(*lo) > 0 && *hi * (1 - six_u) <= *lo * (1 + six_u);
+  };
+  bool vertices_fit = false;
+  for (std::size_t r = 0; r < n; ++r) {
+    bool fit = true;
+    for (std::size_t i = 0; i < n && fit; ++i)
+      fit = in_enclosure(v[i].x, ev[(i + r) % n].x) && in_enclosure(v[i].y, ev[(i + r) % n].y);
+    if (!fit) continue;
+    vertices_fit = true;
+    bool edges_fit = true;
+    for (std::size_t i = 0; i < n && edges_fit; ++i) edges_fit = edge_ok(el[(i + r) % n], v[i], v[(i + 1) % n]);
+    if (edges_fit) return;
+  }
+  FUZZ_CHECK(false, vertices_fit ? "enclosed: an approximate edge line is not within 6u of its exact line"
+                                 : "enclosed: no rotation puts every vertex of F in its enclosure");
+}
+
 // A worst case w is the maximum of `angle` over F: at least its value at every point given.
 // Both are MPFR values rounded to double; when two points' angles agree to ~2^-100 their
 // roundings may be a unit apart, hence the relative allowance.
@@ -185,11 +250,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   const bool unbounded = std::all_of(image.begin(), image.end(), [](const Point2& q) { return sgn(q.x) == 0; }) ||
                          std::all_of(image.begin(), image.end(), [](const Point2& q) { return sgn(q.y) == 0; });
+  const gmcc::CanonicalConstraints constraints(G);
   ConvexSet2 F;
   try {
     F = gmcc::feasible_set(G, image);
   } catch (const gmcc::UnboundedFeasibleSet&) {
     FUZZ_CHECK(unbounded, "UnboundedFeasibleSet for a bounded feasible set");
+    bool thrown = false;
+    try {
+      (void)gmcc::feasible_polygon(constraints, image);
+    } catch (const gmcc::UnboundedFeasibleSet&) {
+      thrown = true;
+    }
+    FUZZ_CHECK(thrown, "feasible_polygon: no UnboundedFeasibleSet where feasible_set throws it");
     return 0;
   }
   FUZZ_CHECK(!unbounded, "no UnboundedFeasibleSet though a component is unconstrained");
@@ -200,6 +273,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   FUZZ_CHECK(gmcc::feasible_set(G, reordered) == F, "F depends on the image order (rotated)");
   for (const Point2& v : F.vertices)
     FUZZ_CHECK(feasible(G, image, v), "vertex " + text(v) + " of F is not feasible");
+
+  // The certified route on the same scene: its kind, enclosures and membership tests are
+  // checked before its exact set is built (exact() is built on demand), then that set.
+  const gmcc::FeasiblePolygon P = gmcc::feasible_polygon(constraints, image);
+  FUZZ_CHECK(P.kind() == F.kind, "feasible_polygon: kind differs from F's");
+  FUZZ_CHECK(!P.enclosed() || P.kind() == ConvexKind::polygon, "feasible_polygon: enclosed but not a polygon");
+  if (P.enclosed()) check_enclosed(P, F);
+  {
+    std::vector<const Point2*> by_address;  // the image by address, in reverse order
+    for (auto q = image.rbegin(); q != image.rend(); ++q) by_address.push_back(&*q);
+    const gmcc::FeasiblePolygon Q = gmcc::feasible_polygon(constraints, by_address);
+    FUZZ_CHECK(Q.kind() == F.kind && Q.exact() == F, "feasible_polygon by address (reversed) is not F");
+  }
 
   // Candidate maps, each checked against the definition.
   std::vector<Point2> candidates = F.vertices;
@@ -232,8 +318,29 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool inside = gmcc::contains(F, m);
     FUZZ_CHECK(inside == feasible(G, image, m),
                "map " + text(m) + (inside ? " in F but not feasible" : " feasible but not in F"));
+    FUZZ_CHECK(P.contains(m) == inside, "feasible_polygon: contains(" + text(m) + ") is not " +
+                                            (inside ? "true" : "false"));
     if (inside) in_F.push_back(m);
   }
+  FUZZ_CHECK(P.exact() == F && P.exact().kind == P.kind(), "feasible_polygon: exact() is not F");
+
+  // rule_errors against a positive truth (a positive candidate in F, or one from fuzz bytes) and
+  // a positive light from fuzz bytes (huge and tiny ones too: it must then decline).
+  auto positive_or_one = [](const Rational& x) { return sgn(x) > 0 ? x : Rational(1); };
+  std::vector<Point2> positive_in_F;
+  std::copy_if(in_F.begin(), in_F.end(), std::back_inserter(positive_in_F), positive);
+  const unsigned pick = in.byte();
+  Point2 truth{1, 1};
+  if (pick % 4 != 0 && !positive_in_F.empty()) {
+    truth = positive_in_F[pick / 4 % positive_in_F.size()];
+  } else {
+    truth.x = positive_or_one(coordinate(in, pool));
+    truth.y = positive_or_one(coordinate(in, pool));
+  }
+  gmcc::Colour light{1, 1, 1};
+  for (Rational* k : {&light.r, &light.g, &light.b}) *k = positive_or_one(coordinate(in, pool));
+  const auto fast = gmcc::rule_errors(P, truth, light);
+  FUZZ_CHECK(P.enclosed() || !fast, "rule_errors answered for a feasible set that is not enclosed");
   if (F.kind == ConvexKind::empty) return 0;
 
   gmcc::Mean3dOptions mean3d;
@@ -243,25 +350,29 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // the cost of the rest of the selection), so that 10^6 runs take hours rather than days; the
   // eighth calls select_maps, all of it.
   const bool whole = (flags >> 4) % 8 == 0;
+  // A rule's selection as select_maps makes it, without the illuminant worst case.
+  auto rule = [&F](gmcc::MapEstimate e) {
+    gmcc::Selection sel{e, std::nullopt, std::nullopt};
+    if (e.valid)
+      sel.worst_case_deg = gmcc::worst_case_map_deg(
+          F, e.exact ? *e.exact : Point2{gmcc::rational_from_double(e.map[0]), gmcc::rational_from_double(e.map[1])});
+    return sel;
+  };
   gmcc::Selections s;
   if (whole) {
     try {
       s = gmcc::select_maps(F, gmcc::SelectionOptions{mean3d, c});
     } catch (const std::domain_error&) {
       FUZZ_CHECK(!finite_doubles(F), "domain_error though F is within the double range");
+      FUZZ_CHECK(!fast, "rule_errors answered for F beyond the double range");
       return 0;
     }
     FUZZ_CHECK(finite_doubles(F), "no domain_error though F is beyond the double range");
   } else {
-    if (!finite_doubles(F)) return 0;
-    auto rule = [&F](gmcc::MapEstimate e) {
-      gmcc::Selection sel{e, std::nullopt, std::nullopt};
-      if (e.valid)
-        sel.worst_case_deg = gmcc::worst_case_map_deg(
-            F, e.exact ? *e.exact
-                       : Point2{gmcc::rational_from_double(e.map[0]), gmcc::rational_from_double(e.map[1])});
-      return sel;
-    };
+    if (!finite_doubles(F)) {
+      FUZZ_CHECK(!fast, "rule_errors answered for F beyond the double range");
+      return 0;
+    }
     s.max_area = rule(gmcc::max_area(F));
     s.mean_2d = rule(gmcc::mean_2d(F));
     s.mean_3d = rule(gmcc::mean_3d(F, mean3d));
@@ -295,6 +406,38 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FUZZ_CHECK(box_meets(F, lo, hi), "3-D mean: the enclosure misses F");
     for (int k = 0; k < 2; ++k)
       FUZZ_CHECK(e[k][0] <= m3.map[k] && m3.map[k] <= e[k][1], "3-D mean: map outside its enclosure");
+  }
+
+  // rule_errors against the exact route (as tests/selection/test_rule_errors.cpp: its accuracy,
+  // the exact route's 2^-50 and the 3-D mean's rounding to doubles allowed for). Its 3-D mean
+  // is at the default precision: a forced one is recomputed (only when rule_errors answered).
+  if (fast) {
+    std::optional<gmcc::Selection> mean_3d_default;
+    if (mean3d.precision_bits != 0) mean_3d_default = rule(gmcc::mean_3d(F));
+    const gmcc::Selection* exact_route[3] = {&*s.max_area, &*s.mean_2d,
+                                             mean_3d_default ? &*mean_3d_default : &*s.mean_3d};
+    for (int r = 0; r < 3; ++r) {
+      const gmcc::MapEstimate& e = exact_route[r]->estimate;
+      FUZZ_CHECK(e.valid && exact_route[r]->worst_case_deg, e.rule + ": no exact map at the default precision");
+      const Point2 m = e.exact ? *e.exact : Point2{gmcc::rational_from_double(e.map[0]), gmcc::rational_from_double(e.map[1])};
+      const gmcc::RuleErrors& f = (*fast)[r];
+      auto agree = [&](double fast_value, double exact_value, const char* what) {
+        const bool close = std::fabs(fast_value - exact_value) <=
+                           gmcc::rule_errors_accuracy * (1 + std::fabs(exact_value)) +
+                               0x1p-48 * std::fabs(exact_value) + 1e-13;
+        char values[96];
+        std::snprintf(values, sizeof values, " %.17g, exact route %.17g", fast_value, exact_value);
+        FUZZ_CHECK(close, "rule_errors " + e.rule + " " + what + values + "; truth " + text(truth) +
+                              ", map " + text(m));
+      };
+      agree(f.map_error_deg, gmcc::map_angular_error_deg(m, truth), "map error");
+      agree(f.worst_case_deg, *exact_route[r]->worst_case_deg, "worst case");
+      FUZZ_CHECK(f.positive_map == positive(m), "rule_errors " + e.rule + ": positive_map wrong for " + text(m));
+      if (f.positive_map) {
+        agree(f.illuminant_error_deg, gmcc::illuminant_angular_error_deg(m, truth, light), "illuminant error");
+        agree(f.reproduction_error_deg, gmcc::reproduction_angular_error_deg(m, truth), "reproduction error");
+      }
+    }
   }
 
   // Worst cases against the vertices and a few other points of F (each angle costs an MPFR

@@ -269,6 +269,10 @@ struct CanonicalConstraints::Impl {
   std::vector<ApproxLine> approx;
   std::vector<LongLine> long_lines;  // empty when not available
   bool polygon = false;  // lines[i] carries the edge from vertex i to vertex i+1 of G_c
+  // The map constraint C (F ∩ C is computed): its half-planes as exact lines and approximations.
+  std::vector<Line> extra_lines;
+  std::vector<ApproxLine> extra_approx;
+  bool extra_filtered = true, extra_empty = false;
   bool filtered = true;  // every approximation is in the filter's range
   Rational x_max, y_max;
 };
@@ -291,6 +295,20 @@ CanonicalConstraints::CanonicalConstraints(const ConvexSet2& canonical) {
   g.polygon = canonical.kind == ConvexKind::polygon;
   g.x_max = canonical.vertices.front().x, g.y_max = canonical.vertices.front().y;
   for (const Point2& p : canonical.vertices) g.x_max = std::max(g.x_max, p.x), g.y_max = std::max(g.y_max, p.y);
+  impl_ = std::move(impl);
+}
+
+CanonicalConstraints::CanonicalConstraints(const ConvexSet2& canonical, const ConvexSet2& map_constraint)
+    : CanonicalConstraints(canonical) {
+  auto impl = std::make_shared<Impl>(*impl_);
+  impl->extra_empty = map_constraint.kind == ConvexKind::empty;
+  for (const internal::HalfPlane& h : internal::half_planes(map_constraint)) {
+    impl->extra_lines.push_back(integer_line(h));
+    ApproxLine a{};
+    impl->extra_filtered = impl->extra_filtered && approx_line(impl->extra_lines.back(), a) &&
+                           in_filter_range(a.a) && in_filter_range(a.b) && in_filter_range(a.c);
+    impl->extra_approx.push_back(a);
+  }
   impl_ = std::move(impl);
 }
 
@@ -326,7 +344,13 @@ class Clipper {
   std::size_t add_exact(Line l) {
     ApproxLine a{};
     filtered_ = filtered_ && approx_line(l, a) && in_range(a);
-    lines_.push_back({a, std::move(l), npos, npos});
+    lines_.push_back({a, std::move(l), npos, npos, nullptr});
+    return lines_.size() - 1;
+  }
+  // Line j of the prepared map constraint (exact and approximate lines made once).
+  std::size_t add_fixed(std::size_t j) {
+    filtered_ = filtered_ && g_.extra_filtered;
+    lines_.push_back({g_.extra_approx[j], std::nullopt, npos, npos, &g_.extra_lines[j]});
     return lines_.size() - 1;
   }
   // The line (n_e ⊙ q)·m <= k_e of canonical half-plane e and image vertex k. Its approximation
@@ -338,7 +362,7 @@ class Clipper {
     const ApproxLine& ge = g_.approx[e];
     const ApproxLine a{ge.a * q_approx_[k][0], ge.b * q_approx_[k][1], ge.c};
     filtered_ = filtered_ && in_range(a);
-    lines_.push_back({a, std::nullopt, e, k});
+    lines_.push_back({a, std::nullopt, e, k, nullptr});
     return lines_.size() - 1;
   }
 
@@ -352,22 +376,25 @@ class Clipper {
     return v;
   }
 
-  // True when every vertex of the cycle lies strictly inside the half-plane of canonical edge e
-  // scaled by image vertex k (then clipping by it changes nothing), decided from the vertices'
-  // certain bounds: the line's approximation is add_scaled's, a·x + b·y is largest over a
+  // True when every vertex of the cycle lies strictly inside the half-plane a·x + b·y <= c (then
+  // clipping by it changes nothing), for an approximation within 6u of a positive multiple of
+  // the exact line, decided from the vertices' certain bounds: a·x + b·y is largest over a
   // vertex's box at the corner the normal points to, and a·x + b·y − c there is within 16u of its
   // computed magnitude sum (the bound of side_of_point, for exact corner coordinates).
-  bool all_inside(std::size_t e, std::size_t k, const std::vector<Vertex>& cycle) const {
+  bool all_inside(const ApproxLine& l, const std::vector<Vertex>& cycle) const {
     if (!filtered_) return false;
-    const ApproxLine& ge = g_.approx[e];
-    const double a = ge.a * q_approx_[k][0], b = ge.b * q_approx_[k][1];
-    const int ia = a > 0, ib = b > 0;
+    const int ia = l.a > 0, ib = l.b > 0;
     for (const Vertex& v : cycle) {
-      const double x = a * (ia ? v.hi[0] : v.lo[0]), y = b * (ib ? v.hi[1] : v.lo[1]);
-      const double s = x + y - ge.c;
-      if (!(s < -16 * u * (std::fabs(x) + std::fabs(y) + std::fabs(ge.c)))) return false;
+      const double x = l.a * (ia ? v.hi[0] : v.lo[0]), y = l.b * (ib ? v.hi[1] : v.lo[1]);
+      const double s = x + y - l.c;
+      if (!(s < -16 * u * (std::fabs(x) + std::fabs(y) + std::fabs(l.c)))) return false;
     }
     return true;
+  }
+  // The same for canonical edge e scaled by image vertex k (add_scaled's approximation).
+  bool all_inside(std::size_t e, std::size_t k, const std::vector<Vertex>& cycle) const {
+    const ApproxLine& ge = g_.approx[e];
+    return all_inside(ApproxLine{ge.a * q_approx_[k][0], ge.b * q_approx_[k][1], ge.c}, cycle);
   }
 
   // The sign of a·x + b·y − c at vertex v for line h (v's weight taken positive).
@@ -482,6 +509,7 @@ class Clipper {
     ApproxLine approx;
     std::optional<Line> exact;
     std::size_t gamut_edge, image_vertex;  // its source, when not given exactly
+    const Line* fixed;  // or a prepared exact line (the map constraint's)
   };
 
   // The extended-precision line: the gamut line's coefficients times the image vertex's
@@ -490,7 +518,7 @@ class Clipper {
   std::optional<LongLine> long_line(std::size_t i) {
     const Entry& l = lines_[i];
     if (l.gamut_edge == npos) {
-      const Line& e = *l.exact;
+      const Line& e = l.fixed ? *l.fixed : *l.exact;
       const auto a = top_bits(e.a.get_mpz_t()), b = top_bits(e.b.get_mpz_t()), c = top_bits(e.c.get_mpz_t());
       if (!a || !b || !c) return std::nullopt;
       return LongLine{*a, *b, *c};
@@ -503,6 +531,7 @@ class Clipper {
 
   const Line& exact(std::size_t i) {
     Entry& l = lines_[i];
+    if (l.fixed) return *l.fixed;
     if (!l.exact) {
       if (!hq_[l.image_vertex]) hq_[l.image_vertex] = homogeneous(*qs_[l.image_vertex]);
       const HomogeneousPoint& q = *hq_[l.image_vertex];
@@ -678,6 +707,10 @@ FeasiblePolygon FeasiblePolygonBuilder::build(const CanonicalConstraints& canoni
     throw UnboundedFeasibleSet("every image colour has g = 0: the map's green component is "
                                "unconstrained and the feasible set is unbounded");
 
+  if (g.extra_empty) {  // F ∩ ∅
+    st.exact = ConvexSet2{};
+    return result;
+  }
   const std::size_t k_count = qs.size(), m = g.lines.size();
   // The clipping starts from G_c ⊘ q for an image vertex q > 0 when G_c is a polygon: its
   // vertices are the meets of consecutive scaled edges (a positive diagonal scaling keeps the
@@ -686,7 +719,7 @@ FeasiblePolygon FeasiblePolygonBuilder::build(const CanonicalConstraints& canoni
   if (g.polygon)
     for (std::size_t k = 0; k < k_count && first == k_count; ++k)
       if (sgn(qs[k].exact->x) > 0 && sgn(qs[k].exact->y) > 0) first = k;
-  Clipper& c = st.clipper.emplace(canonical.impl_, qs, m * (k_count + 1) + 4);
+  Clipper& c = st.clipper.emplace(canonical.impl_, qs, m * (k_count + 1) + 4 + g.extra_lines.size());
   std::vector<Vertex> cycle;
   if (first < k_count) {
     std::vector<std::size_t> lines(m);
@@ -721,6 +754,15 @@ FeasiblePolygon FeasiblePolygonBuilder::build(const CanonicalConstraints& canoni
         st.exact = ConvexSet2{};
         return result;
       }
+    }
+  }
+  for (std::size_t j = 0; j < g.extra_lines.size(); ++j) {
+    if (c.all_inside(g.extra_approx[j], cycle)) continue;
+    clip(c, cycle, c.add_fixed(j), next, sides);
+    cycle.swap(next);
+    if (cycle.empty()) {
+      st.exact = ConvexSet2{};
+      return result;
     }
   }
   st.cycle = reduced(c, cycle);

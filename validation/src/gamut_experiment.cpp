@@ -3,7 +3,6 @@
 #include <gmcc/geometry/chromaticity.h>
 #include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/geometry/feasible_set.h>
-#include <gmcc/geometry/intersection.h>
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/crule_3d.h>
 #include <gmcc/selection/rule_errors.h>
@@ -126,15 +125,8 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
       ++cell.empty;
       continue;
     }
-    std::optional<ConvexSet2> constrained;
-    if (config.constraint) {
-      constrained = intersection(P.exact(), *config.constraint);
-      if (constrained->kind == ConvexKind::empty) {
-        ++cell.empty;
-        continue;
-      }
-    }
-    const bool truth_inside = constrained ? contains(*constrained, light.true_map) : P.contains(light.true_map);
+    // With Finlayson's constraint, `gamut` carries C too: P is F ∩ C.
+    const bool truth_inside = P.contains(light.true_map);
     auto record = [&](std::size_t r, double map_error, double worst_case, bool truth) {
       error[r].push_back(map_error);
       worst[r].push_back(worst_case);
@@ -150,7 +142,7 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
     // The fast certified route (rule_errors.h) where it applies and can certify its angles;
     // otherwise the exact maps and angles. Both agree within rule_errors_accuracy.
     std::optional<std::array<RuleErrors, 3>> fast;
-    if (config.certified_fast_route && !constrained && config.mean3d.method == Mean3dMethod::analytic && config.mean3d.precision_bits == 0)
+    if (config.certified_fast_route && config.mean3d.method == Mean3dMethod::analytic && config.mean3d.precision_bits == 0)
       fast = rule_errors(P, light.true_map, setup.canonical_light);
     if (fast) {
       for (std::size_t r = 0; r < 3; ++r) {
@@ -162,7 +154,7 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
         }
       }
     } else {
-      const Selections sel = select_maps(constrained ? *constrained : P.exact(), selection);
+      const Selections sel = select_maps(P.exact(), selection);
       const std::array<const std::optional<Selection>*, 3> rules{&sel.max_area, &sel.mean_2d, &sel.mean_3d};
       for (std::size_t r = 0; r < 3; ++r) {
         const Selection& x = **rules[r];
@@ -226,7 +218,10 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
     for (int n = config.min_surfaces; n <= config.max_surfaces; ++n) jobs.push_back({l, n});
   result.cells.resize(jobs.size());
 
-  const CanonicalConstraints gamut(result.canonical_gamut);  // prepared once for every scene
+  // G_c (and Finlayson's constraint C, when given) prepared once for every scene.
+  const CanonicalConstraints gamut = config.constraint
+                                         ? CanonicalConstraints(result.canonical_gamut, *config.constraint)
+                                         : CanonicalConstraints(result.canonical_gamut);
   // Without noise a scene's colours are the light's surfaces as given: their chromaticities are
   // computed once per light (b <= 0 left as a placeholder; scenes skip those surfaces).
   std::vector<std::vector<Point2>> chromaticities(setup.lights.size());

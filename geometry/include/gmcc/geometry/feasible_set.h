@@ -28,6 +28,10 @@ class CanonicalConstraints {
  public:
   /// \throws std::invalid_argument if `canonical` is empty.
   explicit CanonicalConstraints(const ConvexSet2& canonical);
+  /// The same, with the feasible maps further restricted to `map_constraint` (any kind; e.g.
+  /// Finlayson's illumination constraint, illumination_constraint.h): feasible_set and
+  /// feasible_polygon then give F ∩ C, clipped in the same pass (equal to intersection(F, C)).
+  CanonicalConstraints(const ConvexSet2& canonical, const ConvexSet2& map_constraint);
   struct Impl;
 
  private:
