@@ -6,6 +6,7 @@
 
 #include <gmcc/geometry/enclosure.h>
 #include <gmcc/geometry/feasible_polygon.h>
+#include <gmcc/geometry/intersection.h>
 
 #include <boost/test/unit_test.hpp>
 
@@ -160,6 +161,48 @@ BOOST_AUTO_TEST_CASE(symbolic_feasible_set_is_exact_and_its_enclosures_contain_i
   }
   BOOST_TEST(enclosed > 150);  // the fast description is the common case
   for (int k = 0; k < 4; ++k) BOOST_TEST(kinds[k] > 5, "kind " << k << ": " << kinds[k]);  // G_c a polygon: every kind of F
+}
+
+// A map constraint C carried by CanonicalConstraints gives F ∩ C in the same clipping: equal to
+// intersection(F, C) for polygons, segments, points and empty constraints, and its enclosures
+// and membership are those of the smaller set.
+BOOST_AUTO_TEST_CASE(map_constraint_gives_the_intersection) {
+  Rng rng(1996 * 2);
+  int enclosed = 0, kinds[4] = {};
+  for (int trial = 0; trial < 300; ++trial) {
+    const auto pts = test::random_points(rng, 3 + trial % 15, 1, 4, 2 + trial % 40);
+    const ConvexSet2 G = convex_hull(pts);
+    const Point2 d{test::random_rational(rng, 1, 6, 20), test::random_rational(rng, 1, 6, 20)};
+    std::vector<Point2> image;
+    for (int i = 0; i < 1 + trial % 5; ++i) {
+      const Point2& p = pts[std::uniform_int_distribution<std::size_t>(0, pts.size() - 1)(rng)];
+      image.push_back({Rational(p.x / d.x), Rational(p.y / d.y)});
+    }
+    // C: random hulls of 1–6 points around the true map (so F ∩ C is often neither F nor C).
+    std::vector<Point2> c;
+    for (int i = 0; i < 1 + trial % 6; ++i)
+      c.push_back({Rational(d.x + test::random_rational(rng, -8, 8, 9) / 4), Rational(d.y + test::random_rational(rng, -8, 8, 9) / 4)});
+    const ConvexSet2 C = trial % 17 == 0 ? ConvexSet2{} : convex_hull(c);
+    const FeasiblePolygon P = feasible_polygon(CanonicalConstraints(G, C), image);
+    const ConvexSet2 expected = intersection(feasible_set(G, image), C);
+    BOOST_TEST(P.exact() == expected);
+    BOOST_TEST(P.kind() == expected.kind);
+    ++kinds[static_cast<int>(expected.kind)];
+    if (P.enclosed()) {
+      ++enclosed;
+      for (const Point2& v : expected.vertices) {
+        bool found = false;
+        for (const EnclosedVertex& e : P.vertices()) found = found || (encloses(e.x, v.x) && encloses(e.y, v.y));
+        BOOST_TEST(found);
+      }
+    }
+    for (int s = 0; s < 10; ++s) {
+      const Point2 m{Rational(d.x + test::random_rational(rng, -8, 8, 9) / 4), Rational(d.y + test::random_rational(rng, -8, 8, 9) / 4)};
+      BOOST_TEST(P.contains(m) == contains(expected, m));
+    }
+  }
+  BOOST_TEST(enclosed > 50);
+  for (int k = 0; k < 4; ++k) BOOST_TEST(kinds[k] > 3, "kind " << k << ": " << kinds[k]);
 }
 
 // Found in review: a G_c given with a collinear (or repeated) vertex, not in canonical form, has
