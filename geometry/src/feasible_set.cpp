@@ -449,18 +449,34 @@ class Clipper {
       };
       const Det w = det(p.a, q.b, q.a, p.b);
       const long double gap = std::fabs(w.value) - w.bound;
-      auto coordinate = [&](const Det& n) -> Enclosure {
-        if (!(gap > 0)) return {0, HUGE_VAL};
+      // |exact − n/w| <= (e_n + |n/w|·e_w)/(|w| − e_w); then x rounds by 2^-64 (and xd by u).
+      auto coordinate = [&](const Det& n) -> LongEnclosure {
+        if (!(gap > 0)) return {0, LongEnclosure::unbounded};
         const long double x = n.value / w.value;
-        const double xd = static_cast<double>(x);
-        // |exact − n/w| <= (e_n + |n/w|·e_w)/(|w| − e_w); then x rounds by 2^-64, xd by u.
         const long double spread = (n.bound + std::fabs(x) * (1 + 0x1p-62L) * w.bound) / gap;
-        const long double rad = spread * (1 + 0x1p-60L) + 0x1p-63L * std::fabs(x) + u * std::fabs(xd);
-        return {xd, Enclosure::round_up(static_cast<double>(rad))};
+        return {x, LongEnclosure::round_up(spread * (1 + 0x1p-60L) + 0x1p-63L * std::fabs(x))};
       };
-      return {coordinate(det(p.c, q.b, q.c, p.b)), coordinate(det(p.a, q.c, q.a, p.c))};
+      auto to_double = [](const LongEnclosure& x) -> Enclosure {
+        const double xd = static_cast<double>(x.mid);
+        return {xd, Enclosure::round_up(static_cast<double>(x.rad) + u * std::fabs(xd))};
+      };
+      return {to_double(coordinate(det(p.c, q.b, q.c, p.b))), to_double(coordinate(det(p.a, q.c, q.a, p.c)))};
     }
     return enclose_double(v);
+  }
+
+  // Extended-precision enclosures from the exact lines: the Cramer numerators and the weight in
+  // integers, then each quotient from their top 64 bits (2^-63 each) and one rounded division
+  // (2^-64): within a relative 2^-61.5 however ill-conditioned the meet (nearly parallel lines).
+  LongEnclosedVertex enclose_exactly(const Vertex& v) {
+    const Line &p = exact(v.p), &q = exact(v.q);
+    const mpz_class w = p.a * q.b - q.a * p.b, x = p.c * q.b - q.c * p.b, y = p.a * q.c - q.a * p.c;
+    auto quotient = [&w](const mpz_class& n) -> LongEnclosure {
+      const auto a = top_bits(n.get_mpz_t()), b = top_bits(w.get_mpz_t());
+      if (!a || !b || *b == 0) return {0, LongEnclosure::unbounded};
+      return LongEnclosure::relative(*a / *b, 0x1p-61L);
+    };
+    return {quotient(x), quotient(y)};
   }
 
   // The same from the double lines: each 2×2 determinant within 16u of its computed magnitude
@@ -655,6 +671,7 @@ struct FeasiblePolygon::State {
   ConvexKind kind = ConvexKind::empty;
   bool strictly_convex = false;
   std::vector<EnclosedVertex> vertices;
+  std::optional<std::vector<LongEnclosedVertex>> long_vertices;  // built on first use
   std::vector<ApproximateLine> edges;
   std::optional<ConvexSet2> exact;
 };
@@ -800,6 +817,15 @@ ConvexKind FeasiblePolygon::kind() const { return state().kind; }
 bool FeasiblePolygon::enclosed() const { return !state().vertices.empty(); }
 const std::vector<EnclosedVertex>& FeasiblePolygon::vertices() const { return state().vertices; }
 const std::vector<ApproximateLine>& FeasiblePolygon::edges() const { return state().edges; }
+const std::vector<LongEnclosedVertex>& FeasiblePolygon::extended_vertices() const {
+  State& st = state();
+  if (!st.long_vertices) {
+    st.long_vertices.emplace();
+    if (long_lines_available && !st.vertices.empty())
+      for (const Vertex& v : st.cycle) st.long_vertices->push_back(st.clipper->enclose_exactly(v));
+  }
+  return *st.long_vertices;
+}
 
 const ConvexSet2& FeasiblePolygon::exact() const {
   State& st = state();

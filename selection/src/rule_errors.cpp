@@ -1,91 +1,129 @@
 #include <gmcc/selection/rule_errors.h>
 
+#include "internal/ld_interval.h"
+
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
 namespace gmcc {
 namespace {
-using E = Enclosure;
-using Vec3 = std::array<E, 3>;
-constexpr double u = E::u;
+// Everything below is generic in the enclosure type E: doubles first, x87 extended precision as
+// a second stage for thin feasible sets. T is its number type, u its unit roundoff; every pad is
+// a multiple of u.
 
-// An exact rational as an enclosure: mpq_get_d truncates (relative error below 2u) within
-// [2^-138, 2^138]; outside that range an unbounded enclosure, which no result accepts.
-E enclose(const Rational& q) {
-  if (sgn(q) == 0) return E::exact(0);
+// An exact rational as an enclosure. Doubles: mpq_get_d truncates (relative error below 2u)
+// within [2^-138, 2^138]; outside that range an unbounded enclosure, which no result accepts.
+// Extended: numerator and denominator's top 64 bits and a division (internal::enclose_ld).
+template <class E>
+E enclose(const Rational& q);
+template <>
+Enclosure enclose<Enclosure>(const Rational& q) {
+  if (sgn(q) == 0) return Enclosure::exact(0);
   const long bits = static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) -
                     static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
-  if (bits < -138 || bits > 138) return {0, HUGE_VAL};
-  return E::relative(mpq_get_d(q.get_mpq_t()), 2 * u);
+  if (bits < -138 || bits > 138) return {0, Enclosure::unbounded};
+  return Enclosure::relative(mpq_get_d(q.get_mpq_t()), 2 * Enclosure::u);
+}
+template <>
+LongEnclosure enclose<LongEnclosure>(const Rational& q) {
+  if (sgn(q) == 0) return LongEnclosure::exact(0);
+  const internal::LDInterval i = internal::enclose_ld(q);
+  return LongEnclosure::between(i.lo, i.hi);
 }
 
 // |x| for x in the enclosure: [max(0, |mid| − rad), |mid| + rad], made certain.
-double abs_lo(const E& x) { return std::max(0.0, std::fabs(x.mid) - x.rad) * (1 - 4 * u); }
-double abs_hi(const E& x) { return (std::fabs(x.mid) + x.rad) * (1 + 4 * u) + DBL_MIN; }
+template <class E, class T = decltype(E::mid)>
+T abs_lo(const E& x) { return std::max(T(0), std::fabs(x.mid) - x.rad) * (1 - 4 * E::u); }
+template <class E, class T = decltype(E::mid)>
+T abs_hi(const E& x) { return (std::fabs(x.mid) + x.rad) * (1 + 4 * E::u) + std::numeric_limits<T>::min(); }
 
-// libm's atan2 is within one ulp on x86_64 glibc (and every platform we know); the double
-// nearest 180/π and the product by it add two roundings. The pads below cover these.
-constexpr double degrees_per_radian = 180 / M_PI;
+// libm's atan2 (and atan2l, the x87's fpatan) is within one ulp on x86_64 glibc (and every
+// platform we know); the nearest 180/π and the product by it add two roundings. The pads below
+// cover these.
+template <class T>
+constexpr T degrees_per_radian = T(180) / T(3.14159265358979323846264338327950288L);
+
+// |u×v| ∈ [s_lo, s_hi] from the components' enclosures: three products and two sums of
+// non-negatives (a relative 6u, covered by 8u), a square root and a product (2u more).
+template <class E, class T = decltype(E::mid)>
+void norm_bounds(const std::array<E, 3>& c, T& s_lo, T& s_hi) {
+  T s2_lo = 0, s2_hi = 0;
+  for (const E& ck : c) {
+    const T lo = abs_lo(ck), hi = abs_hi(ck);
+    s2_lo += lo * lo, s2_hi += hi * hi;
+  }
+  s_lo = std::sqrt(s2_lo * (1 - 8 * E::u)) * (1 - 2 * E::u);
+  s_hi = std::isfinite(s2_hi) ? std::sqrt(s2_hi * (1 + 8 * E::u)) * (1 + 2 * E::u) + std::numeric_limits<T>::min()
+                              : E::unbounded;
+}
 
 // ∠(u, v) = atan2(|u×v|, u·v) in degrees, from s = |u×v| ∈ [s_lo, s_hi] and d = u·v ∈ d. One
 // atan2 at the box's centre; over the box |∂θ/∂s| = |d|/(s² + d²) <= max|d|/R² and
 // |∂θ/∂d| = s/(s² + d²) <= s_hi/R², R² the least s² + d² on it, which bounds the rest. When the box
 // reaches the origin (R = 0: the vectors' enclosures allow a zero vector) the result is unbounded.
-E angle_deg(const Vec3& a, const Vec3& b) {
-  double s2_lo = 0, s2_hi = 0;
+template <class E, class T = decltype(E::mid)>
+E angle_deg(const std::array<E, 3>& a, const std::array<E, 3>& b) {
+  constexpr T u = E::u;
+  std::array<E, 3> c;
   for (int k = 0; k < 3; ++k) {
     const int i = (k + 1) % 3, j = (k + 2) % 3;
-    const E c = a[i] * b[j] - a[j] * b[i];
-    const double lo = abs_lo(c), hi = abs_hi(c);
-    s2_lo += lo * lo, s2_hi += hi * hi;
+    c[static_cast<std::size_t>(k)] = a[static_cast<std::size_t>(i)] * b[static_cast<std::size_t>(j)] -
+                                     a[static_cast<std::size_t>(j)] * b[static_cast<std::size_t>(i)];
   }
-  // Three products and two sums of non-negatives: a relative 6u, covered by 8u.
-  const double s_lo = std::sqrt(s2_lo * (1 - 8 * u)) * (1 - 2 * u);
-  const double s_hi = std::sqrt(s2_hi * (1 + 8 * u)) * (1 + 2 * u) + DBL_MIN;
+  T s_lo, s_hi;
+  norm_bounds(c, s_lo, s_hi);
   const E d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  if (!std::isfinite(s2_hi) || !d.finite()) return {0, HUGE_VAL};
-  const double d_lo = d.lo(), d_hi = d.hi();
-  const double d_min = d_lo > 0 ? d_lo : d_hi < 0 ? -d_hi : 0, d_max = std::max(std::fabs(d_lo), std::fabs(d_hi));
-  const double r2 = (s_lo * s_lo + d_min * d_min) * (1 - 4 * u);
-  if (!(r2 > 0)) return {0, HUGE_VAL};
-  const double s_mid = s_lo + (s_hi - s_lo) / 2;
-  const double ds = (s_hi - s_lo) / 2 * (1 + 4 * u) + u * s_hi, dd = d.rad + u * std::fabs(d.mid);
-  const double theta = std::atan2(s_mid, d.mid);  // radians, within one ulp (2^-52 relative)
-  const double spread = (d_max * ds + s_hi * dd) / r2 * (1 + 0x1p-48) + std::fabs(theta) * 0x1p-50 + DBL_MIN;
-  const double mid = theta * degrees_per_radian;  // 180/π and the product: two more roundings
-  return {mid, E::round_up(spread * degrees_per_radian * (1 + 0x1p-50) + std::fabs(mid) * 0x1p-51)};
+  if (!std::isfinite(s_hi) || !d.finite()) return {0, E::unbounded};
+  const T d_lo = d.lo(), d_hi = d.hi();
+  const T d_min = d_lo > 0 ? d_lo : d_hi < 0 ? -d_hi : 0, d_max = std::max(std::fabs(d_lo), std::fabs(d_hi));
+  const T r2 = (s_lo * s_lo + d_min * d_min) * (1 - 4 * u);
+  if (!(r2 > 0)) return {0, E::unbounded};
+  const T s_mid = s_lo + (s_hi - s_lo) / 2;
+  const T ds = (s_hi - s_lo) / 2 * (1 + 4 * u) + u * s_hi, dd = d.rad + u * std::fabs(d.mid);
+  const T theta = std::atan2(s_mid, d.mid);  // radians, within one ulp (2u relative)
+  const T spread = (d_max * ds + s_hi * dd) / r2 * (1 + 32 * u) + std::fabs(theta) * 8 * u +
+                   std::numeric_limits<T>::min();
+  const T mid = theta * degrees_per_radian<T>;  // 180/π and the product: two more roundings
+  return {mid, E::round_up(spread * degrees_per_radian<T> * (1 + 8 * u) + std::fabs(mid) * 4 * u)};
 }
 
 // g(s, d) = θ/s = atan2(s, d)/s for d > 0 (1/d at s = 0), enclosed from one evaluation at the
 // box's centre. With t = s/d, g = h(t)/d for h(t) = atan(t)/t: |h′| < 0.2923 on t >= 0 (its
 // maximum, checked numerically on a fine grid), so |∂g/∂s| = |h′|/d² < 0.3/d², and
 // ∂g/∂d = −(t·h)′/d² = −1/((1 + t²)·d²), at most 1/d² in size. libm's atan2 (one ulp) and the
-// division: a relative 2^-50 covers them.
-E theta_over_s(double s_lo, double s_hi, const E& d) {
-  const double d_lo = d.lo();
-  const double s_mid = s_lo + (s_hi - s_lo) / 2;
-  const double ds = (s_hi - s_lo) / 2 * (1 + 4 * u) + u * s_hi, dd = d.rad + u * std::fabs(d.mid);
-  const double g = s_mid > 0 ? std::atan2(s_mid, d.mid) / s_mid : 1 / d.mid;
-  return {g, E::round_up((0.3 * ds + dd) / (d_lo * d_lo) * (1 + 0x1p-48) + g * 0x1p-50)};
+// division: a relative 8u covers them.
+template <class E, class T = decltype(E::mid)>
+E theta_over_s(T s_lo, T s_hi, const E& d) {
+  constexpr T u = E::u;
+  const T d_lo = d.lo();
+  const T s_mid = s_lo + (s_hi - s_lo) / 2;
+  const T ds = (s_hi - s_lo) / 2 * (1 + 4 * u) + u * s_hi, dd = d.rad + u * std::fabs(d.mid);
+  const T g = s_mid > 0 ? std::atan2(s_mid, d.mid) / s_mid : 1 / d.mid;
+  return {g, E::round_up((T(0.3) * ds + dd) / (d_lo * d_lo) * (1 + 32 * u) + g * 8 * u)};
 }
 
+template <class E>
 struct Candidate {
   E value, x, y;
 };
 
-std::optional<std::array<E, 2>> max_area_map(const std::vector<EnclosedVertex>& v,
-                                              const std::vector<ApproximateLine>& edges) {
+// The edges' lines are double approximations (each coefficient within 6·2^-53 of the same
+// positive multiple of the exact line), whatever E is.
+constexpr double line_error = 6 * 0x1p-53;
+
+template <class E, class V>
+std::optional<std::array<E, 2>> max_area_map(const std::vector<V>& v, const std::vector<ApproximateLine>& edges) {
   const std::size_t n = v.size();
-  std::vector<Candidate> c;
+  std::vector<Candidate<E>> c;
   c.reserve(2 * n);
-  for (const EnclosedVertex& p : v) c.push_back({p.x * p.y, p.x, p.y});
+  for (const V& p : v) c.push_back({p.x * p.y, p.x, p.y});
   for (std::size_t i = 0; i < n; ++i) {
     const ApproximateLine& l = edges[i];
     // The edge's direction (−b, a) has Δx·Δy < 0 iff a·b > 0: there m1·m2 is concave along the
     // edge, with its stationary point at (c/2a, c/2b) (m1·m2 on a·x + b·y = c), value c²/4ab.
     if (!((l.a > 0 && l.b > 0) || (l.a < 0 && l.b < 0))) continue;
-    const E a = E::relative(l.a, 6 * u), b = E::relative(l.b, 6 * u), k = E::relative(l.c, 6 * u);
+    const E a = E::relative(l.a, line_error), b = E::relative(l.b, line_error), k = E::relative(l.c, line_error);
     const E x = k / (E::exact(2) * a), y = k / (E::exact(2) * b);
     const E& p = v[i].x;
     const E& q = v[(i + 1) % n].x;
@@ -94,7 +132,7 @@ std::optional<std::array<E, 2>> max_area_map(const std::vector<EnclosedVertex>& 
     if (to_p.positive() == to_q.positive()) continue;
     c.push_back({k * k / (E::exact(4) * a * b), x, y});
   }
-  for (const Candidate& k : c)
+  for (const Candidate<E>& k : c)
     if (!k.value.finite()) return std::nullopt;
   std::size_t best = 0;
   for (std::size_t k = 1; k < c.size(); ++k)
@@ -105,7 +143,8 @@ std::optional<std::array<E, 2>> max_area_map(const std::vector<EnclosedVertex>& 
   return std::array<E, 2>{c[best].x, c[best].y};
 }
 
-std::optional<std::array<E, 2>> centroid(const std::vector<EnclosedVertex>& v) {
+template <class E, class V>
+std::optional<std::array<E, 2>> centroid(const std::vector<V>& v) {
   // The fan from vertex 0, in offsets from it: Σ w_i (d_i + d_{i+1})/3 / Σ w_i.
   E w_sum{}, x_sum{}, y_sum{};
   for (std::size_t i = 1; i + 1 < v.size(); ++i) {
@@ -118,23 +157,23 @@ std::optional<std::array<E, 2>> centroid(const std::vector<EnclosedVertex>& v) {
   return std::array<E, 2>{v[0].x + x_sum / den, v[0].y + y_sum / den};
 }
 
-std::optional<std::array<E, 2>> mean_3d_map(const std::vector<EnclosedVertex>& v) {
+template <class E, class V>
+std::optional<std::array<E, 2>> mean_3d_map(const std::vector<V>& v) {
+  using T = decltype(E::mid);
   // τ = ½ Σ θ_i c_i/|c_i| with c_i = p_i × p_{i+1}, p = (x, y, 1) (MATH §1a); the ½ and the
   // orientation cancel in (τ1/τ3, τ2/τ3). c_i from the edge e = p_{i+1} − p_i:
   // (−e_y, e_x, x_i·e_y − y_i·e_x), exact in direction however short the edge.
-  Vec3 tau{};
+  std::array<E, 3> tau{};
   const std::size_t n = v.size();
   for (std::size_t i = 0; i < n; ++i) {
-    const EnclosedVertex& p = v[i];
-    const EnclosedVertex& q = v[(i + 1) % n];
+    const V& p = v[i];
+    const V& q = v[(i + 1) % n];
     const E ex = q.x - p.x, ey = q.y - p.y;
-    const Vec3 c{-ey, ex, p.x * ey - p.y * ex};
-    double s2_lo = 0, s2_hi = 0;
-    for (const E& ck : c) s2_lo += abs_lo(ck) * abs_lo(ck), s2_hi += abs_hi(ck) * abs_hi(ck);
-    const double s_lo = std::sqrt(s2_lo * (1 - 8 * u)) * (1 - 2 * u);
-    const double s_hi = std::sqrt(s2_hi * (1 + 8 * u)) * (1 + 2 * u) + DBL_MIN;
+    const std::array<E, 3> c{-ey, ex, p.x * ey - p.y * ex};
+    T s_lo, s_hi;
+    norm_bounds(c, s_lo, s_hi);
     const E d = p.x * q.x + p.y * q.y + E::exact(1);
-    if (!d.finite() || !d.positive() || !std::isfinite(s2_hi)) return std::nullopt;
+    if (!d.finite() || !d.positive() || !std::isfinite(s_hi)) return std::nullopt;
     const E g = theta_over_s(s_lo, s_hi, d);
     for (int k = 0; k < 3; ++k) tau[k] = tau[k] + g * c[k];
   }
@@ -142,31 +181,30 @@ std::optional<std::array<E, 2>> mean_3d_map(const std::vector<EnclosedVertex>& v
   return std::array<E, 2>{tau[0] / tau[2], tau[1] / tau[2]};
 }
 
+template <class E>
 bool accurate(const E& angle) {
   return angle.finite() && angle.rad <= rule_errors_accuracy * (1 + std::fabs(angle.mid));
 }
 
 // The range the double analysis is made for: magnitudes within [2^-100, 2^100] (or 0), far from
 // overflow in products of four and from underflow; anything else goes to the exact route.
+template <class E>
 bool in_range(const E& x) {
-  const double a = std::fabs(x.mid);
+  const auto a = std::fabs(x.mid);
   return x.finite() && (a == 0 || (a >= 0x1p-100 && a <= 0x1p100)) && x.rad <= 0x1p100;
 }
 
-}  // namespace
-
-std::optional<std::array<RuleErrors, 3>> rule_errors(const FeasiblePolygon& F, const Point2& truth,
-                                                     const Colour& canonical_illuminant) {
-  for (const Rational* x : {&truth.x, &truth.y, &canonical_illuminant.r, &canonical_illuminant.g, &canonical_illuminant.b})
-    if (sgn(*x) <= 0) throw std::invalid_argument("rule_errors: the true map and the illuminant must be > 0");
-  if (!F.enclosed()) return std::nullopt;
-  const auto& v = F.vertices();
-  for (const EnclosedVertex& p : v)
+// One stage: every value in enclosures of type E, from F's vertex enclosures v.
+template <class E, class V>
+std::optional<std::array<RuleErrors, 3>> stage(const std::vector<V>& v, const std::vector<ApproximateLine>& edges,
+                                               const Point2& truth, const Colour& canonical_illuminant) {
+  using T = decltype(E::mid);
+  for (const V& p : v)
     if (!in_range(p.x) || !in_range(p.y)) return std::nullopt;
-  std::array<std::optional<std::array<E, 2>>, 3> maps{max_area_map(v, F.edges()), centroid(v), mean_3d_map(v)};
-  const E t1 = enclose(truth.x), t2 = enclose(truth.y), one = E::exact(1);
-  const E cr = enclose(canonical_illuminant.r), cg = enclose(canonical_illuminant.g),
-          cb = enclose(canonical_illuminant.b);
+  std::array<std::optional<std::array<E, 2>>, 3> maps{max_area_map<E>(v, edges), centroid<E>(v), mean_3d_map<E>(v)};
+  const E t1 = enclose<E>(truth.x), t2 = enclose<E>(truth.y), one = E::exact(1);
+  const E cr = enclose<E>(canonical_illuminant.r), cg = enclose<E>(canonical_illuminant.g),
+          cb = enclose<E>(canonical_illuminant.b);
   for (const E* x : {&t1, &t2, &cr, &cg, &cb})
     if (!in_range(*x)) return std::nullopt;
   std::array<RuleErrors, 3> out{};
@@ -176,41 +214,56 @@ std::optional<std::array<RuleErrors, 3>> rule_errors(const FeasiblePolygon& F, c
     if (!maps[r]) return std::nullopt;
     const E m1 = (*maps[r])[0], m2 = (*maps[r])[1];
     if (!in_range(m1) || !in_range(m2) || m1.uncertain_sign() || m2.uncertain_sign()) return std::nullopt;
-    const Vec3 lifted{m1, m2, one};
-    const E error = angle_deg(lifted, {t1, t2, one});
+    const std::array<E, 3> lifted{m1, m2, one};
+    const E error = angle_deg<E>(lifted, {t1, t2, one});
     // Worst case: every vertex at an acute angle to the map (u·v > 0), so the maximum is at a
     // vertex (MATH §1e). There the angle falls as (u·v)²/|v|² rises (|u| is common): only vertices
     // whose key may be the least need their angle; the enclosure of a maximum is the maximum of
     // the ends.
     keys.clear();
-    double least_hi = HUGE_VAL;
-    for (const EnclosedVertex& p : v) {
+    T least_hi = E::unbounded;
+    for (const V& p : v) {
       const E dot = m1 * p.x + m2 * p.y + one;
       if (!dot.positive()) return std::nullopt;
       keys.push_back(dot * dot / (p.x * p.x + p.y * p.y + one));
       least_hi = std::min(least_hi, keys.back().hi());
     }
-    double worst_lo = 0, worst_hi = 0;
+    T worst_lo = 0, worst_hi = 0;
     for (std::size_t i = 0; i < v.size(); ++i) {
       if (keys[i].lo() > least_hi) continue;  // certainly a smaller angle than another vertex's
-      const E a = angle_deg(lifted, {v[i].x, v[i].y, one});
+      const E a = angle_deg<E>(lifted, {v[i].x, v[i].y, one});
       worst_lo = std::max(worst_lo, a.lo()), worst_hi = std::max(worst_hi, a.hi());
     }
     const E worst = E::between(worst_lo, worst_hi);
     if (!accurate(error) || !accurate(worst)) return std::nullopt;
     RuleErrors& e = out[r];
-    e.map_error_deg = error.mid;
-    e.worst_case_deg = worst.mid;
+    e.map_error_deg = static_cast<double>(error.mid);
+    e.worst_case_deg = static_cast<double>(worst.mid);
     e.positive_map = m1.positive() && m2.positive();
     if (e.positive_map) {  // e = c ⊘ (m, 1); the reproduction error compares d_est ⊘ d_true with white
-      const E illuminant = angle_deg({cr / m1, cg / m2, cb}, {cr / t1, cg / t2, cb});
-      const E reproduction = angle_deg({m1 / t1, m2 / t2, one}, {one, one, one});
+      const E illuminant = angle_deg<E>({cr / m1, cg / m2, cb}, {cr / t1, cg / t2, cb});
+      const E reproduction = angle_deg<E>({m1 / t1, m2 / t2, one}, {one, one, one});
       if (!accurate(illuminant) || !accurate(reproduction)) return std::nullopt;
-      e.illuminant_error_deg = illuminant.mid;
-      e.reproduction_error_deg = reproduction.mid;
+      e.illuminant_error_deg = static_cast<double>(illuminant.mid);
+      e.reproduction_error_deg = static_cast<double>(reproduction.mid);
     }
   }
   return out;
+}
+
+}  // namespace
+
+std::optional<std::array<RuleErrors, 3>> rule_errors(const FeasiblePolygon& F, const Point2& truth,
+                                                     const Colour& canonical_illuminant) {
+  for (const Rational* x : {&truth.x, &truth.y, &canonical_illuminant.r, &canonical_illuminant.g, &canonical_illuminant.b})
+    if (sgn(*x) <= 0) throw std::invalid_argument("rule_errors: the true map and the illuminant must be > 0");
+  if (!F.enclosed()) return std::nullopt;
+  if (auto out = stage<Enclosure>(F.vertices(), F.edges(), truth, canonical_illuminant)) return out;
+  // Thin sets (F ∩ C along the daylight locus, small cones): the same in extended precision,
+  // from vertex enclosures about 2^11 times tighter.
+  if (internal::fast_path_available && !F.extended_vertices().empty())
+    return stage<LongEnclosure>(F.extended_vertices(), F.edges(), truth, canonical_illuminant);
+  return std::nullopt;
 }
 
 }  // namespace gmcc

@@ -22,6 +22,10 @@ namespace gmcc {
 struct EnclosedVertex {
   Enclosure x, y;
 };
+/// The same in x87 extended precision, within a relative 2^-61 of the coordinate.
+struct LongEnclosedVertex {
+  LongEnclosure x, y;
+};
 
 /// An approximate line a·x + b·y <= c: each coefficient within a relative 6·2^-53 of the same
 /// positive multiple of the exact line (so the signs of a, b and c are exact).
@@ -41,6 +45,11 @@ class FeasiblePolygon {
   bool enclosed() const;
   /// Certified enclosures of F's vertices (empty unless enclosed()).
   const std::vector<EnclosedVertex>& vertices() const;
+  /// The same vertices in extended precision, each within a relative 2^-61 however
+  /// ill-conditioned its meet: the Cramer numerators in exact integers, then one division. Built
+  /// on first use (a few µs), for thin sets where vertices() are not tight enough. Needs x87 long
+  /// double with 64-bit GMP limbs at full precision; empty otherwise, or unless enclosed().
+  const std::vector<LongEnclosedVertex>& extended_vertices() const;
   /// edges()[i] carries the edge from vertex i to vertex i+1 (empty unless enclosed()).
   const std::vector<ApproximateLine>& edges() const;
   /// F exactly, as feasible_set returns it (built on the first call).
