@@ -67,11 +67,11 @@ BOOST_AUTO_TEST_CASE(agrees_with_the_exact_route_within_its_accuracy) {
       }
     }
   }
-  // The route is meant to answer on most enclosed feasible sets (else it buys nothing). It
-  // declines the 3-D mean of thin cones (F small against |(m, 1)|: maps up to 300 here), where
-  // the closed form cancels 2·log2(1/width) bits (MATH §1a.7) and the double enclosure is too
-  // wide: about 10% of these scenes; 8 of the 22,000 of the paper's experiment decline at all.
-  BOOST_TEST(answered >= scenes * 8 / 10, answered << " of " << scenes);
+  // The route is meant to answer on nearly every enclosed feasible set (else it buys nothing).
+  // Thin cones (F small against |(m, 1)|: maps up to 300 here) defeat the double stage in about
+  // 10% of these scenes (the closed form cancels 2·log2(1/width) bits, MATH §1a.7); the
+  // extended-precision stage answers all but a few of those.
+  BOOST_TEST(answered >= scenes * 97 / 100, answered << " of " << scenes);
   BOOST_TEST(scenes >= 200);
 }
 
