@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <deque>
 #include <limits>
 #include <optional>
 
@@ -344,13 +345,15 @@ class Clipper {
   std::size_t add_exact(Line l) {
     ApproxLine a{};
     filtered_ = filtered_ && approx_line(l, a) && in_range(a);
-    lines_.push_back({a, std::move(l), npos, npos, nullptr});
+    lines_.push_back({a, npos, npos, nullptr});
+    exact_.resize(lines_.size());
+    exact_.back() = std::move(l);
     return lines_.size() - 1;
   }
   // Line j of the prepared map constraint (exact and approximate lines made once).
   std::size_t add_fixed(std::size_t j) {
     filtered_ = filtered_ && g_.extra_filtered;
-    lines_.push_back({g_.extra_approx[j], std::nullopt, npos, npos, &g_.extra_lines[j]});
+    lines_.push_back({g_.extra_approx[j], npos, npos, &g_.extra_lines[j]});
     return lines_.size() - 1;
   }
   // The line (n_e ⊙ q)·m <= k_e of canonical half-plane e and image vertex k. Its approximation
@@ -362,7 +365,7 @@ class Clipper {
     const ApproxLine& ge = g_.approx[e];
     const ApproxLine a{ge.a * q_approx_[k][0], ge.b * q_approx_[k][1], ge.c};
     filtered_ = filtered_ && in_range(a);
-    lines_.push_back({a, std::nullopt, e, k, nullptr});
+    lines_.push_back({a, e, k, nullptr});
     return lines_.size() - 1;
   }
 
@@ -523,7 +526,6 @@ class Clipper {
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
   struct Entry {
     ApproxLine approx;
-    std::optional<Line> exact;
     std::size_t gamut_edge, image_vertex;  // its source, when not given exactly
     const Line* fixed;  // or a prepared exact line (the map constraint's)
   };
@@ -534,7 +536,7 @@ class Clipper {
   std::optional<LongLine> long_line(std::size_t i) {
     const Entry& l = lines_[i];
     if (l.gamut_edge == npos) {
-      const Line& e = l.fixed ? *l.fixed : *l.exact;
+      const Line& e = l.fixed ? *l.fixed : *exact_[i];
       const auto a = top_bits(e.a.get_mpz_t()), b = top_bits(e.b.get_mpz_t()), c = top_bits(e.c.get_mpz_t());
       if (!a || !b || !c) return std::nullopt;
       return LongLine{*a, *b, *c};
@@ -546,16 +548,19 @@ class Clipper {
   static bool in_range(const ApproxLine& a) { return in_filter_range(a.a) && in_filter_range(a.b) && in_filter_range(a.c); }
 
   const Line& exact(std::size_t i) {
-    Entry& l = lines_[i];
+    const Entry& l = lines_[i];
     if (l.fixed) return *l.fixed;
-    if (!l.exact) {
+    // A deque: growing it keeps references to earlier lines valid (callers hold several).
+    if (exact_.size() <= i) exact_.resize(lines_.size());
+    std::optional<Line>& built = exact_[i];
+    if (!built) {
       if (!hq_[l.image_vertex]) hq_[l.image_vertex] = homogeneous(*qs_[l.image_vertex]);
       const HomogeneousPoint& q = *hq_[l.image_vertex];
       const Line& g = g_.lines[l.gamut_edge];
       // m ⊙ q ∈ {a·x + b·y <= c}  ⟺  (a·X)·m1 + (b·Y)·m2 <= c·W for q = (X/W, Y/W), W > 0.
-      l.exact = Line{g.a * q.x, g.b * q.y, g.c * q.w};
+      built = Line{g.a * q.x, g.b * q.y, g.c * q.w};
     }
-    return *l.exact;
+    return *built;
   }
 
   // sign det[(a_p, b_p); (a_q, b_q)]. Each coefficient is within a relative 6u of a positive
@@ -605,6 +610,7 @@ class Clipper {
   std::vector<std::array<long double, 2>> q_long_;
   bool long_ = false;
   std::vector<Entry> lines_;
+  std::deque<std::optional<Line>> exact_;  // exact lines, built on demand (index: line)
   bool filtered_ = true;
 };
 
