@@ -113,7 +113,8 @@ double pow2(long e) {
   std::memcpy(&x, &bits, sizeof x);
   return x;
 }
-// x·2^e exactly in extended precision (no overflow or underflow there for |e| < 16000).
+// x·2^e exactly in extended precision (no overflow or underflow there for |e| < 16000); pow2 is
+// called with |e| <= 900 only.
 long double scale(long double x, long e) {
   while (e > 900) x *= pow2(900), e -= 900;
   while (e < -900) x *= pow2(-900), e += 900;
@@ -146,7 +147,8 @@ bool full_extended_precision() {
   volatile long double one = 1, tiny = 0x1p-63L;
   return one + tiny != one;
 }
-const bool long_lines_available = long_lines_compiled && full_extended_precision();
+// Checked where it is used: the x87 precision control is per thread and can be changed at run time.
+bool long_lines_available() { return long_lines_compiled && full_extended_precision(); }
 
 // A rational as a double within a relative 2u (u = 2^-53) of it, or nothing when it is outside
 // [2^-140, 2^140] (checked from its size). From the extended-precision quotient (2^-61.6) rounded
@@ -156,7 +158,7 @@ std::optional<double> approx(const Rational& q) {
   const long bits = static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) -
                     static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
   if (bits < -138 || bits > 138) return std::nullopt;
-  if (long_lines_available)
+  if (long_lines_compiled)
     if (const auto l = top_bits(q)) return static_cast<double>(*l);
   return mpq_get_d(q.get_mpq_t());
 }
@@ -170,10 +172,10 @@ struct ImagePoint {
   bool filtered, extended;
 };
 ImagePoint image_point(const Point2& q) {
-  ImagePoint p{&q, {0, 0}, {0, 0}, true, long_lines_available};
+  ImagePoint p{&q, {0, 0}, {0, 0}, true, long_lines_compiled};
   for (int k = 0; k < 2; ++k) {
     const Rational& c = k ? q.y : q.x;
-    const auto l = long_lines_available ? top_bits(c) : std::nullopt;
+    const auto l = long_lines_compiled ? top_bits(c) : std::nullopt;
     p.extended = p.extended && l;
     p.l[k] = l.value_or(0);
     std::optional<double> f;
@@ -292,7 +294,7 @@ CanonicalConstraints::CanonicalConstraints(const ConvexSet2& canonical) {
     const auto la = top_bits(l.a.get_mpz_t()), lb = top_bits(l.b.get_mpz_t()), lc = top_bits(l.c.get_mpz_t());
     if (la && lb && lc) g.long_lines.push_back({*la, *lb, *lc});
   }
-  if (!long_lines_available || g.long_lines.size() != g.lines.size()) g.long_lines.clear();
+  if (!long_lines_compiled || g.long_lines.size() != g.lines.size()) g.long_lines.clear();
   g.polygon = canonical.kind == ConvexKind::polygon;
   g.x_max = canonical.vertices.front().x, g.y_max = canonical.vertices.front().y;
   for (const Point2& p : canonical.vertices) g.x_max = std::max(g.x_max, p.x), g.y_max = std::max(g.y_max, p.y);
@@ -330,7 +332,7 @@ class Clipper {
       : keep_(std::move(g)), g_(*keep_), hq_(qs.size()) {
     lines_.reserve(lines);
     filtered_ = g_.filtered;
-    long_ = !g_.long_lines.empty();
+    long_ = !g_.long_lines.empty() && long_lines_available();
     qs_.reserve(qs.size());
     for (const ImagePoint& q : qs) {
       qs_.push_back(q.exact);
@@ -384,8 +386,12 @@ class Clipper {
   // the exact line, decided from the vertices' certain bounds: a·x + b·y is largest over a
   // vertex's box at the corner the normal points to, and a·x + b·y − c there is within 16u of its
   // computed magnitude sum (the bound of side_of_point, for exact corner coordinates).
+  // Underflow cannot fool it: a filtered line with c != 0 lies at least about 2^-291 from the
+  // origin, so a vertex is the origin (its box straddles 0: no strict decision) or has a
+  // coordinate of at least about 2^-292, whose product is normal; infinite or NaN bounds never
+  // pass the strict comparison.
   bool all_inside(const ApproxLine& l, const std::vector<Vertex>& cycle) const {
-    if (!filtered_) return false;
+    if (!filtered_ || !in_range(l)) return false;
     const int ia = l.a > 0, ib = l.b > 0;
     for (const Vertex& v : cycle) {
       const double x = l.a * (ia ? v.hi[0] : v.lo[0]), y = l.b * (ib ? v.hi[1] : v.lo[1]);
@@ -405,7 +411,9 @@ class Clipper {
     if (h == v.p || h == v.q) return 0;  // on its own lines: symbolically, no arithmetic
     if (filtered_) {
       // From the vertex's certain bounds (cheaper than the 3×3 determinant): a·x + b·y − c over
-      // its box, each end within 16u of its computed magnitude sum (as in all_inside).
+      // its box, each end within 16u of its computed magnitude sum (as in all_inside, whose
+      // comment also says why underflow does not matter). This is the geometric side, which is
+      // side_raw·w_sign; an exact 0 is never decided here.
       const ApproxLine& l = lines_[h].approx;
       const int ia = l.a > 0, ib = l.b > 0;
       const double x_hi = l.a * (ia ? v.hi[0] : v.lo[0]), y_hi = l.b * (ib ? v.hi[1] : v.lo[1]);
@@ -811,9 +819,10 @@ FeasiblePolygon FeasiblePolygonBuilder::build(const CanonicalConstraints& canoni
 
 // A default-constructed FeasiblePolygon is the empty set.
 FeasiblePolygon::State& FeasiblePolygon::state() const {
-  static State empty = [] {
+  static State empty = [] {  // shared by every default object: nothing in it is ever built later
     State e;
     e.exact = ConvexSet2{};
+    e.long_vertices.emplace();
     return e;
   }();
   return state_ ? *state_ : empty;
@@ -827,7 +836,7 @@ const std::vector<LongEnclosedVertex>& FeasiblePolygon::extended_vertices() cons
   State& st = state();
   if (!st.long_vertices) {
     st.long_vertices.emplace();
-    if (long_lines_available && !st.vertices.empty())
+    if (long_lines_available() && !st.vertices.empty())
       for (const Vertex& v : st.cycle) st.long_vertices->push_back(st.clipper->enclose_exactly(v));
   }
   return *st.long_vertices;

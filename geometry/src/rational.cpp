@@ -130,6 +130,7 @@ Rational parse_rational(std::string_view text) {
 
   // Short decimals (the spectral tables' every number) in machine integers: m/10^k is reduced by
   // removing the factors 2 and 5 it shares with 10^k, the only ones it can share.
+  static_assert(sizeof(unsigned long) >= 8, "mpq_set_ui takes the 18-digit mantissa as unsigned long");
   if (digits.size() <= 18 && power <= 0 && power >= -18) {
     std::uint64_t m = 0, d = 1;
     for (char c : digits) m = m * 10 + static_cast<std::uint64_t>(c - '0');

@@ -137,7 +137,7 @@ std::optional<std::array<E, 2>> max_area_map(const std::vector<V>& v, const std:
   std::size_t best = 0;
   for (std::size_t k = 1; k < c.size(); ++k)
     if (c[k].value.lo() > c[best].value.lo()) best = k;
-  const double floor = c[best].value.lo();
+  const auto floor = c[best].value.lo();  // in E's own type: rounding it to double could raise it
   for (std::size_t k = 0; k < c.size(); ++k)
     if (k != best && c[k].value.hi() >= floor) return std::nullopt;
   return std::array<E, 2>{c[best].x, c[best].y};
@@ -181,9 +181,11 @@ std::optional<std::array<E, 2>> mean_3d_map(const std::vector<V>& v) {
   return std::array<E, 2>{tau[0] / tau[2], tau[1] / tau[2]};
 }
 
+// Within the stated accuracy, counting the final rounding of the midpoint to double (2^-53).
 template <class E>
 bool accurate(const E& angle) {
-  return angle.finite() && angle.rad <= rule_errors_accuracy * (1 + std::fabs(angle.mid));
+  const auto a = std::fabs(angle.mid);
+  return angle.finite() && angle.rad + a * 0x1p-52 <= rule_errors_accuracy * (1 + a);
 }
 
 // The range the double analysis is made for: magnitudes within [2^-100, 2^100] (or 0), far from

@@ -19,6 +19,17 @@ using gmcc::test::Rng;
 namespace {
 Rational exact(double x) { return rational_from_double(x); }
 bool encloses(const Enclosure& e, const Rational& x) { return exact(e.lo()) <= x && x <= exact(e.hi()); }
+// A long double as an exact rational: its 64-bit significand and exponent.
+Rational exact_long(long double x) {
+  int e = 0;
+  const long double m = std::frexp(x, &e);  // x = m·2^e, |m| in [0.5, 1): m = k/2^64 exactly
+  const auto k = static_cast<unsigned long long>(std::ldexp(std::fabs(m), 64));
+  Rational r(mpz_class(std::to_string(k)));
+  if (e - 64 >= 0) r *= Rational(mpz_class(1) << static_cast<unsigned>(e - 64));
+  else r /= Rational(mpz_class(1) << static_cast<unsigned>(64 - e));
+  return x < 0 ? Rational(-r) : r;
+}
+bool encloses_long(const LongEnclosure& e, const Rational& x) { return exact_long(e.lo()) <= x && x <= exact_long(e.hi()); }
 
 // A random double in ±[2^-8, 2^8], and a random enclosure around it (radius 0 or up to 2^-20 of it).
 double random_double(Rng& rng) {
@@ -115,6 +126,17 @@ ConvexKind check_scene(Rng& rng, const ConvexSet2& G, const std::vector<Point2>&
       const ApproximateLine& l = P.edges()[i];  // outward normal of the CCW edge v → w
       BOOST_TEST((l.a > 0) - (l.a < 0) == sgn(Rational(w.y - v.y)));
       BOOST_TEST((l.b > 0) - (l.b < 0) == sgn(Rational(v.x - w.x)));
+    }
+    // The extended-precision enclosures (x87 platforms): the same vertices, in the same order.
+    const auto& ext = P.extended_vertices();
+    if (!ext.empty()) {
+      BOOST_REQUIRE(ext.size() == n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const Point2& v = F.vertices[(start + i) % n];
+        BOOST_TEST(encloses_long(ext[i].x, v.x));
+        BOOST_TEST(encloses_long(ext[i].y, v.y));
+        BOOST_TEST(ext[i].x.rad <= 0x1p-60L * std::fabs(ext[i].x.mid) + 1e-300L);
+      }
     }
   }
   std::vector<Point2> probes = F.vertices;

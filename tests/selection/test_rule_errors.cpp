@@ -7,6 +7,8 @@
 #include <gmcc/selection/rule_errors.h>
 #include <gmcc/selection/select_maps.h>
 
+#include <cmath>
+
 #include <boost/test/unit_test.hpp>
 
 using namespace gmcc;
@@ -73,6 +75,31 @@ BOOST_AUTO_TEST_CASE(agrees_with_the_exact_route_within_its_accuracy) {
   // extended-precision stage answers all but a few of those.
   BOOST_TEST(answered >= scenes * 97 / 100, answered << " of " << scenes);
   BOOST_TEST(scenes >= 200);
+}
+
+// Near-tied max-area candidates: vertices V1 = (2, 3) and V2 = (2 + 2ε, 3 − 3ε − η) of
+// F = G_c (one image colour (1, 1)), with m1·m2 differing by about 2η, from 2^-66 to 2^-55 of it:
+// beyond the double stage, across the extended stage's own resolution (found in review: the extended
+// stage compared candidates through a double, which could dismiss an overlapping competitor).
+// Whenever the route answers, it must pick the exact route's map.
+BOOST_AUTO_TEST_CASE(near_tied_max_area_candidates) {
+  const Rational eps(1, mpz_class(1) << 20);
+  int answered = 0;
+  for (int j = 1; j <= 2048; ++j) {
+    const Rational eta(j, mpz_class(1) << 65);
+    const Point2 v1{2, 3}, v2{Rational(2 + 2 * eps), Rational(3 - 3 * eps - eta)};
+    const ConvexSet2 G = convex_hull({{1, 1}, {3, 1}, v2, v1, {1, 3}});
+    BOOST_REQUIRE(G.vertices.size() == 5u);
+    const FeasiblePolygon P = feasible_polygon(CanonicalConstraints(G), std::vector<Point2>{{1, 1}});
+    const Point2 truth{Rational(3, 2), 2};
+    const auto fast = rule_errors(P, truth, Colour{1, 1, 1});
+    if (!fast) continue;
+    ++answered;
+    const Point2 m = *select_maps(P.exact()).max_area->estimate.exact;
+    BOOST_TEST(m == v1);
+    BOOST_TEST(std::fabs((*fast)[0].map_error_deg - map_angular_error_deg(m, truth)) <= 1e-12, "j = " << j);
+  }
+  BOOST_TEST(answered > 100);  // the extended stage separates most of them
 }
 
 // Degenerate feasible sets are left to the exact route: no answer, never a wrong one.

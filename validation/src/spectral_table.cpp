@@ -53,7 +53,8 @@ SpectralTable parse_spectral_csv(const std::string& text, const std::string& fil
     if (t.spectra.empty()) {  // the header
       if (fields.size() < 2 || fields[0] != "wavelength_nm")
         throw InputError(file, number, "expected a header 'wavelength_nm,NAME,...'");
-      const auto rows = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+      // Capped: a malformed file must not reserve more than its rows could fill.
+      const auto rows = std::min<std::size_t>(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1, 4096);
       t.wavelengths.reserve(rows);
       t.spectra.reserve(fields.size() - 1);
       for (std::size_t j = 1; j < fields.size(); ++j) {
