@@ -1,5 +1,6 @@
 #include <gmcc/selection/rule_errors.h>
 
+#include "internal/closed_form.h"
 #include "internal/ld_interval.h"
 
 #include <cmath>
@@ -32,31 +33,11 @@ LongEnclosure enclose<LongEnclosure>(const Rational& q) {
   return LongEnclosure::between(i.lo, i.hi);
 }
 
-// |x| for x in the enclosure: [max(0, |mid| − rad), |mid| + rad], made certain.
-template <class E, class T = decltype(E::mid)>
-T abs_lo(const E& x) { return std::max(T(0), std::fabs(x.mid) - x.rad) * (1 - 4 * E::u); }
-template <class E, class T = decltype(E::mid)>
-T abs_hi(const E& x) { return (std::fabs(x.mid) + x.rad) * (1 + 4 * E::u) + std::numeric_limits<T>::min(); }
-
 // libm's atan2 (and atan2l, the x87's fpatan) is within one ulp on x86_64 glibc (and every
 // platform we know); the nearest 180/π and the product by it add two roundings. The pads below
 // cover these.
 template <class T>
 constexpr T degrees_per_radian = T(180) / T(3.14159265358979323846264338327950288L);
-
-// |u×v| ∈ [s_lo, s_hi] from the components' enclosures: three products and two sums of
-// non-negatives (a relative 6u, covered by 8u), a square root and a product (2u more).
-template <class E, class T = decltype(E::mid)>
-void norm_bounds(const std::array<E, 3>& c, T& s_lo, T& s_hi) {
-  T s2_lo = 0, s2_hi = 0;
-  for (const E& ck : c) {
-    const T lo = abs_lo(ck), hi = abs_hi(ck);
-    s2_lo += lo * lo, s2_hi += hi * hi;
-  }
-  s_lo = std::sqrt(s2_lo * (1 - 8 * E::u)) * (1 - 2 * E::u);
-  s_hi = std::isfinite(s2_hi) ? std::sqrt(s2_hi * (1 + 8 * E::u)) * (1 + 2 * E::u) + std::numeric_limits<T>::min()
-                              : E::unbounded;
-}
 
 // ∠(u, v) = atan2(|u×v|, u·v) in degrees, from s = |u×v| ∈ [s_lo, s_hi] and d = u·v ∈ d. One
 // atan2 at the box's centre; over the box |∂θ/∂s| = |d|/(s² + d²) <= max|d|/R² and
@@ -72,7 +53,7 @@ E angle_deg(const std::array<E, 3>& a, const std::array<E, 3>& b) {
                                      a[static_cast<std::size_t>(j)] * b[static_cast<std::size_t>(i)];
   }
   T s_lo, s_hi;
-  norm_bounds(c, s_lo, s_hi);
+  internal::norm_bounds(c, s_lo, s_hi);
   const E d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
   if (!std::isfinite(s_hi) || !d.finite()) return {0, E::unbounded};
   const T d_lo = d.lo(), d_hi = d.hi();
@@ -86,21 +67,6 @@ E angle_deg(const std::array<E, 3>& a, const std::array<E, 3>& b) {
                    std::numeric_limits<T>::min();
   const T mid = theta * degrees_per_radian<T>;  // 180/π and the product: two more roundings
   return {mid, E::round_up(spread * degrees_per_radian<T> * (1 + 8 * u) + std::fabs(mid) * 4 * u)};
-}
-
-// g(s, d) = θ/s = atan2(s, d)/s for d > 0 (1/d at s = 0), enclosed from one evaluation at the
-// box's centre. With t = s/d, g = h(t)/d for h(t) = atan(t)/t: |h′| < 0.2923 on t >= 0 (its
-// maximum, checked numerically on a fine grid), so |∂g/∂s| = |h′|/d² < 0.3/d², and
-// ∂g/∂d = −(t·h)′/d² = −1/((1 + t²)·d²), at most 1/d² in size. libm's atan2 (one ulp) and the
-// division: a relative 8u covers them.
-template <class E, class T = decltype(E::mid)>
-E theta_over_s(T s_lo, T s_hi, const E& d) {
-  constexpr T u = E::u;
-  const T d_lo = d.lo();
-  const T s_mid = s_lo + (s_hi - s_lo) / 2;
-  const T ds = (s_hi - s_lo) / 2 * (1 + 4 * u) + u * s_hi, dd = d.rad + u * std::fabs(d.mid);
-  const T g = s_mid > 0 ? std::atan2(s_mid, d.mid) / s_mid : 1 / d.mid;
-  return {g, E::round_up((T(0.3) * ds + dd) / (d_lo * d_lo) * (1 + 32 * u) + g * 8 * u)};
 }
 
 template <class E>
@@ -157,30 +123,6 @@ std::optional<std::array<E, 2>> centroid(const std::vector<V>& v) {
   return std::array<E, 2>{v[0].x + x_sum / den, v[0].y + y_sum / den};
 }
 
-template <class E, class V>
-std::optional<std::array<E, 2>> mean_3d_map(const std::vector<V>& v) {
-  using T = decltype(E::mid);
-  // τ = ½ Σ θ_i c_i/|c_i| with c_i = p_i × p_{i+1}, p = (x, y, 1) (MATH §1a); the ½ and the
-  // orientation cancel in (τ1/τ3, τ2/τ3). c_i from the edge e = p_{i+1} − p_i:
-  // (−e_y, e_x, x_i·e_y − y_i·e_x), exact in direction however short the edge.
-  std::array<E, 3> tau{};
-  const std::size_t n = v.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const V& p = v[i];
-    const V& q = v[(i + 1) % n];
-    const E ex = q.x - p.x, ey = q.y - p.y;
-    const std::array<E, 3> c{-ey, ex, p.x * ey - p.y * ex};
-    T s_lo, s_hi;
-    norm_bounds(c, s_lo, s_hi);
-    const E d = p.x * q.x + p.y * q.y + E::exact(1);
-    if (!d.finite() || !d.positive() || !std::isfinite(s_hi)) return std::nullopt;
-    const E g = theta_over_s(s_lo, s_hi, d);
-    for (int k = 0; k < 3; ++k) tau[k] = tau[k] + g * c[k];
-  }
-  if (!tau[0].finite() || !tau[1].finite() || !tau[2].finite() || tau[2].uncertain_sign()) return std::nullopt;
-  return std::array<E, 2>{tau[0] / tau[2], tau[1] / tau[2]};
-}
-
 // Within the stated accuracy, counting the final rounding of the midpoint to double (2^-53).
 template <class E>
 bool accurate(const E& angle) {
@@ -203,7 +145,7 @@ std::optional<std::array<RuleErrors, 3>> stage(const std::vector<V>& v, const st
   using T = decltype(E::mid);
   for (const V& p : v)
     if (!in_range(p.x) || !in_range(p.y)) return std::nullopt;
-  std::array<std::optional<std::array<E, 2>>, 3> maps{max_area_map<E>(v, edges), centroid<E>(v), mean_3d_map<E>(v)};
+  std::array<std::optional<std::array<E, 2>>, 3> maps{max_area_map<E>(v, edges), centroid<E>(v), internal::mean_3d_direction<E>(v)};
   const E t1 = enclose<E>(truth.x), t2 = enclose<E>(truth.y), one = E::exact(1);
   const E cr = enclose<E>(canonical_illuminant.r), cg = enclose<E>(canonical_illuminant.g),
           cb = enclose<E>(canonical_illuminant.b);
