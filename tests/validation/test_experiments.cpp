@@ -6,6 +6,7 @@
 #include <gmcc/validation/experiment_report.h>
 #include <gmcc/validation/synthetic_experiment.h>
 
+#include "lazy_mt19937_64.h"
 #include "seed_sequence.h"
 
 #include <boost/test/unit_test.hpp>
@@ -180,6 +181,35 @@ BOOST_AUTO_TEST_CASE(crule_contains_the_true_diagonal_map_without_shading) {
 }
 
 // The experiment's fast seed sequence gives std::seed_seq's words, and so the same scenes.
+
+// A seed sequence whose every word is 0 (the standard engines' special case).
+struct ZeroSeedSequence {
+  using result_type = std::uint32_t;
+  std::size_t size() const { return 0; }
+  template <class It>
+  void param(It) const {}
+  template <class It>
+  void generate(It b, It e) { std::fill(b, e, 0u); }
+};
+
+// The lazily twisted engine gives std::mt19937_64's outputs, across generations (312 words each).
+BOOST_AUTO_TEST_CASE(lazy_engine_equals_std_mt19937_64) {
+  std::mt19937_64 pick(2025);
+  for (int trial = 0; trial < 100; ++trial) {
+    std::array<std::uint32_t, 6> v;
+    for (auto& x : v) x = static_cast<std::uint32_t>(pick());
+    std::seed_seq reference(v.begin(), v.end());
+    internal::SeedSequence<6> fast(v);
+    std::mt19937_64 g1(reference);
+    internal::LazyMt19937_64 g2(fast);
+    for (int i = 0; i < 1000; ++i) BOOST_TEST(g1() == g2());
+  }
+  // All-zero seed words: the standard's special case (x_0 = 2^63).
+  ZeroSeedSequence zeros1, zeros2;
+  std::mt19937_64 z1(zeros1);
+  internal::LazyMt19937_64 z2(zeros2);
+  for (int i = 0; i < 700; ++i) BOOST_TEST(z1() == z2());
+}
 
 BOOST_AUTO_TEST_CASE(fast_seed_sequence_equals_std_seed_seq) {
   std::mt19937_64 pick(2024);

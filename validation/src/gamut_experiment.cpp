@@ -8,6 +8,7 @@
 #include <gmcc/selection/rule_errors.h>
 #include <gmcc/selection/select_maps.h>
 
+#include "lazy_mt19937_64.h"
 #include "seed_sequence.h"
 
 #include <mpfr.h>
@@ -25,7 +26,10 @@ namespace gmcc {
 namespace {
 
 // Uniform integer in [0, n), unbiased (Lemire's multiply-and-reject), platform-independent.
-std::uint64_t below(std::mt19937_64& g, std::uint64_t n) {
+// The scene generator: std::mt19937_64's output, twisted lazily (a scene draws a dozen numbers).
+using Generator = internal::LazyMt19937_64;
+
+std::uint64_t below(Generator& g, std::uint64_t n) {
   unsigned __int128 m = static_cast<unsigned __int128>(g()) * n;
   auto low = static_cast<std::uint64_t>(m);
   if (low < n) {
@@ -38,10 +42,10 @@ std::uint64_t below(std::mt19937_64& g, std::uint64_t n) {
   return static_cast<std::uint64_t>(m >> 64);
 }
 
-double uniform01(std::mt19937_64& g) { return static_cast<double>(g() >> 11) * 0x1p-53; }
+double uniform01(Generator& g) { return static_cast<double>(g() >> 11) * 0x1p-53; }
 
 // Standard normal by Box–Muller (one of the pair), from the scene's own generator.
-double normal(std::mt19937_64& g) {
+double normal(Generator& g) {
   const double u = 1 - uniform01(g), v = uniform01(g);  // u in (0, 1]
   return std::sqrt(-2 * std::log(u)) * std::cos(2 * M_PI * v);
 }
@@ -84,7 +88,7 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
     internal::SeedSequence<6> seq({static_cast<std::uint32_t>(config.seed), static_cast<std::uint32_t>(config.seed >> 32),
                                    static_cast<std::uint32_t>(light_index), static_cast<std::uint32_t>(n),
                                    static_cast<std::uint32_t>(s), static_cast<std::uint32_t>(s >> 32)});
-    std::mt19937_64 g(seq);
+    Generator g(seq);
     for (std::size_t i = 0; i < pool.size(); ++i) pool[i] = i;
     // The surfaces first (partial Fisher–Yates: n distinct), then noise and shading factors from
     // the same generator, so that options which draw more numbers never change the surfaces.
