@@ -228,11 +228,23 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
                                          : CanonicalConstraints(result.canonical_gamut);
   // Without noise a scene's colours are the light's surfaces as given: their chromaticities are
   // computed once per light (b <= 0 left as a placeholder; scenes skip those surfaces).
+  // Lights are shared out among the threads (each light's list is written by one thread only).
+  const unsigned threads = config.threads ? config.threads : std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::vector<Point2>> chromaticities(setup.lights.size());
-  if (config.noise <= 0)
-    for (std::size_t l = 0; l < setup.lights.size(); ++l)
-      for (const Colour& c : setup.lights[l].surfaces)
-        chromaticities[l].push_back(sgn(c.b) > 0 ? perspective_chromaticity(c) : Point2{});
+  if (config.noise <= 0) {
+    std::atomic<std::size_t> next_light{0};
+    auto precompute = [&] {
+      for (std::size_t l; (l = next_light++) < setup.lights.size();) {
+        chromaticities[l].reserve(setup.lights[l].surfaces.size());
+        for (const Colour& c : setup.lights[l].surfaces)
+          chromaticities[l].push_back(sgn(c.b) > 0 ? perspective_chromaticity(c) : Point2{});
+      }
+    };
+    std::vector<std::thread> helpers;
+    for (unsigned t = 1; t < std::min<std::size_t>(threads, setup.lights.size()); ++t) helpers.emplace_back(precompute);
+    precompute();
+    for (std::thread& t : helpers) t.join();
+  }
   std::atomic<std::size_t> next{0};
   std::atomic<std::uint64_t> done{0};
   std::exception_ptr failure;
@@ -255,7 +267,6 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
     worker();
     mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE);
   };
-  const unsigned threads = config.threads ? config.threads : std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> pool;
   for (unsigned t = 1; t < std::min<std::size_t>(threads, jobs.size()); ++t) pool.emplace_back(thread_worker);
   const std::uint64_t total = config.scenes * jobs.size();
