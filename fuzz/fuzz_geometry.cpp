@@ -18,7 +18,18 @@
 //    within a relative 6·2^-53 of a positive multiple of the exact one; contains() agrees with
 //    F on every candidate; rule_errors answers only when enclosed(), and then every angle (map
 //    error against a positive truth, worst case, illuminant and reproduction errors under a
-//    positive light, all from fuzz bytes) is within its stated accuracy of the exact route's.
+//    positive light, all from fuzz bytes) is within its stated accuracy of the exact route's;
+//    each vertex of F also lies in its extended_vertices() enclosure (the same order as
+//    vertices(), exactly: a long double's value is k/2^64·2^e, from frexp), of relative radius
+//    at most 2^-60;
+//  - a map constraint C from fuzz bytes (the hull of a few points near a map of F, near the truth,
+//    far away or anywhere; F itself; a piece of an edge of F; a triangle on an edge's line, outside
+//    or inside; a box about F; empty; so C is a polygon, segment, point or empty and F ∩ C any
+//    kind): feasible_set and feasible_polygon with CanonicalConstraints(G, C) give
+//    intersection(F, C), with its kind; contains() agrees with m ∈ F and m ∈ C (brute force) on
+//    the candidates, C's and F ∩ C's vertices and edge midpoints and nudged vertices; when
+//    enclosed(), vertices(), extended_vertices() and edges() hold as above; rule_errors answers
+//    only when enclosed(), and then agrees with the exact route on F ∩ C as above.
 
 #include "fuzz_support.h"
 
@@ -26,6 +37,7 @@
 #include <gmcc/geometry/convex_hull.h>
 #include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/geometry/feasible_set.h>
+#include <gmcc/geometry/intersection.h>
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/max_area.h>
 #include <gmcc/selection/mean_2d.h>
@@ -34,9 +46,11 @@
 #include <gmcc/selection/worst_case.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <iterator>
-#include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -166,13 +180,40 @@ bool in_enclosure(const Rational& x, const gmcc::Enclosure& e) {
   return abs(d) <= gmcc::rational_from_double(e.rad);
 }
 
+// A long double as an exact rational: x = m·2^e with |m| in [0.5, 1), so m = k/2^64 exactly.
+Rational exact_long(long double x) {
+  int e = 0;
+  const long double m = std::frexp(x, &e);
+  const auto k = static_cast<unsigned long long>(std::ldexp(std::fabs(m), 64));
+  Rational r(mpz_class(std::to_string(k)));
+  if (e - 64 >= 0) r *= Rational(power_of_two(static_cast<unsigned>(e - 64)));
+  else r /= Rational(power_of_two(static_cast<unsigned>(64 - e)));
+  return x < 0 ? Rational(-r) : r;
+}
+
+// x lies in mid ± rad exactly, and rad is at most a relative 2^-60 of mid (the promised 2^-61,
+// with room for the radius's own rounding up).
+bool in_long_enclosure(const Rational& x, const gmcc::LongEnclosure& e) {
+  if (!e.finite()) return false;
+  if (!(e.rad <= std::fabs(e.mid) * 0x1p-60L + std::numeric_limits<long double>::min())) return false;
+  return abs(Rational(x - exact_long(e.mid))) <= exact_long(e.rad);
+}
+
+// Extended precision is there (x87, 64-bit GMP limbs): extended_vertices() is then never empty
+// for an enclosed P.
+constexpr bool extended_expected = std::numeric_limits<long double>::digits == 64 && GMP_NUMB_BITS == 64;
+
 // The certified vertices and edges of an enclosed P against F's exact vertices: some rotation r
-// puts F's vertex i in enclosure (i + r) mod n and makes edge (i + r) the line from F's vertex i
-// to i + 1, each coefficient within a relative 6u of the same positive multiple of the exact
-// line's (so with its exact sign).
+// puts F's vertex i in enclosure (i + r) mod n and in extended enclosure (i + r) mod n, and makes
+// edge (i + r) the line from F's vertex i to i + 1, each coefficient within a relative 6u of the
+// same positive multiple of the exact line's (so with its exact sign).
 void check_enclosed(const gmcc::FeasiblePolygon& P, const ConvexSet2& F) {
   const auto& ev = P.vertices();
   const auto& el = P.edges();
+  const auto& xv = P.extended_vertices();
+  FUZZ_CHECK(xv.size() == ev.size() || (!extended_expected && xv.empty()),
+             "enclosed: " + std::to_string(xv.size()) + " extended enclosures for " + std::to_string(ev.size()) +
+                 " vertices");
   const auto& v = F.vertices;
   const std::size_t n = v.size();
   FUZZ_CHECK(F.kind == ConvexKind::polygon && ev.size() == n && el.size() == n,
@@ -197,19 +238,25 @@ void check_enclosed(const gmcc::FeasiblePolygon& P, const ConvexSet2& F) {
     // Some λ > 0 with every ratio in [λ(1 − 6u), λ(1 + 6u)].
     return lo && sgn(*lo) > 0 && *hi * (1 - six_u) <= *lo * (1 + six_u);
   };
-  bool vertices_fit = false;
+  bool vertices_fit = false, extended_fit = false;
   for (std::size_t r = 0; r < n; ++r) {
     bool fit = true;
     for (std::size_t i = 0; i < n && fit; ++i)
       fit = in_enclosure(v[i].x, ev[(i + r) % n].x) && in_enclosure(v[i].y, ev[(i + r) % n].y);
     if (!fit) continue;
     vertices_fit = true;
+    for (std::size_t i = 0; i < xv.size() && fit; ++i)
+      fit = in_long_enclosure(v[i].x, xv[(i + r) % n].x) && in_long_enclosure(v[i].y, xv[(i + r) % n].y);
+    if (!fit) continue;
+    extended_fit = true;
     bool edges_fit = true;
     for (std::size_t i = 0; i < n && edges_fit; ++i) edges_fit = edge_ok(el[(i + r) % n], v[i], v[(i + 1) % n]);
     if (edges_fit) return;
   }
-  FUZZ_CHECK(false, vertices_fit ? "enclosed: an approximate edge line is not within 6u of its exact line"
-                                 : "enclosed: no rotation puts every vertex of F in its enclosure");
+  FUZZ_CHECK(false, extended_fit ? "enclosed: an approximate edge line is not within 6u of its exact line"
+                    : vertices_fit
+                        ? "enclosed: no rotation that fits vertices() puts every vertex of F in its extended enclosure"
+                        : "enclosed: no rotation puts every vertex of F in its enclosure");
 }
 
 // A worst case w is the maximum of `angle` over F: at least its value at every point given.
@@ -223,6 +270,177 @@ void check_worst(double w, const std::vector<Point2>& in_F, Angle angle, const s
     FUZZ_CHECK(a <= w + 1e-12 * (1 + w), what + " " + std::to_string(w) + " below the angle " +
                                              std::to_string(a) + " at " + text(x));
   }
+}
+
+// A rule's selection as select_maps makes it, without the illuminant worst case.
+gmcc::Selection rule_selection(const ConvexSet2& F, gmcc::MapEstimate e) {
+  gmcc::Selection sel{e, std::nullopt, std::nullopt};
+  if (e.valid)
+    sel.worst_case_deg = gmcc::worst_case_map_deg(
+        F, e.exact ? *e.exact : Point2{gmcc::rational_from_double(e.map[0]), gmcc::rational_from_double(e.map[1])});
+  return sel;
+}
+
+// rule_errors against the exact route (as tests/selection/test_rule_errors.cpp: its accuracy,
+// the exact route's 2^-50 and the 3-D mean's rounding to doubles allowed for); the exact route's
+// 3-D mean at the default precision.
+void check_agreement(const std::array<gmcc::RuleErrors, 3>& fast, const gmcc::Selection* const (&exact_route)[3],
+                     const Point2& truth, const gmcc::Colour& light, const std::string& where) {
+  for (int r = 0; r < 3; ++r) {
+    const gmcc::MapEstimate& e = exact_route[r]->estimate;
+    FUZZ_CHECK(e.valid && exact_route[r]->worst_case_deg, where + e.rule + ": no exact map at the default precision");
+    const Point2 m = e.exact ? *e.exact : Point2{gmcc::rational_from_double(e.map[0]), gmcc::rational_from_double(e.map[1])};
+    const gmcc::RuleErrors& f = fast[r];
+    auto agree = [&](double fast_value, double exact_value, const char* what) {
+      const bool close = std::fabs(fast_value - exact_value) <=
+                         gmcc::rule_errors_accuracy * (1 + std::fabs(exact_value)) +
+                             0x1p-48 * std::fabs(exact_value) + 1e-13;
+      char values[96];
+      std::snprintf(values, sizeof values, " %.17g, exact route %.17g", fast_value, exact_value);
+      FUZZ_CHECK(close, where + "rule_errors " + e.rule + " " + what + values + "; truth " + text(truth) +
+                            ", map " + text(m));
+    };
+    agree(f.map_error_deg, gmcc::map_angular_error_deg(m, truth), "map error");
+    agree(f.worst_case_deg, *exact_route[r]->worst_case_deg, "worst case");
+    FUZZ_CHECK(f.positive_map == positive(m), where + "rule_errors " + e.rule + ": positive_map wrong for " + text(m));
+    if (f.positive_map) {
+      agree(f.illuminant_error_deg, gmcc::illuminant_angular_error_deg(m, truth, light), "illuminant error");
+      agree(f.reproduction_error_deg, gmcc::reproduction_angular_error_deg(m, truth), "reproduction error");
+    }
+  }
+}
+
+Rational fraction(ByteReader& in, int lo, int den) { return reduced(int(in.byte()) + lo, den); }
+
+// A map constraint C from fuzz bytes, of any kind, placed so that F ∩ C is of any kind too.
+ConvexSet2 map_constraint(ByteReader& in, std::vector<Rational>& pool, const ConvexSet2& F,
+                          const std::vector<Point2>& in_F, const std::vector<Point2>& candidates, const Point2& truth) {
+  const auto& v = F.vertices;
+  const unsigned mode = in.byte() % 8;
+  switch (mode) {
+    case 2:  // F itself: every line of C is a line of F
+      if (!v.empty()) return F;
+      break;
+    case 3:  // a piece of an edge of F (or of its line beyond), or a vertex
+    case 4: {  // a triangle on an edge's line, outside F (F ∩ C a piece of the edge) or inside
+      if (v.empty()) break;
+      const std::size_t i = in.byte() % v.size();
+      const Point2& p = v[i];
+      const Point2& q = v[(i + 1) % v.size()];
+      auto along = [&](const Rational& t) { return Point2{Rational(p.x + t * (q.x - p.x)), Rational(p.y + t * (q.y - p.y))}; };
+      const Point2 a = along(fraction(in, -64, 128)), b = along(fraction(in, -64, 128));  // t in [-1/2, 3/2)
+      if (mode == 3) return gmcc::convex_hull({a, b});
+      // (q.y − p.y, p.x − q.x) points out of F for its counter-clockwise edge p → q.
+      const unsigned k = in.byte();
+      const Rational s = Rational(k & 1 ? 1 : -1) / Rational(power_of_two(k / 2 % 64));
+      const Point2 mid{Rational((a.x + b.x) / 2), Rational((a.y + b.y) / 2)};
+      const Point2 r{Rational(mid.x + s * (q.y - p.y)), Rational(mid.y + s * (p.x - q.x))};
+      return gmcc::convex_hull({a, b, r});
+    }
+    case 5: return ConvexSet2{};
+    case 6: {  // anywhere
+      std::vector<Point2> pts;
+      for (int j = 1 + in.byte() % 4; j > 0; --j) {
+        Rational x = coordinate(in, pool);
+        Rational y = coordinate(in, pool);
+        pts.push_back({x, y});
+      }
+      return gmcc::convex_hull(pts);
+    }
+    case 7: {  // F's bounding box, grown or shrunk by a fraction of its span (or exactly it)
+      if (v.empty()) break;
+      Rational lo[2] = {v[0].x, v[0].y}, hi[2] = {v[0].x, v[0].y};
+      for (const Point2& w : v) {
+        lo[0] = std::min(lo[0], w.x), hi[0] = std::max(hi[0], w.x);
+        lo[1] = std::min(lo[1], w.y), hi[1] = std::max(hi[1], w.y);
+      }
+      for (int k = 0; k < 2; ++k) {
+        const Rational d = Rational(hi[k] - lo[k]) * fraction(in, -128, 256);
+        lo[k] -= d, hi[k] += d;
+      }
+      return gmcc::convex_hull({{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}});
+    }
+    default: break;
+  }
+  // The hull of 1–4 points near a centre: a map in F, the truth, a candidate, or far away.
+  const unsigned c = in.byte();
+  Point2 centre = truth;
+  if (c % 4 == 0 && !in_F.empty()) centre = in_F[c / 4 % in_F.size()];
+  if (c % 4 == 2 && !candidates.empty()) centre = candidates[c / 4 % candidates.size()];
+  if (c % 4 == 3) {
+    const Rational f(power_of_two(1 + c / 4 % 64));
+    centre = c & 128 ? Point2{Rational(centre.x * f), Rational(centre.y * f)} : Point2{Rational(centre.x / f), Rational(centre.y / f)};
+  }
+  const unsigned b = in.byte();
+  const Rational scale = Rational(abs(centre.x) + abs(centre.y) + (b & 1 ? 1 : 0)) / Rational(power_of_two(1 + b / 2 % 48));
+  std::vector<Point2> pts;
+  // Offsets in [-1, 1) of the scale; all-zero bytes (an input that ends early) give a triangle
+  // about the centre.
+  for (int j = 0, n = 1 + (in.byte() + 2) % 4; j < n; ++j) {
+    if (pts.size() >= 2 && in.byte() % 4 == 3) {  // collinear with two earlier ones
+      const Point2 a = pts[in.byte() % pts.size()], e = pts[in.byte() % pts.size()];
+      const Rational t = fraction(in, 0, 255);
+      pts.push_back({Rational(a.x + t * (e.x - a.x)), Rational(a.y + t * (e.y - a.y))});
+    } else {
+      const Rational dx = reduced(int((in.byte() + 85 * j) % 256) - 128, 128);
+      const Rational dy = reduced(int((in.byte() + 170 * j + 64) % 256) - 128, 128);
+      pts.push_back({Rational(centre.x + scale * dx), Rational(centre.y + scale * dy)});
+    }
+  }
+  return gmcc::convex_hull(pts);
+}
+
+// The certified route with a map constraint C: F ∩ C as intersection() gives it, contains() on
+// maps in and about it, enclosures, and rule_errors against the exact route on F ∩ C.
+void check_constrained(ByteReader& in, std::vector<Rational>& pool, const ConvexSet2& G, const std::vector<Point2>& image,
+                       const ConvexSet2& F, const std::vector<Point2>& in_F, const std::vector<Point2>& candidates,
+                       const Point2& truth, const gmcc::Colour& light) {
+  const ConvexSet2 C = map_constraint(in, pool, F, in_F, candidates, truth);
+  check_canonical(C, "map constraint");
+  const ConvexSet2 FC = gmcc::intersection(F, C);
+  check_canonical(FC, "F ∩ C");
+  const std::string where = "with C a " + gmcc::to_string(C.kind) + " (F ∩ C a " + gmcc::to_string(FC.kind) + "): ";
+  const gmcc::CanonicalConstraints constraints(G, C);
+  FUZZ_CHECK(gmcc::feasible_set(constraints, image) == FC, where + "feasible_set is not intersection(F, C)");
+  const gmcc::FeasiblePolygon P = gmcc::feasible_polygon(constraints, image);
+  FUZZ_CHECK(P.kind() == FC.kind, where + "feasible_polygon: kind " + gmcc::to_string(P.kind()));
+  FUZZ_CHECK(!P.enclosed() || P.kind() == ConvexKind::polygon, where + "feasible_polygon: enclosed but not a polygon");
+  if (P.enclosed()) check_enclosed(P, FC);
+
+  std::vector<Point2> maps = candidates;
+  for (const ConvexSet2* s : {&C, &FC}) {
+    const auto& v = s->vertices;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      maps.push_back(v[i]);
+      const Point2& q = v[(i + 1) % v.size()];
+      if (v.size() >= 2) maps.push_back({Rational((v[i].x + q.x) / 2), Rational((v[i].y + q.y) / 2)});
+    }
+  }
+  for (std::size_t i = 0; i < FC.vertices.size() && i < 3; ++i) {  // a hair away, both ways
+    const Point2& w = FC.vertices[i];
+    const unsigned b = in.byte();
+    const Rational d = Rational(abs(w.x) + abs(w.y) + 1) / Rational(power_of_two(1 + b % 64));
+    const int sx = b & 64 ? 1 : -1, sy = b & 128 ? 1 : -1;
+    maps.push_back({Rational(w.x + sx * d), Rational(w.y + sy * d)});
+    maps.push_back({Rational(w.x - sx * d), Rational(w.y - sy * d)});
+  }
+  for (const Point2& m : maps) {
+    const bool inside = gmcc::contains(FC, m);
+    FUZZ_CHECK(inside == (gmcc::contains(C, m) && feasible(G, image, m)),
+               where + "map " + text(m) + (inside ? " in F ∩ C but not in both" : " in F and C but not in F ∩ C"));
+    FUZZ_CHECK(P.contains(m) == inside,
+               where + "feasible_polygon: contains(" + text(m) + ") is not " + (inside ? "true" : "false"));
+  }
+  FUZZ_CHECK(P.exact() == FC && P.exact().kind == P.kind(), where + "feasible_polygon: exact() is not F ∩ C");
+
+  const auto fast = gmcc::rule_errors(P, truth, light);
+  FUZZ_CHECK(P.enclosed() || !fast, where + "rule_errors answered for a set that is not enclosed");
+  if (!fast) return;
+  FUZZ_CHECK(finite_doubles(FC), where + "rule_errors answered for F ∩ C beyond the double range");
+  const gmcc::Selection s[3] = {rule_selection(FC, gmcc::max_area(FC)), rule_selection(FC, gmcc::mean_2d(FC)),
+                                rule_selection(FC, gmcc::mean_3d(FC))};
+  const gmcc::Selection* const exact_route[3] = {&s[0], &s[1], &s[2]};
+  check_agreement(*fast, exact_route, truth, light, where);
 }
 
 }  // namespace
@@ -341,6 +559,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (Rational* k : {&light.r, &light.g, &light.b}) *k = positive_or_one(coordinate(in, pool));
   const auto fast = gmcc::rule_errors(P, truth, light);
   FUZZ_CHECK(P.enclosed() || !fast, "rule_errors answered for a feasible set that is not enclosed");
+  check_constrained(in, pool, G, image, F, in_F, candidates, truth, light);
   if (F.kind == ConvexKind::empty) return 0;
 
   gmcc::Mean3dOptions mean3d;
@@ -350,14 +569,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // the cost of the rest of the selection), so that 10^6 runs take hours rather than days; the
   // eighth calls select_maps, all of it.
   const bool whole = (flags >> 4) % 8 == 0;
-  // A rule's selection as select_maps makes it, without the illuminant worst case.
-  auto rule = [&F](gmcc::MapEstimate e) {
-    gmcc::Selection sel{e, std::nullopt, std::nullopt};
-    if (e.valid)
-      sel.worst_case_deg = gmcc::worst_case_map_deg(
-          F, e.exact ? *e.exact : Point2{gmcc::rational_from_double(e.map[0]), gmcc::rational_from_double(e.map[1])});
-    return sel;
-  };
+  auto rule = [&F](gmcc::MapEstimate e) { return rule_selection(F, std::move(e)); };
   gmcc::Selections s;
   if (whole) {
     try {
@@ -408,36 +620,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       FUZZ_CHECK(e[k][0] <= m3.map[k] && m3.map[k] <= e[k][1], "3-D mean: map outside its enclosure");
   }
 
-  // rule_errors against the exact route (as tests/selection/test_rule_errors.cpp: its accuracy,
-  // the exact route's 2^-50 and the 3-D mean's rounding to doubles allowed for). Its 3-D mean
-  // is at the default precision: a forced one is recomputed (only when rule_errors answered).
+  // rule_errors against the exact route. Its 3-D mean is at the default precision: a forced one
+  // is recomputed (only when rule_errors answered).
   if (fast) {
     std::optional<gmcc::Selection> mean_3d_default;
     if (mean3d.precision_bits != 0) mean_3d_default = rule(gmcc::mean_3d(F));
-    const gmcc::Selection* exact_route[3] = {&*s.max_area, &*s.mean_2d,
-                                             mean_3d_default ? &*mean_3d_default : &*s.mean_3d};
-    for (int r = 0; r < 3; ++r) {
-      const gmcc::MapEstimate& e = exact_route[r]->estimate;
-      FUZZ_CHECK(e.valid && exact_route[r]->worst_case_deg, e.rule + ": no exact map at the default precision");
-      const Point2 m = e.exact ? *e.exact : Point2{gmcc::rational_from_double(e.map[0]), gmcc::rational_from_double(e.map[1])};
-      const gmcc::RuleErrors& f = (*fast)[r];
-      auto agree = [&](double fast_value, double exact_value, const char* what) {
-        const bool close = std::fabs(fast_value - exact_value) <=
-                           gmcc::rule_errors_accuracy * (1 + std::fabs(exact_value)) +
-                               0x1p-48 * std::fabs(exact_value) + 1e-13;
-        char values[96];
-        std::snprintf(values, sizeof values, " %.17g, exact route %.17g", fast_value, exact_value);
-        FUZZ_CHECK(close, "rule_errors " + e.rule + " " + what + values + "; truth " + text(truth) +
-                              ", map " + text(m));
-      };
-      agree(f.map_error_deg, gmcc::map_angular_error_deg(m, truth), "map error");
-      agree(f.worst_case_deg, *exact_route[r]->worst_case_deg, "worst case");
-      FUZZ_CHECK(f.positive_map == positive(m), "rule_errors " + e.rule + ": positive_map wrong for " + text(m));
-      if (f.positive_map) {
-        agree(f.illuminant_error_deg, gmcc::illuminant_angular_error_deg(m, truth, light), "illuminant error");
-        agree(f.reproduction_error_deg, gmcc::reproduction_angular_error_deg(m, truth), "reproduction error");
-      }
-    }
+    const gmcc::Selection* const exact_route[3] = {&*s.max_area, &*s.mean_2d,
+                                                   mean_3d_default ? &*mean_3d_default : &*s.mean_3d};
+    check_agreement(*fast, exact_route, truth, light, "");
   }
 
   // Worst cases against the vertices and a few other points of F (each angle costs an MPFR
