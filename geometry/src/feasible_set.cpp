@@ -153,14 +153,16 @@ bool long_lines_available() { return long_lines_compiled && full_extended_precis
 // A rational as a double within a relative 2u (u = 2^-53) of it, or nothing when it is outside
 // [2^-140, 2^140] (checked from its size). From the extended-precision quotient (2^-61.6) rounded
 // to double (u) where available, else mpq_get_d (truncation: below 2u in the normal range).
-std::optional<double> approx(const Rational& q) {
+std::optional<double> approx(const Rational& q, const std::optional<long double>& extended) {
   if (sgn(q) == 0) return 0.0;
   const long bits = static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) -
                     static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
   if (bits < -138 || bits > 138) return std::nullopt;
-  if (long_lines_compiled)
-    if (const auto l = top_bits(q)) return static_cast<double>(*l);
-  return mpq_get_d(q.get_mpq_t());
+  return extended ? static_cast<double>(*extended) : mpq_get_d(q.get_mpq_t());
+}
+// The same, where q's extended-precision value is not at hand.
+std::optional<double> approx(const Rational& q) {
+  return approx(q, long_lines_compiled ? top_bits(q) : std::nullopt);
 }
 
 // An image chromaticity with its approximations, computed once: doubles within a relative 2u
@@ -178,14 +180,7 @@ ImagePoint image_point(const Point2& q) {
     const auto l = long_lines_compiled ? top_bits(c) : std::nullopt;
     p.extended = p.extended && l;
     p.l[k] = l.value_or(0);
-    std::optional<double> f;
-    if (sgn(c) == 0) {
-      f = 0.0;
-    } else {
-      const long bits = static_cast<long>(mpz_sizeinbase(c.get_num_mpz_t(), 2)) -
-                        static_cast<long>(mpz_sizeinbase(c.get_den_mpz_t(), 2));
-      if (bits >= -138 && bits <= 138) f = l ? static_cast<double>(*l) : mpq_get_d(c.get_mpq_t());
-    }
+    const std::optional<double> f = approx(c, l);
     p.filtered = p.filtered && f;
     p.f[k] = f.value_or(0);
   }
@@ -363,9 +358,12 @@ class Clipper {
   // relative errors below 2u, 2u and u (the product's rounding) give less than 5.01u, within the
   // 6u every approximate line is allowed. It is the exact line (a_e·X, b_e·Y, c_e·W) times
   // 2^-E/W > 0 up to those errors.
-  std::size_t add_scaled(std::size_t e, std::size_t k) {
+  ApproxLine scaled_approx(std::size_t e, std::size_t k) const {
     const ApproxLine& ge = g_.approx[e];
-    const ApproxLine a{ge.a * q_approx_[k][0], ge.b * q_approx_[k][1], ge.c};
+    return {ge.a * q_approx_[k][0], ge.b * q_approx_[k][1], ge.c};
+  }
+  std::size_t add_scaled(std::size_t e, std::size_t k) {
+    const ApproxLine a = scaled_approx(e, k);
     filtered_ = filtered_ && in_range(a);
     lines_.push_back({a, e, k, nullptr});
     return lines_.size() - 1;
@@ -381,48 +379,45 @@ class Clipper {
     return v;
   }
 
+  // The sign of a·x + b·y − c over vertex v's box of certain bounds, when it is the same all over
+  // the box (0: not decided here), for an approximation within 6u of a positive multiple of the
+  // exact line: a·x + b·y is largest at the corner the normal points to and least at the opposite
+  // one, and a·x + b·y − c at a corner is within 16u of its computed magnitude sum (the bound of
+  // side_of_point, for exact corner coordinates). Underflow cannot fool it: a filtered line with
+  // c != 0 lies at least about 2^-291 from the origin, so a vertex is the origin (its box
+  // straddles 0: no strict decision) or has a coordinate of at least about 2^-292, whose product
+  // is normal; infinite or NaN bounds never pass the strict comparisons.
+  static int box_side(const ApproxLine& l, const Vertex& v) {
+    const int ia = l.a > 0, ib = l.b > 0;
+    const double x_hi = l.a * (ia ? v.hi[0] : v.lo[0]), y_hi = l.b * (ib ? v.hi[1] : v.lo[1]);
+    const double top = x_hi + y_hi - l.c;
+    if (top < -16 * u * (std::fabs(x_hi) + std::fabs(y_hi) + std::fabs(l.c))) return -1;
+    const double x_lo = l.a * (ia ? v.lo[0] : v.hi[0]), y_lo = l.b * (ib ? v.lo[1] : v.hi[1]);
+    const double bottom = x_lo + y_lo - l.c;
+    if (bottom > 16 * u * (std::fabs(x_lo) + std::fabs(y_lo) + std::fabs(l.c))) return 1;
+    return 0;
+  }
+
   // True when every vertex of the cycle lies strictly inside the half-plane a·x + b·y <= c (then
-  // clipping by it changes nothing), for an approximation within 6u of a positive multiple of
-  // the exact line, decided from the vertices' certain bounds: a·x + b·y is largest over a
-  // vertex's box at the corner the normal points to, and a·x + b·y − c there is within 16u of its
-  // computed magnitude sum (the bound of side_of_point, for exact corner coordinates).
-  // Underflow cannot fool it: a filtered line with c != 0 lies at least about 2^-291 from the
-  // origin, so a vertex is the origin (its box straddles 0: no strict decision) or has a
-  // coordinate of at least about 2^-292, whose product is normal; infinite or NaN bounds never
-  // pass the strict comparison.
+  // clipping by it changes nothing), decided from the vertices' boxes.
   bool all_inside(const ApproxLine& l, const std::vector<Vertex>& cycle) const {
     if (!filtered_ || !in_range(l)) return false;
-    const int ia = l.a > 0, ib = l.b > 0;
-    for (const Vertex& v : cycle) {
-      const double x = l.a * (ia ? v.hi[0] : v.lo[0]), y = l.b * (ib ? v.hi[1] : v.lo[1]);
-      const double s = x + y - l.c;
-      if (!(s < -16 * u * (std::fabs(x) + std::fabs(y) + std::fabs(l.c)))) return false;
-    }
+    for (const Vertex& v : cycle)
+      if (box_side(l, v) != -1) return false;
     return true;
   }
-  // The same for canonical edge e scaled by image vertex k (add_scaled's approximation).
+  // The same for canonical edge e scaled by image vertex k.
   bool all_inside(std::size_t e, std::size_t k, const std::vector<Vertex>& cycle) const {
-    const ApproxLine& ge = g_.approx[e];
-    return all_inside(ApproxLine{ge.a * q_approx_[k][0], ge.b * q_approx_[k][1], ge.c}, cycle);
+    return all_inside(scaled_approx(e, k), cycle);
   }
 
   // The sign of a·x + b·y − c at vertex v for line h (v's weight taken positive).
   int side(std::size_t h, const Vertex& v) {
     if (h == v.p || h == v.q) return 0;  // on its own lines: symbolically, no arithmetic
-    if (filtered_) {
-      // From the vertex's certain bounds (cheaper than the 3×3 determinant): a·x + b·y − c over
-      // its box, each end within 16u of its computed magnitude sum (as in all_inside, whose
-      // comment also says why underflow does not matter). This is the geometric side, which is
-      // side_raw·w_sign; an exact 0 is never decided here.
-      const ApproxLine& l = lines_[h].approx;
-      const int ia = l.a > 0, ib = l.b > 0;
-      const double x_hi = l.a * (ia ? v.hi[0] : v.lo[0]), y_hi = l.b * (ib ? v.hi[1] : v.lo[1]);
-      const double top = x_hi + y_hi - l.c;
-      if (top < -16 * u * (std::fabs(x_hi) + std::fabs(y_hi) + std::fabs(l.c))) return -1;
-      const double x_lo = l.a * (ia ? v.lo[0] : v.hi[0]), y_lo = l.b * (ib ? v.lo[1] : v.hi[1]);
-      const double bottom = x_lo + y_lo - l.c;
-      if (bottom > 16 * u * (std::fabs(x_lo) + std::fabs(y_lo) + std::fabs(l.c))) return 1;
-    }
+    // First from the vertex's box (cheaper than the 3×3 determinant). That is the geometric side,
+    // which is side_raw·w_sign; an exact 0 is never decided there.
+    if (filtered_)
+      if (const int b = box_side(lines_[h].approx, v)) return b;
     return side_raw(v.p, v.q, h) * v.w_sign;
   }
 

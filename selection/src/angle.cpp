@@ -5,6 +5,7 @@
 #include <mpfr.h>
 
 #include <cmath>
+#include <optional>
 
 namespace gmcc::internal {
 namespace {
@@ -68,44 +69,47 @@ LDInterval angle_deg_enclosure(const std::array<Rational, 3>& u_exact, const std
   return angle_deg_enclosure(u, v);
 }
 
-LDInterval angle_deg_enclosure(const std::array<LDInterval, 3>& u, const std::array<LDInterval, 3>& v) {
+namespace {
+// |u×v|², summed from its components c(k, i, j) = u_i v_j − u_j v_i, however they are enclosed.
+template <class Component>
+LDInterval cross2_from(Component c) {
   LDInterval cross2{0, 0};
   for (int k = 0; k < 3; ++k) {
-    const int i = (k + 1) % 3, j = (k + 2) % 3;
-    const LDInterval c = u[i] * v[j] - u[j] * v[i];
-    cross2 = cross2 + c * c;
+    const LDInterval ck = c((k + 1) % 3, (k + 2) % 3);
+    cross2 = cross2 + ck * ck;
   }
-  const LDInterval dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-  return atan2(sqrt(cross2), dot) * degrees_per_radian;
+  return cross2;
+}
+LDInterval cross2(const std::array<LDInterval, 3>& u, const std::array<LDInterval, 3>& v) {
+  return cross2_from([&](int i, int j) { return u[i] * v[j] - u[j] * v[i]; });
+}
+LDInterval dot(const std::array<LDInterval, 3>& u, const std::array<LDInterval, 3>& v) {
+  return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+}
+// The angle's midpoint when cross2 is bounded away from 0 and the enclosure pins it to 2^-56.
+std::optional<double> tight_angle(const LDInterval& cross2, const LDInterval& dot) {
+  if (!(cross2.lo > 0)) return std::nullopt;
+  const LDInterval deg = atan2(sqrt(cross2), dot) * degrees_per_radian;
+  if (!tight_degrees(deg)) return std::nullopt;
+  return midpoint(deg);
+}
+}  // namespace
+
+LDInterval angle_deg_enclosure(const std::array<LDInterval, 3>& u, const std::array<LDInterval, 3>& v) {
+  return atan2(sqrt(cross2(u, v)), dot(u, v)) * degrees_per_radian;
 }
 
 double angle_deg(const std::array<Rational, 3>& u_exact, const std::array<Rational, 3>& v_exact) {
   if (u_exact == v_exact) return 0;  // what the MPFR route returns for them, exactly
   if (fast_path_available) {
-    LDInterval u[3], v[3];
+    std::array<LDInterval, 3> u, v;
     for (int k = 0; k < 3; ++k) u[k] = enclose_ld(u_exact[k]), v[k] = enclose_ld(v_exact[k]);
-    LDInterval cross2{0, 0};
-    for (int k = 0; k < 3; ++k) {
-      const int i = (k + 1) % 3, j = (k + 2) % 3;
-      const LDInterval c = u[i] * v[j] - u[j] * v[i];
-      cross2 = cross2 + c * c;
-    }
-    const LDInterval dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-    if (cross2.lo > 0) {  // a positive angle, bounded away from 0
-      const LDInterval deg = atan2(sqrt(cross2), dot) * degrees_per_radian;
-      if (tight_degrees(deg)) return midpoint(deg);
-    }
+    const LDInterval d = dot(u, v);
+    if (const auto deg = tight_angle(cross2(u, v), d)) return *deg;
     // Small angles: the cross product from its exact value.
-    cross2 = LDInterval{0, 0};
-    for (int k = 0; k < 3; ++k) {
-      const int i = (k + 1) % 3, j = (k + 2) % 3;
-      const LDInterval c = exact_cross(u_exact[i], v_exact[j], u_exact[j], v_exact[i]);
-      cross2 = cross2 + c * c;
-    }
-    if (cross2.lo > 0) {
-      const LDInterval deg = atan2(sqrt(cross2), dot) * degrees_per_radian;
-      if (tight_degrees(deg)) return midpoint(deg);
-    }
+    const LDInterval exact2 =
+        cross2_from([&](int i, int j) { return exact_cross(u_exact[i], v_exact[j], u_exact[j], v_exact[i]); });
+    if (const auto deg = tight_angle(exact2, d)) return *deg;
   }
   return angle_mpfr(u_exact, v_exact);
 }
