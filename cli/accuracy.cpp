@@ -78,7 +78,13 @@ struct Measurement {
   std::string extra;            // key=value;… (CSV `extra`)
   unsigned precision_bits = 0;  // analytic
   std::uint64_t kept = 0;       // monte-carlo
+  bool rounded = false;         // analytic, quadrature: both components correctly rounded
 };
+
+// Both components' correctly_rounded flags, as `yes yes`.
+std::string rounded_text(const MapEstimate& e) {
+  return std::string(e.correctly_rounded[0] ? "yes" : "no") + " " + (e.correctly_rounded[1] ? "yes" : "no");
+}
 
 Measurement row(std::string route, std::string parameter) {
   Measurement m;
@@ -166,13 +172,17 @@ WidthResult measure(const std::string& width, const Settings& o) {
   Measurement analytic = row("analytic", "auto");
   analytic.bound = a.error_bound;
   analytic.precision_bits = a.precision_bits;
-  analytic.extra = "precision_bits=" + std::to_string(a.precision_bits);
+  analytic.rounded = a.correctly_rounded[0] && a.correctly_rounded[1];
+  analytic.extra = "precision_bits=" + std::to_string(a.precision_bits) + ";correctly_rounded=" +
+                   rounded_text(a);
   add(analytic, a.map);
 
   for (unsigned n : quadrature_orders) {
     const MapEstimate q = mean_3d_quadrature(F, n);
     Measurement m = row("quadrature", std::to_string(n));
     m.bound = q.error_bound;
+    m.extra = "correctly_rounded=" + rounded_text(q);
+    m.rounded = q.correctly_rounded[0] && q.correctly_rounded[1];
     add(m, q.map);
   }
 
@@ -239,15 +249,17 @@ std::string table(const std::vector<WidthResult>& results, const Settings& o) {
          "reference)\n\n";
 
   std::vector<std::vector<std::string>> closed{
-      {"width", "n", "reference map m*", "ref bound", "double", "analytic", "bound", "bits"}};
+      {"width", "n", "reference map m*", "ref bound", "double", "analytic", "bound", "bits", "rounded"}};
   for (const WidthResult& r : results) {
     const Measurement* a = find(r, "analytic", "auto");
     closed.push_back({r.width, std::to_string(r.vertices),
                       "(" + number(r.reference.map[0]) + ", " + number(r.reference.map[1]) + ")",
                       brief(r.reference.error_bound), brief(find(r, "double", "")->error_abs),
-                      brief(a->error_abs), brief(*a->bound), std::to_string(a->precision_bits)});
+                      brief(a->error_abs), brief(*a->bound), std::to_string(a->precision_bits),
+                      a->rounded ? "yes" : "no"});
   }
-  out << "closed form (MATH 1a.2): double = naive sum in doubles (1a.7), analytic = certified\n"
+  out << "closed form (docs/math.md 2): double = naive sum in doubles, analytic = certified;\n"
+         "rounded: both components certified correctly rounded\n"
       << columns(closed) << "\n";
 
   std::vector<std::vector<std::string>> quad{{"width"}};
@@ -256,11 +268,12 @@ std::string table(const std::vector<WidthResult>& results, const Settings& o) {
     quad.push_back({r.width});
     for (unsigned n : quadrature_orders) {
       const Measurement* m = find(r, "quadrature", std::to_string(n));
-      quad.back().push_back(brief(m->error_abs) + " / " + brief(*m->bound));
+      quad.back().push_back(brief(m->error_abs) + " / " + brief(*m->bound) + (m->rounded ? " r" : ""));
     }
   }
-  out << "quadrature, Duffy-Gauss-Legendre n x n per fan triangle (MATH 1c): error / estimate "
-         "|Q_n - Q_2n|\n"
+  out << "quadrature, Duffy-Gauss-Legendre n x n per fan triangle (docs/math.md 2): error / "
+         "statement\n(2|Q_n - Q_2n| + rounding bound); r: correctly rounded as far as the "
+         "statement holds\n"
       << columns(quad) << "\n";
 
   const std::vector<std::uint64_t> counts = sample_counts(o.max_samples);

@@ -39,14 +39,18 @@ Json selection_json(const Selection& s) {
   if (!e.valid) {  // no map: say why, with what was tried
     j["map"] = nullptr;
     j["error_bound"] = nullptr;
+    j["error_bounds"] = nullptr;
     j["method"] = e.method;
     j["note"] = e.note;
   } else {
     j["map"] = pair(e.map);
     if (e.exact) j["map_exact"] = exact_pair(*e.exact);
     j["error_bound"] = e.error_bound;
+    j["error_bounds"] = pair(e.error_bounds);
+    j["correctly_rounded"] = Json::array({e.correctly_rounded[0], e.correctly_rounded[1]});
     if (e.enclosure) j["enclosure"] = Json::array({pair((*e.enclosure)[0]), pair((*e.enclosure)[1])});
     j["method"] = e.method;
+    if (!e.note.empty()) j["note"] = e.note;
   }
   if (e.precision_bits) j["precision_bits"] = e.precision_bits;
   if (e.quadrature_order) j["order"] = e.quadrature_order;

@@ -70,15 +70,31 @@ void check_json(const std::string& out) {
   FUZZ_CHECK(selections.size() == (F.kind == gmcc::ConvexKind::empty ? 0u : 3u),
              "selections for kind " + gmcc::to_string(F.kind));
   for (const auto& [rule, s] : selections.items()) {
-    if (s.contains("note")) {  // no map: Monte Carlo, or the closed form at a forced precision
-      FUZZ_CHECK(s.at("map").is_null() && rule == "mean_3d" &&
-                     (s.at("method") == "monte-carlo" || s.contains("precision_bits")),
+    if (s.contains("note") && s.at("map").is_null()) {
+      // No map: Monte Carlo, quadrature out of range, or the closed form at a forced precision.
+      FUZZ_CHECK(rule == "mean_3d" && s.at("error_bounds").is_null() &&
+                     (s.at("method") == "monte-carlo" || s.at("method") == "quadrature" ||
+                      s.contains("precision_bits")),
                  rule + ": a note without a failed route");
       continue;
     }
     check_number_pair(s.at("map"));
     const double bound = s.at("error_bound").get<double>();
     FUZZ_CHECK(std::isfinite(bound) && bound >= 0, rule + ": error bound " + std::to_string(bound));
+    // Per component bounds, their maximum, and the correct-rounding flags (docs/cli.md).
+    const Json& bounds = s.at("error_bounds");
+    check_number_pair(bounds);
+    FUZZ_CHECK(std::max(bounds[0].get<double>(), bounds[1].get<double>()) == bound,
+               rule + ": error_bound is not the larger of error_bounds");
+    const Json& rounded = s.at("correctly_rounded");
+    FUZZ_CHECK(rounded.size() == 2 && rounded[0].is_boolean() && rounded[1].is_boolean(),
+               rule + ": correctly_rounded");
+    if (s.at("method") == "exact")
+      FUZZ_CHECK(rounded[0].get<bool>() && rounded[1].get<bool>(), rule + ": exact map not rounded");
+    // A map with a note: the closed form that could not decide the nearest double.
+    if (s.contains("note"))
+      FUZZ_CHECK(s.at("method") == "analytic" && !(rounded[0].get<bool>() && rounded[1].get<bool>()),
+                 rule + ": a note beside a correctly rounded map");
     const double worst = s.at("worst_case_deg").get<double>();
     FUZZ_CHECK(worst >= 0 && worst <= 180, rule + ": worst case " + std::to_string(worst));
     if (s.contains("worst_case_illuminant_deg")) {

@@ -1,6 +1,7 @@
 #include "internal/interval.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace gmcc::internal {
 namespace {
@@ -14,10 +15,14 @@ struct Mpfr {
 }  // namespace
 
 std::pair<double, double> nearest_with_bound(const Interval& x) {
-  const mpfr_prec_t p = x.precision();
-  Mpfr mid(p), lo(p), hi(p), d_lo(p), d_hi(p);
+  Mpfr mid(x.precision());
   mpfi_mid(mid.v, x.get());
-  const double value = mpfr_get_d(mid.v, MPFR_RNDN);
+  return bound_from(x, mpfr_get_d(mid.v, MPFR_RNDN));
+}
+
+std::pair<double, double> bound_from(const Interval& x, double value) {
+  const mpfr_prec_t p = std::max<mpfr_prec_t>(x.precision(), 53);
+  Mpfr lo(p), hi(p), d_lo(p), d_hi(p);
   mpfi_get_left(lo.v, x.get());
   mpfi_get_right(hi.v, x.get());
   // |value − lo| and |hi − value|, each rounded up; value is exact in p >= 53 bits.
@@ -34,6 +39,16 @@ std::pair<double, double> outward_doubles(const Interval& x) {
   mpfi_get_left(lo.v, x.get());
   mpfi_get_right(hi.v, x.get());
   return {mpfr_get_d(lo.v, MPFR_RNDD), mpfr_get_d(hi.v, MPFR_RNDU)};
+}
+
+std::optional<double> single_rounding(const Interval& x) {
+  if (!bounded(x)) return std::nullopt;
+  Mpfr lo(x.precision()), hi(x.precision());
+  mpfi_get_left(lo.v, x.get());
+  mpfi_get_right(hi.v, x.get());
+  const double a = mpfr_get_d(lo.v, MPFR_RNDN), b = mpfr_get_d(hi.v, MPFR_RNDN);
+  if (a != b || !std::isfinite(a)) return std::nullopt;
+  return a;
 }
 
 bool bounded(const Interval& x) { return !mpfi_nan_p(x.get()) && mpfi_bounded_p(x.get()); }

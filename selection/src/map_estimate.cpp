@@ -23,8 +23,10 @@ MapEstimate exact_map_estimate(std::string rule, const Point2& exact) {
   e.method = "exact";
   e.exact = exact;
   e.map = to_double_nearest(exact);
-  e.error_bound = std::max(upper_double(rational_from_double(e.map[0]) - exact.x),
-                           upper_double(rational_from_double(e.map[1]) - exact.y));
+  e.error_bounds = {upper_double(rational_from_double(e.map[0]) - exact.x),
+                    upper_double(rational_from_double(e.map[1]) - exact.y)};
+  e.error_bound = std::max(e.error_bounds[0], e.error_bounds[1]);
+  e.correctly_rounded = {true, true};  // to_double_nearest rounds the exact value once
   // The enclosure of an exact value is [value rounded down, value rounded up].
   e.enclosure.emplace();
   for (int k = 0; k < 2; ++k) {

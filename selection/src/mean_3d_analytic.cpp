@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -123,31 +124,44 @@ std::array<LDInterval, 2> direction_map_fast_edges(const ConvexSet2& F) {
   return {dir[0] / dir[2], dir[1] / dir[2]};
 }
 
-// The fast path is kept when its enclosure's width is at most 2^-50 of its magnitude: the
-// reported double is within half the width of the enclosure's farther end plus half an ulp, so
-// the bound is at most 2^-51 + 2^-53 relative, within SPEC §6's bar of 10^-15 relative. (It was
-// 2^-51 until the performance work, stricter than the bound it stated; at 2^-51 a quarter of
-// the experiment's 11-colour feasible sets went to MPFI, at 2^-50 two per cent.)
-constexpr int fast_path_bits = 50;
-
-bool tight(const LDInterval& x, int bits) {
-  return std::isfinite(x.lo) && std::isfinite(x.hi) &&
-         x.hi - x.lo <= std::ldexp(std::max(std::fabs(x.lo), std::fabs(x.hi)), -bits);
+// The double that every point of an extended-precision enclosure rounds to, if there is one
+// (the ends are long doubles: each conversion rounds once, to nearest).
+std::optional<double> single_rounding(const LDInterval& x) {
+  if (!std::isfinite(x.lo) || !std::isfinite(x.hi)) return std::nullopt;
+  const double a = static_cast<double>(x.lo), b = static_cast<double>(x.hi);
+  if (a != b || !std::isfinite(a)) return std::nullopt;
+  return a;
 }
 
-// The double nearest the midpoint, the farther end's distance from it (rounded up), and the
-// enclosure's ends rounded outward to doubles.
-void report(MapEstimate& e, int k, const LDInterval& x) {
-  const long double mid = x.lo + (x.hi - x.lo) / 2;
-  const double value = static_cast<double>(mid);
+// Component k from an extended-precision enclosure x that rounds to one double: the double,
+// the farther end's distance from it (rounded up), the enclosure rounded outward.
+void report(MapEstimate& e, int k, const LDInterval& x, double value) {
   const long double reach = std::max(value - x.lo, x.hi - value);
   e.map[k] = value;
-  e.error_bound = std::max(e.error_bound, std::nextafter(static_cast<double>(LDInterval::up(reach)), INFINITY));
+  e.error_bounds[k] = std::nextafter(static_cast<double>(LDInterval::up(reach)), INFINITY);
+  e.correctly_rounded[k] = true;
   double lo = static_cast<double>(x.lo), hi = static_cast<double>(x.hi);
   if (lo > x.lo) lo = std::nextafter(lo, -INFINITY);
   if (hi < x.hi) hi = std::nextafter(hi, INFINITY);
   (*e.enclosure)[k] = {lo, hi};
 }
+
+// The fast path's answer when both components' enclosures round to one double each.
+bool report_if_rounded(MapEstimate& e, const std::array<LDInterval, 2>& m) {
+  const std::optional<double> r0 = single_rounding(m[0]), r1 = single_rounding(m[1]);
+  if (!r0 || !r1) return false;
+  e.precision_bits = 64;  // the x87 extended significand
+  report(e, 0, m[0], *r0);
+  report(e, 1, m[1], *r1);
+  e.error_bound = std::max(e.error_bounds[0], e.error_bounds[1]);
+  return true;
+}
+
+// Correct rounding: the precision doubles until each enclosure lies inside one rounding
+// interval of the doubles, up to this many bits (or 4× the starting precision, if larger).
+// Only a map within about 2^-8000 of a midpoint between two doubles — in practice one exactly
+// at a midpoint, such as a symmetric segment's — reaches the cap.
+constexpr unsigned rounding_cap_bits = 8192;
 
 }  // namespace
 
@@ -161,62 +175,60 @@ MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options
   if (F.kind == ConvexKind::point) return e;
   e.enclosure.emplace();
 
-  // Fast path: rigorous extended-precision intervals, kept only when tight enough.
+  // Fast path: rigorous extended-precision intervals, kept only when each component's enclosure
+  // rounds to a single double (which is then the correctly rounded map).
   if (internal::fast_path_available && options.precision_bits == 0) {
-    const auto m = direction_map_fast(F);
-    // A τ3 enclosure that straddles 0 yields quotients of both signs, never a tight result.
-    if (tight(m[0], fast_path_bits) && tight(m[1], fast_path_bits)) {
-      e.precision_bits = 64;  // the x87 extended significand
-      report(e, 0, m[0]);
-      report(e, 1, m[1]);
-      return e;
-    }
+    if (report_if_rounded(e, direction_map_fast(F))) return e;
     // Small or thin polygons: the same arithmetic from exactly formed edge vectors.
-    if (F.kind == ConvexKind::polygon) {
-      const auto me = direction_map_fast_edges(F);
-      if (tight(me[0], fast_path_bits) && tight(me[1], fast_path_bits)) {
-        e.precision_bits = 64;
-        report(e, 0, me[0]);
-        report(e, 1, me[1]);
-        return e;
-      }
-    }
+    if (F.kind == ConvexKind::polygon && report_if_rounded(e, direction_map_fast_edges(F))) return e;
   }
-  // MPFI: precision chosen from the polygon's size, then doubled until the certified enclosure
-  // pins each component to 2^-60 relative (a forced precision is used once, as given).
-  constexpr int target_bits = 60;
+  // MPFI: precision chosen from the polygon's size, then doubled until each component's
+  // certified enclosure rounds to one double (a forced precision is used once, as given).
+  // Far from the origin τ3 is small against its terms; too few bits leave it straddling 0 (or
+  // barely above it) and the quotients unbounded or beyond the doubles (found by
+  // fuzz/fuzz_geometry and fuzz/fuzz_select): the automatic precision doubles past that, up to
+  // max_bits; a forced one too low says so instead of reporting NaN or infinity.
   constexpr unsigned max_bits = 1u << 20;
-  unsigned bits = options.precision_bits ? options.precision_bits : automatic_precision(F.vertices);
-  for (;;) {
+  const bool forced = options.precision_bits != 0;
+  unsigned bits = forced ? options.precision_bits : automatic_precision(F.vertices);
+  const unsigned cap = std::max(rounding_cap_bits, 4 * bits);
+  for (;; bits *= 2) {
     const auto m = direction_map<Interval>(F, [bits](const Rational& q) { return Interval(q, bits); });
-    const bool done = options.precision_bits != 0 || bits >= max_bits ||
-                      (internal::tight(m[0], target_bits) && internal::tight(m[1], target_bits));
-    if (done) {
-      e.precision_bits = bits;
-      // Far from the origin τ3 is small against its terms; too few bits leave it straddling 0
-      // (or barely above it) and the quotients unbounded or beyond the doubles (found by
-      // fuzz/fuzz_geometry and fuzz/fuzz_select). The automatic precision doubles past that;
-      // a forced one too low says so instead of reporting NaN or infinity.
-      for (int k = 0; k < 2; ++k) {
-        const auto [lo, hi] = internal::bounded(m[k]) ? internal::outward_doubles(m[k])
-                                                      : std::pair<double, double>(NAN, NAN);
-        if (!std::isfinite(lo) || !std::isfinite(hi)) {
-          e.valid = false;
-          e.enclosure.reset();
-          e.error_bound = 0;
-          e.note = "the closed form's enclosure at " + std::to_string(bits) +
-                   " bits is too wide to give a map (its third component is not separated "
-                   "from 0): raise the precision, or leave it automatic";
-          return e;
-        }
-        (*e.enclosure)[k] = {lo, hi};
-        const auto [value, bound] = internal::nearest_with_bound(m[k]);
-        e.map[k] = value;
-        e.error_bound = std::max(e.error_bound, bound);
-      }
+    bool bounded = true, rounded = true;
+    for (int k = 0; k < 2; ++k) {
+      const auto [lo, hi] = internal::bounded(m[k]) ? internal::outward_doubles(m[k])
+                                                    : std::pair<double, double>(NAN, NAN);
+      bounded = bounded && std::isfinite(lo) && std::isfinite(hi);
+      rounded = rounded && internal::single_rounding(m[k]).has_value();
+    }
+    if (!forced && !(bounded && rounded) && bits < (bounded ? cap : max_bits)) continue;
+    e.precision_bits = bits;
+    if (!bounded) {
+      e.valid = false;
+      e.enclosure.reset();
+      e.note = "the closed form's enclosure at " + std::to_string(bits) +
+               " bits is too wide to give a map (its third component is not separated "
+               "from 0): raise the precision, or leave it automatic";
       return e;
     }
-    bits *= 2;
+    for (int k = 0; k < 2; ++k) {
+      (*e.enclosure)[k] = {internal::outward_doubles(m[k]).first, internal::outward_doubles(m[k]).second};
+      const std::optional<double> r = internal::single_rounding(m[k]);
+      const auto [value, bound] = r ? internal::bound_from(m[k], *r) : internal::nearest_with_bound(m[k]);
+      e.map[k] = value;
+      e.error_bounds[k] = bound;
+      e.correctly_rounded[k] = r.has_value();
+    }
+    e.error_bound = std::max(e.error_bounds[0], e.error_bounds[1]);
+    if (!e.correctly_rounded[0] || !e.correctly_rounded[1])
+      e.note = forced ? "at the forced precision of " + std::to_string(bits) +
+                            " bits the enclosure does not decide the nearest double: the map "
+                            "is within error_bounds of the truth but may not be correctly rounded"
+                      : "the map lies within 2^-" + std::to_string(bits) +
+                            " (relative) of a midpoint between two doubles (the correct-rounding "
+                            "cap): it is one of the two, within error_bounds of the truth, and "
+                            "may not be the nearest";
+    return e;
   }
 }
 

@@ -109,6 +109,7 @@ MapEstimate mean_3d_monte_carlo(const ConvexSet2& F, std::uint64_t samples, std:
     return static_cast<double>(std::sqrt(var / n) / mean_z);
   };
   e.standard_error = {standard_error(m1, sxx, sxz), standard_error(m2, syy, syz)};
+  e.error_bounds = e.standard_error;
   e.error_bound = std::max(e.standard_error[0], e.standard_error[1]);
   return e;
 }

@@ -4,11 +4,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace gmcc {
 namespace {
+
+// Unit roundoff of long double (2^-64 for the x87 format, 2^-113 for binary128, 2^-53 where
+// long double is double): the error analysis below is written in it, so it holds on each.
+constexpr long double unit_roundoff = std::numeric_limits<long double>::epsilon() / 2;
+// Deepest subdivision (docs/math.md §2 "Quadrature"): each level halves a piece, and a piece
+// must shrink to the distance √(1 + |x|²) of its nearest corner, and beyond |x| ~ 10^1233 the
+// weight overflows the x87 range anyway (the route then declines): 2^4200 > 10^1264.
+constexpr unsigned depth_limit = 4200;
 
 // Gauss–Legendre nodes and weights on [0, 1]: Newton's method on P_n in long double.
 void gauss_legendre_01(unsigned n, std::vector<long double>& x, std::vector<long double>& w) {
@@ -27,7 +37,7 @@ void gauss_legendre_01(unsigned n, std::vector<long double>& x, std::vector<long
       derivative = n * (z * p1 - p0) / (z * z - 1);
       const long double step = p1 / derivative;
       z -= step;
-      if (step == 0 || std::fabs(step) <= std::fabs(z) * 0x1p-63L) break;
+      if (step == 0 || std::fabs(step) <= std::fabs(z) * 2 * unit_roundoff) break;
     }
     if (n == 1) z = 0, derivative = 1;
     x[i] = (1 - z) / 2;
@@ -35,32 +45,38 @@ void gauss_legendre_01(unsigned n, std::vector<long double>& x, std::vector<long
   }
 }
 
-// apex + offset, rounded once to the nearest double.
-double add_exact(const Rational& apex, long double offset) {
-  mpfr_t a, o;
-  mpfr_inits2(256, a, o, static_cast<mpfr_ptr>(nullptr));
-  mpfr_set_q(a, apex.get_mpq_t(), MPFR_RNDN);
-  mpfr_set_ld(o, offset, MPFR_RNDN);
-  mpfr_add(a, a, o, MPFR_RNDN);
-  const double d = mpfr_get_d(a, MPFR_RNDN);
-  mpfr_clears(a, o, static_cast<mpfr_ptr>(nullptr));
-  return d;
-}
+// Neumaier's compensated sum: |computed − exact| <= 2u·|exact| + 2N·u²·Σ|terms| (Higham,
+// Accuracy and Stability of Numerical Algorithms, 2nd ed., §4.3), so a million terms cost no
+// more accuracy than one.
+struct CompensatedSum {
+  long double sum = 0, correction = 0;
+  void add(long double x) {
+    const long double t = sum + x;
+    correction += std::fabs(sum) >= std::fabs(x) ? (sum - t) + x : (x - t) + sum;
+    sum = t;
+  }
+  long double value() const { return sum + correction; }
+};
 
-// Weighted sums Σw, Σw·offset over a region, in offsets from the global apex.
+// The weighted sums over F, in offsets from the apex v0, with what the error bound needs.
 struct Sums {
-  long double w = 0, x = 0, y = 0;
+  CompensatedSum w, x, y;         // Σ W, Σ W·o_x, Σ W·o_y
+  long double abs_x = 0, abs_y = 0;  // Σ W·|o_x|, Σ W·|o_y| (for the summation error)
+  long double count = 0;          // terms
+  long double position_rel = 0;   // max relative weight error caused by node position errors
+  bool depth_exceeded = false;
+  bool overflow = false;  // r2² beyond the long double range at some node
 };
 
 struct Rule {
   std::vector<long double> x, w;  // Gauss–Legendre on [0, 1]
   long double ax, ay;             // the apex, nearest long double
-  unsigned depth_limit = 8;
+  long double delta;              // bound on a node's absolute position error, per coordinate
 };
 
 // The weight's singularities are where 1 + a² + b² = 0 (complex), about sqrt(1 + |x|²) away from
 // a real point x: a piece much larger than that converges slowly, so pieces are halved until
-// their diameter² <= 1 + (smallest |x|² over their corners) (MATH §1c: composite rules).
+// their diameter² <= 1 + (smallest |x|² over their corners) (docs/math.md §2: composite rules).
 bool needs_split(long double d2, long double r2_min) { return d2 > 1 + r2_min; }
 
 long double r2_at(const Rule& r, long double ox, long double oy) {
@@ -68,81 +84,171 @@ long double r2_at(const Rule& r, long double ox, long double oy) {
   return px * px + py * py;
 }
 
-// Triangle with corners (offsets) P, Q, R: Duffy-collapsed product rule, with w = |x|^-4.
+// One node: offset o, weight factor g (rule weight × Jacobian), the weight w(x) = r2^-power/2.
+void node(const Rule& r, long double ox, long double oy, long double g, int power, Sums& s) {
+  const long double px = r.ax + ox, py = r.ay + oy;
+  const long double r2 = 1 + px * px + py * py;
+  if (!std::isfinite(r2 * r2)) s.overflow = true;
+  const long double wt = power == 4 ? g / (r2 * r2) : g / (r2 * std::sqrt(r2));
+  s.w.add(wt), s.x.add(wt * ox), s.y.add(wt * oy);
+  s.abs_x += wt * std::fabs(ox), s.abs_y += wt * std::fabs(oy);
+  s.count += 1;
+  // A position error δ per coordinate moves r2 by at most 2(|px| + |py|)δ + 2δ², so the weight,
+  // r2^-2 or r2^-3/2, by at most 4(|px| + |py|)δ/r2 relative (first order; doubled for margin).
+  s.position_rel = std::max(s.position_rel, 8 * (std::fabs(px) + std::fabs(py) + r.delta) * r.delta / r2);
+}
+
+// Triangle with corners (offsets) P, Q, R, of exact area·2 `jacobian` (rounded once): the
+// Duffy-collapsed product rule, w = |x|^-4. Its four midpoint children each have exactly a
+// quarter of its area, so every piece's Jacobian is the fan triangle's over 4^depth — exact
+// scaling, not recomputed from rounded corners (on a sliver those lose the width: issue 11).
 void triangle(const Rule& r, const long double P[2], const long double Q[2], const long double R[2],
-              unsigned depth, Sums& s) {
+              long double jacobian, unsigned depth, Sums& s) {
   auto d2 = [](const long double* a, const long double* b) {
     return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
   };
   const long double diameter2 = std::max({d2(P, Q), d2(Q, R), d2(R, P)});
   const long double r2_min = std::min({r2_at(r, P[0], P[1]), r2_at(r, Q[0], Q[1]), r2_at(r, R[0], R[1])});
-  if (depth < r.depth_limit && needs_split(diameter2, r2_min)) {
+  if (needs_split(diameter2, r2_min)) {
+    if (depth >= depth_limit) {
+      s.depth_exceeded = true;
+      return;
+    }
     const long double PQ[2] = {(P[0] + Q[0]) / 2, (P[1] + Q[1]) / 2};
     const long double QR[2] = {(Q[0] + R[0]) / 2, (Q[1] + R[1]) / 2};
     const long double RP[2] = {(R[0] + P[0]) / 2, (R[1] + P[1]) / 2};
-    triangle(r, P, PQ, RP, depth + 1, s);
-    triangle(r, PQ, Q, QR, depth + 1, s);
-    triangle(r, RP, QR, R, depth + 1, s);
-    triangle(r, PQ, QR, RP, depth + 1, s);
+    const long double quarter = jacobian / 4;
+    triangle(r, P, PQ, RP, quarter, depth + 1, s);
+    triangle(r, PQ, Q, QR, quarter, depth + 1, s);
+    triangle(r, RP, QR, R, quarter, depth + 1, s);
+    triangle(r, PQ, QR, RP, quarter, depth + 1, s);
     return;
   }
   const long double ex = Q[0] - P[0], ey = Q[1] - P[1], fx = R[0] - P[0], fy = R[1] - P[1];
-  const long double jacobian = std::fabs(ex * fy - ey * fx);
   const std::size_t n = r.x.size();
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < n; ++j) {
       const long double u = r.x[i], v = r.x[j] * (1 - r.x[i]);  // Duffy collapse
-      const long double ox = P[0] + u * ex + v * fx, oy = P[1] + u * ey + v * fy;
-      const long double r2 = 1 + r2_at(r, ox, oy);
-      const long double wt = r.w[i] * r.w[j] * (1 - r.x[i]) * jacobian / (r2 * r2);
-      s.w += wt, s.x += wt * ox, s.y += wt * oy;
+      node(r, P[0] + u * ex + v * fx, P[1] + u * ey + v * fy,
+           r.w[i] * r.w[j] * (1 - r.x[i]) * jacobian, 4, s);
     }
 }
 
-// Segment from offset P to Q: the planar fan's weight |x|^-3 along it (MATH §1a.6).
-void segment(const Rule& r, const long double P[2], const long double Q[2], unsigned depth, Sums& s) {
+// Segment from offset P to Q of exact length `length` (rounded once): the planar fan's weight
+// |x|^-3 along it (docs/math.md §2, degenerate sets); halves have exactly half the length.
+void segment(const Rule& r, const long double P[2], const long double Q[2], long double length,
+             unsigned depth, Sums& s) {
   const long double ex = Q[0] - P[0], ey = Q[1] - P[1];
   const long double r2_min = std::min(r2_at(r, P[0], P[1]), r2_at(r, Q[0], Q[1]));
-  if (depth < r.depth_limit && needs_split(ex * ex + ey * ey, r2_min)) {
+  if (needs_split(ex * ex + ey * ey, r2_min)) {
+    if (depth >= depth_limit) {
+      s.depth_exceeded = true;
+      return;
+    }
     const long double M[2] = {(P[0] + Q[0]) / 2, (P[1] + Q[1]) / 2};
-    segment(r, P, M, depth + 1, s);
-    segment(r, M, Q, depth + 1, s);
+    segment(r, P, M, length / 2, depth + 1, s);
+    segment(r, M, Q, length / 2, depth + 1, s);
     return;
   }
-  const long double length = std::sqrt(ex * ex + ey * ey);
-  for (std::size_t i = 0; i < r.x.size(); ++i) {
-    const long double ox = P[0] + r.x[i] * ex, oy = P[1] + r.x[i] * ey;
-    const long double r2 = 1 + r2_at(r, ox, oy);
-    const long double wt = r.w[i] * length / (r2 * std::sqrt(r2));
-    s.w += wt, s.x += wt * ox, s.y += wt * oy;
-  }
+  for (std::size_t i = 0; i < r.x.size(); ++i)
+    node(r, P[0] + r.x[i] * ex, P[1] + r.x[i] * ey, r.w[i] * length, 3, s);
 }
 
-// The map by n-point rules: the offset centroid from v0 under the weight, plus v0.
-std::array<double, 2> quadrature_map(const ConvexSet2& F, unsigned n) {
+// A long double >= the exact non-negative rational q.
+long double upper_ld(const Rational& q) {
+  const long double d = to_long_double_nearest(q);
+  return d + std::fabs(d) * 2 * unit_roundoff + std::numeric_limits<long double>::denorm_min();
+}
+
+// The offset centroid c of F under the weight by n-point rules, and a rigorous bound on its
+// rounding error per coordinate (docs/math.md §2 "Quadrature: error statement").
+struct Centroid {
+  long double c[2] = {0, 0};
+  long double rounding[2] = {0, 0};
+  bool ok = false;
+  std::string why;  // when not ok
+};
+
+Centroid offset_centroid(const std::vector<Point2>& v, ConvexKind kind, unsigned n) {
   Rule rule;
   gauss_legendre_01(n, rule.x, rule.w);
-  const auto& v = F.vertices;
   rule.ax = to_long_double_nearest(v[0].x), rule.ay = to_long_double_nearest(v[0].y);
-  auto offset = [&](const Point2& p, long double out[2]) {
-    out[0] = to_long_double_nearest(Rational(p.x - v[0].x));
-    out[1] = to_long_double_nearest(Rational(p.y - v[0].y));
-  };
+  const long double u = unit_roundoff;
+  std::vector<std::array<long double, 2>> off(v.size());
+  long double largest = 0;  // max |offset coordinate|
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    off[i] = {to_long_double_nearest(Rational(v[i].x - v[0].x)),
+              to_long_double_nearest(Rational(v[i].y - v[0].y))};
+    largest = std::max({largest, std::fabs(off[i][0]), std::fabs(off[i][1])});
+  }
+  // A node's position: offsets rounded once (u·M), midpoints exact, P + u·e + v·f three
+  // roundings of terms <= 3M (9u·M with margin), the apex rounded once (u·|a|): 16u·M + 2u·|a|.
+  rule.delta = u * (16 * largest + 2 * (std::fabs(rule.ax) + std::fabs(rule.ay))) +
+               std::numeric_limits<long double>::min();
   Sums s;
   const long double origin[2] = {0, 0};
-  if (F.kind == ConvexKind::segment) {
-    long double q[2];
-    offset(v[1], q);
-    segment(rule, origin, q, 0, s);
+  if (kind == ConvexKind::segment) {
+    const Rational dx(v[1].x - v[0].x), dy(v[1].y - v[0].y);
+    segment(rule, origin, off[1].data(), std::sqrt(to_long_double_nearest(Rational(dx * dx + dy * dy))), 0, s);
   } else {
-    long double q[2], r[2];
     for (std::size_t t = 1; t + 1 < v.size(); ++t) {
-      offset(v[t], q);
-      offset(v[t + 1], r);
-      triangle(rule, origin, q, r, 0, s);
+      // Twice the fan triangle's area, exactly, rounded once.
+      const Rational cross((v[t].x - v[0].x) * (v[t + 1].y - v[0].y) -
+                           (v[t].y - v[0].y) * (v[t + 1].x - v[0].x));
+      triangle(rule, origin, off[t].data(), off[t + 1].data(), to_long_double_nearest(abs(cross)), 0, s);
     }
   }
-  return {add_exact(v[0].x, s.x / s.w), add_exact(v[0].y, s.y / s.w)};
+  Centroid out;
+  const long double sw = s.w.value();
+  if (s.depth_exceeded) {
+    out.why = "the feasible set spans more scales than the subdivision limit (" +
+              std::to_string(depth_limit) + " halvings) resolves";
+    return out;
+  }
+  if (s.overflow || !(sw > 0) || !std::isfinite(sw) || !std::isfinite(s.abs_x) || !std::isfinite(s.abs_y)) {
+    out.why = "the weight (1 + a^2 + b^2)^-2 over- or underflows the extended-precision range "
+              "on this feasible set";
+    return out;
+  }
+  // Relative error of each weight: the node's position error, and the rule's nodes and weights,
+  // the Jacobian's rounding and the arithmetic of one weight, (64 + 8n)·u with margin.
+  const long double eta = s.position_rel + (64 + 8 * static_cast<long double>(n)) * u;
+  const long double sum_rel = 2 * u + 2 * s.count * u * u;  // Neumaier, per unit of Σ|terms|
+  const long double err_w = sum_rel * sw;
+  const Rational* lo[2] = {&v[0].x, &v[0].y};
+  for (int k = 0; k < 2; ++k) {
+    out.c[k] = (k == 0 ? s.x.value() : s.y.value()) / sw;
+    // F's extent along k bounds |o − c| for every node (c and the nodes lie in F, up to δ).
+    Rational min = *lo[k], max = *lo[k];
+    for (const Point2& p : v) min = std::min(min, k == 0 ? p.x : p.y), max = std::max(max, k == 0 ? p.x : p.y);
+    const long double extent = upper_ld(Rational(max - min)) + 2 * rule.delta;
+    const long double err_sum = sum_rel * (k == 0 ? s.abs_x : s.abs_y);
+    const long double r = eta * extent / (1 - eta) + rule.delta +
+                          (err_sum + std::fabs(out.c[k]) * err_w) / (sw - err_w) +
+                          2 * u * std::fabs(out.c[k]);
+    out.rounding[k] = 2 * r;  // a factor 2 for the first-order terms
+    if (!std::isfinite(out.c[k]) || !std::isfinite(out.rounding[k])) {
+      out.why = "the weighted sums are not finite in extended precision on this feasible set";
+      return out;
+    }
+  }
+  out.ok = true;
+  return out;
+}
+
+struct Mpfr {
+  Mpfr() { mpfr_init2(v, 320); }
+  ~Mpfr() { mpfr_clear(v); }
+  Mpfr(const Mpfr&) = delete;
+  Mpfr& operator=(const Mpfr&) = delete;
+  mpfr_t v;
+};
+
+// r = r + x, rounded once in the direction rnd (x is a long double: exact in 320 bits).
+void add_ld(Mpfr& r, long double x, mpfr_rnd_t rnd) {
+  Mpfr t;
+  mpfr_set_ld(t.v, x, MPFR_RNDN);
+  mpfr_add(r.v, r.v, t.v, rnd);
 }
 
 }  // namespace
@@ -157,13 +263,48 @@ MapEstimate mean_3d_quadrature(const ConvexSet2& F, unsigned order) {
   e.method = "quadrature";
   e.quadrature_order = order;
   if (F.kind == ConvexKind::point) return e;
-  e.map = quadrature_map(F, order);
-  const std::array<double, 2> finer = quadrature_map(F, 2 * order);
-  for (int k = 0; k < 2; ++k) {
-    const double ulp = std::nextafter(std::fabs(e.map[k]), INFINITY) - std::fabs(e.map[k]);
-    // Twice the difference: Q_2n is not exact when convergence is slow (wide polygons).
-    e.error_bound = std::max({e.error_bound, 2 * std::fabs(e.map[k] - finer[k]), ulp});
+
+  // The fan apex v0 is the vertex nearest the origin, where the weight is largest: offsets from
+  // it are small where accuracy matters most.
+  std::vector<Point2> v = F.vertices;
+  std::size_t nearest = 0;
+  for (std::size_t i = 1; i < v.size(); ++i)
+    if (v[i].x * v[i].x + v[i].y * v[i].y < v[nearest].x * v[nearest].x + v[nearest].y * v[nearest].y)
+      nearest = i;
+  std::rotate(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(nearest), v.end());
+
+  const Centroid coarse = offset_centroid(v, F.kind, order);
+  const Centroid fine = coarse.ok ? offset_centroid(v, F.kind, 2 * order) : coarse;
+  if (!coarse.ok || !fine.ok) {
+    e.valid = false;
+    e.note = "quadrature cannot give a map with a trustworthy error statement here: " +
+             (coarse.ok ? fine.why : coarse.why) + "; use the analytic route";
+    return e;
   }
+  // Per coordinate: map = v0 + c_n rounded once; the statement covers the truncation
+  // (2·|c_n − c_2n|) and both rules' rounding; [lo, hi] = v0 + c_n ∓ it, rounded outward.
+  for (int k = 0; k < 2; ++k) {
+    const long double estimate =
+        2 * std::fabs(coarse.c[k] - fine.c[k]) + coarse.rounding[k] + fine.rounding[k];
+    const Rational& apex = k == 0 ? v[0].x : v[0].y;
+    Mpfr value, lo, hi, reach_lo, reach_hi;
+    mpfr_set_q(value.v, apex.get_mpq_t(), MPFR_RNDN);
+    add_ld(value, coarse.c[k], MPFR_RNDN);
+    mpfr_set_q(lo.v, apex.get_mpq_t(), MPFR_RNDD);
+    add_ld(lo, coarse.c[k], MPFR_RNDD);
+    add_ld(lo, -estimate, MPFR_RNDD);
+    mpfr_set_q(hi.v, apex.get_mpq_t(), MPFR_RNDU);
+    add_ld(hi, coarse.c[k], MPFR_RNDU);
+    add_ld(hi, estimate, MPFR_RNDU);
+    const double lo_nearest = mpfr_get_d(lo.v, MPFR_RNDN), hi_nearest = mpfr_get_d(hi.v, MPFR_RNDN);
+    e.correctly_rounded[k] = lo_nearest == hi_nearest;
+    e.map[k] = e.correctly_rounded[k] ? lo_nearest : mpfr_get_d(value.v, MPFR_RNDN);
+    mpfr_sub_d(reach_lo.v, lo.v, e.map[k], MPFR_RNDD);
+    mpfr_neg(reach_lo.v, reach_lo.v, MPFR_RNDU);
+    mpfr_sub_d(reach_hi.v, hi.v, e.map[k], MPFR_RNDU);
+    e.error_bounds[k] = std::max({mpfr_get_d(reach_lo.v, MPFR_RNDU), mpfr_get_d(reach_hi.v, MPFR_RNDU), 0.0});
+  }
+  e.error_bound = std::max(e.error_bounds[0], e.error_bounds[1]);
   return e;
 }
 

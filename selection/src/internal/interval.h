@@ -6,6 +6,7 @@
 
 #include <mpfi.h>
 
+#include <optional>
 #include <utility>
 
 namespace gmcc::internal {
@@ -70,8 +71,16 @@ class Interval {
 /// point of the interval (rounded up). The pair is (value, bound).
 std::pair<double, double> nearest_with_bound(const Interval& x);
 
+/// (value, a rigorous bound on value's distance to every point of x, rounded up).
+std::pair<double, double> bound_from(const Interval& x, double value);
+
 /// The interval's ends rounded outward to doubles.
 std::pair<double, double> outward_doubles(const Interval& x);
+
+/// The double nearest every point of the interval, if there is one: both ends round (to
+/// nearest, ties to even) to the same double, so — rounding being monotone — does every value
+/// between them, the true one included. Empty when a rounding boundary lies inside.
+std::optional<double> single_rounding(const Interval& x);
 
 /// True when neither end is infinite or NaN.
 bool bounded(const Interval& x);

@@ -17,11 +17,19 @@ struct MapEstimate {
   std::string method;           ///< `exact` (rational rules), `analytic`, `quadrature`, `monte-carlo`
   std::array<double, 2> map{};  ///< the map as the nearest doubles (for use)
   std::optional<Point2> exact;  ///< the exact map, where the rule's answer is rational
-  /// The error statement for max_k |map[k] − true map_k|, by method:
-  /// exact and analytic: a rigorous bound (rounding, or the certified enclosure's reach);
-  /// quadrature: an a-posteriori estimate, 2·|Q_n − Q_2n| and at least one ulp;
-  /// monte-carlo: the larger standard error of the two components (one sigma).
+  /// The error statement for |map[k] − true map_k|, per coordinate k, by method:
+  /// exact and analytic: a rigorous bound (the distance from map[k] to the far end of the
+  /// certified enclosure); quadrature: the truncation estimate 2·|Q_n − Q_2n| plus a rigorous
+  /// bound on the rounding errors of the sums, which covered the error on every polygon of the
+  /// honesty test and sweep (docs/math.md §4); monte-carlo: the standard error (one sigma).
+  std::array<double, 2> error_bounds{};
+  /// max(error_bounds[0], error_bounds[1]), kept for callers of one number.
   double error_bound = 0;
+  /// Per coordinate: map[k] is the double nearest the true value (ties to even). exact: always;
+  /// analytic: certified (the enclosure lies inside one rounding interval; false only at the
+  /// precision cap, with a note); quadrature: as far as its error statement holds (the interval
+  /// map[k] ± its pre-rounding bound lies in one rounding interval); monte-carlo: never.
+  std::array<bool, 2> correctly_rounded{};
   /// exact and analytic: certified enclosure of each component (lo, hi), rounded outward.
   std::optional<std::array<std::array<double, 2>, 2>> enclosure;
   unsigned precision_bits = 0;  ///< analytic: working precision (64: the x87 extended fast path)

@@ -13,9 +13,10 @@ namespace gmcc {
 struct AnalyticOptions {
   /// Working precision in bits, forced; 0 (the default) chooses it: first a rigorous interval
   /// evaluation in x87 extended precision (from the vertices, then from exactly formed edge
-  /// vectors), kept when its width is at most 2^-50 of each component (bound 2^-51 + 2^-53); otherwise
-  /// MPFI at 53 + 40 + 2·log2(1/ε) bits for a polygon of angular width ε (MATH §1a.7), doubled
-  /// until the enclosure pins both components to 2^-60 relative.
+  /// vectors), kept when each component's enclosure rounds to a single double; otherwise MPFI at
+  /// 53 + 40 + 2·log2(1/ε) bits for a polygon of angular width ε (docs/math.md §2), doubled
+  /// until each component's enclosure rounds to a single double, up to max(8192, 4 × the start)
+  /// bits (docs/math.md §2 "Correct rounding").
   unsigned precision_bits = 0;
 };
 
@@ -26,8 +27,10 @@ struct AnalyticOptions {
 ///   τ = ½ Σ_i θ_i c_i / |c_i|          (Lambert; Arvo 1995, SIGGRAPH; MATH §1a.2)
 /// and the map is (τ1/τ3, τ2/τ3): the direction depends neither on the ball's radius nor on the
 /// orientation (MATH §1a.1, §1a.4). c_i and p_i·p_{i+1} are exact rationals, enclosed before any
-/// rounding; the result is an enclosure, so `error_bound` is rigorous (the extended-precision
-/// fast path relies on the x87 fpatan's < 1 ulp error and allows 4 ulps).
+/// rounding; the result is an enclosure, so `error_bounds` are rigorous (the extended-precision
+/// fast path relies on the x87 fpatan's < 1 ulp error and allows 4 ulps), and `map` is, per
+/// component, the correctly rounded double (`correctly_rounded`; false only at the precision cap
+/// or a forced precision, with a `note`).
 /// Degenerate F (SPEC §2, MATH §1a.6): a segment gives the perspective of the bisector
 /// u1/|u1| + u2/|u2| of its end rays (the centroid of the planar fan ∩ unit disk); a point is
 /// itself (exact). A forced precision too low to bound the quotient within the doubles (τ3's
