@@ -203,8 +203,10 @@ std::string select_text(const SelectReport& r) {
     else
       out << "  ± " << fmt(s.estimate.error_bound) << " ("
           << (s.estimate.method == "monte-carlo" ? "monte-carlo, one standard error"
-              : s.estimate.method == "quadrature" ? "quadrature, estimated"
+              : s.estimate.method == "quadrature" ? "quadrature, estimated truncation + rounding bound"
                                                   : "analytic, certified")
+          << (s.estimate.correctly_rounded[0] && s.estimate.correctly_rounded[1]
+                  ? ", correctly rounded" : "")
           << ")";
     out << "\n";
   };

@@ -15,7 +15,7 @@ namespace gmcc {
 /// The routes to the 3-D mean.
 enum class Mean3dMethod {
   analytic,     ///< closed form, certified enclosure (mean_3d_analytic)
-  quadrature,   ///< Duffy–Gauss–Legendre, a-posteriori estimate (mean_3d_quadrature)
+  quadrature,   ///< Duffy–Gauss–Legendre, truncation estimate + rounding bound (mean_3d_quadrature)
   monte_carlo,  ///< the paper's sampling, standard error (mean_3d_monte_carlo)
 };
 
