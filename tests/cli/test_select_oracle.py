@@ -332,6 +332,46 @@ def _parse_out_rational(s, where, problems):
     return x
 
 
+def nearest_double(x):
+    """The double nearest the mpf x (ties to even), and x's distance to the nearest midpoint
+    between doubles, both decided in 80-digit arithmetic."""
+    with mpmath.workdps(80):
+        d = float(x)
+        candidates = [math.nextafter(d, -math.inf), d, math.nextafter(d, math.inf)]
+        best = min(candidates, key=lambda c: (abs(mpmath.mpf(c) - x), int(c.hex().split("p")[0][-1], 16) % 2))
+        mids = [(mpmath.mpf(best) + mpmath.mpf(c)) / 2 for c in candidates if c != best]
+        return best, min(abs(x - mid) for mid in mids)
+
+
+def per_component_checks(r, m, true_m, eb):
+    """Issue 11: error_bounds per component cover the error, error_bound is their maximum, and a
+    component flagged correctly_rounded is the double nearest the oracle's value."""
+    problems = []
+    ebs, cr = r.get("error_bounds"), r.get("correctly_rounded")
+    if not (isinstance(ebs, list) and len(ebs) == 2 and all(_is_num(x) and x >= 0 for x in ebs)):
+        return [f"mean_3d.error_bounds: malformed {ebs!r}"]
+    if not (isinstance(cr, list) and len(cr) == 2 and all(isinstance(x, bool) for x in cr)):
+        return [f"mean_3d.correctly_rounded: malformed {cr!r}"]
+    if max(ebs) != eb:
+        problems.append(f"mean_3d.error_bound {eb!r} is not the larger of error_bounds {ebs!r}")
+    with mpmath.workdps(80):
+        mag = max(abs(true_m[k]) for k in range(2))
+        oracle = mag * mpmath.mpf(10) ** -45  # the oracle's own accuracy, with margin
+        for k in range(2):
+            diff = abs(mpmath.mpf(m[k]) - true_m[k])
+            if diff > mpmath.mpf(ebs[k]) + oracle:
+                problems.append(f"mean_3d component {k}: |map - true| = {float(diff):.3e} > "
+                                f"error_bounds[{k}] = {ebs[k]!r}")
+            nearest, to_midpoint = nearest_double(true_m[k])
+            if cr[k] and to_midpoint > oracle and m[k] != nearest:
+                problems.append(f"mean_3d component {k}: flagged correctly rounded but {m[k]!r} "
+                                f"is not the nearest double {nearest!r} to the true value")
+            if r.get("method") == "analytic" and not cr[k]:
+                problems.append(f"mean_3d component {k}: the analytic route did not certify "
+                                f"correct rounding ({r.get('note')!r})")
+    return problems
+
+
 def _is_num(x):
     return isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x)
 
@@ -431,6 +471,7 @@ def compare(oracle, got, stats):
                     problems.append(f"mean_3d.map {m!r}: |map - true| = {float(diff):.3e} > "
                                     f"tolerance {float(tol):.3e} (error_bound {eb!r}); true = "
                                     f"({mpmath.nstr(true_m[0], 20)}, {mpmath.nstr(true_m[1], 20)})")
+                problems += per_component_checks(r, m, true_m, eb)
         w = r.get("worst_case_deg")
         want_w = so.worst_case_deg(true_m, ex["vertices"])
         if not _is_num(w):
