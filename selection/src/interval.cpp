@@ -14,6 +14,36 @@ struct Mpfr {
 };
 }  // namespace
 
+Interval atan2(const Interval& y, const Interval& x) {
+  const mpfr_prec_t p = y.precision();
+  Interval r(p);
+  Mpfr x_lo(p), y_lo(p);
+  mpfi_get_left(x_lo.v, x.get());
+  mpfi_get_left(y_lo.v, y.get());
+  if (!bounded(x) || !bounded(y) || mpfr_sgn(x_lo.v) <= 0 || mpfr_sgn(y_lo.v) < 0) {
+    mpfi_atan2(r.get(), y.get(), x.get());
+    return r;
+  }
+  Interval t = y / x;  // >= 0
+  Mpfr mid(p), lo(p), hi(p), rad(p), theta(p), theta_lo(p), theta_hi(p);
+  mpfi_mid(mid.v, t.get());
+  mpfi_get_left(lo.v, t.get());
+  mpfi_get_right(hi.v, t.get());
+  mpfr_sub(lo.v, mid.v, lo.v, MPFR_RNDU);  // mid − lo
+  mpfr_sub(hi.v, hi.v, mid.v, MPFR_RNDU);  // hi − mid
+  mpfr_max(rad.v, lo.v, hi.v, MPFR_RNDU);
+  mpfr_atan(theta.v, mid.v, MPFR_RNDN);    // within half an ulp of atan(mid)
+  if (!mpfr_zero_p(theta.v)) {
+    Mpfr ulp(p);
+    mpfr_set_ui_2exp(ulp.v, 1, mpfr_get_exp(theta.v) - p, MPFR_RNDU);
+    mpfr_add(rad.v, rad.v, ulp.v, MPFR_RNDU);
+  }
+  mpfr_sub(theta_lo.v, theta.v, rad.v, MPFR_RNDD);
+  mpfr_add(theta_hi.v, theta.v, rad.v, MPFR_RNDU);
+  mpfi_interv_fr(r.get(), theta_lo.v, theta_hi.v);
+  return r;
+}
+
 std::pair<double, double> nearest_with_bound(const Interval& x) {
   Mpfr mid(x.precision());
   mpfi_mid(mid.v, x.get());

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <tuple>
 #include <stdexcept>
 #include <utility>
 
@@ -69,31 +70,42 @@ std::array<I, 2> direction_map(const ConvexSet2& F, Make make) {
   return {dir[0] / dir[2], dir[1] / dir[2]};
 }
 
-// The same map in extended-precision intervals, from enclosures of the vertices (c_i and
-// p_i·p_{i+1} in interval arithmetic: cheap, and on thin polygons too wide to be kept).
-std::array<LDInterval, 2> direction_map_fast(const ConvexSet2& F) {
+LDInterval square(const LDInterval& x) { return x * x; }  // its sqrt clamps a negative end
+Interval square(const Interval& x) { return sqr(x); }
+
+// The same map from enclosures of the vertices (c_i and p_i·p_{i+1} in interval arithmetic:
+// cheap, with no exact rational products, but on thin polygons too wide to be kept). `make`
+// encloses an exact rational.
+template <class I, class Make>
+std::array<I, 2> direction_map_from_vertices(const ConvexSet2& F, Make make) {
   const auto& v = F.vertices;
   const std::size_t n = v.size();
-  std::vector<LDInterval> a(n), b(n);
-  for (std::size_t i = 0; i < n; ++i) a[i] = internal::enclose_ld(v[i].x), b[i] = internal::enclose_ld(v[i].y);
-  const LDInterval one{1, 1};
-  std::array<LDInterval, 3> dir{LDInterval{0, 0}, LDInterval{0, 0}, LDInterval{0, 0}};
+  std::vector<I> a, b;
+  a.reserve(n), b.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) a.push_back(make(v[i].x)), b.push_back(make(v[i].y));
+  const I one = make(Rational(1));
+  std::array<I, 3> dir{make(Rational(0)), make(Rational(0)), make(Rational(0))};
   if (F.kind == ConvexKind::segment) {
     for (std::size_t i = 0; i < 2; ++i) {
-      const LDInterval inv_norm = one / sqrt(a[i] * a[i] + b[i] * b[i] + one);
+      const I inv_norm = one / sqrt(square(a[i]) + square(b[i]) + one);
       dir = {dir[0] + inv_norm * a[i], dir[1] + inv_norm * b[i], dir[2] + inv_norm};
     }
   } else {
     for (std::size_t i = 0; i < n; ++i) {
       const std::size_t j = (i + 1) % n;
       // c = (a_i, b_i, 1) × (a_j, b_j, 1)
-      const LDInterval c0 = b[i] - b[j], c1 = a[j] - a[i], c2 = a[i] * b[j] - b[i] * a[j];
-      const LDInterval norm = sqrt(c0 * c0 + c1 * c1 + c2 * c2);
-      const LDInterval w = atan2(norm, a[i] * a[j] + b[i] * b[j] + one) / norm;
+      const I c0 = b[i] - b[j], c1 = a[j] - a[i], c2 = a[i] * b[j] - b[i] * a[j];
+      const I norm = sqrt(square(c0) + square(c1) + square(c2));
+      const I w = atan2(norm, a[i] * a[j] + b[i] * b[j] + one) / norm;
       dir = {dir[0] + w * c0, dir[1] + w * c1, dir[2] + w * c2};
     }
   }
   return {dir[0] / dir[2], dir[1] / dir[2]};
+}
+
+// In x87 extended-precision intervals.
+std::array<LDInterval, 2> direction_map_fast(const ConvexSet2& F) {
+  return direction_map_from_vertices<LDInterval>(F, [](const Rational& q) { return internal::enclose_ld(q); });
 }
 
 // The same with each edge vector e_i = v_{i+1} − v_i enclosed from its exact value (one integer
@@ -162,6 +174,8 @@ bool report_if_rounded(MapEstimate& e, const std::array<LDInterval, 2>& m) {
 // Only a map within about 2^-8000 of a midpoint between two doubles — in practice one exactly
 // at a midpoint, such as a symmetric segment's — reaches the cap.
 constexpr unsigned rounding_cap_bits = 8192;
+// The precision of the stage between the x87 fast path and the exact-product MPFI loop.
+constexpr unsigned middle_stage_bits = 80;
 
 }  // namespace
 
@@ -181,6 +195,24 @@ MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options
     if (report_if_rounded(e, direction_map_fast(F))) return e;
     // Small or thin polygons: the same arithmetic from exactly formed edge vectors.
     if (F.kind == ConvexKind::polygon && report_if_rounded(e, direction_map_fast_edges(F))) return e;
+    // Most polygons land here: the x87 enclosures are about an ulp wide (2^-50 … 2^-52
+    // relative on feasible sets of the synthetic experiment's size), so a rounding boundary
+    // usually falls inside. MPFI from vertex enclosures at 80 bits (~2^-70 wide: a boundary
+    // falls inside about once in 2^17 calls), before the exact products, whose gcds dominate
+    // on long rationals. This stage is what correct rounding costs (docs/performance.md).
+    const auto m = direction_map_from_vertices<Interval>(
+        F, [](const Rational& q) { return Interval(q, middle_stage_bits); });
+    const std::optional<double> r0 = internal::single_rounding(m[0]), r1 = internal::single_rounding(m[1]);
+    if (r0 && r1) {
+      e.precision_bits = middle_stage_bits;
+      for (int k = 0; k < 2; ++k) {
+        (*e.enclosure)[k] = {internal::outward_doubles(m[k]).first, internal::outward_doubles(m[k]).second};
+        std::tie(e.map[k], e.error_bounds[k]) = internal::bound_from(m[k], k == 0 ? *r0 : *r1);
+        e.correctly_rounded[k] = true;
+      }
+      e.error_bound = std::max(e.error_bounds[0], e.error_bounds[1]);
+      return e;
+    }
   }
   // MPFI: precision chosen from the polygon's size, then doubled until each component's
   // certified enclosure rounds to one double (a forced precision is used once, as given).

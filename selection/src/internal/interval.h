@@ -51,17 +51,22 @@ class Interval {
     mpfi_div(r.v_, a.v_, b.v_);
     return r;
   }
+  /// a², never negative (unlike a·a when a holds 0).
+  friend Interval sqr(const Interval& a) {
+    Interval r(a.precision());
+    mpfi_sqr(r.v_, a.v_);
+    return r;
+  }
   friend Interval sqrt(const Interval& a) {
     Interval r(a.precision());
     mpfi_sqrt(r.v_, a.v_);
     return r;
   }
-  /// atan2(y, x) over intervals (y > 0 here, so no branch cut is crossed).
-  friend Interval atan2(const Interval& y, const Interval& x) {
-    Interval r(y.precision());
-    mpfi_atan2(r.v_, y.v_, x.v_);
-    return r;
-  }
+  /// atan2(y, x) over intervals (y > 0 here, so no branch cut is crossed). Where x > 0 and
+  /// y >= 0 it is atan(y/x), enclosed from one correctly rounded atan at the quotient's
+  /// midpoint: |atan'| <= 1, so the quotient's radius plus one ulp covers the interval (half
+  /// the cost of mpfi_atan2, which evaluates both ends).
+  friend Interval atan2(const Interval& y, const Interval& x);
 
  private:
   mpfi_t v_;
