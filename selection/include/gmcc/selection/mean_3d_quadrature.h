@@ -10,8 +10,8 @@ namespace gmcc {
 /// The 3-D mean as the weighted planar centroid (MATH §1a.3)
 ///   m = ∫_F (a, b) w dA / ∫_F w dA,   w = (1 + a² + b²)^-2,
 /// by Duffy-collapsed n×n Gauss–Legendre on the fan triangles of F (docs/math.md §2 "Quadrature";
-/// Duffy 1982): s = u, t = v(1 − u), Jacobian (1 − u). Written in offsets from the fan apex v0 —
-/// the vertex nearest the origin — formed exactly and rounded once, so small polygons do not
+/// Duffy 1982): s = u, t = v(1 − u), Jacobian (1 − u). Written in offsets from the fan apex v0
+/// (F's first vertex), formed exactly and rounded once, so small polygons do not
 /// cancel; the apex is added back exactly and the sum rounded once (MPFR). Each fan triangle's
 /// Jacobian is its exact area, rounded once; its midpoint pieces take exactly a quarter each, so
 /// slivers keep their width. The rule is exact for polynomials of total degree 2n − 1; the
@@ -21,7 +21,7 @@ namespace gmcc {
 /// A segment is integrated the same way along its length with w = |(a, b, 1)|^-3 (the planar
 /// fan's centroid: the bisector of SPEC §2); a point is itself (exact).
 /// `error_bounds[k]`: the truncation estimate 2·|Q_n − Q_2n| plus a rigorous bound on both rules'
-/// rounding errors (weights, node positions, Neumaier-compensated sums), around the reported
+/// rounding errors (weights, node positions, row sums added with Neumaier's compensation), around the reported
 /// double (docs/math.md §2 "Error statement"); the reported map is Q_n, and `correctly_rounded[k]`
 /// says whether Q_n ± that statement lies in one rounding interval. Where no trustworthy
 /// statement can be made (the weight leaves the long double's range, or the subdivision limit is
