@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace gmcc::internal {
 namespace {
@@ -79,6 +80,15 @@ std::optional<double> single_rounding(const Interval& x) {
   const double a = mpfr_get_d(lo.v, MPFR_RNDN), b = mpfr_get_d(hi.v, MPFR_RNDN);
   if (a != b || !std::isfinite(a)) return std::nullopt;
   return a;
+}
+
+bool beyond_doubles(const Interval& x) {
+  if (!bounded(x)) return false;
+  Mpfr lo(x.precision()), hi(x.precision());
+  mpfi_get_left(lo.v, x.get());
+  mpfi_get_right(hi.v, x.get());
+  const double largest = std::numeric_limits<double>::max();
+  return mpfr_cmp_d(lo.v, largest) > 0 || mpfr_cmp_d(hi.v, -largest) < 0;
 }
 
 bool bounded(const Interval& x) { return !mpfi_nan_p(x.get()) && mpfi_bounded_p(x.get()); }

@@ -226,12 +226,22 @@ MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options
   const unsigned cap = std::max(rounding_cap_bits, 4 * bits);
   for (;; bits *= 2) {
     const auto m = direction_map<Interval>(F, [bits](const Rational& q) { return Interval(q, bits); });
-    bool bounded = true, rounded = true;
+    bool bounded = true, rounded = true, beyond = false;
     for (int k = 0; k < 2; ++k) {
       const auto [lo, hi] = internal::bounded(m[k]) ? internal::outward_doubles(m[k])
                                                     : std::pair<double, double>(NAN, NAN);
       bounded = bounded && std::isfinite(lo) && std::isfinite(hi);
       rounded = rounded && internal::single_rounding(m[k]).has_value();
+      // A finite enclosure wholly beyond the largest double: no precision gives a double map.
+      beyond = beyond || internal::beyond_doubles(m[k]);
+    }
+    if (beyond) {
+      e.precision_bits = bits;
+      e.valid = false;
+      e.enclosure.reset();
+      e.note = "the 3-D mean lies beyond the range of doubles (above 1.8e308): it has no map to "
+               "report";
+      return e;
     }
     if (!forced && !(bounded && rounded) && bits < (bounded ? cap : max_bits)) continue;
     e.precision_bits = bits;

@@ -322,6 +322,12 @@ MapEstimate mean_3d_quadrature(const ConvexSet2& F, unsigned order) {
     e.error_bounds[k] = std::max({mpfr_get_d(reach_lo.v, MPFR_RNDU), mpfr_get_d(reach_hi.v, MPFR_RNDU), 0.0});
   }
   e.error_bound = std::max(e.error_bounds[0], e.error_bounds[1]);
+  if (!std::isfinite(e.map[0]) || !std::isfinite(e.map[1])) {
+    e = MapEstimate{"mean_3d", "quadrature"};
+    e.quadrature_order = order;
+    e.valid = false;
+    e.note = "the 3-D mean lies beyond the range of doubles (above 1.8e308): it has no map to report";
+  }
   return e;
 }
 

@@ -149,6 +149,60 @@ BOOST_AUTO_TEST_CASE(monte_carlo_is_reproducible_and_refuses_tiny_sets) {
   BOOST_TEST(tiny.note.find("too small") != std::string::npos);
 }
 
+// A segment whose ends are equally far from the origin has the bisector (u1 + u2)/2 as its
+// mean: with u1 = (1, 1 + 2^-52, 1), u2 = (1 + 2^-52, 1, 1) that is 1 + 2^-53 in both
+// coordinates, exactly the midpoint between the doubles 1 and 1 + 2^-52. No enclosure can lie
+// inside one rounding interval: the analytic route must stop at its cap, say so, and still
+// bound the error; a forced precision says so too.
+BOOST_AUTO_TEST_CASE(analytic_at_a_rounding_tie_stops_at_the_cap_and_says_so) {
+  const Rational one(1), next(Rational(1) + Rational(1, mpz_class(1) << 52));
+  const ConvexSet2 F = convex_hull({{one, next}, {next, one}});
+  BOOST_REQUIRE(F.kind == ConvexKind::segment);
+  const MapEstimate e = mean_3d(F, {Mean3dMethod::analytic});
+  BOOST_TEST(e.valid);
+  BOOST_TEST(e.precision_bits >= 8192u);
+  BOOST_TEST(!e.note.empty());
+  const Rational truth = Rational(1) + Rational(1, mpz_class(1) << 53);
+  for (int k = 0; k < 2; ++k) {
+    BOOST_TEST(!e.correctly_rounded[k]);
+    BOOST_TEST((e.map[k] == 1.0 || e.map[k] == std::nextafter(1.0, 2.0)));
+    BOOST_TEST(rational_from_double(e.error_bounds[k]) >= abs(Rational(rational_from_double(e.map[k]) - truth)));
+  }
+  const MapEstimate forced = mean_3d(F, {Mean3dMethod::analytic, 200});
+  BOOST_TEST(forced.precision_bits == 200u);
+  BOOST_TEST((!forced.correctly_rounded[0] && !forced.note.empty()));
+  // Away from the tie the same kind of segment is decided at once.
+  const MapEstimate off = mean_3d(convex_hull({{one, next}, {Rational(next + next - 1), one}}),
+                                  {Mean3dMethod::analytic});
+  BOOST_TEST((off.correctly_rounded[0] && off.correctly_rounded[1] && off.note.empty()));
+}
+
+// Where the weight (1 + |x|²)^-2 leaves the long double's range (|x| beyond ~10^1233) the
+// quadrature cannot state its error: no map, and a note, never a silently wrong number.
+BOOST_AUTO_TEST_CASE(quadrature_declines_beyond_the_extended_range) {
+  const Rational big(mpz_class("1" + std::string(1300, '0')));
+  const ConvexSet2 F = convex_hull({{big, big}, {Rational(2 * big), big}, {big, Rational(3 * big)}});
+  BOOST_REQUIRE(F.kind == ConvexKind::polygon);
+  const MapEstimate q = mean_3d(F, {Mean3dMethod::quadrature, 0, 12});
+  BOOST_TEST(!q.valid);
+  BOOST_TEST(q.note.find("quadrature cannot") != std::string::npos);
+  // Such a map is beyond the doubles anyway: the analytic route says so at once (it used to
+  // double its precision to 2^20 bits first), and so does quadrature just beyond 1.8e308.
+  const MapEstimate a = mean_3d(F, {Mean3dMethod::analytic});
+  BOOST_TEST((!a.valid && a.note.find("beyond the range of doubles") != std::string::npos));
+  const Rational far(mpz_class("1" + std::string(309, '0')));
+  const ConvexSet2 G = convex_hull({{far, far}, {Rational(2 * far), far}, {far, Rational(3 * far)}});
+  const MapEstimate q2 = mean_3d(G, {Mean3dMethod::quadrature, 0, 12});
+  BOOST_TEST((!q2.valid && q2.note.find("beyond the range of doubles") != std::string::npos));
+  // Just inside the range both routes answer and agree.
+  const Rational near(mpz_class("1" + std::string(300, '0')));
+  const ConvexSet2 H = convex_hull({{near, near}, {Rational(2 * near), near}, {near, Rational(3 * near)}});
+  const MapEstimate a3 = mean_3d(H, {Mean3dMethod::analytic}), q3 = mean_3d(H, {Mean3dMethod::quadrature, 0, 12});
+  BOOST_TEST((a3.valid && q3.valid && a3.correctly_rounded[0] && a3.correctly_rounded[1]));
+  for (int k = 0; k < 2; ++k)
+    BOOST_TEST(std::fabs(a3.map[k] - q3.map[k]) <= a3.error_bounds[k] + q3.error_bounds[k]);
+}
+
 BOOST_AUTO_TEST_CASE(method_names_round_trip) {
   for (Mean3dMethod m : {Mean3dMethod::analytic, Mean3dMethod::quadrature, Mean3dMethod::monte_carlo})
     BOOST_TEST((mean3d_method_from_string(to_string(m)) == m));

@@ -87,6 +87,10 @@ std::pair<double, double> outward_doubles(const Interval& x);
 /// between them, the true one included. Empty when a rounding boundary lies inside.
 std::optional<double> single_rounding(const Interval& x);
 
+/// True when the interval is bounded and lies wholly beyond the largest finite double (either
+/// sign): no precision can give a double inside it.
+bool beyond_doubles(const Interval& x);
+
 /// True when neither end is infinite or NaN.
 bool bounded(const Interval& x);
 

@@ -36,8 +36,11 @@ struct LDInterval {
     const long double p[] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
     return around(*std::min_element(p, p + 4), *std::max_element(p, p + 4));
   }
-  /// If 0 ∈ b the quotients have both signs: the result is never tight, so it is never used.
+  /// If 0 ∈ b the quotient is unbounded: the whole line (the four end quotients would give a
+  /// bounded, wrong interval — [−7e-385, 7e-385] for a map near 1e400 — which rounds to ±0).
   friend LDInterval operator/(LDInterval a, LDInterval b) {
+    if (!(b.lo > 0 || b.hi < 0))
+      return {-std::numeric_limits<long double>::infinity(), std::numeric_limits<long double>::infinity()};
     const long double p[] = {a.lo / b.lo, a.lo / b.hi, a.hi / b.lo, a.hi / b.hi};
     return around(*std::min_element(p, p + 4), *std::max_element(p, p + 4));
   }
