@@ -130,6 +130,29 @@ void check_nearest(const Prepared& p, const MapEstimate& e, int k) {
 
 }  // namespace
 
+namespace {
+// One quadrature answer on a prepared case: without a map it must say why; with one, its
+// statement covers the error per coordinate, error_bound is the larger, and a coordinate
+// flagged correctly rounded is the nearest double. Its ratio goes into the table.
+void check_quadrature(const Prepared& p, const MapEstimate& e, const std::string& route,
+                      const std::string& category, RatioTable& table) {
+  if (!e.valid) {
+    BOOST_TEST(!e.note.empty(), p.c.name << " " << route << ": invalid without a note");
+    table.add(route, category, 0, false, false);
+    return;
+  }
+  BOOST_TEST(e.error_bound == std::max(e.error_bounds[0], e.error_bounds[1]), p.c.name);
+  double ratio = 0;
+  bool exceeded = false;
+  for (int k = 0; k < 2; ++k) {
+    ratio = std::max(ratio, p.ref->error_ratio(e.map[k], e.error_bounds[k], k));
+    exceeded |= !check_covered(p, e, k);
+    if (e.correctly_rounded[k]) check_nearest(p, e, k);
+  }
+  table.add(route, category, ratio, exceeded);
+}
+}  // namespace
+
 BOOST_AUTO_TEST_SUITE(mean_3d_honesty)
 
 // The reference's own check: 2048 and 4096 bits agree within 2^-1848 relative on every case.
@@ -225,20 +248,7 @@ BOOST_AUTO_TEST_CASE(quadrature_estimates_cover_their_errors) {
     for (const Prepared& p : prepared()) {
       if (!p.ref) continue;
       const MapEstimate e = order == 12 ? mean_3d_quadrature(p.c.set) : mean_3d_quadrature(p.c.set, order);
-      if (!e.valid) {
-        BOOST_TEST(!e.note.empty(), p.c.name << " order " << order << ": invalid without a note");
-        table.add(route, p.c.category, 0, false, false);
-        continue;
-      }
-      BOOST_TEST(e.error_bound == std::max(e.error_bounds[0], e.error_bounds[1]), p.c.name);
-      double ratio = 0;
-      bool exceeded = false;
-      for (int k = 0; k < 2; ++k) {
-        ratio = std::max(ratio, p.ref->error_ratio(e.map[k], e.error_bounds[k], k));
-        exceeded |= !check_covered(p, e, k);
-        if (e.correctly_rounded[k]) check_nearest(p, e, k);
-      }
-      table.add(route, p.c.category, ratio, exceeded);
+      check_quadrature(p, e, route, p.c.category, table);
     }
   }
   table.report();
@@ -250,20 +260,8 @@ BOOST_AUTO_TEST_CASE(quadrature_on_the_thin_triangle_at_every_order) {
   BOOST_REQUIRE(p.ref.has_value());
   RatioTable table;
   for (const unsigned order : {8u, 16u, 32u, 64u}) {
-    const MapEstimate e = mean_3d_quadrature(p.c.set, order);
-    if (!e.valid) {
-      BOOST_TEST(!e.note.empty(), "order " << order);
-      table.add("quadrature-" + std::to_string(order), "reproducer", 0, false, false);
-      continue;
-    }
-    double ratio = 0;
-    bool exceeded = false;
-    for (int k = 0; k < 2; ++k) {
-      ratio = std::max(ratio, p.ref->error_ratio(e.map[k], e.error_bounds[k], k));
-      exceeded |= !check_covered(p, e, k);
-      if (e.correctly_rounded[k]) check_nearest(p, e, k);
-    }
-    table.add("quadrature-" + std::to_string(order), "reproducer", ratio, exceeded);
+    check_quadrature(p, mean_3d_quadrature(p.c.set, order), "quadrature-" + std::to_string(order),
+                     "reproducer", table);
   }
   table.report();
 }

@@ -181,16 +181,23 @@ ConvexSet2 random_set(Rng& rng) {
   }
 }
 
+// A frame of relative thickness `thin` around a centre near 1 (decimal exponent in [-1, 1)),
+// along a random, radial or transverse direction, with a radius of 10^-2 … 10 halved, capped
+// so the set stays in the quadrant (the slivers' and the nearly collinear sets' common part).
+Frame thin_frame(Rng& rng, const Rational& thin) {
+  const Point2 c{log_uniform(rng, -1, 1), log_uniform(rng, -1, 1)};
+  const unsigned dir = static_cast<unsigned>(uniform_below(rng, 3));
+  Frame f = frame(rng, c, dir, thin, 1);
+  f.r = std::min(Rational(log_uniform(rng, -2, 1) / 2), f.max_radius());
+  return f;
+}
+
 // sliver: 3–40 vertices, c + r·(x·d + y·ε·n), ε = 10^-k with k in [6, 15], along a random,
 // radial or transverse direction.
 ConvexSet2 sliver_set(Rng& rng) {
   const unsigned n = static_cast<unsigned>(uniform_int(rng, 3, 40));
   const Rational eps = power_of_ten(-static_cast<int>(uniform_int(rng, 6, 15)));
-  const Point2 c{log_uniform(rng, -1, 1), log_uniform(rng, -1, 1)};
-  const unsigned dir = static_cast<unsigned>(uniform_below(rng, 3));
-  Frame f = frame(rng, c, dir, eps, 1);
-  f.r = std::min(Rational(log_uniform(rng, -2, 1) / 2), f.max_radius());
-  return hull_of(f, circle_points(rng, n));
+  return hull_of(thin_frame(rng, eps), circle_points(rng, n));
 }
 
 // far / small: 3–12 vertices around a centre whose coordinates have decimal exponents in
@@ -218,10 +225,7 @@ ConvexSet2 far_or_small_set(Rng& rng, bool far) {
 ConvexSet2 collinear_set(Rng& rng) {
   const unsigned n = static_cast<unsigned>(uniform_int(rng, 3, 30));
   const Rational h = power_of_ten(-static_cast<int>(uniform_int(rng, 3, 14)));
-  const Point2 c{log_uniform(rng, -1, 1), log_uniform(rng, -1, 1)};
-  const unsigned dir = static_cast<unsigned>(uniform_below(rng, 3));
-  Frame f = frame(rng, c, dir, h, 1);
-  f.r = std::min(Rational(log_uniform(rng, -2, 1) / 2), f.max_radius());
+  const Frame f = thin_frame(rng, h);
   std::set<long> ks{0, 1 << 20};
   while (ks.size() < n) ks.insert(uniform_int(rng, 1, (1 << 20) - 1));
   std::vector<Point2> p;
