@@ -197,7 +197,8 @@ Frame thin_frame(Rng& rng, const Rational& thin) {
 ConvexSet2 sliver_set(Rng& rng) {
   const unsigned n = static_cast<unsigned>(uniform_int(rng, 3, 40));
   const Rational eps = power_of_ten(-static_cast<int>(uniform_int(rng, 6, 15)));
-  return hull_of(thin_frame(rng, eps), circle_points(rng, n));
+  const Frame f = thin_frame(rng, eps);  // drawn before the points (argument order is unspecified)
+  return hull_of(f, circle_points(rng, n));
 }
 
 // far / small: 3–12 vertices around a centre whose coordinates have decimal exponents in
