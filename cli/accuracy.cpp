@@ -39,7 +39,7 @@ namespace fs = std::filesystem;
 // The test polygon P(w): the hull of centre + w·o_i, each coordinate clipped to >= 1/100 so that
 // the widest (w = 10) stays in the positive quadrant; only w = 10 is clipped. The o_i are a
 // strictly convex, counter-clockwise 7-gon of height 1 (and width 19/20) with no symmetry;
-// the centre is MATH §1a.7's (1.1, 0.7).
+// the centre (1.1, 0.7) is that of the cancellation example in docs/accuracy.md.
 const char* const centre_text[2] = {"11/10", "7/10"};
 const char* const offset_text[7][2] = {{"1/2", "0"},     {"3/10", "2/5"},   {"-1/10", "1/2"},
                                        {"-9/20", "1/5"}, {"-2/5", "-3/10"}, {"-1/20", "-1/2"},
@@ -47,7 +47,7 @@ const char* const offset_text[7][2] = {{"1/2", "0"},     {"3/10", "2/5"},   {"-1
 const char* const clip_text = "1/100";
 const char* const width_text[] = {"10",   "1",    "1e-1", "1e-2",  "1e-3",  "1e-4",  "1e-5",
                                   "1e-6", "1e-7", "1e-8", "1e-9", "1e-10", "1e-11", "1e-12"};
-// MATH §1a.7 asks for >= 53 + 2·log2(1/ε) + ~20 bits (~175 at w = 1e-12): 4096 is far beyond.
+// The cancellation (docs/accuracy.md "Reading") asks for >= 53 + 2·log2(1/ε) + ~20 bits (~175 at w = 1e-12): 4096 is far beyond.
 constexpr unsigned reference_bits = 4096;
 constexpr unsigned quadrature_orders[] = {2, 4, 8, 16};
 constexpr std::uint64_t monte_carlo_counts[] = {10000, 100000, 1000000, 10000000};
@@ -289,7 +289,7 @@ std::string table(const std::vector<WidthResult>& results, const Settings& o) {
     }
   }
   out << "Monte Carlo, N points in [0,1)^3, mt19937_64 seed " << o.seed
-      << " (MATH 1a.5): error / standard error (points kept)\n"
+      << " (docs/math.md 2): error / standard error (points kept)\n"
       << columns(mc);
   return out.str();
 }

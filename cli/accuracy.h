@@ -1,8 +1,8 @@
 #pragma once
 // `gmcc accuracy`: how accurate is each route to the 3-D mean (Finlayson & Hordley 1999 §3.2)?
 // The study behind docs/accuracy.md: on a fixed 7-gon of width w = 10 … 1e-12 around the map
-// (1.1, 0.7), the error of the double closed form (MATH §1a.7), the certified closed form,
-// Duffy–Gauss–Legendre quadrature (MATH §1c) and Monte Carlo (MATH §1a.5) against a 4096-bit
+// (1.1, 0.7), the error of the double closed form (docs/accuracy.md "Reading"), the certified closed form,
+// Duffy–Gauss–Legendre quadrature and Monte Carlo (docs/math.md §2) against a 4096-bit
 // certified enclosure.
 
 #include <CLI/CLI.hpp>

@@ -15,6 +15,19 @@ struct Mpfr {
 };
 }  // namespace
 
+Interval::Interval(long double lo, long double hi, mpfr_prec_t bits) : Interval(bits) {
+  Mpfr a(bits), b(bits);
+  mpfr_set_ld(a.v, lo, MPFR_RNDD);
+  mpfr_set_ld(b.v, hi, MPFR_RNDU);
+  mpfi_interv_fr(v_, a.v, b.v);
+}
+
+RoundedEnclosure round_to_double(const Interval& x) {
+  const std::optional<double> r = single_rounding(x);
+  const auto [value, bound] = r ? bound_from(x, *r) : nearest_with_bound(x);
+  return {value, bound, r.has_value()};
+}
+
 Interval atan2(const Interval& y, const Interval& x) {
   const mpfr_prec_t p = y.precision();
   Interval r(p);

@@ -7,7 +7,6 @@
 #include <array>
 #include <cmath>
 #include <optional>
-#include <tuple>
 #include <stdexcept>
 #include <utility>
 
@@ -158,6 +157,21 @@ void report(MapEstimate& e, int k, const LDInterval& x, double value) {
   (*e.enclosure)[k] = {lo, hi};
 }
 
+// Both components from certified MPFI enclosures at `bits`: each reported as one double
+// (correctly rounded when its enclosure allows), with its bound and outward enclosure.
+void report(MapEstimate& e, const std::array<Interval, 2>& m, unsigned bits) {
+  e.precision_bits = bits;
+  for (int k = 0; k < 2; ++k) {
+    const auto [lo, hi] = internal::outward_doubles(m[k]);
+    (*e.enclosure)[k] = {lo, hi};
+    const internal::RoundedEnclosure r = internal::round_to_double(m[k]);
+    e.map[k] = r.value;
+    e.error_bounds[k] = r.bound;
+    e.correctly_rounded[k] = r.correctly_rounded;
+  }
+  e.error_bound = std::max(e.error_bounds[0], e.error_bounds[1]);
+}
+
 // The fast path's answer when both components' enclosures round to one double each.
 bool report_if_rounded(MapEstimate& e, const std::array<LDInterval, 2>& m) {
   const std::optional<double> r0 = single_rounding(m[0]), r1 = single_rounding(m[1]);
@@ -202,15 +216,8 @@ MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options
     // on long rationals. This stage is what correct rounding costs (docs/performance.md).
     const auto m = direction_map_from_vertices<Interval>(
         F, [](const Rational& q) { return Interval(q, middle_stage_bits); });
-    const std::optional<double> r0 = internal::single_rounding(m[0]), r1 = internal::single_rounding(m[1]);
-    if (r0 && r1) {
-      e.precision_bits = middle_stage_bits;
-      for (int k = 0; k < 2; ++k) {
-        (*e.enclosure)[k] = {internal::outward_doubles(m[k]).first, internal::outward_doubles(m[k]).second};
-        std::tie(e.map[k], e.error_bounds[k]) = internal::bound_from(m[k], k == 0 ? *r0 : *r1);
-        e.correctly_rounded[k] = true;
-      }
-      e.error_bound = std::max(e.error_bounds[0], e.error_bounds[1]);
+    if (internal::single_rounding(m[0]) && internal::single_rounding(m[1])) {
+      report(e, m, middle_stage_bits);
       return e;
     }
   }
@@ -253,15 +260,7 @@ MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options
                "from 0): raise the precision, or leave it automatic";
       return e;
     }
-    for (int k = 0; k < 2; ++k) {
-      (*e.enclosure)[k] = {internal::outward_doubles(m[k]).first, internal::outward_doubles(m[k]).second};
-      const std::optional<double> r = internal::single_rounding(m[k]);
-      const auto [value, bound] = r ? internal::bound_from(m[k], *r) : internal::nearest_with_bound(m[k]);
-      e.map[k] = value;
-      e.error_bounds[k] = bound;
-      e.correctly_rounded[k] = r.has_value();
-    }
-    e.error_bound = std::max(e.error_bounds[0], e.error_bounds[1]);
+    report(e, m, bits);
     if (!e.correctly_rounded[0] || !e.correctly_rounded[1])
       e.note = forced ? "at the forced precision of " + std::to_string(bits) +
                             " bits the enclosure does not decide the nearest double: the map "

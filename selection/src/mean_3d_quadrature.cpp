@@ -1,6 +1,6 @@
 #include <gmcc/selection/mean_3d_quadrature.h>
 
-#include <mpfr.h>
+#include "internal/interval.h"
 
 #include <algorithm>
 #include <cmath>
@@ -258,21 +258,6 @@ Centroid offset_centroid(const std::vector<Point2>& v, ConvexKind kind, unsigned
   return out;
 }
 
-struct Mpfr {
-  Mpfr() { mpfr_init2(v, 320); }
-  ~Mpfr() { mpfr_clear(v); }
-  Mpfr(const Mpfr&) = delete;
-  Mpfr& operator=(const Mpfr&) = delete;
-  mpfr_t v;
-};
-
-// r = r + x, rounded once in the direction rnd (x is a long double: exact in 320 bits).
-void add_ld(Mpfr& r, long double x, mpfr_rnd_t rnd) {
-  Mpfr t;
-  mpfr_set_ld(t.v, x, MPFR_RNDN);
-  mpfr_add(r.v, r.v, t.v, rnd);
-}
-
 }  // namespace
 
 MapEstimate mean_3d_quadrature(const ConvexSet2& F, unsigned order) {
@@ -298,36 +283,26 @@ MapEstimate mean_3d_quadrature(const ConvexSet2& F, unsigned order) {
              (coarse.ok ? fine.why : coarse.why) + "; use the analytic route";
     return e;
   }
-  // Per coordinate: map = v0 + c_n rounded once; the statement covers the truncation
-  // (2·|c_n − c_2n|) and both rules' rounding; [lo, hi] = v0 + c_n ∓ it, rounded outward.
+  // Per coordinate: the statement covers the truncation (2·|c_n − c_2n|) and both rules'
+  // rounding; v0 + c_n ± it is enclosed outward (320 bits hold v0's rounding far below it) and
+  // reported as one double like the closed form's enclosures.
   for (int k = 0; k < 2; ++k) {
     const long double estimate =
         2 * std::fabs(coarse.c[k] - fine.c[k]) + coarse.rounding[k] + fine.rounding[k];
-    const Rational& apex = k == 0 ? v[0].x : v[0].y;
-    Mpfr value, lo, hi, reach_lo, reach_hi;
-    mpfr_set_q(value.v, apex.get_mpq_t(), MPFR_RNDN);
-    add_ld(value, coarse.c[k], MPFR_RNDN);
-    mpfr_set_q(lo.v, apex.get_mpq_t(), MPFR_RNDD);
-    add_ld(lo, coarse.c[k], MPFR_RNDD);
-    add_ld(lo, -estimate, MPFR_RNDD);
-    mpfr_set_q(hi.v, apex.get_mpq_t(), MPFR_RNDU);
-    add_ld(hi, coarse.c[k], MPFR_RNDU);
-    add_ld(hi, estimate, MPFR_RNDU);
-    const double lo_nearest = mpfr_get_d(lo.v, MPFR_RNDN), hi_nearest = mpfr_get_d(hi.v, MPFR_RNDN);
-    e.correctly_rounded[k] = lo_nearest == hi_nearest;
-    e.map[k] = e.correctly_rounded[k] ? lo_nearest : mpfr_get_d(value.v, MPFR_RNDN);
-    mpfr_sub_d(reach_lo.v, lo.v, e.map[k], MPFR_RNDD);
-    mpfr_neg(reach_lo.v, reach_lo.v, MPFR_RNDU);
-    mpfr_sub_d(reach_hi.v, hi.v, e.map[k], MPFR_RNDU);
-    e.error_bounds[k] = std::max({mpfr_get_d(reach_lo.v, MPFR_RNDU), mpfr_get_d(reach_hi.v, MPFR_RNDU), 0.0});
+    const internal::Interval x = internal::Interval(k == 0 ? v[0].x : v[0].y, 320) +
+                                 internal::Interval(coarse.c[k], coarse.c[k], 320) +
+                                 internal::Interval(-estimate, estimate, 320);
+    const internal::RoundedEnclosure r = internal::round_to_double(x);
+    if (internal::beyond_doubles(x) || !std::isfinite(r.value)) {
+      e.valid = false;
+      e.note = "the 3-D mean lies beyond the range of doubles (above 1.8e308): it has no map to report";
+      return e;
+    }
+    e.map[k] = r.value;
+    e.error_bounds[k] = r.bound;
+    e.correctly_rounded[k] = r.correctly_rounded;
   }
   e.error_bound = std::max(e.error_bounds[0], e.error_bounds[1]);
-  if (!std::isfinite(e.map[0]) || !std::isfinite(e.map[1])) {
-    e = MapEstimate{"mean_3d", "quadrature"};
-    e.quadrature_order = order;
-    e.valid = false;
-    e.note = "the 3-D mean lies beyond the range of doubles (above 1.8e308): it has no map to report";
-  }
   return e;
 }
 

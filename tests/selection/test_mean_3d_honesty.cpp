@@ -167,9 +167,9 @@ BOOST_AUTO_TEST_CASE(reference_agrees_with_itself_at_twice_the_precision) {
 }
 
 // The reference against the paper and against cases built to defeat it: Finlayson & Hordley's
-// toy segment (3, 2)–(1/3, 2/3) has 3-D mean exactly (1, 1) (MATH §1a.6). The P-vs-2P check
+// toy segment (3, 2)–(1/3, 2/3) has 3-D mean exactly (1, 1) (docs/math.md §2, degenerate F). The P-vs-2P check
 // allows 200 bits of cancellation: a triangle of relative width 10^-70 cancels about 233 bits
-// (τ is O(ε) against O(1) edge terms, MATH §1a.7), so its check must throw, while 10^-50 (about
+// (τ is O(ε) against O(1) edge terms, docs/accuracy.md "Reading"), so its check must throw, while 10^-50 (about
 // 166 bits) must pass.
 BOOST_AUTO_TEST_CASE(reference_meets_the_paper_and_its_check_bites) {
   const Mean3dReference toy = test::mean_3d_reference_checked(

@@ -1,5 +1,5 @@
 // The seeded generator of hard convex sets for the 3-D mean (Finlayson & Hordley 1999 §3.2;
-// docs/math.md §2; MATH §1a.7 on why thin and far sets are hard: the edge terms of the closed
+// docs/math.md §2 and docs/accuracy.md "Reading" on why thin and far sets are hard: the edge terms of the closed
 // form are O(w) while τ is O(w²), and quadrature's integrand varies on the scale √(1 + |x|²)).
 //
 // Everything is exact and platform-independent:

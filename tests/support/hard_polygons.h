@@ -1,6 +1,6 @@
 #pragma once
 // A seeded, named generator of hard convex sets for the 3-D mean (Finlayson & Hordley 1999 §3.2;
-// docs/math.md §2; MATH §1a.7 on thin sets): exact rational vertices in the positive quadrant,
+// docs/math.md §2 and docs/accuracy.md "Reading" on thin sets): exact rational vertices in the positive quadrant,
 // by category, plus the two fixed reproducers of the accuracy audit. Used by
 // tests/selection/test_mean_3d_honesty.cpp and bench/accuracy_sweep.cpp.
 //

@@ -1,4 +1,4 @@
-// The independent MPFR reference of the 3-D mean (Finlayson & Hordley 1999 §3.2; MATH §1a.2 and
+// The independent MPFR reference of the 3-D mean (Finlayson & Hordley 1999 §3.2;
 // docs/math.md §2, "Closed form"), written from the formula only: exact rational edge data, then plain MPFR
 // (round to nearest at one precision throughout), then a P-vs-2P self-check.
 #include "mean_3d_reference.h"
@@ -51,7 +51,7 @@ std::string to_text(mpfr_srcptr x, int digits = 25) {
   return buffer;
 }
 
-// Polygon, MATH §1a.2 closed form (Lambert; Arvo 1995): τ = Σ_i θ_i c_i/|c_i| with the
+// Polygon, the closed form of docs/math.md §2 (Lambert; Arvo 1995): τ = Σ_i θ_i c_i/|c_i| with the
 // edge data c_i = p_i × p_{i+1}, d_i = p_i·p_{i+1} and |c_i|² exact in ℚ. The common factor ½
 // and the orientation sign cancel in the map (τ1/τ3, τ2/τ3).
 std::array<Mpfr, 2> polygon_mean(const std::vector<Point2>& v, mpfr_prec_t prec) {
@@ -84,7 +84,7 @@ std::array<Mpfr, 2> polygon_mean(const std::vector<Point2>& v, mpfr_prec_t prec)
   return m;
 }
 
-// Segment, MATH §1a.6 (docs/math.md §2): the perspective of û1 + û2, û = u/|u|, u = (a, b, 1);
+// Segment, docs/math.md §2, degenerate F: the perspective of û1 + û2, û = u/|u|, u = (a, b, 1);
 // with w = 1/|u| (|u|² exact in ℚ): ((a1·w1 + a2·w2)/(w1 + w2), (b1·w1 + b2·w2)/(w1 + w2)).
 std::array<Mpfr, 2> segment_mean(const Point2& u1, const Point2& u2, mpfr_prec_t prec) {
   Mpfr w1(prec), w2(prec), s(prec), t(prec);
@@ -176,7 +176,7 @@ Coverage Mean3dReference::inside(double lo, double hi, int k) const {
 // ---- evaluation -----------------------------------------------------------------------------
 
 // Finlayson & Hordley 1999 §3.2: the centroid of cone(F) ∩ unit ball, projected to d3 = 1, by
-// the closed form of MATH §1a.2 (polygon), the segment convention of MATH §1a.6, or the point.
+// the closed form of docs/math.md §2 (polygon), its segment convention, or the point.
 Mean3dReference mean_3d_reference(const ConvexSet2& F, unsigned precision_bits) {
   const mpfr_prec_t prec = static_cast<mpfr_prec_t>(precision_bits);
   Mean3dReference r{{Mpfr(prec), Mpfr(prec)}, precision_bits, {false, false}};

@@ -1,14 +1,14 @@
 #pragma once
 // An independent high-precision reference for the 3-D mean (Finlayson & Hordley 1999 §3.2; the
-// closed form of MATH §1a.2, also docs/math.md §2 "The 3-D mean, three independent routes"):
+// closed form of docs/math.md §2, also docs/math.md §2 "The 3-D mean, three independent routes"):
 // plain MPFR at a chosen precision, written from the formula alone (it shares no code with
 // selection/src), for the honesty test (tests/selection/test_mean_3d_honesty.cpp) and
-// bench/accuracy_sweep.cpp. MATH §1a.7's advice is followed: exact rationals before any rounding,
+// bench/accuracy_sweep.cpp. docs/math.md §2's rule is followed: exact rationals before any rounding,
 // and a precision (2048 bits) far beyond the 53 + 2·log2(1/ε) + 20 a width ε needs.
 //
 // Polygon: p_i = (a_i, b_i, 1), c_i = p_i × p_{i+1}, θ_i = atan2(|c_i|, p_i·p_{i+1}),
 // τ = Σ θ_i c_i/|c_i|, map = (τ1/τ3, τ2/τ3). c_i, p_i·p_{i+1} and |c_i|² are formed exactly in
-// GMP rationals and only then rounded. Segment [u1, u2]: the perspective of û1 + û2 (MATH §1a.6).
+// GMP rationals and only then rounded. Segment [u1, u2]: the perspective of û1 + û2 (docs/math.md §2, degenerate F).
 // Point: itself.
 
 #include <gmcc/geometry/convex_set.h>
@@ -77,7 +77,7 @@ Mean3dReference mean_3d_reference(const ConvexSet2& F, unsigned precision_bits =
 /// The self-checked reference: evaluated at P and at 2P bits, which must agree within
 /// 2^-(P-200) relative per coordinate; returns the 2P evaluation with precision_bits = P (its
 /// claimed uncertainty stays 2^-(P-200)). The P-bit error is about 2^-(P-L) for L bits lost to
-/// cancellation (L ≈ log2 of edge terms over τ, MATH §1a.7), so the check passes while L < 200
+/// cancellation (L ≈ log2 of edge terms over τ, docs/accuracy.md "Reading"), so the check passes while L < 200
 /// whatever P is: about 150 bits for the generator's hardest sets, 233 for a relative width 1e-70.
 /// \throws std::runtime_error naming the coordinate and the discrepancy when they do not agree.
 Mean3dReference mean_3d_reference_checked(const ConvexSet2& F, unsigned precision_bits = 2048);

@@ -15,6 +15,8 @@ class Interval {
  public:
   explicit Interval(mpfr_prec_t bits) { mpfi_init2(v_, bits); }
   Interval(const Rational& q, mpfr_prec_t bits) : Interval(bits) { mpfi_set_q(v_, q.get_mpq_t()); }
+  /// [lo, hi] for long doubles lo <= hi, exact when bits >= the long double's significand.
+  Interval(long double lo, long double hi, mpfr_prec_t bits);
   Interval(const Interval& o) : Interval(mpfi_get_prec(o.v_)) { mpfi_set(v_, o.v_); }
   Interval& operator=(const Interval& o) {
     if (this != &o) mpfi_set(v_, o.v_);
@@ -78,6 +80,15 @@ std::pair<double, double> nearest_with_bound(const Interval& x);
 
 /// (value, a rigorous bound on value's distance to every point of x, rounded up).
 std::pair<double, double> bound_from(const Interval& x, double value);
+
+/// A bounded enclosure reported as one double: the double every point of it rounds to when
+/// there is one (single_rounding, `correctly_rounded`), else the double nearest its midpoint;
+/// `bound` covers the distance to every point of it, rounded up.
+struct RoundedEnclosure {
+  double value = 0, bound = 0;
+  bool correctly_rounded = false;
+};
+RoundedEnclosure round_to_double(const Interval& x);
 
 /// The interval's ends rounded outward to doubles.
 std::pair<double, double> outward_doubles(const Interval& x);

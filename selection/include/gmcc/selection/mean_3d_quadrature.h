@@ -7,7 +7,7 @@
 
 namespace gmcc {
 
-/// The 3-D mean as the weighted planar centroid (MATH §1a.3)
+/// The 3-D mean as the weighted planar centroid (docs/math.md §2 "Quadrature")
 ///   m = ∫_F (a, b) w dA / ∫_F w dA,   w = (1 + a² + b²)^-2,
 /// by Duffy-collapsed n×n Gauss–Legendre on the fan triangles of F (docs/math.md §2 "Quadrature";
 /// Duffy 1982): s = u, t = v(1 − u), Jacobian (1 − u). Written in offsets from the fan apex v0
@@ -19,7 +19,7 @@ namespace gmcc {
 /// small beside the distance √(1 + |x|²) to the weight's complex singularities: larger pieces
 /// are split in four (graded, up to 4200 levels) until they are.
 /// A segment is integrated the same way along its length with w = |(a, b, 1)|^-3 (the planar
-/// fan's centroid: the bisector of SPEC §2); a point is itself (exact).
+/// fan's centroid: the bisector of docs/math.md §2); a point is itself (exact).
 /// `error_bounds[k]`: the truncation estimate 2·|Q_n − Q_2n| plus a rigorous bound on both rules'
 /// rounding errors (weights, node positions, row sums added with Neumaier's compensation), around the reported
 /// double (docs/math.md §2 "Error statement"); the reported map is Q_n, and `correctly_rounded[k]`
