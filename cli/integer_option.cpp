@@ -14,12 +14,12 @@ std::uint64_t integer_option(const std::string& name, const std::string& text, s
   Rational value;
   try {
     value = parse_rational(text);
-  } catch (const std::invalid_argument& e) {
-    throw InputError(name, 0, wanted + ": " + e.what());
+  } catch (const std::invalid_argument&) {  // its message would ask for a decimal or p/q
+    throw InputError(name, 0, wanted + ", not " + quoted_text(text));
   }
   if (value.get_den() != 1 || value < Rational(mpz_class(std::to_string(lo))) ||
       value > Rational(mpz_class(std::to_string(hi))))
-    throw InputError(name, 0, wanted + ", not '" + text + "'");
+    throw InputError(name, 0, wanted + ", not " + quoted_text(text));
   return std::stoull(value.get_num().get_str());
 }
 

@@ -63,6 +63,14 @@ void add_output_options(CLI::App* cmd, ReproduceOptions& o) {
       ->capture_default_str();
 }
 
+// At most kMaxLights test lights (docs/cli.md "Resource limits"): each is a column of every table.
+constexpr std::size_t kMaxLights = 64;
+void check_light_count(const std::vector<std::string>& lights) {
+  if (lights.size() > kMaxLights)
+    throw InputError("--lights", 0, std::to_string(lights.size()) + " lights given; at most " +
+                                        std::to_string(kMaxLights));
+}
+
 std::string data_file(const ReproduceOptions& o, const char* name) {
   return (o.data_dir.empty() ? std::string(GMCC_DATA_DIR) : o.data_dir) + "/" + name;
 }
@@ -143,25 +151,45 @@ int report(const ExperimentSetup& setup, ExperimentConfig config, const Reproduc
 ExperimentSetup synthetic(const ReproduceOptions& o) {
   const SpectralTable munsell = read_spectral_csv(data_file(o, "munsell_matt_1269_joensuu_5nm.csv"));
   const SpectralTable basis = read_spectral_csv(data_file(o, "cie_daylight_basis_S0_S1_S2.csv"));
-  try {
-    return synthetic_setup(munsell, basis, o.canonical.empty() ? "D55" : o.canonical,
-                           o.lights.empty() ? paper_lights : o.lights);
-  } catch (const std::invalid_argument& e) {
-    throw InputError("--lights", 0, e.what());
-  } catch (const std::domain_error& e) {
-    throw InputError("--lights", 0, e.what());
-  }
+  const std::string canonical = o.canonical.empty() ? "D55" : o.canonical;
+  const std::vector<std::string>& lights = o.lights.empty() ? paper_lights : o.lights;
+  // Each name checked against its own option first, so a message blames the right one.
+  auto check = [&](const std::string& option, const std::string& name) {
+    try {
+      named_light(name, basis);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(option, 0, e.what());
+    } catch (const std::domain_error& e) {
+      throw InputError(option, 0, e.what());
+    }
+  };
+  check_light_count(lights);
+  check("--canonical", canonical);
+  for (const std::string& name : lights) check("--lights", name);
+  return synthetic_setup(munsell, basis, canonical, lights);
 }
 
 ExperimentSetup camera(const ReproduceOptions& o) {
+  const SpectralTable sfu_lights = read_spectral_csv(data_file(o, "sfu_lab_11_illuminants_4nm.csv"));
+  const std::string canonical = o.canonical.empty() ? "solux-4700" : o.canonical;
+  const std::vector<std::string>& lights = o.lights.empty() ? camera_lights : o.lights;
+  auto check = [&](const std::string& option, const std::string& name) {
+    std::string known;
+    for (const Spectrum& s : sfu_lights.spectra) {
+      if (s.name == name) return;
+      known += (known.empty() ? "" : ", ") + s.name;
+    }
+    throw InputError(option, 0, "unknown light " + quoted_text(name) + " (the SFU lab lights: " + known + ")");
+  };
+  check_light_count(lights);
+  check("--canonical", canonical);
+  for (const std::string& name : lights) check("--lights", name);
   return camera_setup(read_spectral_csv(data_file(o, "camera_sony_dxc930_sfu_4nm.csv")),
                       read_spectral_csv(data_file(o, o.canonical_surfaces == "macbeth"
                                                          ? "sfu_macbeth_24_4nm.csv"
                                                          : "sfu_reflect_db_1995_4nm.csv")),
                       read_spectral_csv(data_file(o, "sfu_macbeth_24_4nm.csv")),
-                      read_spectral_csv(data_file(o, "sfu_lab_11_illuminants_4nm.csv")),
-                      o.canonical.empty() ? "solux-4700" : o.canonical,
-                      o.lights.empty() ? camera_lights : o.lights);
+                      sfu_lights, canonical, lights);
 }
 
 // The expansion sensitivity table: the synthetic experiment with no expansion and with the

@@ -102,7 +102,7 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
                   "(default 0: automatic)");
   cmd->add_option("--order", o.order, "quadrature: Gauss–Legendre points per direction, 1 to 1000")
       ->capture_default_str();
-  cmd->add_option("--samples", o.samples, "monte-carlo: points drawn in the unit cube, 1 to 2^40")
+  cmd->add_option("--samples", o.samples, "monte-carlo: points drawn in the unit cube, 1 to 10^9")
       ->capture_default_str();
   cmd->add_option("--seed", o.seed, "monte-carlo: seed of the mt19937_64 generator, 0 to 2^64-1")
       ->capture_default_str();
@@ -156,8 +156,13 @@ SelectSettings select_settings(const SelectOptions& o) {
     for (const Rational* x : {&s.canonical_illuminant.r, &s.canonical_illuminant.g, &s.canonical_illuminant.b})
       if (sgn(*x) <= 0) throw InputError("--canonical-illuminant", 0, "every channel must be > 0");
   } catch (const InputError& e) {
+    // Keep the reader's reason (a digit limit, a malformed number, a channel <= 0), without its
+    // "--canonical-illuminant:1:" prefix.
+    std::string why = e.what();
+    const std::string prefix = e.file() + (e.line() ? ":" + std::to_string(e.line()) : "") + ": ";
+    if (why.compare(0, prefix.size(), prefix) == 0) why.erase(0, prefix.size());
     throw InputError("--canonical-illuminant", 0,
-                     "'" + o.canonical_illuminant + "' is not a light r,g,b with channels > 0");
+                     quoted_text(o.canonical_illuminant) + " is not a light r,g,b with channels > 0: " + why);
   }
 
   s.mean3d.method = mean3d_method_from_string(o.mean3d_method);
@@ -165,7 +170,7 @@ SelectSettings select_settings(const SelectOptions& o) {
   if (s.mean3d.precision_bits != 0 && s.mean3d.precision_bits < 53)
     throw InputError("--precision", 0, "must be 0 (automatic) or from 53 to 1048576 bits");
   s.mean3d.order = static_cast<unsigned>(integer_option("--order", o.order, 1, 1000));
-  s.mean3d.samples = integer_option("--samples", o.samples, 1, std::uint64_t(1) << 40);
+  s.mean3d.samples = integer_option("--samples", o.samples, 1, 1000000000);
   s.mean3d.seed = integer_option("--seed", o.seed, 0, ~std::uint64_t(0));
   return s;
 }

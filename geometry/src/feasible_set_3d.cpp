@@ -40,19 +40,18 @@ std::vector<mpz_class> integer_row(const std::vector<Rational>& a, const Rationa
 }
 }  // namespace
 
-LpSolution solve_linear_program(const LinearProgram& lp) {
+namespace {
+// One exact simplex run (Bland's rule) on the rows `take` of `lp`; the certificate is indexed like
+// `take`.
+LpSolution solve_rows(const LinearProgram& lp, const std::vector<std::size_t>& take) {
   using Program = CGAL::Quadratic_program<CGAL::Gmpz>;
   const int n = static_cast<int>(lp.variables);
-  if (lp.objective.size() != lp.variables || lp.rows.size() != lp.rhs.size())
-    throw std::invalid_argument("solve_linear_program: inconsistent sizes");
   Program qp(CGAL::SMALLER, false, 0, false, 0);  // rows <=, variables free
-  for (std::size_t i = 0; i < lp.rows.size(); ++i) {
-    if (lp.rows[i].size() != lp.variables)
-      throw std::invalid_argument("solve_linear_program: row of the wrong length");
-    const std::vector<mpz_class> r = integer_row(lp.rows[i], &lp.rhs[i]);
+  for (std::size_t t = 0; t < take.size(); ++t) {
+    const std::vector<mpz_class> r = integer_row(lp.rows[take[t]], &lp.rhs[take[t]]);
     for (int j = 0; j < n; ++j)
-      if (sgn(r[j]) != 0) qp.set_a(j, static_cast<int>(i), to_gmpz(r[j]));
-    qp.set_b(static_cast<int>(i), to_gmpz(r[n]));
+      if (sgn(r[j]) != 0) qp.set_a(j, static_cast<int>(t), to_gmpz(r[j]));
+    qp.set_b(static_cast<int>(t), to_gmpz(r[n]));
   }
   // A positive multiple of c has the same minimisers; the value is recomputed exactly below.
   const std::vector<mpz_class> c = integer_row(lp.objective, nullptr);
@@ -61,8 +60,10 @@ LpSolution solve_linear_program(const LinearProgram& lp) {
   // Make every variable known to the program even when no row or objective term mentions it.
   for (int j = 0; j < n; ++j) qp.set_l(j, false, 0), qp.set_u(j, false, 0);
 
+  CGAL::Quadratic_program_options options;
+  options.set_pricing_strategy(CGAL::QP_BLAND);  // no cycling: a finite number of pivots
   const CGAL::Quadratic_program_solution<CGAL::Gmpz> s =
-      CGAL::solve_linear_program(qp, CGAL::Gmpz());
+      CGAL::solve_linear_program(qp, CGAL::Gmpz(), options);
   LpSolution out;
   if (s.is_infeasible()) return out;
   if (s.is_unbounded()) {
@@ -81,8 +82,51 @@ LpSolution solve_linear_program(const LinearProgram& lp) {
   for (auto it = s.optimality_certificate_numerators_begin();
        it != s.optimality_certificate_numerators_end(); ++it)
     out.tight_in_every_optimum.push_back(CGAL::sign(*it) != CGAL::ZERO);
-  out.tight_in_every_optimum.resize(lp.rows.size(), false);
+  out.tight_in_every_optimum.resize(take.size(), false);
   return out;
+}
+}  // namespace
+
+LpSolution solve_linear_program(const LinearProgram& lp) {
+  if (lp.objective.size() != lp.variables || lp.rows.size() != lp.rhs.size())
+    throw std::invalid_argument("solve_linear_program: inconsistent sizes");
+  for (const std::vector<Rational>& r : lp.rows)
+    if (r.size() != lp.variables) throw std::invalid_argument("solve_linear_program: row of the wrong length");
+  std::vector<std::size_t> all(lp.rows.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+  if (lp.initial.empty()) return solve_rows(lp, all);
+
+  std::vector<bool> taken(lp.rows.size(), false);
+  std::vector<std::size_t> take;
+  for (std::size_t i : lp.initial) {
+    if (i >= lp.rows.size()) throw std::invalid_argument("solve_linear_program: initial row out of range");
+    if (!taken[i]) taken[i] = true, take.push_back(i);
+  }
+  constexpr std::size_t per_round = 64;
+  for (;;) {
+    LpSolution s = solve_rows(lp, take);
+    // Infeasible on a subset: infeasible. Unbounded on a subset says nothing: every row at once.
+    if (s.status == LpStatus::infeasible) return s;
+    if (s.status == LpStatus::unbounded) return solve_rows(lp, all);
+    std::vector<std::pair<Rational, std::size_t>> violated;
+    for (std::size_t i = 0; i < lp.rows.size(); ++i) {
+      if (taken[i]) continue;
+      Rational excess = -lp.rhs[i];
+      for (std::size_t j = 0; j < lp.variables; ++j)
+        if (sgn(lp.rows[i][j]) != 0) excess += lp.rows[i][j] * s.x[j];
+      if (sgn(excess) > 0) violated.emplace_back(std::move(excess), i);
+    }
+    if (violated.empty()) {  // optimal for every row; rows never taken have zero multipliers
+      std::vector<bool> tight(lp.rows.size(), false);
+      for (std::size_t t = 0; t < take.size(); ++t) tight[take[t]] = s.tight_in_every_optimum[t];
+      s.tight_in_every_optimum = std::move(tight);
+      return s;
+    }
+    const std::size_t k = std::min(per_round, violated.size());
+    std::partial_sort(violated.begin(), violated.begin() + static_cast<std::ptrdiff_t>(k), violated.end(),
+                      [](const auto& a, const auto& b) { return a.first > b.first || (a.first == b.first && a.second < b.second); });
+    for (std::size_t t = 0; t < k; ++t) taken[violated[t].second] = true, take.push_back(violated[t].second);
+  }
 }
 
 }  // namespace internal
@@ -312,10 +356,16 @@ ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical_colours,
         lp.rhs.push_back(Rational(-h.b));
         source.push_back(rows.size()), source.push_back(rows.size());
       } else {
+        // The box rows (one non-zero coefficient) bound d: the constraint generation starts there.
+        const int nonzero = (sgn(h.a.x) != 0) + (sgn(h.a.y) != 0) + (sgn(h.a.z) != 0);
+        if (nonzero == 1) lp.initial.push_back(lp.rows.size());
         lp.rows.push_back({h.a.x, h.a.y, h.a.z, 1}), lp.rhs.push_back(h.b);
         source.push_back(i);
       }
     }
+    for (std::size_t r = 0; r < lp.rows.size(); ++r)
+      if (source[r] == rows.size()) lp.initial.push_back(r);  // the equalities
+    lp.initial.push_back(lp.rows.size());  // slack <= 1
     lp.rows.push_back({0, 0, 0, 1}), lp.rhs.push_back(1);
     source.push_back(rows.size());
     const internal::LpSolution s = internal::solve_linear_program(lp);

@@ -72,9 +72,13 @@ MinViolation min_violation(const ConvexSet2& canonical, const std::vector<Point2
       lp.rows.push_back({Rational(h.a * q.x), Rational(h.b * q.y), Rational(-l1(h))});
       lp.rhs.push_back(h.c);
     }
+  // Constraint generation starts from the first image vertex's rows, m >= 0 and C: they bound t
+  // below when G_c is a polygon (otherwise the solver takes every row; docs/math.md §1b).
+  for (std::size_t r = 0; r < planes.size(); ++r) lp.initial.push_back(r);
   lp.rows.push_back({-1, 0, 0}), lp.rhs.push_back(0);
   lp.rows.push_back({0, -1, 0}), lp.rhs.push_back(0);
   for (const HalfPlane& h : hard) lp.rows.push_back({h.a, h.b, 0}), lp.rhs.push_back(h.c);
+  for (std::size_t r = qs.size() * planes.size(); r < lp.rows.size(); ++r) lp.initial.push_back(r);
   const internal::LpSolution s = internal::solve_linear_program(lp);
   if (s.status != internal::LpStatus::optimal)  // t is bounded below by the box half-planes
     throw std::logic_error("min_violation: the linear program is not optimal: a bug");

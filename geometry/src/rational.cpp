@@ -21,29 +21,8 @@ std::string lower(std::string_view s) {
   return out;
 }
 
-// The text as messages show it: at most 40 characters, bytes outside printable ASCII as \xNN,
-// so that binary garbage or a megabyte-long field gives a one-line message.
-std::string quoted(std::string_view text) {
-  constexpr std::size_t shown = 40;
-  std::string out = "'";
-  for (std::size_t i = 0; i < text.size() && i < shown; ++i) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    if (c >= 0x20 && c < 0x7f) {
-      out += static_cast<char>(c);
-    } else {
-      static const char hex[] = "0123456789ABCDEF";
-      out += "\\x";
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    }
-  }
-  out += "'";
-  if (text.size() > shown) out += " (" + std::to_string(text.size()) + " characters)";
-  return out;
-}
-
 [[noreturn]] void malformed(std::string_view text, const char* why) {
-  throw std::invalid_argument(quoted(text) + " is not a number: " + why +
+  throw std::invalid_argument(quoted_text(text) + " is not a number: " + why +
                               " (expected a decimal such as 0.25 or 2.5e-3, or a fraction p/q)");
 }
 
@@ -64,6 +43,26 @@ mpz_class parse_integer(std::string_view text, std::string_view whole, bool allo
 
 }  // namespace
 
+std::string quoted_text(std::string_view text) {
+  constexpr std::size_t shown = 40;
+  std::string out = "'";
+  for (std::size_t i = 0; i < text.size() && i < shown; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f) {
+      out += static_cast<char>(c);
+    } else {
+      static const char hex[] = "0123456789ABCDEF";
+      out += "\\x";
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    }
+  }
+  out += "'";
+  if (text.size() > shown) out += " (" + std::to_string(text.size()) + " characters)";
+  return out;
+}
+
+
 Rational parse_rational(std::string_view text) {
   if (text.empty()) malformed(text, "empty field");
   // Digits before any exponent, counted first so that a long field is refused in O(length).
@@ -73,7 +72,7 @@ Rational parse_rational(std::string_view text) {
     digit_count += is_digit(c);
   }
   if (digit_count > max_number_digits)
-    throw std::invalid_argument(quoted(text) + " has " + std::to_string(digit_count) +
+    throw std::invalid_argument(quoted_text(text) + " has " + std::to_string(digit_count) +
                                 " digits: at most " + std::to_string(max_number_digits) +
                                 " are accepted in one number");
   const std::string low = lower(text);
@@ -87,7 +86,7 @@ Rational parse_rational(std::string_view text) {
   if (const auto slash = text.find('/'); slash != std::string_view::npos) {
     const mpz_class p = parse_integer(text.substr(0, slash), text, true);
     const mpz_class q = parse_integer(text.substr(slash + 1), text, false);
-    if (q == 0) throw std::invalid_argument(quoted(text) + " divides by zero");
+    if (q == 0) throw std::invalid_argument(quoted_text(text) + " divides by zero");
     Rational r(p, q);
     r.canonicalize();
     return r;
@@ -119,7 +118,7 @@ Rational parse_rational(std::string_view text) {
     while (i < text.size() && is_digit(text[i])) {
       exponent = exponent * 10 + (text[i++] - '0');
       if (exponent > max_decimal_exponent)
-        throw std::invalid_argument(quoted(text) + ": exponent beyond ±" +
+        throw std::invalid_argument(quoted_text(text) + ": exponent beyond ±" +
                                     std::to_string(max_decimal_exponent) + " is not supported");
     }
     if (exp_negative) exponent = -exponent;

@@ -19,6 +19,9 @@ constexpr long double unit_roundoff = std::numeric_limits<long double>::epsilon(
 // must shrink to the distance √(1 + |x|²) of its nearest corner, and beyond |x| ~ 10^1233 the
 // weight overflows the x87 range anyway (the route then declines): 2^4200 > 10^1264.
 constexpr unsigned depth_limit = 4200;
+// At most 2^28 nodes (about 10 s at 30–40 ns a node): the resource limit of docs/cli.md, so no
+// order or feasible set makes the route run without bound; beyond it the route declines.
+constexpr std::uint64_t node_budget = std::uint64_t(1) << 28;
 
 // Gauss–Legendre nodes and weights on [0, 1]: Newton's method on P_n in long double.
 void gauss_legendre_01(unsigned n, std::vector<long double>& x, std::vector<long double>& w) {
@@ -66,7 +69,11 @@ struct Sums {
   long double rows = 0;           // compensated additions
   long double position_rel = 0;   // max (|px| + |py| + δ)/r2 over the nodes (position errors)
   bool depth_exceeded = false;
+  bool unresolved = false;        // a piece to split is no larger than the node position error
+  bool budget_exceeded = false;   // more than node_budget nodes
+  std::uint64_t nodes = 0;
   bool overflow = false;          // r2² beyond the long double's range at some node
+  bool stopped() const { return depth_exceeded || unresolved || budget_exceeded; }
 };
 
 // A row's plain sums.
@@ -123,9 +130,17 @@ void triangle(const Rule& r, const long double P[2], const long double Q[2], con
   };
   const long double diameter2 = std::max({d2(P, Q), d2(Q, R), d2(R, P)});
   const long double r2_min = std::min({r2_at(r, P[0], P[1]), r2_at(r, Q[0], Q[1]), r2_at(r, R[0], R[1])});
+  if (s.stopped()) return;
   if (needs_split(diameter2, r2_min)) {
     if (depth >= depth_limit) {
       s.depth_exceeded = true;
+      return;
+    }
+    // Halving a piece no larger than a node's position error refines nothing: without this stop
+    // every child would look as close to the axis as its parent and the pieces would grow as
+    // 4^depth (a triangle from the origin to 1e20 took minutes; issue 13).
+    if (diameter2 <= 16 * r.delta * r.delta) {
+      s.unresolved = true;
       return;
     }
     const long double PQ[2] = {(P[0] + Q[0]) / 2, (P[1] + Q[1]) / 2};
@@ -140,6 +155,10 @@ void triangle(const Rule& r, const long double P[2], const long double Q[2], con
   }
   const long double ex = Q[0] - P[0], ey = Q[1] - P[1], fx = R[0] - P[0], fy = R[1] - P[1];
   const std::size_t n = r.x.size();
+  if ((s.nodes += n * n) > node_budget) {
+    s.budget_exceeded = true;
+    return;
+  }
   for (std::size_t i = 0; i < n; ++i) {
     Row row;
     for (std::size_t j = 0; j < n; ++j) {
@@ -157,14 +176,23 @@ void segment(const Rule& r, const long double P[2], const long double Q[2], long
              unsigned depth, Sums& s) {
   const long double ex = Q[0] - P[0], ey = Q[1] - P[1];
   const long double r2_min = std::min(r2_at(r, P[0], P[1]), r2_at(r, Q[0], Q[1]));
+  if (s.stopped()) return;
   if (needs_split(ex * ex + ey * ey, r2_min)) {
     if (depth >= depth_limit) {
       s.depth_exceeded = true;
       return;
     }
+    if (ex * ex + ey * ey <= 16 * r.delta * r.delta) {
+      s.unresolved = true;
+      return;
+    }
     const long double M[2] = {(P[0] + Q[0]) / 2, (P[1] + Q[1]) / 2};
     segment(r, P, M, length / 2, depth + 1, s);
     segment(r, M, Q, length / 2, depth + 1, s);
+    return;
+  }
+  if ((s.nodes += r.x.size()) > node_budget) {
+    s.budget_exceeded = true;
     return;
   }
   Row row;
@@ -222,6 +250,16 @@ Centroid offset_centroid(const std::vector<Point2>& v, ConvexKind kind, unsigned
   if (s.depth_exceeded) {
     out.why = "the feasible set spans more scales than the subdivision limit (" +
               std::to_string(depth_limit) + " halvings) resolves";
+    return out;
+  }
+  if (s.unresolved) {
+    out.why = "near the cone's axis the feasible set needs pieces smaller than extended precision "
+              "resolves at its distance from the first vertex";
+    return out;
+  }
+  if (s.budget_exceeded) {
+    out.why = "the subdivision needs more than " + std::to_string(node_budget) +
+              " nodes at this order (a lower order needs fewer)";
     return out;
   }
   if (s.overflow || !(sw > 0) || !std::isfinite(sw)) {

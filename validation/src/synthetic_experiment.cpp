@@ -14,15 +14,30 @@ Spectrum named_light(const std::string& name, const SpectralTable& basis) {
     } catch (const std::invalid_argument&) {
       k = 0;
     }
+    if (sgn(k) > 0 && name[0] == 'D') {
+      // The CIE rule is defined from 4000 K to 25000 K (nominal k×100 K): D40 … D250.
+      if (k < 40 || k > 250)
+        throw std::domain_error("light " + quoted_text(name) + ": CIE daylight D<k> is defined for k from 40 "
+                                "to 250 (4000 K to 25000 K nominal)");
+      Spectrum s = cie_daylight(cie_daylight_cct(Rational(k * 100)), basis);
+      s.name = name;
+      return s;
+    }
     if (sgn(k) > 0) {
-      Spectrum s = name[0] == 'D' ? cie_daylight(cie_daylight_cct(Rational(k * 100)), basis)
-                                  : planckian(k, basis.wavelengths);
+      // Below ~1000 K a Planckian radiator gives no usable light at 380–780 nm (its blue is
+      // e^-38 of its red at 1000 K, and e^-(10^9) at 10^-5 K: the exact powers then need
+      // gigabytes); above 10^5 K the spectrum no longer changes colour (Rayleigh–Jeans).
+      if (k < kPlanckMinKelvin || k > kPlanckMaxKelvin)
+        throw std::domain_error("light " + quoted_text(name) + ": a Planckian light P<T> needs T from " +
+                                to_string(Rational(kPlanckMinKelvin)) + " to " +
+                                to_string(Rational(kPlanckMaxKelvin)) + " K");
+      Spectrum s = planckian(k, basis.wavelengths);
       s.name = name;
       return s;
     }
   }
-  throw std::invalid_argument("unknown light '" + name +
-                              "' (expected D<k> for CIE daylight at k×100 K, e.g. D55, or "
+  throw std::invalid_argument("unknown light " + quoted_text(name) +
+                              " (expected D<k> for CIE daylight at k×100 K, e.g. D55, or "
                               "P<T> for a Planckian radiator at T K, e.g. P2856)");
 }
 

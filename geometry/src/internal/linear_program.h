@@ -16,6 +16,10 @@ struct LinearProgram {
   std::vector<std::vector<Rational>> rows;  ///< each of length `variables`
   std::vector<Rational> rhs;
   std::vector<Rational> objective;          ///< c, length `variables`
+  /// Rows the solver starts from (constraint generation, below). Empty: every row at once.
+  /// Best chosen so that they alone bound the objective (a box); if they do not, the solver
+  /// falls back to every row.
+  std::vector<std::size_t> initial;
 };
 
 enum class LpStatus { optimal, infeasible, unbounded };
@@ -29,7 +33,16 @@ struct LpSolution {
   std::vector<bool> tight_in_every_optimum;
 };
 
-/// Solve exactly. Complexity: the simplex method on (rows × variables); small in gmcc's uses.
+/// Solve exactly, with a guarantee of termination (docs/math.md §1b "The exact LP"):
+///  - every simplex run uses Bland's pivoting rule, which cannot cycle (the default rule of
+///    CGAL's solver cycled forever on a degenerate CRULE program of 80 Munsell colours);
+///  - with `initial` rows, by constraint generation: solve on the rows taken so far, add the
+///    rows the optimum violates (the 64 most violated, exactly), repeat. Each round adds at least
+///    one row, so at most rows.size() rounds; the last optimum satisfies every row and is optimal
+///    for the whole program, and its multipliers (zero for rows never taken) are an optimal dual
+///    of the whole program, so `tight_in_every_optimum` keeps its meaning.
+/// Complexity: small programs per round instead of one program of every row (the CRULE program
+/// has |canonical facets| × |image hull vertices| rows, tens of thousands, of which tens matter).
 LpSolution solve_linear_program(const LinearProgram& lp);
 
 }  // namespace gmcc::internal

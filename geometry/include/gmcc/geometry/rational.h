@@ -37,6 +37,11 @@ inline constexpr std::size_t max_number_digits = 100;
 ///         with bytes outside printable ASCII written as \xNN.
 Rational parse_rational(std::string_view text);
 
+/// `text` as messages quote it: in single quotes, at most its first 40 characters, bytes outside
+/// printable ASCII as \xNN, and the full length when cut, so that binary garbage or a
+/// megabyte-long field gives a one-line message.
+std::string quoted_text(std::string_view text);
+
 /// The exact value of a finite double (every double is a dyadic rational).
 /// \throws std::invalid_argument for NaN or infinity.
 Rational rational_from_double(double value);

@@ -16,10 +16,18 @@ namespace gmcc {
 /// The paper's sensor wavelengths (r, g, b), nm.
 inline const std::array<Rational, 3> narrow_band_wavelengths{Rational(610), Rational(540), Rational(450)};
 
+/// The Planckian temperatures `named_light` accepts, in kelvin: lights from a candle flame
+/// (~1850 K) to the bluest sky (~27000 K) with room; outside, the exact spectrum is either no
+/// light at all in the visible range or needs unbounded memory (issue 13).
+inline constexpr long kPlanckMinKelvin = 1000, kPlanckMaxKelvin = 100000;
+
 /// A light named as in the paper's figure: `D<k>` is CIE daylight of nominal temperature k×100 K
 /// at its CIE-rule correlated colour temperature (D55 → 5503 K, D75 → 7504 K, D100 → 10006 K);
 /// `P<T>` is a Planckian radiator at T kelvin (P2856, P15000). Sampled at the basis wavelengths.
-/// \throws std::invalid_argument for any other name.
+/// k and T are exact numbers (parse_rational: `P2856.5`, `P1e4`, `D65`).
+/// \throws std::invalid_argument for any other name; std::domain_error for k outside 40 … 250
+/// (the CIE rule's 4000–25000 K) or T outside kPlanckMinKelvin … kPlanckMaxKelvin
+/// (docs/cli.md "Resource limits").
 Spectrum named_light(const std::string& name, const SpectralTable& daylight_basis);
 
 /// The setup: the chips' colours under the canonical light (the canonical gamut) and under each
