@@ -1,6 +1,7 @@
 // Spectral data, CIE daylight and Planckian lights against published values.
 #include <gmcc/validation/illuminants.h>
 #include <gmcc/validation/spectral_table.h>
+#include <gmcc/validation/synthetic_experiment.h>
 
 #include <boost/test/unit_test.hpp>
 
@@ -93,6 +94,32 @@ BOOST_AUTO_TEST_CASE(planckian_follows_plancks_law) {
   // Wien: the peak of a 5000 K radiator is at 2.8978e-3/5000 m ≈ 579.6 nm.
   BOOST_TEST(p.at(Rational(580)) > p.at(Rational(575)));
   BOOST_TEST(p.at(Rational(580)) > p.at(Rational(585)));
+}
+
+// Issue 13: P1e-5 divided by zero (every value underflowed to 0) and P0.0001 took gigabytes (exact
+// powers of e^-(10^8)). The named lights now stop at documented limits, with the name in the
+// message; at the limits themselves every sensor sees a positive, modest amount of light.
+BOOST_AUTO_TEST_CASE(named_lights_within_their_limits) {
+  const SpectralTable basis = read_spectral_csv(data("cie_daylight_basis_S0_S1_S2.csv"));
+  for (const char* bad : {"P1e-5", "P1e-400", "P0.0001", "P1/3", "P999.99", "P100000.01", "P1e6", "D39", "D250",
+                          "D1000"}) {
+    try {
+      named_light(bad, basis);
+      BOOST_ERROR(std::string(bad) + " accepted");
+    } catch (const std::domain_error& e) {
+      BOOST_TEST(std::string(e.what()).find(bad) != std::string::npos, e.what());
+    }
+  }
+  for (const char* bad : {"P", "P0", "P-5", "Px", "Q100", "D0"})
+    BOOST_CHECK_THROW(named_light(bad, basis), std::invalid_argument);
+  for (const char* good : {"P1000", "P100000", "D40", "D249"}) {
+    const Spectrum s = named_light(good, basis);
+    for (const Rational& w : narrow_band_wavelengths) {
+      const Rational v = s.at(w);
+      BOOST_TEST(sgn(v) > 0, good);
+      BOOST_TEST(v.get_num().get_str().size() + v.get_den().get_str().size() < 400u, good);
+    }
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -15,11 +15,13 @@ Spectrum named_light(const std::string& name, const SpectralTable& basis) {
       k = 0;
     }
     if (sgn(k) > 0 && name[0] == 'D') {
-      // The CIE rule is defined from 4000 K to 25000 K (nominal k×100 K): D40 … D250.
-      if (k < 40 || k > 250)
-        throw std::domain_error("light " + quoted_text(name) + ": CIE daylight D<k> is defined for k from 40 "
-                                "to 250 (4000 K to 25000 K nominal)");
-      Spectrum s = cie_daylight(cie_daylight_cct(Rational(k * 100)), basis);
+      // The CIE rule is defined for correlated colour temperatures 4000 K to 25000 K: D40 … D249.
+      const Rational T = cie_daylight_cct(Rational(k * 100));
+      if (T < 4000 || T > 25000)
+        throw std::domain_error("light " + quoted_text(name) + ": CIE daylight is defined for "
+                                "4000 K to 25000 K (D40 to D249), not " + to_string(Rational(k * 100)) +
+                                " K nominal");
+      Spectrum s = cie_daylight(T, basis);
       s.name = name;
       return s;
     }
