@@ -94,7 +94,11 @@ LpSolution solve_linear_program(const LinearProgram& lp) {
     if (r.size() != lp.variables) throw std::invalid_argument("solve_linear_program: row of the wrong length");
   std::vector<std::size_t> all(lp.rows.size());
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-  if (lp.initial.empty()) return solve_rows(lp, all);
+  if (lp.initial.empty()) {
+    LpSolution s = solve_rows(lp, all);
+    s.rows_taken = std::move(all);
+    return s;
+  }
 
   std::vector<bool> taken(lp.rows.size(), false);
   std::vector<std::size_t> take;
@@ -107,7 +111,11 @@ LpSolution solve_linear_program(const LinearProgram& lp) {
     LpSolution s = solve_rows(lp, take);
     // Infeasible on a subset: infeasible. Unbounded on a subset says nothing: every row at once.
     if (s.status == LpStatus::infeasible) return s;
-    if (s.status == LpStatus::unbounded) return solve_rows(lp, all);
+    if (s.status == LpStatus::unbounded) {
+      s = solve_rows(lp, all);
+      s.rows_taken = std::move(all);
+      return s;
+    }
     std::vector<std::pair<Rational, std::size_t>> violated;
     for (std::size_t i = 0; i < lp.rows.size(); ++i) {
       if (taken[i]) continue;
@@ -120,6 +128,7 @@ LpSolution solve_linear_program(const LinearProgram& lp) {
       std::vector<bool> tight(lp.rows.size(), false);
       for (std::size_t t = 0; t < take.size(); ++t) tight[take[t]] = s.tight_in_every_optimum[t];
       s.tight_in_every_optimum = std::move(tight);
+      s.rows_taken = std::move(take);
       return s;
     }
     const std::size_t k = std::min(per_round, violated.size());
@@ -306,6 +315,13 @@ std::vector<std::vector<std::size_t>> facets(const std::vector<Point3>& v,
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
+/// Whether `a` is outside the span of `basis` (0–3 linearly independent vectors), exactly.
+bool independent_of(const std::vector<Point3>& basis, const Point3& a) {
+  if (basis.empty()) return !is_zero(a);
+  if (basis.size() == 1) return !is_zero(cross(basis[0], a));
+  if (basis.size() == 2) return sgn(dot(cross(basis[0], basis[1]), a)) != 0;
+  return false;
+}
 }  // namespace
 
 ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical_colours,
@@ -342,6 +358,7 @@ ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical_colours,
 
   // Max-slack LP; rows found tight on all of F3 become equalities until the slack is > 0.
   std::vector<bool> equality(rows.size(), false);
+  std::vector<bool> warm(rows.size(), false);  // rows an earlier round's constraint generation took
   Point3 inner;
   for (;;) {
     internal::LinearProgram lp;
@@ -358,7 +375,7 @@ ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical_colours,
       } else {
         // The box rows (one non-zero coefficient) bound d: the constraint generation starts there.
         const int nonzero = (sgn(h.a.x) != 0) + (sgn(h.a.y) != 0) + (sgn(h.a.z) != 0);
-        if (nonzero == 1) lp.initial.push_back(lp.rows.size());
+        if (nonzero == 1 || warm[i]) lp.initial.push_back(lp.rows.size());
         lp.rows.push_back({h.a.x, h.a.y, h.a.z, 1}), lp.rhs.push_back(h.b);
         source.push_back(i);
       }
@@ -380,6 +397,18 @@ ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical_colours,
     for (std::size_t r = 0; r < source.size(); ++r)
       if (source[r] < rows.size() && s.tight_in_every_optimum[r]) equality[source[r]] = true, grew = true;
     if (!grew) throw std::logic_error("feasible_set_3d: no implicit equality found: a bug");
+    for (std::size_t r : s.rows_taken)
+      if (source[r] < rows.size()) warm[source[r]] = true;
+    // Every row whose normal is in the span of the equalities' normals and that holds with
+    // equality at `inner` (a point of F3) holds with equality on all of F3 (a = Σλ_i·a_i gives
+    // a·y = Σλ_i·b_i = a·inner = b on the equalities' flat): so when F3 is a point, every row
+    // through it at once instead of a few per round (docs/math.md §1b "The exact LP").
+    std::vector<Point3> span;
+    for (std::size_t i = 0; i < rows.size() && span.size() < 3; ++i)
+      if (equality[i] && independent_of(span, rows[i].a)) span.push_back(rows[i].a);
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      if (!equality[i] && dot(rows[i].a, inner) == rows[i].b && !independent_of(span, rows[i].a))
+        equality[i] = true;
   }
 
   // The equalities' rank.

@@ -31,6 +31,9 @@ struct LpSolution {
   /// For each row, whether its multiplier in the solver's optimality certificate is non-zero:
   /// by complementary slackness such a row is tight at *every* optimal x (optimal only).
   std::vector<bool> tight_in_every_optimum;
+  /// The rows the last simplex run had (every row without `initial`): a warm start for a
+  /// related program.
+  std::vector<std::size_t> rows_taken;
 };
 
 /// Solve exactly, with a guarantee of termination (docs/math.md §1b "The exact LP"):
