@@ -93,6 +93,40 @@ BOOST_AUTO_TEST_CASE(lines_are_limited_in_length) {
   BOOST_TEST(negative.size() < 200u);
 }
 
+// Files that are not regular files are read as streams, the limits applied while reading
+// (docs/cli.md, "Files, special paths, signals and time limits").
+BOOST_AUTO_TEST_CASE(special_files_are_read_as_streams) {
+  const auto error_reading = [](const std::string& path) -> std::string {
+    try {
+      read_colour_csv(path);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  // Size 0 by a seek: once read as empty ("no colours"); the NUL check now runs on block one.
+  BOOST_TEST(error_reading("/dev/zero") == "/dev/zero:1: binary data (a NUL byte): expected text lines r,g,b");
+  BOOST_TEST(error_reading("/dev/null") == "/dev/null: no colours (expected lines r,g,b)");
+  // Size 0 by stat, but text: read, and its first line is not a colour.
+  BOOST_TEST(error_reading("/proc/version").find("/proc/version:1: expected 3") == 0u);
+  // A pipe, as process substitution passes it (/dev/fd/N).
+  int ends[2];
+  BOOST_REQUIRE(::pipe(ends) == 0);
+  const std::string text = "1,2,3\n4,5,6\n";
+  BOOST_REQUIRE(::write(ends[1], text.data(), text.size()) == static_cast<ssize_t>(text.size()));
+  ::close(ends[1]);
+  const ColourTable t = read_colour_csv("/dev/fd/" + std::to_string(ends[0]));
+  ::close(ends[0]);
+  BOOST_TEST(t.colours.size() == 2u);
+  // A NUL after line breaks: its line is named.
+  BOOST_REQUIRE(::pipe(ends) == 0);
+  BOOST_REQUIRE(::write(ends[1], "1,1,1\n2,2,2\n\0", 13) == 13);
+  ::close(ends[1]);
+  BOOST_TEST(error_reading("/dev/fd/" + std::to_string(ends[0])).find(":3: binary data (a NUL byte)") !=
+             std::string::npos);
+  ::close(ends[0]);
+}
+
 BOOST_AUTO_TEST_CASE(colours_are_limited_in_number) {
   static_assert(max_colours == 1000000);
   std::string text;

@@ -1,10 +1,6 @@
 #include <gmcc/validation/colour_csv.h>
+#include <gmcc/validation/text_file.h>
 
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace gmcc {
 namespace {
@@ -100,21 +96,8 @@ ColourTable parse_colour_csv(const std::string& text, const std::string& file) {
 }
 
 ColourTable read_colour_csv(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path, 0, "is a directory, not a colour file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw InputError(path, 0, "cannot read (not a regular file?)");
-  if (static_cast<std::size_t>(size) > max_colour_file_bytes)
-    throw InputError(path, 0, "larger than the " + std::to_string(max_colour_file_bytes >> 20) +
-                                  " MiB limit for colour files");
-  in.seekg(0);
-  std::string text(static_cast<std::size_t>(size), '\0');
-  if (!in.read(text.data(), size)) throw InputError(path, 0, "cannot read");
-  return parse_colour_csv(text, path);
+  return parse_colour_csv(
+      read_text_file(path, {max_colour_file_bytes, "colour file", "text lines r,g,b"}), path);
 }
 
 }  // namespace gmcc

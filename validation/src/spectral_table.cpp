@@ -1,8 +1,8 @@
 #include <gmcc/validation/colour_csv.h>
 #include <gmcc/validation/spectral_table.h>
+#include <gmcc/validation/text_file.h>
 
 #include <algorithm>
-#include <fstream>
 #include <sstream>
 #include <utility>
 #include <stdexcept>
@@ -87,11 +87,10 @@ SpectralTable parse_spectral_csv(const std::string& text, const std::string& fil
 }
 
 SpectralTable read_spectral_csv(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot open");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_spectral_csv(text.str(), path);
+  return parse_spectral_csv(
+      read_text_file(path, {max_spectral_file_bytes, "spectral file",
+                            "text rows wavelength_nm,value,..."}),
+      path);
 }
 
 Spectrum resample(const Spectrum& s, const std::vector<Rational>& grid) {

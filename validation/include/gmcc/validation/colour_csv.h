@@ -38,9 +38,10 @@ struct ColourTable {
 ///         colours, no colour at all.
 ColourTable parse_colour_csv(const std::string& text, const std::string& file);
 
-/// Read and parse a colour file (parse_colour_csv).
-/// \throws InputError if the file cannot be read, is larger than max_colour_file_bytes, or
-///         its content is bad.
+/// Read and parse a colour file (read_text_file, then parse_colour_csv): a regular file, a FIFO
+/// or pipe, or a device, each read with the limits applied while reading.
+/// \throws InputError if the file cannot be read, is larger than max_colour_file_bytes, holds
+///         a NUL byte, is a FIFO no program writes, or its content is bad.
 ColourTable read_colour_csv(const std::string& path);
 
 }  // namespace gmcc

@@ -6,10 +6,14 @@
 #include <gmcc/geometry/rational.h>
 #include <gmcc/validation/input_error.h>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
 namespace gmcc {
+
+/// Largest spectral file accepted, in bytes (the shipped ones are below 1.5 MiB).
+inline constexpr std::size_t max_spectral_file_bytes = std::size_t(256) << 20;
 
 /// One sampled spectrum: values at strictly increasing wavelengths (nm), exact.
 struct Spectrum {
@@ -36,7 +40,8 @@ struct SpectralTable {
 ///         wavelengths that do not strictly increase.
 SpectralTable parse_spectral_csv(const std::string& text, const std::string& file);
 
-/// Read and parse a spectral CSV file. \throws InputError.
+/// Read and parse a spectral CSV file (read_text_file: any kind of file, NUL bytes and files
+/// beyond max_spectral_file_bytes rejected). \throws InputError.
 SpectralTable read_spectral_csv(const std::string& path);
 
 /// The spectrum linearly interpolated onto `grid` (exact rational interpolation between the two

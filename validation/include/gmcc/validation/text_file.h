@@ -1,0 +1,36 @@
+#pragma once
+/// \file text_file.h
+/// Reading an input file whole, whatever it is: a regular file, a FIFO, a pipe from process
+/// substitution (`--image <(…)`), a character device. The size limit and the NUL check are
+/// applied while reading, so `/dev/zero` or `/dev/urandom` is rejected in its first block
+/// rather than read as empty (their size from a seek is 0) or read forever; and a FIFO that no
+/// program writes is reported instead of blocking the run (docs/cli.md, "Files, special
+/// paths, signals and time limits").
+
+#include <gmcc/validation/input_error.h>
+
+#include <cstddef>
+#include <string>
+
+namespace gmcc {
+
+/// How long a named FIFO with no writer is waited for before the read is given up.
+inline constexpr int fifo_writer_wait_seconds = 10;
+
+/// What a reader accepts, and the words its messages use.
+struct TextFileRules {
+  std::size_t max_bytes;  ///< larger files are rejected
+  std::string noun;       ///< "colour file": "is a directory, not a colour file", "limit for colour files"
+  std::string expected;   ///< "text lines r,g,b": "binary data (a NUL byte): expected text lines r,g,b"
+};
+
+/// The bytes of the file at `path`. A regular file's size is checked before reading; anything
+/// else is read as a stream until end of file, with the size limit applied as it grows. A named
+/// FIFO that no program has opened for writing is waited for up to fifo_writer_wait_seconds;
+/// once a writer is there, the read waits for it as long as it keeps the FIFO open.
+/// \throws InputError naming the file (and, for a NUL byte, its 1-based line): missing or
+///         unreadable, a directory or socket, larger than rules.max_bytes, holding a NUL byte,
+///         a FIFO with no writer.
+std::string read_text_file(const std::string& path, const TextFileRules& rules);
+
+}  // namespace gmcc
