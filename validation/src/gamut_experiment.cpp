@@ -25,6 +25,24 @@
 namespace gmcc {
 namespace {
 
+// Up to `count` threads running `f`: fewer if the system refuses one (a thread's stack is
+// address space, so under gmcc's --memory-limit a thread may not be made). The work is shared
+// out by an atomic counter and the results do not depend on the number of threads, so the run
+// goes on with the threads there are, rather than std::terminate for threads left unjoined.
+template <class F>
+std::vector<std::thread> start_threads(std::size_t count, const F& f) {
+  std::vector<std::thread> threads;
+  threads.reserve(count);  // no reallocation below, with threads already running
+  for (std::size_t t = 0; t < count; ++t) {
+    try {
+      threads.emplace_back(f);
+    } catch (const std::exception&) {  // std::system_error, or std::bad_alloc for its state
+      break;
+    }
+  }
+  return threads;
+}
+
 // Uniform integer in [0, n), unbiased (Lemire's multiply-and-reject), platform-independent.
 // The scene generator: std::mt19937_64's output, twisted lazily (a scene draws a dozen numbers).
 using Generator = internal::LazyMt19937_64;
@@ -240,8 +258,9 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
           chromaticities[l].push_back(sgn(c.b) > 0 ? perspective_chromaticity(c) : Point2{});
       }
     };
-    std::vector<std::thread> helpers;
-    for (unsigned t = 1; t < std::min<std::size_t>(threads, setup.lights.size()); ++t) helpers.emplace_back(precompute);
+    std::vector<std::thread> helpers =
+        start_threads(std::max<std::size_t>(std::min<std::size_t>(threads, setup.lights.size()), 1) - 1,
+                      precompute);
     precompute();
     for (std::thread& t : helpers) t.join();
   }
@@ -267,16 +286,17 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
     worker();
     mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE);
   };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < std::min<std::size_t>(threads, jobs.size()); ++t) pool.emplace_back(thread_worker);
+  std::vector<std::thread> pool =
+      start_threads(std::max<std::size_t>(std::min<std::size_t>(threads, jobs.size()), 1) - 1, thread_worker);
   const std::uint64_t total = config.scenes * jobs.size();
-  if (config.progress) {  // report from this thread while the others work, then join in
-    std::thread reporter_free_worker(thread_worker);
+  std::vector<std::thread> reporter_free_worker;
+  if (config.progress) reporter_free_worker = start_threads(1, thread_worker);
+  if (!reporter_free_worker.empty()) {  // report from this thread while the others work, then join in
     while (done < total && !failed) {
       config.progress(done, total);
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
-    reporter_free_worker.join();
+    reporter_free_worker.front().join();
     config.progress(done, total);
   } else {
     worker();
