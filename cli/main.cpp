@@ -3,13 +3,50 @@
 #include "accuracy.h"
 #include "reproduce.h"
 #include "select.h"
+#include "write_stdout.h"
 
 #include <gmcc/validation/colour_csv.h>
 
 #include <CLI/CLI.hpp>
 
 #include <exception>
+#include <functional>
 #include <iostream>
+#include <sstream>
+
+namespace {
+
+// The command named on the command line, as far as it goes: "gmcc", "gmcc select",
+// "gmcc reproduce synthetic" (for the usage hint).
+std::string command_of(CLI::App& app, int argc, char** argv) {
+  const std::function<bool(CLI::App*)> every = [](CLI::App*) { return true; };
+  CLI::App* current = &app;
+  std::string command = "gmcc";
+  for (int i = 1; i < argc; ++i)
+    for (CLI::App* sub : current->get_subcommands(every))
+      if (sub->get_name() == argv[i]) {
+        current = sub;
+        command += " " + sub->get_name();
+        break;
+      }
+  return command;
+}
+
+// Help and version text go through write_stdout: `gmcc --help > /dev/full` must fail too.
+int print_help_or_version(const CLI::App& app, const CLI::Error& e) {
+  std::ostringstream out, err;
+  const int status = app.exit(e, out, err);
+  try {
+    gmcc::cli::write_stdout(out.str());
+  } catch (const gmcc::InputError& error) {
+    std::cerr << "gmcc: error: " << error.what() << "\n";
+    return 2;
+  }
+  std::cerr << err.str();
+  return status;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"gmcc — gamut-mapping colour constancy with exact geometry "
@@ -25,13 +62,18 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return print_help_or_version(app, e);
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return print_help_or_version(app, e);
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return print_help_or_version(app, e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "gmcc: error: " << e.what() << "\nRun with --help for usage.\n";
+    // One line, like every other error.
+    std::string problem = e.what();
+    for (char& c : problem)
+      if (c == '\n' || c == '\r') c = ' ';
+    std::cerr << "gmcc: error: " << problem << " (run " << command_of(app, argc, argv)
+              << " --help for usage)\n";
     return 2;
   }
   try {
