@@ -1,6 +1,7 @@
 #include "accuracy.h"
 
 #include "integer_option.h"
+#include "limit_exit.h"
 #include "output_files.h"
 #include "write_stdout.h"
 
@@ -445,6 +446,7 @@ int run_accuracy(const AccuracyOptions& options) {
   std::vector<WidthResult> results;
   for (const char* w : width_text) {
     if (progress) std::cerr << "gmcc accuracy: width " << w << " ..." << std::endl;
+    set_activity(std::string("measuring width ") + w);
     results.push_back(measure(w, o));
   }
 

@@ -1,6 +1,8 @@
 // gmcc: gamut-mapping colour constancy with exact geometry. The command line's one edge where
-// errors become messages and exit statuses: 0 success, 2 bad input or usage, 1 internal error.
+// errors become messages and exit statuses: 0 success, 2 bad input or usage, 1 internal error;
+// a signal ends the run with its default action, temporary files removed (docs/cli.md).
 #include "accuracy.h"
+#include "exit_cleanup.h"
 #include "reproduce.h"
 #include "select.h"
 #include "write_stdout.h"
@@ -49,6 +51,7 @@ int print_help_or_version(const CLI::App& app, const CLI::Error& e) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  gmcc::cli::install_exit_cleanup();
   CLI::App app{"gmcc — gamut-mapping colour constancy with exact geometry "
                "(Finlayson & Hordley 1999, \"Selection for gamut mapping colour constancy\")"};
   app.require_subcommand(1);
@@ -77,9 +80,12 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    if (select->parsed()) return gmcc::cli::run_select(select_options);
-    if (accuracy->parsed()) return gmcc::cli::run_accuracy(accuracy_options);
-    if (reproduce->parsed()) return gmcc::cli::run_reproduce(*reproduce, reproduce_options);
+    int status = 0;
+    if (select->parsed()) status = gmcc::cli::run_select(select_options);
+    else if (accuracy->parsed()) status = gmcc::cli::run_accuracy(accuracy_options);
+    else if (reproduce->parsed()) status = gmcc::cli::run_reproduce(*reproduce, reproduce_options);
+    gmcc::cli::write_stdout("");  // what a command wrote without write_stdout, flushed and checked
+    return status;
   } catch (const gmcc::InputError& e) {
     std::cerr << "gmcc: error: " << e.what() << "\n";
     return 2;
@@ -87,5 +93,4 @@ int main(int argc, char** argv) {
     std::cerr << "gmcc: internal error: " << e.what() << "\n";
     return 1;
   }
-  return 0;
 }

@@ -1,6 +1,7 @@
 #include "reproduce.h"
 
 #include "integer_option.h"
+#include "limit_exit.h"
 #include "output_files.h"
 #include "write_stdout.h"
 
@@ -121,6 +122,7 @@ ExperimentConfig config_from(const ReproduceOptions& o) {
 // Runs an experiment and writes its table, CSV and figure, each file whole or not at all.
 int report(const ExperimentSetup& setup, ExperimentConfig config, const ReproduceOptions& o) {
   if (!o.illuminants_path.empty()) {
+    set_activity("reading " + o.illuminants_path);
     const ColourTable lights = read_colour_csv(o.illuminants_path);
     try {
       config.constraint = illumination_constraint(lights.colours, setup.canonical_light);
@@ -136,6 +138,7 @@ int report(const ExperimentSetup& setup, ExperimentConfig config, const Reproduc
     gp_file.emplace(std::filesystem::path(o.plot_dir) / (setup.name + ".gp"));
   }
   ExperimentResult result;
+  set_activity("running the " + setup.name + " experiment");
   try {
     result = run_gamut_experiment(setup, config);
   } catch (const std::invalid_argument& e) {
