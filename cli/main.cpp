@@ -1,10 +1,15 @@
 // gmcc: gamut-mapping colour constancy with exact geometry. The command line's one edge where
-// errors become messages and exit statuses: 0 success, 2 bad input or usage, 1 internal error;
-// a signal ends the run with its default action, temporary files removed (docs/cli.md).
+// errors become messages and exit statuses: 0 success, 2 bad input or usage, 1 internal error,
+// 3 a resource limit reached (--time-limit, --memory-limit, memory exhausted); a signal ends
+// the run with its default action, temporary files removed (docs/cli.md).
 #include "accuracy.h"
 #include "exit_cleanup.h"
+#include "integer_option.h"
+#include "limit_exit.h"
+#include "memory_limit.h"
 #include "reproduce.h"
 #include "select.h"
+#include "time_limit.h"
 #include "write_stdout.h"
 
 #include <gmcc/validation/colour_csv.h>
@@ -14,12 +19,15 @@
 #include <exception>
 #include <functional>
 #include <iostream>
+#include <new>
+#include <optional>
 #include <sstream>
+#include <system_error>
 
 namespace {
 
 // The command named on the command line, as far as it goes: "gmcc", "gmcc select",
-// "gmcc reproduce synthetic" (for the usage hint).
+// "gmcc reproduce synthetic" (for the usage hint and the limits' messages).
 std::string command_of(CLI::App& app, int argc, char** argv) {
   const std::function<bool(CLI::App*)> every = [](CLI::App*) { return true; };
   CLI::App* current = &app;
@@ -52,10 +60,21 @@ int print_help_or_version(const CLI::App& app, const CLI::Error& e) {
 
 int main(int argc, char** argv) {
   gmcc::cli::install_exit_cleanup();
+  gmcc::cli::install_gmp_allocation_failure_exit();
   CLI::App app{"gmcc — gamut-mapping colour constancy with exact geometry "
                "(Finlayson & Hordley 1999, \"Selection for gamut mapping colour constancy\")"};
   app.require_subcommand(1);
+  app.fallthrough();  // the global options below are also read after a command's name
   app.set_version_flag("--version", "gmcc 0.1.0");
+  std::string time_limit, memory_limit;
+  app.add_option("--time-limit", time_limit,
+                 "end the run after this many seconds, with a message and exit status 3 "
+                 "(temporary files removed); default: no limit")
+      ->type_name("SECONDS");
+  app.add_option("--memory-limit", memory_limit,
+                 "limit the address space to this many MiB (setrlimit RLIMIT_AS); reaching it "
+                 "ends the run with a message and exit status 3; default: no limit")
+      ->type_name("MIB");
   gmcc::cli::SelectOptions select_options;
   CLI::App* select = gmcc::cli::add_select_command(app, select_options);
   gmcc::cli::AccuracyOptions accuracy_options;
@@ -80,6 +99,13 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
+    std::optional<gmcc::cli::TimeLimit> watchdog;
+    if (!time_limit.empty())
+      watchdog.emplace(gmcc::cli::integer_option("--time-limit", time_limit, 1, 10000000));
+    if (!memory_limit.empty())
+      gmcc::cli::limit_memory(
+          gmcc::cli::integer_option("--memory-limit", memory_limit, 1, std::uint64_t(1) << 40));
+    gmcc::cli::set_activity("running " + command_of(app, argc, argv));
     int status = 0;
     if (select->parsed()) status = gmcc::cli::run_select(select_options);
     else if (accuracy->parsed()) status = gmcc::cli::run_accuracy(accuracy_options);
@@ -89,6 +115,15 @@ int main(int argc, char** argv) {
   } catch (const gmcc::InputError& e) {
     std::cerr << "gmcc: error: " << e.what() << "\n";
     return 2;
+  } catch (const std::bad_alloc&) {
+    gmcc::cli::exit_out_of_memory();
+  } catch (const std::system_error& e) {
+    // A thread that could not be made within --memory-limit (its stack is address space).
+    if (gmcc::cli::memory_limit_mib() && (e.code() == std::errc::resource_unavailable_try_again ||
+                                          e.code() == std::errc::not_enough_memory))
+      gmcc::cli::exit_out_of_memory();
+    std::cerr << "gmcc: internal error: " << e.what() << "\n";
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "gmcc: internal error: " << e.what() << "\n";
     return 1;
