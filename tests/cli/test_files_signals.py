@@ -12,7 +12,10 @@ Input paths that are not regular files:
 Output paths (`--csv`, `--plot DIR` files):
   * a symbolic link is kept and its target replaced (also a dangling link: its target made);
   * a FIFO is written through to its reader and stays a FIFO; one with no reader: exit 2 in a
-    bounded time; /dev/null stays a device; /dev/stdout puts the CSV before the table on stdout;
+    bounded time; /dev/null stays a device; /dev/stdout, /dev/fd/1 and /proc/self/fd/1 put
+    the CSV before the table on stdout (also when stdout is a file). /dev/null and /dev/stdout
+    are only given once a safe stand-in has passed (a link to /dev/null, /dev/fd/1), so that a
+    gmcc that renames onto its output cannot replace them for the whole machine;
   * /proc/version: exit 2, a message naming the path and the proc file system (not "No such
     file or directory"); a directory: exit 2.
 Interruptions and limits:
@@ -198,14 +201,29 @@ def test_output_paths(binary, tmp):
     check(code == 0 and got == [csv] and stat.S_ISFIFO(os.stat(fifo).st_mode),
           "--csv onto a FIFO writes through to its reader and leaves the FIFO", err)
 
-    code, _, err, _ = run(binary, [*SMALL_RUN, "--csv", "/dev/null"])
-    check(code == 0 and stat.S_ISCHR(os.stat("/dev/null").st_mode), "--csv /dev/null: exit 0, still a device", err)
-    code, out, err, _ = run(binary, [*SMALL_RUN, "--csv", "/dev/stdout"])
-    check(code == 0 and out == csv + table, "--csv /dev/stdout: the CSV, then the table, on stdout", err)
+    # System paths are only given once the same kind of path, made safe, has passed: a gmcc that
+    # renamed a temporary file onto its output would replace /dev/null or /dev/stdout (as root)
+    # by a regular file for the whole machine. The safe forms: a link in tmp to /dev/null (a
+    # rename replaces only the link), and /dev/fd/1 (no file can be made in /proc/self/fd).
+    devnull_link = os.path.join(tmp, "devnull-link")
+    os.symlink("/dev/null", devnull_link)
+    code, _, err, _ = run(binary, [*SMALL_RUN, "--csv", devnull_link])
+    devnull_ok = code == 0 and os.path.islink(devnull_link) and stat.S_ISCHR(os.stat("/dev/null").st_mode)
+    check(devnull_ok, "--csv LINK to /dev/null: exit 0, the link and the device kept", err)
+    if devnull_ok:
+        code, _, err, _ = run(binary, [*SMALL_RUN, "--csv", "/dev/null"])
+        check(code == 0 and stat.S_ISCHR(os.stat("/dev/null").st_mode), "--csv /dev/null: exit 0, still a device", err)
+    code, out, err, _ = run(binary, [*SMALL_RUN, "--csv", "/dev/fd/1"])
+    fd1_ok = code == 0 and out == csv + table
+    check(fd1_ok, "--csv /dev/fd/1: the CSV, then the table, on stdout", err)
+    if fd1_ok:
+        code, out, err, _ = run(binary, [*SMALL_RUN, "--csv", "/dev/stdout"])
+        check(code == 0 and out == csv + table and os.path.islink("/dev/stdout"),
+              "--csv /dev/stdout: the CSV, then the table, on stdout", err)
     with open(os.path.join(tmp, "stdout.txt"), "wb") as f:
-        code, _, err, _ = run(binary, [*SMALL_RUN, "--csv", "/dev/stdout"], stdout=f)
+        code, _, err, _ = run(binary, [*SMALL_RUN, "--csv", "/proc/self/fd/1"], stdout=f)
     check(code == 0 and open(os.path.join(tmp, "stdout.txt"), "rb").read() == csv + table,
-          "--csv /dev/stdout with stdout a file: the CSV, then the table, in the file", err)
+          "--csv /proc/self/fd/1 with stdout a file: the CSV, then the table, in the file", err)
 
     # Paths that cannot be written: the message says why.
     if os.path.exists("/proc/version"):
