@@ -1,11 +1,14 @@
-// worst_case_illuminant's double-precision filters (issue 13: many-vertex feasible sets) against
-// the unfiltered exact route: the same angle, location and kind of location, bit for bit, on
-// random polygons, segments and points, many-vertex polygons (feasible sets of a parabola gamut,
-// rational points on a circle), with maps inside, on and outside F, short and long.
+// Selection on many-vertex feasible sets (issue 13: a many-vertex canonical gamut gives F of
+// 10^5–10^6 vertices): worst_case_illuminant's double-precision filters against the unfiltered
+// exact route (the same angle, location and kind of location, bit for bit, on random polygons,
+// segments and points and on many-vertex polygons, with maps inside, on and outside F, short and
+// long), and the 3-D mean's middle stage, whose precision grows with log2(n), deciding the
+// correctly rounded map of a many-vertex F without the exact products.
 #include "../test_support.h"
 
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/selection/mean_2d.h>
+#include <gmcc/selection/mean_3d_analytic.h>
 
 #include "internal/worst_case_illuminant_route.h"
 
@@ -39,15 +42,26 @@ std::vector<Point2> maps_for(Rng& rng, const ConvexSet2& F) {
   return ms;
 }
 
+// The feasible set of issue 13's parabola gamut (1 + t, 1 + t²), t = i/n, for the colours
+// (1, 1), (1.001, 1), (1, 1.001).
+ConvexSet2 parabola_feasible_set(int n) {
+  std::vector<Point2> pts;
+  for (int i = 0; i < n; ++i) {
+    const Rational s(i, n);
+    pts.push_back({Rational(1 + s), Rational(1 + s * s)});
+  }
+  return feasible_set(convex_hull(pts), {{1, 1}, {Rational(1001, 1000), 1}, {1, Rational(1001, 1000)}});
+}
+
 Colour random_light(Rng& rng) {
   return {test::random_rational(rng, 1, 9, 5), test::random_rational(rng, 1, 9, 5), test::random_rational(rng, 1, 9, 5)};
 }
 
 }  // namespace
 
-BOOST_AUTO_TEST_SUITE(worst_case_illuminant_filters)
+BOOST_AUTO_TEST_SUITE(many_vertex_selection)
 
-BOOST_AUTO_TEST_CASE(filtered_equals_unfiltered) {
+BOOST_AUTO_TEST_CASE(illuminant_worst_case_filtered_equals_unfiltered) {
   Rng rng(1313);
   Tally t;
   // Random polygons, segments and points (grids give the degenerate kinds).
@@ -68,17 +82,29 @@ BOOST_AUTO_TEST_CASE(filtered_equals_unfiltered) {
     const ConvexSet2 F = convex_hull(circle);
     for (const Point2& m : maps_for(rng, F)) compare(F, m, trial % 2 ? random_light(rng) : Colour{1, 1, 1}, t);
   }
-  for (int n : {400}) {
-    std::vector<Point2> pts;
-    for (int i = 0; i < n; ++i) {
-      const Rational s(i, n);
-      pts.push_back({Rational(1 + s), Rational(1 + s * s)});
-    }
-    const ConvexSet2 F = feasible_set(convex_hull(pts), {{1, 1}, {Rational(1001, 1000), 1}, {1, Rational(1001, 1000)}});
-    for (const Point2& m : maps_for(rng, F)) compare(F, m, {1, 1, 1}, t);
-  }
+  const ConvexSet2 F = parabola_feasible_set(400);
+  for (const Point2& m : maps_for(rng, F)) compare(F, m, {1, 1, 1}, t);
   BOOST_TEST(t.at_edge > 8);  // maxima inside edges: the filtered edges' exact work still runs
   BOOST_TEST(t.many_vertices > 20);
+}
+
+// On F of 20,000 vertices the middle stage (MPFI from vertex enclosures, 73 + log2(n) = 88 bits)
+// decides both components: the same correctly rounded map as the exact products at a forced
+// 200 bits, without falling through to them.
+BOOST_AUTO_TEST_CASE(mean_3d_middle_stage_decides_on_many_vertices) {
+  const ConvexSet2 F = parabola_feasible_set(20000);
+  BOOST_REQUIRE(F.vertices.size() > 16384);
+  const MapEstimate automatic = mean_3d_analytic(F);
+  BOOST_TEST(automatic.precision_bits == 88u);
+  BOOST_TEST(automatic.correctly_rounded[0]);
+  BOOST_TEST(automatic.correctly_rounded[1]);
+  AnalyticOptions forced;
+  forced.precision_bits = 200;
+  const MapEstimate exact_products = mean_3d_analytic(F, forced);
+  BOOST_TEST(exact_products.correctly_rounded[0]);
+  BOOST_TEST(exact_products.correctly_rounded[1]);
+  BOOST_TEST(automatic.map[0] == exact_products.map[0]);
+  BOOST_TEST(automatic.map[1] == exact_products.map[1]);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
