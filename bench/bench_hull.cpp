@@ -3,7 +3,8 @@
 // chromaticities, then CGAL's hull) as the baseline, for n = 10 … 10^7.
 #include <gmcc/geometry/chromaticity.h>
 #include <gmcc/geometry/chromaticity_hull.h>
-#include <gmcc/geometry/convex_hull.h>
+
+#include "internal/convex_hull_cgal.h"
 
 #include <benchmark/benchmark.h>
 
@@ -32,7 +33,7 @@ void rational_then_cgal(benchmark::State& s) {
     for (const auto& c : input)
       exact.push_back({gmcc::rational_from_double(c[0]), gmcc::rational_from_double(c[1]),
                        gmcc::rational_from_double(c[2])});
-    benchmark::DoNotOptimize(gmcc::convex_hull(
+    benchmark::DoNotOptimize(gmcc::internal::convex_hull_cgal(
         gmcc::perspective_chromaticities(exact, gmcc::NonPositiveBluePolicy::drop).points));
   }
   s.SetItemsProcessed(s.iterations() * s.range(0));

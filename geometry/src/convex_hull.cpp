@@ -1,9 +1,15 @@
-// The library's only CGAL translation unit: keep heavy includes here (MATH §3e).
+// The 2-D hull: a filtered monotone chain, and CGAL's hull kept as its reference (CGAL stays in
+// this translation unit: keep heavy includes here, docs/math.md).
 #include <gmcc/geometry/convex_hull.h>
+#include <gmcc/geometry/enclosure.h>
+
+#include "internal/convex_hull_cgal.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/convex_hull_2.h>
 
+#include <algorithm>
+#include <numeric>
 #include <type_traits>
 
 namespace gmcc {
@@ -14,9 +20,44 @@ using KPoint = Kernel::Point_2;
 // this boundary without conversion.
 static_assert(std::is_same<Kernel::FT::Exact_type, mpq_class>::value,
               "gmcc expects CGAL built with CGAL_USE_GMPXX (link CGAL::CGAL)");
+
+// A coordinate as a certified double enclosure: mpq_get_d truncates (relative error below 2u)
+// within [2^-138, 2^138]; outside that range an unbounded enclosure, which decides nothing.
+Enclosure enclose(const Rational& q) {
+  if (sgn(q) == 0) return Enclosure::exact(0);
+  const long bits = static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) -
+                    static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
+  if (bits < -138 || bits > 138) return {0, Enclosure::unbounded};
+  return Enclosure::relative(mpq_get_d(q.get_mpq_t()), 2 * Enclosure::u);
+}
+
+// The sign of a − b, from the enclosures when they are apart, else exactly (mpq_cmp, no gcd).
+int compare(const Rational& a, const Rational& b, const Enclosure& ea, const Enclosure& eb) {
+  if (ea.hi() < eb.lo()) return -1;
+  if (ea.lo() > eb.hi()) return 1;
+  return cmp(a, b);
+}
+
+struct Approx {
+  Enclosure x, y;
+};
+
+// The sign of orientation(a, b, c) = (b − a) × (c − a). Filter: the determinant enclosed from
+// the coordinates' enclosures. The differences' radii are about u times the coordinates, not
+// times the differences, so for close, nearly collinear points (a many-vertex gamut on a curve:
+// determinants near 10^-18 at 10^6 points of a unit parabola) the enclosure stays about u·|b − a|
+// wide and decides; exact rationals otherwise.
+int turn(const Point2& a, const Point2& b, const Point2& c, const Approx& ea, const Approx& eb, const Approx& ec) {
+  const Enclosure d = (eb.x - ea.x) * (ec.y - ea.y) - (eb.y - ea.y) * (ec.x - ea.x);
+  if (d.finite()) {
+    if (d.positive()) return 1;
+    if (d.negative()) return -1;
+  }
+  return sgn(orientation(a, b, c));
+}
 }  // namespace
 
-ConvexSet2 convex_hull(const std::vector<Point2>& points) {
+ConvexSet2 internal::convex_hull_cgal(const std::vector<Point2>& points) {
   std::vector<KPoint> in;
   in.reserve(points.size());
   for (const Point2& p : points) in.emplace_back(Kernel::FT(p.x), Kernel::FT(p.y));
@@ -27,6 +68,53 @@ ConvexSet2 convex_hull(const std::vector<Point2>& points) {
   cycle.reserve(hull.size());
   for (const KPoint& p : hull) cycle.push_back({CGAL::exact(p.x()), CGAL::exact(p.y())});
   return canonical_convex_set(std::move(cycle));
+}
+
+// Andrew's monotone chain on indices, with filtered predicates. CGAL's lazy exact kernel spent
+// about 17 µs a point on its lazy numbers' allocations (19 s for the 10^6-point parabola of
+// issue 13); this spends well under 1 µs where the filters decide (docs/performance.md,
+// "Many-vertex canonical gamuts (issue 13)").
+ConvexSet2 convex_hull(const std::vector<Point2>& points) {
+  const std::size_t n = points.size();
+  std::vector<Approx> e(n);
+  for (std::size_t i = 0; i < n; ++i) e[i] = {enclose(points[i].x), enclose(points[i].y)};
+  auto order = [&](std::size_t i, std::size_t j) {  // lexicographic: x, then y
+    const int x = compare(points[i].x, points[j].x, e[i].x, e[j].x);
+    return x ? x : compare(points[i].y, points[j].y, e[i].y, e[j].y);
+  };
+  std::vector<std::size_t> p(n);
+  std::iota(p.begin(), p.end(), std::size_t(0));
+  std::sort(p.begin(), p.end(), [&](std::size_t i, std::size_t j) { return order(i, j) < 0; });
+  p.erase(std::unique(p.begin(), p.end(), [&](std::size_t i, std::size_t j) { return order(i, j) == 0; }), p.end());
+  const std::size_t m = p.size();
+  if (m < 3) {  // empty, a point or a segment
+    std::vector<Point2> few;
+    for (std::size_t i : p) few.push_back(points[i]);
+    return canonical_convex_set(std::move(few));
+  }
+  auto left = [&](std::size_t i, std::size_t j, std::size_t k) {
+    return turn(points[i], points[j], points[k], e[i], e[j], e[k]) > 0;
+  };
+  std::vector<std::size_t> h(2 * m);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < m; ++i) {  // lower chain, left to right
+    while (k >= 2 && !left(h[k - 2], h[k - 1], p[i])) --k;
+    h[k++] = p[i];
+  }
+  for (std::size_t i = m - 1, t = k + 1; i-- > 0;) {  // upper chain, right to left
+    while (k >= t && !left(h[k - 2], h[k - 1], p[i])) --k;
+    h[k++] = p[i];
+  }
+  std::vector<Point2> cycle;
+  cycle.reserve(k);
+  for (std::size_t i = 0; i + 1 < k; ++i) cycle.push_back(points[h[i]]);
+  if (cycle.size() < 3) return canonical_convex_set(std::move(cycle));  // all collinear: a segment
+  // Every kept turn is strictly left, the cycle runs counter-clockwise from the lexicographically
+  // smallest point: already canonical.
+  ConvexSet2 out;
+  out.kind = ConvexKind::polygon;
+  out.vertices = std::move(cycle);
+  return out;
 }
 
 }  // namespace gmcc

@@ -2,6 +2,7 @@
 #include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/geometry/feasible_set.h>
 
+#include "internal/feasible_polygon_route.h"
 #include "internal/half_plane.h"
 
 #include <algorithm>
@@ -368,6 +369,12 @@ class Clipper {
     lines_.push_back({a, e, k, nullptr});
     return lines_.size() - 1;
   }
+  // Forgets the line added last: one that did not cut, which no vertex refers to (clip_convex
+  // tries every line, and keeps only those it clips by).
+  void drop_last() {
+    lines_.pop_back();
+    if (exact_.size() > lines_.size()) exact_.resize(lines_.size());
+  }
 
   Vertex vertex(std::size_t p, std::size_t q, std::size_t out) {
     Vertex v{p, q, weight_sign(p, q), out, {-HUGE_VAL, -HUGE_VAL}, {HUGE_VAL, HUGE_VAL}};
@@ -406,10 +413,6 @@ class Clipper {
       if (box_side(l, v) != -1) return false;
     return true;
   }
-  // The same for canonical edge e scaled by image vertex k.
-  bool all_inside(std::size_t e, std::size_t k, const std::vector<Vertex>& cycle) const {
-    return all_inside(scaled_approx(e, k), cycle);
-  }
 
   // The sign of a·x + b·y − c at vertex v for line h (v's weight taken positive).
   int side(std::size_t h, const Vertex& v) {
@@ -419,6 +422,22 @@ class Clipper {
     if (filtered_)
       if (const int b = box_side(lines_[h].approx, v)) return b;
     return side_raw(v.p, v.q, h) * v.w_sign;
+  }
+
+  // sign det[(a_p, b_p); (a_q, b_q)]. Each coefficient is within a relative 6u of a positive
+  // multiple of the exact one (row by row, which keeps the sign), so each product is within
+  // (1+6u)² − 1 < 12.01u; evaluating a·b − c·d adds at most 2.01u of |ab| + |cd| (two rounded
+  // products and a rounded difference). 16u of the computed magnitude covers both.
+  int weight_sign(std::size_t i, std::size_t j) {
+    if (filtered_) {
+      const ApproxLine &p = lines_[i].approx, &q = lines_[j].approx;
+      const double l = p.a * q.b, r = q.a * p.b;
+      const double w = l - r, bound = 16 * u * (std::fabs(l) + std::fabs(r));
+      if (w > bound) return 1;
+      if (w < -bound) return -1;
+    }
+    const Line &p = exact(i), &q = exact(j);
+    return sgn(mpz_class(p.a * q.b - q.a * p.b));
   }
 
   bool same_point(const Vertex& v, const Vertex& w) { return side(w.p, v) == 0 && side(w.q, v) == 0; }
@@ -566,22 +585,6 @@ class Clipper {
     return *built;
   }
 
-  // sign det[(a_p, b_p); (a_q, b_q)]. Each coefficient is within a relative 6u of a positive
-  // multiple of the exact one (row by row, which keeps the sign), so each product is within
-  // (1+6u)² − 1 < 12.01u; evaluating a·b − c·d adds at most 2.01u of |ab| + |cd| (two rounded
-  // products and a rounded difference). 16u of the computed magnitude covers both.
-  int weight_sign(std::size_t i, std::size_t j) {
-    if (filtered_) {
-      const ApproxLine &p = lines_[i].approx, &q = lines_[j].approx;
-      const double l = p.a * q.b, r = q.a * p.b;
-      const double w = l - r, bound = 16 * u * (std::fabs(l) + std::fabs(r));
-      if (w > bound) return 1;
-      if (w < -bound) return -1;
-    }
-    const Line &p = exact(i), &q = exact(j);
-    return sgn(mpz_class(p.a * q.b - q.a * p.b));
-  }
-
   // sign of h_a·(p_c q_b − q_c p_b) + h_b·(p_a q_c − q_a p_c) − h_c·(p_a q_b − q_a p_b): the side of
   // the unnormalised meet of p and q, a 3×3 determinant. Filter: each of its six triple products
   // is within (1+6u)³ − 1 < 18.01u of the exact (scaled) one, and the evaluation below rounds each
@@ -649,6 +652,108 @@ void clip(Clipper& c, const std::vector<Vertex>& cycle, std::size_t hi, std::vec
   }
 }
 
+// What clip_convex did: how many lines it took, and whether the cycle is still strictly convex.
+struct ConvexClip {
+  std::size_t taken;
+  bool strictly_convex;
+};
+
+// Clips a strictly convex counter-clockwise cycle (>= 3 vertices) by lines 0, 1, … of a family
+// (add_line(e) adds line e to the Clipper and returns its index), one after another, with the
+// result of clip() applied line after line: the same vertices, each with the same outgoing line,
+// from another start. It stops early, leaving the rest to clip(), once the cycle degenerates
+// (fewer than 3 vertices: a segment or a point) or empties, or when it finds the cycle not convex.
+//
+// Why it is fast (docs/performance.md, "Many-vertex canonical gamuts (issue 13)"): the vertices
+// strictly outside a line form one arc around the vertex extreme in the direction of the line's
+// outward normal n, and there are none when that vertex is not outside. Vertex v is extreme iff
+// n lies between the normals of the edges into and out of v: weight_sign(in, h) >= 0 >=
+// weight_sign(out, h), an exact test (every vertex passes for a line with a zero normal, and
+// then every vertex has the same side). When n turns counter-clockwise by less than π from line
+// to line, as along a convex polygon's edges (G_c ⊘ q, the map constraint), the extreme vertex
+// moves forward: a pointer advances while the edge out of it comes before n, and the test
+// confirms where it stops (a scan of the cycle when it does not: lines in another order, the
+// first line). Each line then costs its one side test, plus the arc it removes and the at most
+// two crossing vertices it inserts, in a linked cycle: O(|cycle| + lines) for a whole polygon
+// instead of clip()'s O(|cycle|) per line.
+template <class AddLine>
+ConvexClip clip_convex(Clipper& c, std::vector<Vertex>& cycle, std::size_t count, AddLine add_line) {
+  constexpr std::size_t none = static_cast<std::size_t>(-1);
+  std::vector<Vertex> node = std::move(cycle);
+  const std::size_t n = node.size();
+  std::vector<std::size_t> prev(n), next(n);
+  for (std::size_t i = 0; i < n; ++i) prev[i] = (i + n - 1) % n, next[i] = (i + 1) % n;
+  std::size_t live = n, ptr = 0, free_list = none;
+  auto finish = [&](std::size_t taken, bool strict) {
+    cycle.clear();
+    cycle.reserve(live);
+    std::size_t i = ptr;
+    do cycle.push_back(node[i]), i = next[i];
+    while (i != ptr);
+    return ConvexClip{taken, strict};
+  };
+  auto extreme = [&](std::size_t i, std::size_t h) {
+    return c.weight_sign(node[prev[i]].out, h) >= 0 && c.weight_sign(node[i].out, h) <= 0;
+  };
+  auto link = [&](std::size_t from, std::size_t to) { next[from] = to, prev[to] = from; };
+  auto allocate = [&](const Vertex& v) {
+    if (free_list == none) {
+      node.push_back(v), prev.push_back(none), next.push_back(none);
+      return node.size() - 1;
+    }
+    const std::size_t i = free_list;
+    free_list = next[i];
+    node[i] = v;
+    return i;
+  };
+  for (std::size_t e = 0; e < count; ++e) {
+    const std::size_t h = add_line(e);
+    // The vertex extreme for h: forward from the last one, else found by a scan.
+    for (std::size_t steps = 0; steps < live && c.weight_sign(node[ptr].out, h) > 0; ++steps) ptr = next[ptr];
+    if (!extreme(ptr, h)) {
+      std::size_t k = 0;
+      while (k < live && !extreme(ptr, h)) ptr = next[ptr], ++k;
+      if (k == live) {  // no extreme vertex: not convex after all, clip() takes over
+        c.drop_last();
+        return finish(e, false);
+      }
+    }
+    if (c.side(h, node[ptr]) <= 0) {  // no vertex outside: clip() would leave the cycle as it is
+      c.drop_last();
+      continue;
+    }
+    // The arc outside h: back to a, the last vertex before it not outside, on to b, the first after.
+    std::size_t a = prev[ptr], b = next[ptr], removed = 1;
+    int sa = 0, sb = 0;
+    while (a != ptr && (sa = c.side(h, node[a])) > 0) a = prev[a], ++removed;
+    if (a == ptr) {  // every vertex outside: F is empty
+      cycle.clear();
+      return {e + 1, false};
+    }
+    while ((sb = c.side(h, node[b])) > 0) b = next[b], ++removed;  // stops at a at the latest
+    const std::size_t t = prev[b], edge_a = node[a].out, edge_t = node[t].out;
+    // The arc's nodes are free for the crossing vertices (as a list through `next`).
+    next[t] = free_list, free_list = next[a];
+    live -= removed;
+    // As clip() does: leaving h's half-plane from a point on h, the boundary follows h; a strict
+    // crossing out of it continues along h, one back into it along the crossed edge.
+    std::size_t last = a;
+    if (sa == 0) node[a].out = h;
+    auto append = [&](const Vertex& v) {
+      const std::size_t i = allocate(v);
+      link(last, i);
+      last = i;
+      ++live;
+    };
+    if (sa < 0) append(c.vertex(edge_a, h, h));
+    ptr = last;  // its outgoing edge lies on h: extreme for h
+    if (sb < 0) append(c.vertex(edge_t, h, edge_t));
+    link(last, b);
+    if (live < 3) return finish(e + 1, false);  // a segment or a point: clip() from here
+  }
+  return finish(count, true);
+}
+
 // Drop repeated and collinear vertices. Repeats: v equals w iff v lies on both lines meeting in
 // w. Collinear: consecutive p, q, r with p != q are collinear iff r lies on the line carrying the
 // edge p → q (p.out), so a repeat hands its outgoing line to the vertex it merges into.
@@ -688,14 +793,19 @@ struct FeasiblePolygon::State {
 // Builds FeasiblePolygon (a friend of it and of CanonicalConstraints).
 struct FeasiblePolygonBuilder {
   static FeasiblePolygon build(const CanonicalConstraints& canonical, const std::vector<const Point2*>& image,
-                              bool copy_image);
+                              bool copy_image, bool linear = true);
 };
 
-FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const std::vector<Point2>& image) {
+FeasiblePolygon internal::feasible_polygon(const CanonicalConstraints& canonical, const std::vector<Point2>& image,
+                                           Clipping route) {
   std::vector<const Point2*> pointers;
   pointers.reserve(image.size());
   for (const Point2& q : image) pointers.push_back(&q);
-  return FeasiblePolygonBuilder::build(canonical, pointers, true);
+  return FeasiblePolygonBuilder::build(canonical, pointers, true, route == Clipping::convex_pass);
+}
+
+FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const std::vector<Point2>& image) {
+  return internal::feasible_polygon(canonical, image, internal::Clipping::convex_pass);
 }
 
 FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const std::vector<const Point2*>& image) {
@@ -703,7 +813,8 @@ FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const st
 }
 
 FeasiblePolygon FeasiblePolygonBuilder::build(const CanonicalConstraints& canonical,
-                                             const std::vector<const Point2*>& image, bool copy_image) {
+                                             const std::vector<const Point2*>& image, bool copy_image,
+                                             bool linear) {
   if (image.empty()) throw std::invalid_argument("feasible_set: no image chromaticities");
   for (const Point2* q : image)
     if (sgn(q->x) < 0 || sgn(q->y) < 0)
@@ -769,27 +880,38 @@ FeasiblePolygon FeasiblePolygonBuilder::build(const CanonicalConstraints& canoni
   }
   std::vector<Vertex> next;
   std::vector<int> sides;
-  for (std::size_t k = 0; k < k_count; ++k) {
-    if (k == first) continue;
-    for (std::size_t e = 0; e < m; ++e) {
+  // While the cycle is strictly convex, each family of lines (one image vertex's, the map
+  // constraint's) is clipped by clip_convex; clip() takes the lines left once it degenerates, or
+  // all of them on the route kept for comparison (internal/feasible_polygon_route.h).
+  bool strict = linear && cycle.size() >= 3 && c.strictly_convex(cycle);
+  auto clip_family = [&](std::size_t count, auto approximation, auto add_line) {
+    std::size_t e = 0;
+    if (strict) {
+      const ConvexClip r = clip_convex(c, cycle, count, add_line);
+      e = r.taken, strict = r.strictly_convex;
+      if (cycle.empty()) return false;
+    }
+    for (; e < count; ++e) {
       // A line every vertex lies strictly inside of cannot cut: it is not even added.
-      if (c.all_inside(e, k, cycle)) continue;
-      clip(c, cycle, c.add_scaled(e, k), next, sides);
+      if (c.all_inside(approximation(e), cycle)) continue;
+      clip(c, cycle, add_line(e), next, sides);
       cycle.swap(next);
-      if (cycle.empty()) {
-        st.exact = ConvexSet2{};
-        return result;
-      }
+      if (cycle.empty()) return false;
     }
-  }
-  for (std::size_t j = 0; j < g.extra_lines.size(); ++j) {
-    if (c.all_inside(g.extra_approx[j], cycle)) continue;
-    clip(c, cycle, c.add_fixed(j), next, sides);
-    cycle.swap(next);
-    if (cycle.empty()) {
-      st.exact = ConvexSet2{};
-      return result;
-    }
+    return true;
+  };
+  bool empty = false;
+  for (std::size_t k = 0; k < k_count && !empty; ++k)
+    if (k != first)
+      empty = !clip_family(
+          m, [&](std::size_t e) { return c.scaled_approx(e, k); }, [&](std::size_t e) { return c.add_scaled(e, k); });
+  if (!empty)
+    empty = !clip_family(
+        g.extra_lines.size(), [&](std::size_t j) { return g.extra_approx[j]; },
+        [&](std::size_t j) { return c.add_fixed(j); });
+  if (empty) {
+    st.exact = ConvexSet2{};
+    return result;
   }
   st.cycle = reduced(c, cycle);
   st.strictly_convex = st.cycle.size() >= 3 && c.strictly_convex(st.cycle);

@@ -188,8 +188,19 @@ bool report_if_rounded(MapEstimate& e, const std::array<LDInterval, 2>& m) {
 // Only a map within about 2^-8000 of a midpoint between two doubles — in practice one exactly
 // at a midpoint, such as a symmetric segment's — reaches the cap.
 constexpr unsigned rounding_cap_bits = 8192;
-// The precision of the stage between the x87 fast path and the exact-product MPFI loop.
-constexpr unsigned middle_stage_bits = 80;
+// The precision of the stage between the x87 fast path and the exact-product MPFI loop: 80 bits,
+// and more on polygons of many vertices. From vertex enclosures, each edge's c_i loses about
+// log2(n) bits to cancellation (its edges are about 1/n of F's size), so the enclosure's width
+// grows like n·2^-bits: about 2^-62 of the map at n = 10^4 and 80 bits. 73 + log2(n) bits keep it
+// near 2^-63 (a rounding boundary inside about once in 2^10 calls) instead of letting a
+// 10^5–10^6-vertex F (a many-vertex canonical gamut, docs/performance.md "Many-vertex canonical
+// gamuts (issue 13)") fall through to the exact products, 5–10× slower; below 128 vertices it is
+// 80 as before. MPFR's cost is the same up to 128 bits (two limbs).
+unsigned middle_stage_bits(std::size_t n) {
+  unsigned log2n = 0;
+  while ((std::size_t(1) << log2n) < n) ++log2n;
+  return std::max(80u, 73 + log2n);
+}
 
 }  // namespace
 
@@ -214,10 +225,10 @@ MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options
     // usually falls inside. MPFI from vertex enclosures at 80 bits (~2^-70 wide: a boundary
     // falls inside about once in 2^17 calls), before the exact products, whose gcds dominate
     // on long rationals. This stage is what correct rounding costs (docs/performance.md).
-    const auto m = direction_map_from_vertices<Interval>(
-        F, [](const Rational& q) { return Interval(q, middle_stage_bits); });
+    const unsigned bits = middle_stage_bits(F.vertices.size());
+    const auto m = direction_map_from_vertices<Interval>(F, [bits](const Rational& q) { return Interval(q, bits); });
     if (internal::single_rounding(m[0]) && internal::single_rounding(m[1])) {
-      report(e, m, middle_stage_bits);
+      report(e, m, bits);
       return e;
     }
   }

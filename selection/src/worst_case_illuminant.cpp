@@ -1,6 +1,10 @@
+#include <gmcc/geometry/enclosure.h>
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/worst_case_illuminant.h>
 
+#include "internal/worst_case_illuminant_route.h"
+
+#include <algorithm>
 #include <array>
 #include <stdexcept>
 #include <utility>
@@ -200,9 +204,55 @@ std::vector<Rational> roots_in_unit_interval(const Poly& p) {
   return roots;
 }
 
+// An exact rational as a certified double enclosure: mpq_get_d truncates (relative error below
+// 2u) within [2^-138, 2^138]; outside that range an unbounded enclosure, which decides nothing
+// (as rule_errors.cpp encloses).
+Enclosure enclose(const Rational& q) {
+  if (sgn(q) == 0) return Enclosure::exact(0);
+  const long bits = static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) -
+                    static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
+  if (bits < -138 || bits > 138) return {0, Enclosure::unbounded};
+  return Enclosure::relative(mpq_get_d(q.get_mpq_t()), 2 * Enclosure::u);
+}
+
+// The filters below only skip work whose exact result is known not to matter, so the answer is
+// the exact route's, bit for bit; they make a feasible set of 10^5–10^6 vertices (a many-vertex
+// canonical gamut, docs/performance.md "Many-vertex canonical gamuts (issue 13)") cost
+// floating-point operations per vertex and edge instead of exact polynomial algebra.
+
+// The cos²-closeness (e·w)²/|w|² of a vertex, w = c ⊘ x, enclosed.
+Enclosure closeness_enclosure(const std::array<Enclosure, 3>& e, const std::array<Enclosure, 3>& c,
+                              const Enclosure& x, const Enclosure& y) {
+  const Enclosure w0 = c[0] / x, w1 = c[1] / y;
+  const Enclosure ew = e[0] * w0 + e[1] * w1 + e[2] * c[2];
+  return ew * ew / (w0 * w0 + w1 * w1 + c[2] * c[2]);
+}
+
+// True when the edge polynomial (e·v′)|v|² − (e·v)(v·v′) certainly has no zero for t in [0, 1]:
+// then the angle has no stationary point on the edge and roots_in_unit_interval finds no root.
+// The polynomial is one in a(t), b(t), Δa, Δb (v = (c1·b, c2·a, c3·a·b), v′ its derivative), so
+// its enclosure over the box [min a, max a] × [min b, max b], which holds the whole edge, holds
+// its values on the edge (a positive scaling, as the exact route applies, changes no sign).
+bool no_stationary_point(const std::array<Enclosure, 3>& e, const std::array<Enclosure, 3>& c,
+                         const Enclosure& px, const Enclosure& py, const Enclosure& qx, const Enclosure& qy) {
+  const Enclosure a = Enclosure::between(std::min(px.lo(), qx.lo()), std::max(px.hi(), qx.hi()));
+  const Enclosure b = Enclosure::between(std::min(py.lo(), qy.lo()), std::max(py.hi(), qy.hi()));
+  const Enclosure da = qx - px, db = qy - py;
+  const std::array<Enclosure, 3> v{c[0] * b, c[1] * a, c[2] * a * b};
+  const std::array<Enclosure, 3> dv{c[0] * db, c[1] * da, c[2] * (a * db + b * da)};
+  Enclosure ev = e[0] * v[0], edv = e[0] * dv[0], vv = v[0] * v[0], vdv = v[0] * dv[0];
+  for (int j = 1; j < 3; ++j) {
+    ev = ev + e[j] * v[j], edv = edv + e[j] * dv[j];
+    vv = vv + v[j] * v[j], vdv = vdv + v[j] * dv[j];
+  }
+  const Enclosure s = edv * vv - ev * vdv;
+  return s.finite() && !s.uncertain_sign();
+}
+
 }  // namespace
 
-IlluminantWorstCase worst_case_illuminant(const ConvexSet2& F, const Point2& m, const Colour& c) {
+IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const Point2& m, const Colour& c,
+                                                    bool filtered) {
   if (F.kind == ConvexKind::empty)
     throw std::invalid_argument("worst_case_illuminant: empty feasible set");
   for (const Rational* x : {&m.x, &m.y, &c.r, &c.g, &c.b})
@@ -221,8 +271,31 @@ IlluminantWorstCase worst_case_illuminant(const ConvexSet2& F, const Point2& m, 
     const Rational ew = e[0] * w0 + e[1] * w1 + e[2] * c.b;
     return Rational(ew * ew / (w0 * w0 + w1 * w1 + c.b * c.b));
   };
+  // The vertices in enclosures: only those whose closeness may be the least need the exact
+  // comparison. The first vertex attaining the least exact closeness is among them (its lower
+  // end is at most every upper end), and is still found first, in order.
+  const std::array<Enclosure, 3> ce{enclose(c.r), enclose(c.g), enclose(c.b)};
+  const std::array<Enclosure, 3> ee{enclose(e[0]), enclose(e[1]), enclose(e[2])};
+  const auto& vs = F.vertices;
+  std::vector<std::array<Enclosure, 2>> ve;  // the vertices' enclosures (when filtered)
+  std::vector<double> lower(vs.size(), -Enclosure::unbounded);
+  double least_upper = Enclosure::unbounded;
+  if (filtered) {
+    ve.resize(vs.size());
+    for (std::size_t i = 0; i < vs.size(); ++i) {
+      ve[i] = {enclose(vs[i].x), enclose(vs[i].y)};
+      const Enclosure k = closeness_enclosure(ee, ce, ve[i][0], ve[i][1]);
+      if (!k.finite()) continue;
+      lower[i] = k.lo();
+      least_upper = std::min(least_upper, k.hi());
+    }
+  }
+  std::vector<std::size_t> candidates;
+  for (std::size_t i = 0; i < vs.size(); ++i)
+    if (!(lower[i] > least_upper)) candidates.push_back(i);
+
   IlluminantWorstCase worst;
-  worst.location = F.vertices.front();
+  worst.location = vs[candidates.front()];
   Rational worst_closeness = closeness(worst.location);
   auto consider = [&](Point2 x, bool at_vertex) {
     Rational k = closeness(x);
@@ -232,15 +305,16 @@ IlluminantWorstCase worst_case_illuminant(const ConvexSet2& F, const Point2& m, 
       worst.at_vertex = at_vertex;
     }
   };
-  for (const Point2& v : F.vertices) consider(v, true);
+  for (std::size_t i : candidates) consider(vs[i], true);
 
   // A segment has one edge, a polygon n, a point none.
-  const auto& vs = F.vertices;
   const std::size_t edges =
       F.kind == ConvexKind::polygon ? vs.size() : F.kind == ConvexKind::segment ? 1 : 0;
   for (std::size_t i = 0; i < edges; ++i) {
+    const std::size_t j = (i + 1) % vs.size();
+    if (filtered && no_stationary_point(ee, ce, ve[i][0], ve[i][1], ve[j][0], ve[j][1])) continue;
     const Point2& p = vs[i];
-    const Point2& q = vs[(i + 1) % vs.size()];
+    const Point2& q = vs[j];
     const Rational da = q.x - p.x, db = q.y - p.y;
     // v(t) = a·b · (c ⊘ (a, b, 1)) = (c1·b, c2·a, c3·a·b) with a = p.x + t·da, b = p.y + t·db,
     // scaled by a positive integer to integer coefficients (the angle's stationary points are
@@ -271,6 +345,10 @@ IlluminantWorstCase worst_case_illuminant(const ConvexSet2& F, const Point2& m, 
   }
   worst.angle_deg = illuminant_angular_error_deg(m, worst.location, c);
   return worst;
+}
+
+IlluminantWorstCase worst_case_illuminant(const ConvexSet2& F, const Point2& m, const Colour& c) {
+  return internal::worst_case_illuminant(F, m, c, true);
 }
 
 double worst_case_illuminant_deg(const ConvexSet2& F, const Point2& m, const Colour& c) {

@@ -46,7 +46,11 @@ class CanonicalConstraints {
 /// written as half-planes n_e·x <= k_e (a degenerate G_c as pairs of opposite half-planes), and
 /// each image vertex q gives the half-planes (n_e ⊙ q)·m <= k_e. These are clipped, in exact
 /// rational arithmetic, from the box [0, max x / max q1] × [0, max y / max q2], which they
-/// imply (Sutherland–Hodgman on closed half-planes: degenerate results are kept, not lost).
+/// imply (Sutherland–Hodgman on closed half-planes: degenerate results are kept, not lost), or
+/// from G_c ⊘ q for one image vertex q > 0 when G_c is a polygon. While the clipped cycle is
+/// strictly convex, each image vertex's m half-planes, whose normals turn counter-clockwise, are
+/// taken in one pass around the cycle that removes only the vertices outside each line; a
+/// degenerate cycle (a segment or a point) is clipped line by line. Same set either way.
 ///
 /// \param canonical  G_c, non-empty (any kind).
 /// \param image      image chromaticities, non-empty, components >= 0.
@@ -57,7 +61,9 @@ class CanonicalConstraints {
 /// bound and in exact integers only when the bound does not settle it; vertices are kept as pairs
 /// of input lines and constructed exactly only at the end (docs/performance.md). The result is
 /// the same exact set either way.
-/// Complexity O(k·m·|F|) for k image-hull vertices and m canonical edges.
+/// Complexity O(k·(m + n)) for k image-hull vertices, m canonical edges and n ≤ k·m the largest
+/// intermediate cycle (docs/performance.md, "Many-vertex canonical gamuts (issue 13)"), after
+/// the image hull.
 ConvexSet2 feasible_set(const ConvexSet2& canonical, const std::vector<Point2>& image);
 
 /// The same, with G_c prepared once.

@@ -43,7 +43,10 @@ struct IlluminantWorstCase {
 /// \param canonical_illuminant c, components > 0.
 /// \throws std::invalid_argument for an empty F or a component ≤ 0.
 /// Complexity: O(n) edges, each O(1) polynomial operations on degree ≤ 5 plus O(100 + log(1/s))
-/// Sturm evaluations, s the separation of that edge's roots.
+/// Sturm evaluations, s the separation of that edge's roots. Double-precision enclosures skip
+/// that work first wherever it cannot change the answer: on an edge whose quartic certainly has
+/// no zero (its enclosure over the edge's bounding box), and for a vertex whose closeness is
+/// certainly not the least; on many-vertex sets nearly every edge and vertex is skipped so.
 IlluminantWorstCase worst_case_illuminant(const ConvexSet2& F, const Point2& m,
                                           const Colour& canonical_illuminant);
 
