@@ -43,6 +43,8 @@ Chromaticities chromaticities_of(const ColourTable& table, NonPositiveBluePolicy
   return c;
 }
 
+constexpr std::size_t kMaxMinViolationEdges = 2000;
+
 // --on-empty: when F is empty, apply the policy and replace F by what it recovers.
 RecoveryReport recover(const std::string& policy, const Expansion& expansion,
                        const std::vector<Point2>& canonical, const std::vector<Point2>& image,
@@ -65,6 +67,15 @@ RecoveryReport recover(const std::string& policy, const Expansion& expansion,
     if (!rec.grown->found) return rec;
     r.feasible = rec.grown->feasible;
   } else {
+    // min_violation clips its minimisers edge by edge in rationals: O(k·m²) for m gamut edges and
+    // k image hull vertices (2000 edges, 3 image vertices: about 13 s; 6000: 150 s). Refused up
+    // front beyond kMaxMinViolationEdges (docs/cli.md "Resource limits").
+    if (r.canonical_gamut.vertices.size() > kMaxMinViolationEdges)
+      throw InputError("--on-empty", 0,
+                       "min-violation takes canonical gamuts of at most " +
+                           std::to_string(kMaxMinViolationEdges) + " vertices; this one has " +
+                           std::to_string(r.canonical_gamut.vertices.size()) +
+                           " (grow-canonical has no such limit)");
     rec.min_violation = min_violation(r.canonical_gamut, image, C);
     r.feasible = rec.min_violation->feasible;
   }
@@ -217,7 +228,9 @@ std::string select_output(const SelectSettings& s, const ColourTable& canonical,
                        "an illuminant needs every channel > 0 (its map c ⊘ e is undefined)");
     }
     c.unconstrained = r.feasible;
-    r.feasible = intersection(r.feasible, c.maps);
+    // F ∩ C in the feasible set's own convex pass (C's edges as extra lines): linear in |C|,
+    // where intersecting the finished F with C cost O(|F|·|C|) (issue 13).
+    r.feasible = feasible_set(CanonicalConstraints(r.canonical_gamut, c.maps), iq.points);
     r.constraint = std::move(c);
   }
   if (r.feasible.kind == ConvexKind::empty)

@@ -141,6 +141,18 @@ def main():
                 m = json.loads(out)["selections"]["mean_3d"]
                 expect(rc == 0 and m["method"] == "analytic" and m["map"] is not None, (e, m))
 
+        def min_violation_refuses_beyond_its_limit():
+            # O(k·m²) in rationals: 6000 gamut edges took 150 s; more than 2000 are refused.
+            n = 2001
+            para = r.file("\n".join(f"{1 + Fr(i, n)},{1 + Fr(i, n) ** 2},1"
+                                    for i in range(n)) + "\n")
+            far = r.file("1,1,1\n1000,1,1\n1,1000,1\n")
+            refused(r, ["select", "--canonical", para, "--image", far, "--on-empty", "min-violation"],
+                    "--on-empty", "at most 2000 vertices", "2001")
+            rc, out, err = r.run("select", "--canonical", para, "--image", far, "--on-empty",
+                                 "grow-canonical", "--json", timeout=300)
+            expect(rc == 0 and json.loads(out)["recovery"]["applied"], (rc, err))
+
         for name, fn in list(locals().items()):
             if callable(fn) and name not in ("r", "refused"):
                 r.check(name, fn)
