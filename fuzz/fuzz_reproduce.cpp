@@ -9,12 +9,13 @@
 //
 // Every run must either stop at a clear error — CLI11's ParseError (usage, exit 2), gmcc's
 // InputError, or std::invalid_argument / std::domain_error from the light names (cli/reproduce.cpp
-// turns both into an InputError naming --lights) — with a non-empty one-line message, or build a
-// setup in which every light's three channels (as the sensors see it, canonical and test) are
-// > 0 and finite, and so are the true maps, as doubles too (the experiments report doubles); the
-// surfaces' colours are >= 0. The small experiment must then give finite angles in [0°, 180°];
-// for the synthetic experiment (narrow-band sensors: the diagonal model holds exactly) every
-// scene's feasible set holds the true map (docs/reproduction.md).
+// turns both into an InputError naming --canonical or --lights) — with a non-empty one-line
+// message, or build a setup in which every light's three channels (as the sensors see it,
+// canonical and test) are > 0 and finite, and so are the true maps, as doubles too (the
+// experiments report doubles); the surfaces' colours are >= 0. The small experiment must then
+// give finite angles in [0°, 180°]; for the synthetic experiment (narrow-band sensors: the
+// diagonal model holds exactly) every scene's feasible set holds the true map
+// (docs/reproduction.md).
 
 #include "fuzz_support.h"
 
@@ -161,14 +162,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::size_t lights_asked = 0;
   try {
     config = gmcc::cli::config_from(o);
+    // As cli/reproduce.cpp's synthetic(o) and camera(o), with the tables already read: the light
+    // count first, then the names (which those wrappers check one by one to blame --canonical or
+    // --lights; the setup throws the same errors unwrapped).
+    gmcc::cli::check_light_count(o.lights);
     if (camera) {
-      // As cli/reproduce.cpp's camera(o), with the tables already read.
       setup = gmcc::camera_setup(t.sensors, o.canonical_surfaces == "macbeth" ? t.macbeth : t.sfu1995, t.macbeth,
                                  t.sfu_lights, o.canonical.empty() ? "solux-4700" : o.canonical,
                                  o.lights.empty() ? gmcc::cli::camera_lights : o.lights);
       lights_asked = o.lights.empty() ? gmcc::cli::camera_lights.size() : o.lights.size();
     } else {
-      // As cli/reproduce.cpp's synthetic(o), which turns both exceptions into InputError.
       setup = gmcc::synthetic_setup(t.munsell, t.basis, o.canonical.empty() ? "D55" : o.canonical,
                                     o.lights.empty() ? gmcc::cli::paper_lights : o.lights);
       lights_asked = o.lights.empty() ? gmcc::cli::paper_lights.size() : o.lights.size();

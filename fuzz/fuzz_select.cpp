@@ -22,6 +22,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -242,13 +244,19 @@ void check_json_3d(const std::string& out) {
   }
 }
 
-// A folder of its own for the 3-D route's files, made once per process.
+// A folder of its own for the 3-D route's files, made once per process and removed at its exit
+// (fork mode starts many processes).
 const std::string& scratch_dir() {
   static const std::string dir = [] {
     char name[] = "/tmp/gmcc-fuzz-select-XXXXXX";
     FUZZ_CHECK(::mkdtemp(name) != nullptr, "cannot make a temporary folder");
     return std::string(name);
   }();
+  static const bool cleanup = std::atexit([] {
+    std::error_code ignored;
+    std::filesystem::remove_all(scratch_dir(), ignored);
+  }) == 0;
+  (void)cleanup;
   return dir;
 }
 
