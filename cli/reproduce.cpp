@@ -78,7 +78,7 @@ std::string data_file(const ReproduceOptions& o, const char* name) {
 
 ExperimentConfig config_from(const ReproduceOptions& o) {
   ExperimentConfig c;
-  c.scenes = integer_option("--scenes", o.scenes, 1, 100000000);
+  c.scenes = integer_option("--scenes", o.scenes, 1, 1000000);  // docs/cli.md "Resource limits"
   c.seed = integer_option("--seed", o.seed, 0, ~std::uint64_t(0));
   c.max_surfaces = static_cast<int>(integer_option("--surfaces", o.max_surfaces, 1, 24));
   c.threads = static_cast<unsigned>(integer_option("--threads", o.threads, 0, 256));

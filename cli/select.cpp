@@ -111,7 +111,7 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
   cmd->add_option("--precision", o.precision_bits,
                   "analytic: force one MPFI evaluation at this many bits, 53 to 2^20 "
                   "(default 0: automatic)");
-  cmd->add_option("--order", o.order, "quadrature: Gauss–Legendre points per direction, 1 to 1000")
+  cmd->add_option("--order", o.order, "quadrature: Gauss–Legendre points per direction, 1 to 256")
       ->capture_default_str();
   cmd->add_option("--samples", o.samples, "monte-carlo: points drawn in the unit cube, 1 to 10^9")
       ->capture_default_str();
@@ -180,7 +180,7 @@ SelectSettings select_settings(const SelectOptions& o) {
   s.mean3d.precision_bits = static_cast<unsigned>(integer_option("--precision", o.precision_bits, 0, 1u << 20));
   if (s.mean3d.precision_bits != 0 && s.mean3d.precision_bits < 53)
     throw InputError("--precision", 0, "must be 0 (automatic) or from 53 to 1048576 bits");
-  s.mean3d.order = static_cast<unsigned>(integer_option("--order", o.order, 1, 1000));
+  s.mean3d.order = static_cast<unsigned>(integer_option("--order", o.order, 1, 256));
   s.mean3d.samples = integer_option("--samples", o.samples, 1, 1000000000);
   s.mean3d.seed = integer_option("--seed", o.seed, 0, ~std::uint64_t(0));
   return s;

@@ -19,9 +19,9 @@ constexpr long double unit_roundoff = std::numeric_limits<long double>::epsilon(
 // must shrink to the distance √(1 + |x|²) of its nearest corner, and beyond |x| ~ 10^1233 the
 // weight overflows the x87 range anyway (the route then declines): 2^4200 > 10^1264.
 constexpr unsigned depth_limit = 4200;
-// At most 2^28 nodes (about 10 s at 30–40 ns a node): the resource limit of docs/cli.md, so no
+// At most 2^26 nodes (2–3 s at 30–40 ns a node): the resource limit of docs/cli.md, so no
 // order or feasible set makes the route run without bound; beyond it the route declines.
-constexpr std::uint64_t node_budget = std::uint64_t(1) << 28;
+constexpr std::uint64_t node_budget = std::uint64_t(1) << 26;
 
 // Gauss–Legendre nodes and weights on [0, 1]: Newton's method on P_n in long double.
 void gauss_legendre_01(unsigned n, std::vector<long double>& x, std::vector<long double>& w) {
@@ -155,7 +155,7 @@ void triangle(const Rule& r, const long double P[2], const long double Q[2], con
   }
   const long double ex = Q[0] - P[0], ey = Q[1] - P[1], fx = R[0] - P[0], fy = R[1] - P[1];
   const std::size_t n = r.x.size();
-  if ((s.nodes += n * n) > node_budget) {
+  if ((s.nodes += std::max<std::size_t>(n * n, 16)) > node_budget) {  // a piece costs >= 16 nodes' time
     s.budget_exceeded = true;
     return;
   }
@@ -191,7 +191,7 @@ void segment(const Rule& r, const long double P[2], const long double Q[2], long
     segment(r, M, Q, length / 2, depth + 1, s);
     return;
   }
-  if ((s.nodes += r.x.size()) > node_budget) {
+  if ((s.nodes += std::max<std::size_t>(r.x.size(), 16)) > node_budget) {
     s.budget_exceeded = true;
     return;
   }
@@ -258,8 +258,7 @@ Centroid offset_centroid(const std::vector<Point2>& v, ConvexKind kind, unsigned
     return out;
   }
   if (s.budget_exceeded) {
-    out.why = "the subdivision needs more than " + std::to_string(node_budget) +
-              " nodes at this order (a lower order needs fewer)";
+    out.why = "the subdivision needs more than 2^26 nodes (its work limit) on this feasible set";
     return out;
   }
   if (s.overflow || !(sw > 0) || !std::isfinite(sw)) {
