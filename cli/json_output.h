@@ -1,5 +1,5 @@
 #pragma once
-// What `gmcc select` prints: the JSON contract of SPEC §5 and a short summary for people.
+// What `gmcc select` prints: the JSON contract of docs/cli.md "JSON output" and a short summary for people.
 
 #include <gmcc/geometry/canonical_gamut.h>
 #include <gmcc/geometry/convex_set.h>

@@ -95,7 +95,7 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
                   "canonical colours, one r,g,b per line (decimal or p/q, read exactly)")
       ->required();
   cmd->add_option("--image", o.image_path, "image colours, same format")->required();
-  cmd->add_flag("--json", o.json, "print one JSON object (SPEC §5) instead of a summary");
+  cmd->add_flag("--json", o.json, "print one JSON object (docs/cli.md, \"JSON output\") instead of a summary");
   cmd->add_option("--expand", o.expand_factor,
                   "expand the canonical gamut by this factor (0.1 = 10%; exact)")
       ->capture_default_str();

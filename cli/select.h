@@ -1,6 +1,6 @@
 #pragma once
 // `gmcc select`: the feasible set of one image against one canonical gamut and the three
-// selection rules (SPEC §5).
+// selection rules (docs/cli.md "gmcc select").
 
 #include <gmcc/geometry/canonical_gamut.h>
 #include <gmcc/geometry/chromaticity.h>
@@ -50,7 +50,7 @@ struct SelectSettings {
 /// \throws InputError naming the option.
 SelectSettings select_settings(const SelectOptions& options);
 
-/// The whole output of `gmcc select` for two parsed colour files: one JSON document (SPEC §5)
+/// The whole output of `gmcc select` for two parsed colour files: one JSON document (docs/cli.md "JSON output")
 /// or the summary. Split from run_select so that the pipeline runs in-process (fuzz/).
 /// \throws InputError when the files admit no answer (no usable colour, unbounded F).
 /// `illuminants`, when given, are the plausible lights of the illumination constraint.

@@ -21,16 +21,6 @@ using KPoint = Kernel::Point_2;
 static_assert(std::is_same<Kernel::FT::Exact_type, mpq_class>::value,
               "gmcc expects CGAL built with CGAL_USE_GMPXX (link CGAL::CGAL)");
 
-// A coordinate as a certified double enclosure: mpq_get_d truncates (relative error below 2u)
-// within [2^-138, 2^138]; outside that range an unbounded enclosure, which decides nothing.
-Enclosure enclose(const Rational& q) {
-  if (sgn(q) == 0) return Enclosure::exact(0);
-  const long bits = static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) -
-                    static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
-  if (bits < -138 || bits > 138) return {0, Enclosure::unbounded};
-  return Enclosure::relative(mpq_get_d(q.get_mpq_t()), 2 * Enclosure::u);
-}
-
 // The sign of a − b, from the enclosures when they are apart, else exactly (mpq_cmp, no gcd).
 int compare(const Rational& a, const Rational& b, const Enclosure& ea, const Enclosure& eb) {
   if (ea.hi() < eb.lo()) return -1;
@@ -77,7 +67,7 @@ ConvexSet2 internal::convex_hull_cgal(const std::vector<Point2>& points) {
 ConvexSet2 convex_hull(const std::vector<Point2>& points) {
   const std::size_t n = points.size();
   std::vector<Approx> e(n);
-  for (std::size_t i = 0; i < n; ++i) e[i] = {enclose(points[i].x), enclose(points[i].y)};
+  for (std::size_t i = 0; i < n; ++i) e[i] = {enclose_rational(points[i].x), enclose_rational(points[i].y)};
   auto order = [&](std::size_t i, std::size_t j) {  // lexicographic: x, then y
     const int x = compare(points[i].x, points[j].x, e[i].x, e[j].x);
     return x ? x : compare(points[i].y, points[j].y, e[i].y, e[j].y);

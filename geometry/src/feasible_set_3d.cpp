@@ -92,13 +92,14 @@ LpSolution solve_linear_program(const LinearProgram& lp) {
     throw std::invalid_argument("solve_linear_program: inconsistent sizes");
   for (const std::vector<Rational>& r : lp.rows)
     if (r.size() != lp.variables) throw std::invalid_argument("solve_linear_program: row of the wrong length");
-  std::vector<std::size_t> all(lp.rows.size());
-  for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-  if (lp.initial.empty()) {
+  auto every_row = [&lp] {
+    std::vector<std::size_t> all(lp.rows.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
     LpSolution s = solve_rows(lp, all);
     s.rows_taken = std::move(all);
     return s;
-  }
+  };
+  if (lp.initial.empty()) return every_row();
 
   std::vector<bool> taken(lp.rows.size(), false);
   std::vector<std::size_t> take;
@@ -111,11 +112,7 @@ LpSolution solve_linear_program(const LinearProgram& lp) {
     LpSolution s = solve_rows(lp, take);
     // Infeasible on a subset: infeasible. Unbounded on a subset says nothing: every row at once.
     if (s.status == LpStatus::infeasible) return s;
-    if (s.status == LpStatus::unbounded) {
-      s = solve_rows(lp, all);
-      s.rows_taken = std::move(all);
-      return s;
-    }
+    if (s.status == LpStatus::unbounded) return every_row();
     std::vector<std::pair<Rational, std::size_t>> violated;
     for (std::size_t i = 0; i < lp.rows.size(); ++i) {
       if (taken[i]) continue;
@@ -359,6 +356,7 @@ ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical_colours,
   // Max-slack LP; rows found tight on all of F3 become equalities until the slack is > 0.
   std::vector<bool> equality(rows.size(), false);
   std::vector<bool> warm(rows.size(), false);  // rows an earlier round's constraint generation took
+  std::vector<Point3> basis;                   // a basis of the equalities' normals
   Point3 inner;
   for (;;) {
     internal::LinearProgram lp;
@@ -403,23 +401,15 @@ ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical_colours,
     // equality at `inner` (a point of F3) holds with equality on all of F3 (a = Σλ_i·a_i gives
     // a·y = Σλ_i·b_i = a·inner = b on the equalities' flat): so when F3 is a point, every row
     // through it at once instead of a few per round (docs/math.md §1b "The exact LP").
-    std::vector<Point3> span;
-    for (std::size_t i = 0; i < rows.size() && span.size() < 3; ++i)
-      if (equality[i] && independent_of(span, rows[i].a)) span.push_back(rows[i].a);
+    basis.clear();
+    for (std::size_t i = 0; i < rows.size() && basis.size() < 3; ++i)
+      if (equality[i] && independent_of(basis, rows[i].a)) basis.push_back(rows[i].a);
     for (std::size_t i = 0; i < rows.size(); ++i)
-      if (!equality[i] && dot(rows[i].a, inner) == rows[i].b && !independent_of(span, rows[i].a))
+      if (!equality[i] && dot(rows[i].a, inner) == rows[i].b && !independent_of(basis, rows[i].a))
         equality[i] = true;
   }
-
-  // The equalities' rank.
-  std::vector<Point3> basis;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (!equality[i]) continue;
-    const Point3& a = rows[i].a;
-    if (basis.empty() || (basis.size() == 1 && !is_zero(cross(basis[0], a))) ||
-        (basis.size() == 2 && sgn(dot(cross(basis[0], basis[1]), a)) != 0))
-      basis.push_back(a);
-  }
+  // `basis` spans the equalities' normals: the rows just added lie in its span, and the round that
+  // ends the loop adds none. Its size is their rank.
 
   if (basis.size() == 3) return canonical_convex_set_3(ConvexKind3::point, {inner}, {});
   if (basis.size() == 2) {

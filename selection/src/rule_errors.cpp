@@ -13,18 +13,13 @@ namespace {
 // a second stage for thin feasible sets. T is its number type, u its unit roundoff; every pad is
 // a multiple of u.
 
-// An exact rational as an enclosure. Doubles: mpq_get_d truncates (relative error below 2u)
-// within [2^-138, 2^138]; outside that range an unbounded enclosure, which no result accepts.
-// Extended: numerator and denominator's top 64 bits and a division (internal::enclose_ld).
+// An exact rational as an enclosure. Doubles: enclose_rational (enclosure.h; an unbounded
+// enclosure outside [2^-138, 2^138], which no result accepts). Extended: numerator and denominator's top 64 bits and a division (internal::enclose_ld).
 template <class E>
 E enclose(const Rational& q);
 template <>
 Enclosure enclose<Enclosure>(const Rational& q) {
-  if (sgn(q) == 0) return Enclosure::exact(0);
-  const long bits = static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) -
-                    static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
-  if (bits < -138 || bits > 138) return {0, Enclosure::unbounded};
-  return Enclosure::relative(mpq_get_d(q.get_mpq_t()), 2 * Enclosure::u);
+  return enclose_rational(q);
 }
 template <>
 LongEnclosure enclose<LongEnclosure>(const Rational& q) {

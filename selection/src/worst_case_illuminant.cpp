@@ -204,17 +204,6 @@ std::vector<Rational> roots_in_unit_interval(const Poly& p) {
   return roots;
 }
 
-// An exact rational as a certified double enclosure: mpq_get_d truncates (relative error below
-// 2u) within [2^-138, 2^138]; outside that range an unbounded enclosure, which decides nothing
-// (as rule_errors.cpp encloses).
-Enclosure enclose(const Rational& q) {
-  if (sgn(q) == 0) return Enclosure::exact(0);
-  const long bits = static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) -
-                    static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
-  if (bits < -138 || bits > 138) return {0, Enclosure::unbounded};
-  return Enclosure::relative(mpq_get_d(q.get_mpq_t()), 2 * Enclosure::u);
-}
-
 // The filters below only skip work whose exact result is known not to matter, so the answer is
 // the exact route's, bit for bit; they make a feasible set of 10^5–10^6 vertices (a many-vertex
 // canonical gamut, docs/performance.md "Many-vertex canonical gamuts (issue 13)") cost
@@ -290,8 +279,8 @@ IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const P
   // The vertices in enclosures: only those whose closeness may be the least need the exact
   // comparison. The first vertex attaining the least exact closeness is among them (its lower
   // end is at most every upper end), and is still found first, in order.
-  const std::array<Enclosure, 3> ce{enclose(c.r), enclose(c.g), enclose(c.b)};
-  const std::array<Enclosure, 3> ee{enclose(e[0]), enclose(e[1]), enclose(e[2])};
+  const std::array<Enclosure, 3> ce{enclose_rational(c.r), enclose_rational(c.g), enclose_rational(c.b)};
+  const std::array<Enclosure, 3> ee{enclose_rational(e[0]), enclose_rational(e[1]), enclose_rational(e[2])};
   const auto& vs = F.vertices;
   std::vector<std::array<Enclosure, 2>> ve;  // the vertices' enclosures (when filtered)
   std::vector<double> lower(vs.size(), -Enclosure::unbounded);
@@ -299,7 +288,7 @@ IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const P
   if (filtered) {
     ve.resize(vs.size());
     for (std::size_t i = 0; i < vs.size(); ++i) {
-      ve[i] = {enclose(vs[i].x), enclose(vs[i].y)};
+      ve[i] = {enclose_rational(vs[i].x), enclose_rational(vs[i].y)};
       const Enclosure k = closeness_enclosure(ee, ce, ve[i][0], ve[i][1]);
       if (!k.finite()) continue;
       lower[i] = k.lo();

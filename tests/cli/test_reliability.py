@@ -10,42 +10,14 @@ The last line is `N passed, N failed`; the exit status is 0 iff none failed.
 
 import json
 import os
-import subprocess
 import sys
 import tempfile
 from fractions import Fraction as Fr
 
+from cli_harness import Runner, expect
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "..", "..", "data")
-
-
-class Runner:
-    def __init__(self, binary, tmp):
-        self.binary, self.tmp, self.passed, self.failed, self.n = binary, tmp, 0, 0, 0
-
-    def file(self, text):
-        self.n += 1
-        path = os.path.join(self.tmp, f"f{self.n}.csv")
-        with open(path, "w") as f:
-            f.write(text)
-        return path
-
-    def run(self, *args, timeout=300):
-        p = subprocess.run([self.binary, *args], capture_output=True, text=True, timeout=timeout)
-        return p.returncode, p.stdout, p.stderr
-
-    def check(self, name, fn):
-        try:
-            fn()
-            self.passed += 1
-        except Exception as e:  # noqa: BLE001 - report every failure and go on
-            self.failed += 1
-            print(f"FAIL {name}: {e!r}")
-
-
-def expect(cond, what):
-    if not cond:
-        raise AssertionError(what)
 
 
 def refused(r, args, option, *words):
@@ -61,7 +33,7 @@ def refused(r, args, option, *words):
 def main():
     binary = sys.argv[1]
     with tempfile.TemporaryDirectory() as tmp:
-        r = Runner(binary, tmp)
+        r = Runner(binary, tmp, timeout=300)
         synthetic = ["reproduce", "synthetic", "--scenes", "1", "--surfaces", "1"]
 
         def planck_out_of_range():

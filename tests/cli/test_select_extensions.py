@@ -8,60 +8,24 @@ in the comments) and checks the JSON members. The last line is `N passed, N fail
 status is 0 iff none failed.
 """
 
-import json
 import os
-import subprocess
 import sys
 import tempfile
 from fractions import Fraction as Fr
 
+from cli_harness import Runner, expect
+
 SQUARE = "1,1,1\n2,1,1\n2,2,1\n1,2,1\n"  # chromaticities: the square [1, 2]^2
-
-
-class Runner:
-    def __init__(self, binary, tmp):
-        self.binary, self.tmp, self.passed, self.failed, self.n = binary, tmp, 0, 0, 0
-
-    def file(self, text):
-        self.n += 1
-        path = os.path.join(self.tmp, f"f{self.n}.csv")
-        with open(path, "w") as f:
-            f.write(text)
-        return path
-
-    def run(self, *args):
-        p = subprocess.run([self.binary, "select", *args], capture_output=True, text=True,
-                           timeout=120)
-        return p.returncode, p.stdout, p.stderr
-
-    def json(self, *args):
-        rc, out, err = self.run(*args, "--json")
-        if rc != 0:
-            raise AssertionError(f"exit {rc}: {err.strip()}")
-        return json.loads(out)
-
-    def check(self, name, fn):
-        try:
-            fn()
-            self.passed += 1
-        except Exception as e:  # noqa: BLE001 - report every failure and go on
-            self.failed += 1
-            print(f"FAIL {name}: {e!r}")
 
 
 def fr_pairs(vertices):
     return [tuple(Fr(x) for x in v) for v in vertices]
 
 
-def expect(cond, what):
-    if not cond:
-        raise AssertionError(what)
-
-
 def main():
     binary = sys.argv[1]
     with tempfile.TemporaryDirectory() as tmp:
-        r = Runner(binary, tmp)
+        r = Runner(binary, tmp, prefix=["select"])
         square, one = r.file(SQUARE), r.file("1,1,1\n")
         wide = r.file("1,1,1\n4,1,1\n")  # x-extent 1..4 against the gamut's 1..2: F empty
 

@@ -12,6 +12,8 @@
 /// for all of them, and the smallest normal number for any underflow. Overflow is not guarded:
 /// gmcc's fast paths use it on magnitudes within 2^±300 and fall back otherwise.
 
+#include <gmcc/geometry/rational.h>
+
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -81,6 +83,16 @@ struct BasicEnclosure {
 using Enclosure = BasicEnclosure<double>;
 /// x87 extended precision (u = 2^-64): their second stage, for thin sets.
 using LongEnclosure = BasicEnclosure<long double>;
+
+/// An exact rational as a certified double enclosure: mpq_get_d truncates (relative error below
+/// 2u) within [2^-138, 2^138]; outside that range an unbounded enclosure, which decides nothing.
+inline Enclosure enclose_rational(const Rational& q) {
+  if (sgn(q) == 0) return Enclosure::exact(0);
+  const long bits = static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) -
+                    static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
+  if (bits < -138 || bits > 138) return {0, Enclosure::unbounded};
+  return Enclosure::relative(mpq_get_d(q.get_mpq_t()), 2 * Enclosure::u);
+}
 
 /// √x over the non-negative part of x: |√y − √a| <= min(ra/√a, √ra).
 template <class T>

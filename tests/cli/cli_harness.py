@@ -1,0 +1,48 @@
+"""The harness the command-line tests share: a runner of the gmcc binary with a folder for the
+files a case writes, named checks that report every failure and go on, and `expect`.
+
+A test script imports it from its own folder (python3 puts the script's folder on sys.path).
+"""
+
+import json
+import os
+import subprocess
+
+
+class Runner:
+    """Runs `binary *prefix *args`; `prefix` is the subcommand a script always uses, if any."""
+
+    def __init__(self, binary, tmp, prefix=(), timeout=120):
+        self.binary, self.tmp, self.prefix, self.timeout = binary, tmp, list(prefix), timeout
+        self.passed, self.failed, self.n = 0, 0, 0
+
+    def file(self, text):
+        self.n += 1
+        path = os.path.join(self.tmp, f"f{self.n}.csv")
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+
+    def run(self, *args, timeout=None):
+        p = subprocess.run([self.binary, *self.prefix, *args], capture_output=True, text=True,
+                           timeout=timeout or self.timeout)
+        return p.returncode, p.stdout, p.stderr
+
+    def json(self, *args):
+        rc, out, err = self.run(*args, "--json")
+        if rc != 0:
+            raise AssertionError(f"exit {rc}: {err.strip()}")
+        return json.loads(out)
+
+    def check(self, name, fn):
+        try:
+            fn()
+            self.passed += 1
+        except Exception as e:  # noqa: BLE001 - report every failure and go on
+            self.failed += 1
+            print(f"FAIL {name}: {e!r}")
+
+
+def expect(cond, what):
+    if not cond:
+        raise AssertionError(what)
