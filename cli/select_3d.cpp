@@ -47,14 +47,7 @@ std::string fmt(double x) {
 }  // namespace
 
 int run_select_3d(const SelectOptions& o) {
-  if (o.expand_factor != "0" || o.expand_policy != "none")
-    throw InputError("--expand", 0, "expansion applies to the 2-D gamut only, not to --space 3d");
-  if (!o.illuminants_path.empty())
-    throw InputError("--illuminants", 0, "the illumination constraint is 2-D only, not --space 3d");
-  if (o.on_empty != "none")
-    throw InputError("--on-empty", 0,
-                     "recovery policies are 2-D only, not --space 3d; with --black include the "
-                     "3-D feasible set is never empty");
+  // The options that cannot apply to the 3-D route were refused by select_settings.
   const CanonicalBlack black = o.black == "exclude" ? CanonicalBlack::exclude : CanonicalBlack::include;
   const ColourTable canonical = read_colour_csv(o.canonical_path);
   const ColourTable image = read_colour_csv(o.image_path);
