@@ -76,6 +76,9 @@ void reject_inapplicable(const SelectOptions& o) {
                        "as it is");
     if (!o.truth.empty())
       throw InputError("--truth", 0, "scoring against truth is 2-D only, not --space 3d");
+    if (is_given("--illuminant-worst-case", o.illuminant_worst_case, "on"))
+      throw InputError("--illuminant-worst-case", 0,
+                       "--space 3d reports no illuminant-space worst case");
     if (has_images)
       throw InputError("--images", 0, "batch selection is 2-D only, not --space 3d");
     return;
@@ -155,6 +158,11 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
                   "r,g,b of the true light under which the image was taken (as the camera sees "
                   "it): adds each rule's map-space, illuminant and reproduction errors against "
                   "its map c ⊘ e");
+  cmd->add_option("--illuminant-worst-case", o.illuminant_worst_case,
+                  "on: each rule's illuminant-space worst case (exact edge quartics, most of a "
+                  "scene's time); off: leave it out")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
   cmd->add_option("--on-empty", o.on_empty,
                   "when F is empty: none (report it), grow-canonical (least multiplicative "
                   "expansion of the canonical gamut, by bisection) or min-violation (maps of least "
@@ -173,7 +181,6 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
 }
 
 SelectSettings select_settings(const SelectOptions& o) {
-  reject_inapplicable(o);
   SelectSettings s;
   s.json = o.json;
   SelectSceneOptions& scene = s.scene;
@@ -194,6 +201,7 @@ SelectSettings select_settings(const SelectOptions& o) {
     throw InputError("--on-empty", 0,
                      "grow-canonical grows the gamut by the multiplicative policy; it cannot "
                      "continue a centroid-clip expansion (use --expand-policy multiplicative)");
+  scene.illuminant_worst_case = o.illuminant_worst_case != "off";
   scene.canonical_illuminant = light_option("--canonical-illuminant", o.canonical_illuminant);
   s.canonical_illuminant_given = given(o, "--canonical-illuminant", o.canonical_illuminant, "1,1,1");
   if (!o.truth.empty()) s.truth = light_option("--truth", o.truth);
@@ -206,6 +214,7 @@ SelectSettings select_settings(const SelectOptions& o) {
   m.order = static_cast<unsigned>(integer_option("--order", o.order, 1, 256));
   m.samples = integer_option("--samples", o.samples, 1, 1000000000);
   m.seed = integer_option("--seed", o.seed, 0, ~std::uint64_t(0));
+  reject_inapplicable(o);  // after each value is checked: a malformed value is named as such
   return s;
 }
 

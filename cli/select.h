@@ -34,6 +34,7 @@ struct SelectOptions {
   std::string on_empty = "none";     // none | grow-canonical | min-violation
   std::string space = "2d";          // 2d (perspective, the paper) | 3d (Forsyth's CRULE)
   std::string black = "include";     // 3d: add black (0,0,0) to the canonical gamut
+  std::string illuminant_worst_case = "on";  // on | off: each rule's illuminant-space worst case
   /// The parsed subcommand, to tell an option given from its default (set by add_select_command;
   /// without it, an option counts as given when its value differs from the default).
   const CLI::App* command = nullptr;

@@ -195,7 +195,8 @@ int run_select_batch(const SelectOptions& o, const SelectSettings& settings) {
         warned = true;
       }
       const SceneResult result = select_scene(*prepared, scene.colours, scene.truth);
-      for (auto& [k, v] : scene_json(*prepared, result, false).items()) record[k] = std::move(v);
+      Json members = scene_json(*prepared, result, false);
+      for (auto& [k, v] : members.items()) record[k] = std::move(v);
     } catch (const InputError& e) {
       if (!scene.id.is_null()) record["id"] = scene.id;
       record["error"] = e.what();

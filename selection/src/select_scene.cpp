@@ -86,7 +86,10 @@ SceneResult select_scene(const PreparedCanonical& pc, const std::vector<Colour>&
                            "illuminant (the illumination constraint)"
                          : "no diagonal map takes every image colour into the canonical gamut";
   if (o.on_empty != RecoveryPolicy::none) r.recovery = recover(pc, iq.points, r);
-  r.selections = select_maps(r.feasible, {o.mean3d, c});
+  SelectionOptions selection;
+  selection.mean3d = o.mean3d;
+  if (o.illuminant_worst_case) selection.illuminant_worst_case_for = c;
+  r.selections = select_maps(r.feasible, selection);
   if (true_map) {
     TruthReport t;
     t.light = *truth;
