@@ -10,6 +10,9 @@
 #include <gmcc/geometry/illumination_constraint.h>
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/select_scene.h>
+#include <gmcc/validation/colour_csv.h>
+
+#include "internal/worst_case_illuminant_route.h"
 
 #include <boost/test/unit_test.hpp>
 
@@ -220,6 +223,40 @@ BOOST_AUTO_TEST_CASE(errors_name_their_input) {
     BOOST_TEST((e.input == SceneInput::illuminants));
     BOOST_TEST(*e.index == 1u);
   }
+}
+
+BOOST_AUTO_TEST_CASE(illuminant_worst_case_filters_on_munsell_scenes) {
+  // The scenes of bench/bench_select_batch.cpp: 11 Munsell chips of the shipped sample under the
+  // light (4/5, 9/10, 11/10). The worst case's double filters (whole edges and dyadic pieces of
+  // edges) against the unfiltered exact route, for each rule's map: bit for bit.
+  const std::vector<Colour> canonical =
+      read_colour_csv(std::string(GMCC_DATA_DIR) + "/samples/canonical_munsell_D55.csv").colours;
+  SelectSceneOptions o;
+  o.illuminant_worst_case = false;
+  const PreparedCanonical pc = prepare_canonical(canonical, o);
+  test::Rng rng(1);
+  const Colour c{R(9, 10), 1, R(11, 10)};
+  int compared = 0;
+  for (int s = 0; s < 12; ++s) {
+    std::vector<Colour> image;
+    for (int i = 0; i < 11; ++i) {
+      const Colour& x = canonical[rng() % canonical.size()];
+      image.push_back({R(x.r * R(4, 5)), R(x.g * R(9, 10)), R(x.b * R(11, 10))});
+    }
+    const SceneResult r = select_scene(pc, image);
+    for (const auto* sel : {&r.selections.max_area, &r.selections.mean_2d, &r.selections.mean_3d}) {
+      if (!*sel || !(*sel)->estimate.valid) continue;
+      const MapEstimate& e = (*sel)->estimate;
+      const Point2 m = e.exact ? *e.exact : Point2{rational_from_double(e.map[0]), rational_from_double(e.map[1])};
+      const IlluminantWorstCase fast = internal::worst_case_illuminant(r.feasible, m, c, true);
+      const IlluminantWorstCase slow = internal::worst_case_illuminant(r.feasible, m, c, false);
+      BOOST_TEST(fast.angle_deg == slow.angle_deg);
+      BOOST_TEST(fast.location == slow.location);
+      BOOST_TEST(fast.at_vertex == slow.at_vertex);
+      ++compared;
+    }
+  }
+  BOOST_TEST(compared >= 30);
 }
 
 BOOST_AUTO_TEST_CASE(recovery_policy_names) {
