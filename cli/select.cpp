@@ -159,8 +159,8 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
                   "it): adds each rule's map-space, illuminant and reproduction errors against "
                   "its map c ⊘ e");
   cmd->add_option("--illuminant-worst-case", o.illuminant_worst_case,
-                  "on: each rule's illuminant-space worst case (exact edge quartics, most of a "
-                  "scene's time); off: leave it out")
+                  "on: each rule's illuminant-space worst case (exact edge quartics, about a "
+                  "third of a scene's time); off: leave it out")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
   cmd->add_option("--on-empty", o.on_empty,

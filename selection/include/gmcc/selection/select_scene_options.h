@@ -38,9 +38,9 @@ struct SelectSceneOptions {
   std::optional<std::vector<Colour>> illuminants;
   RecoveryPolicy on_empty = RecoveryPolicy::none;
   Mean3dOptions mean3d;  ///< the 3-D mean's route
-  /// Each rule's illuminant-space worst case (worst_case_illuminant.h). Exact edge quartics: on
-  /// 11-colour scenes of the shipped sample about 95% of a scene's time (docs/performance.md
-  /// "Batch selection"); false leaves it out.
+  /// Each rule's illuminant-space worst case (worst_case_illuminant.h). Exact edge quartics where
+  /// double filters cannot decide: on 11-colour scenes of the shipped sample about a third of a
+  /// scene's time (docs/performance.md "Batch selection"); false leaves it out.
   bool illuminant_worst_case = true;
 };
 
