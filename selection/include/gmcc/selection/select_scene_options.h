@@ -75,8 +75,9 @@ struct SceneInputError : std::invalid_argument {
       : std::invalid_argument(what), input(in), problem(p), index(i) {}
 };
 
-/// The largest coordinate the pipeline accepts for chromaticities, gamut vertices and maps (1e150):
-/// far beyond any physical value, small enough that every number reported as a double stays finite.
+/// The largest coordinate the pipeline accepts for chromaticities, gamut vertices and maps (1e150;
+/// docs/cli.md "Input files", the limits): far beyond any physical value, small enough that every
+/// number reported as a double stays finite.
 const Rational& max_scene_coordinate();
 
 }  // namespace gmcc
