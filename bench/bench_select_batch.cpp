@@ -16,7 +16,13 @@
 #include <gmcc/geometry/chromaticity.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/selection/prepare_canonical.h>
+#include <gmcc/selection/angular_error.h>
+#include <gmcc/selection/max_area.h>
+#include <gmcc/selection/mean_2d.h>
+#include <gmcc/selection/mean_3d.h>
 #include <gmcc/selection/select_maps.h>
+#include <gmcc/selection/truth_errors.h>
+#include <gmcc/selection/worst_case.h>
 #include <gmcc/selection/select_scene.h>
 #include <gmcc/validation/colour_csv.h>
 
@@ -220,6 +226,33 @@ void part_select_maps(benchmark::State& state, bool illuminant) {
   rate.report(1);
 }
 
+// One step of select_maps, or the truth's errors, over the scenes' exact F.
+void part_step(benchmark::State& state, int step) {
+  const Workload& w = workload();
+  std::vector<ConvexSet2> F;
+  std::vector<Selections> sel;
+  for (const auto& s : w.scenes) {
+    F.push_back(feasible_set(w.prepared->constraints, perspective_chromaticities(s, NonPositiveBluePolicy::drop).points));
+    sel.push_back(select_maps(F.back()));
+  }
+  const Point2 truth{Rational(11, 8), Rational(11, 9)};
+  Rate rate{state, RUSAGE_SELF};
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const std::size_t k = i++ % F.size();
+    switch (step) {
+      case 0: benchmark::DoNotOptimize(max_area(F[k])); break;
+      case 1: benchmark::DoNotOptimize(mean_2d(F[k])); break;
+      case 2: benchmark::DoNotOptimize(mean_3d(F[k])); break;
+      case 3: benchmark::DoNotOptimize(worst_case_map_deg(F[k], *sel[k].mean_2d->estimate.exact)); break;
+      default:
+        for (const auto* x : {&sel[k].max_area, &sel[k].mean_2d, &sel[k].mean_3d})
+          benchmark::DoNotOptimize(truth_errors(**x, truth, Colour{1, 1, 1}));
+    }
+  }
+  rate.report(1);
+}
+
 BENCHMARK(library_batch)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(library_batch_no_illuminant_worst_case)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK_CAPTURE(cli_batch, all, true)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
@@ -228,6 +261,11 @@ BENCHMARK(cli_per_scene)->Unit(benchmark::kMillisecond)->UseRealTime()->Iteratio
 BENCHMARK(part_feasible_set)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK_CAPTURE(part_select_maps, no_illuminant_worst_case, false)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK_CAPTURE(part_select_maps, with_illuminant_worst_case, true)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(part_step, max_area, 0)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(part_step, mean_2d, 1)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(part_step, mean_3d, 2)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(part_step, worst_case_map_of_mean_2d, 3)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(part_step, truth_errors_3_rules, 4)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 }  // namespace
 
