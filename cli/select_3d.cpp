@@ -1,5 +1,7 @@
 #include "select_3d.h"
 
+#include "json_output.h"
+
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/selection/crule_3d.h>
 #include <gmcc/validation/colour_csv.h>
@@ -12,7 +14,6 @@
 
 namespace gmcc::cli {
 namespace {
-using Json = nlohmann::ordered_json;
 
 Json exact3(const Point3& p) { return Json::array({to_string(p.x), to_string(p.y), to_string(p.z)}); }
 Json approx3(const Point3& p) {
@@ -82,6 +83,7 @@ int run_select_3d(const SelectOptions& o) {
                             {"colours", canonical.colours.size()}};
     j["input"] = {{"canonical_colours", canonical.colours.size()},
                   {"image_colours", image.colours.size()}};
+    finish_document(j);
     out << j.dump(2) << "\n";
   } else {
     out << "3-D feasible set of diagonal maps (CRULE; canonical gamut "
