@@ -106,6 +106,16 @@ def main():
             expect(records[2]["feasible_set"]["kind"] == "empty" and records[2]["selections"] == {}, records[2])
             expect(records[3]["line"] == 4, records[3])
 
+        def batch_warns_once_and_options_apply():
+            lines = ['{"colours":[[3,3,2]],"truth":[2,2,3]}\n'] * 3
+            rc, out, err = r.run("--canonical", square, "--images", jsonl(lines),
+                                 "--illuminant-worst-case", "off")
+            expect(rc == 0 and err.count("warning") == 1, (rc, err))
+            recs = [json.loads(x) for x in out.splitlines()]
+            expect(len(recs) == 3 and all("worst_case_illuminant_deg" not in rec["selections"]["max_area"]
+                                          for rec in recs), recs)
+            expect(all("worst_case_deg" in rec["selections"]["max_area"] for rec in recs), recs)
+
         def batch_exact_decimals():
             # 0.1 read as a double would not give the exact point (7/9, 14/3) (test_select_errors).
             can = r.file("0.1,0.2,0.3\n")

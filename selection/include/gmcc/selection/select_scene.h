@@ -4,7 +4,9 @@
 /// "gmcc select"): the feasible set F (Finlayson & Hordley 1999 eqs. 7–9 in perspective), F ∩ C
 /// under Finlayson's illumination constraint, a recovery policy when F is empty, the three
 /// selection rules with their worst cases (§3, §4), and, given the true light, each rule's
-/// errors. What `gmcc select`, its batch mode and other front ends call.
+/// errors. What `gmcc select`, its batch mode and other front ends call. It reads no file (colours
+/// in, results out) and needs only geometry, so it lives in selection; the command line reads
+/// the files and turns SceneInputError into file-and-line messages.
 
 #include <gmcc/geometry/grow_canonical.h>
 #include <gmcc/geometry/min_violation.h>
