@@ -57,7 +57,12 @@ def run(binary, args):
 def read_csv(path):
     with open(path, newline="") as f:
         text = f.read()
-    rows = list(csv.DictReader(text.splitlines()))
+    # The first line is the provenance record (docs/cli.md "Provenance"; test_provenance.py).
+    lines = text.splitlines()
+    if lines and lines[0].startswith("# gmcc-provenance: "):
+        lines = lines[1:]
+        text = text.split("\n", 1)[1]
+    rows = list(csv.DictReader(lines))
     return text, rows
 
 

@@ -28,6 +28,7 @@ struct TextFileRules {
 /// else is read as a stream until end of file, with the size limit applied as it grows. A named
 /// FIFO that no program has opened for writing is waited for up to fifo_writer_wait_seconds;
 /// once a writer is there, the read waits for it as long as it keeps the FIFO open.
+/// The file's path, size and SHA-256 are recorded for provenance (file_digest.h).
 /// \throws InputError naming the file (and, for a NUL byte, its 1-based line): missing or
 ///         unreadable, a directory or socket, larger than rules.max_bytes, holding a NUL byte,
 ///         a FIFO with no writer.
