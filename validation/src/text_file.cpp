@@ -33,7 +33,7 @@ class Accumulator {
     if (n > rules_.max_bytes - text_.size())
       throw InputError(path_, 0, "larger than the " + std::to_string(rules_.max_bytes >> 20) +
                                      " MiB limit for " + rules_.noun + "s");
-    if (const void* nul = std::memchr(data, '\0', n)) {
+    if (const void* nul = rules_.binary ? nullptr : std::memchr(data, '\0', n)) {
       const auto at = static_cast<std::size_t>(static_cast<const char*>(nul) - data);
       const std::size_t line =
           lines_before_ + static_cast<std::size_t>(std::count(data, data + at, '\n')) + 1;
@@ -140,6 +140,12 @@ std::string read_text_file(const std::string& path, const TextFileRules& rules) 
   std::string bytes = read_whole(path, rules);
   record_file_read(path, bytes);
   return bytes;
+}
+
+std::string read_binary_file(const std::string& path, std::size_t max_bytes,
+                             const std::string& noun) {
+  TextFileRules rules{max_bytes, noun, noun, true};
+  return read_text_file(path, rules);
 }
 
 }  // namespace gmcc
