@@ -4,6 +4,7 @@
 // against hand-computed counts and an independent point-in-polygon test.
 #include <gmcc/validation/image_file.h>
 #include <gmcc/validation/image_pixels.h>
+#include <gmcc/validation/mondrian.h>
 
 #include <boost/test/unit_test.hpp>
 #include <png.h>
@@ -11,6 +12,7 @@
 
 #include <cstdio>
 #include <random>
+#include <set>
 #include <string>
 
 using namespace gmcc;
@@ -110,7 +112,7 @@ bool inside_or_on(const std::vector<Point2> &poly, const Point2 &p) {
 
 Rational quarter(int k) {
   Rational q(k, 4);
-  q.canonicalize();  // gmcc's rationals are always in lowest terms
+  q.canonicalize(); // gmcc's rationals are always in lowest terms
   return q;
 }
 
@@ -256,6 +258,61 @@ BOOST_AUTO_TEST_CASE(pixel_rules_hand_counts) {
   rules.bin = 1;
   rules.keep.assign(3, true);
   BOOST_CHECK_THROW(image_colours(im, rules), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(mondrian_is_what_it_says) {
+  const std::vector<Colour> colours = {
+      {1, 2, 3}, {Rational(1, 3), 1, 1}, {6, 5, 4}, {0, 1, 1}};
+  MondrianSpec spec;
+  spec.width = 40;
+  spec.height = 30;
+  spec.columns = 4;
+  spec.rows = 3;
+  spec.black_level = 100;
+  spec.peak = 6000;
+  spec.saturated_pixels = 5;
+  spec.seed = 7;
+  const Mondrian m = render_mondrian(colours, spec);
+  BOOST_TEST(render_mondrian(colours, spec).image.samples ==
+             m.image.samples); // reproducible
+  spec.seed = 8;
+  BOOST_TEST(render_mondrian(colours, spec).surfaces != m.surfaces);
+  // The brightest channel shown is black + peak; every cell's samples are black
+  // + round(c·scale).
+  Rational brightest = 0;
+  for (std::size_t s : m.surfaces)
+    brightest = std::max({brightest, colours[s].r, colours[s].g, colours[s].b});
+  const Rational scale = Rational(6000) / brightest;
+  std::uint64_t saturated = 0;
+  for (std::size_t y = 0; y < 30; ++y)
+    for (std::size_t x = 0; x < 40; ++x) {
+      if (m.image.at(x, y, 0) == 65535) {
+        ++saturated;
+        continue;
+      }
+      const Colour &c = colours[m.surfaces[(y / 10) * 4 + x / 10]];
+      const Rational *channel[3] = {&c.r, &c.g, &c.b};
+      for (int k = 0; k < 3; ++k) {
+        const Rational exact = *channel[k] * scale;
+        const Rational stored = Rational(m.image.at(x, y, k)) - 100;
+        BOOST_TEST_REQUIRE(abs(stored - exact) <= Rational(1, 2));
+      }
+    }
+  BOOST_TEST(saturated >= 1u);
+  BOOST_TEST(saturated <= 5u);
+  // Through a PNG file and the pixel rules: the saturated pixels dropped, and
+  // one colour per surface shown.
+  PixelRules rules;
+  rules.black_level = 100;
+  rules.saturation = 65535;
+  const ImageColours out =
+      image_colours(decode_image(encode_png16(m.image), "m.png"), rules);
+  BOOST_TEST(out.counts.saturated == saturated);
+  const std::set<std::size_t> shown(m.surfaces.begin(), m.surfaces.end());
+  BOOST_TEST(out.counts.colours == shown.size());
+  BOOST_CHECK_THROW(render_mondrian({}, spec), std::invalid_argument);
+  spec.peak = 65535;
+  BOOST_CHECK_THROW(render_mondrian(colours, spec), std::invalid_argument);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
