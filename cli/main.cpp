@@ -1,8 +1,7 @@
-// gmcc: gamut-mapping colour constancy with exact geometry. The command line's
-// one edge where errors become messages and exit statuses: 0 success, 2 bad
-// input or usage, 1 internal error, 3 a resource limit reached (--time-limit,
-// --memory-limit, memory exhausted); a signal ends the run with its default
-// action, temporary files removed (docs/cli.md).
+// gmcc: gamut-mapping colour constancy with exact geometry. The command line's one edge where
+// errors become messages and exit statuses: 0 success, 2 bad input or usage, 1 internal error,
+// 3 a resource limit reached (--time-limit, --memory-limit, memory exhausted); a signal ends
+// the run with its default action, temporary files removed (docs/cli.md).
 #include "accuracy.h"
 #include "exit_cleanup.h"
 #include "integer_option.h"
@@ -28,15 +27,14 @@
 
 namespace {
 
-// The command named on the command line, as far as it goes: "gmcc", "gmcc
-// select", "gmcc reproduce synthetic" (for the usage hint and the limits'
-// messages).
-std::string command_of(CLI::App &app, int argc, char **argv) {
-  const std::function<bool(CLI::App *)> every = [](CLI::App *) { return true; };
-  CLI::App *current = &app;
+// The command named on the command line, as far as it goes: "gmcc", "gmcc select",
+// "gmcc reproduce synthetic" (for the usage hint and the limits' messages).
+std::string command_of(CLI::App& app, int argc, char** argv) {
+  const std::function<bool(CLI::App*)> every = [](CLI::App*) { return true; };
+  CLI::App* current = &app;
   std::string command = "gmcc";
   for (int i = 1; i < argc; ++i)
-    for (CLI::App *sub : current->get_subcommands(every))
+    for (CLI::App* sub : current->get_subcommands(every))
       if (sub->get_name() == argv[i]) {
         current = sub;
         command += " " + sub->get_name();
@@ -45,14 +43,13 @@ std::string command_of(CLI::App &app, int argc, char **argv) {
   return command;
 }
 
-// Help and version text go through write_stdout: `gmcc --help > /dev/full` must
-// fail too.
-int print_help_or_version(const CLI::App &app, const CLI::Error &e) {
+// Help and version text go through write_stdout: `gmcc --help > /dev/full` must fail too.
+int print_help_or_version(const CLI::App& app, const CLI::Error& e) {
   std::ostringstream out, err;
   const int status = app.exit(e, out, err);
   try {
     gmcc::cli::write_stdout(out.str());
-  } catch (const gmcc::InputError &error) {
+  } catch (const gmcc::InputError& error) {
     std::cerr << "gmcc: error: " << error.what() << "\n";
     return 2;
   }
@@ -60,96 +57,80 @@ int print_help_or_version(const CLI::App &app, const CLI::Error &e) {
   return status;
 }
 
-} // namespace
+}  // namespace
 
-int main(int argc, char **argv) {
+int main(int argc, char** argv) {
   gmcc::cli::install_exit_cleanup();
   gmcc::cli::install_gmp_allocation_failure_exit();
   CLI::App app{"gmcc — gamut-mapping colour constancy with exact geometry "
-               "(Finlayson & Hordley 1999, \"Selection for gamut mapping "
-               "colour constancy\")"};
+               "(Finlayson & Hordley 1999, \"Selection for gamut mapping colour constancy\")"};
   app.require_subcommand(1);
-  app.fallthrough(); // the global options below are also read after a command's
-                     // name
+  app.fallthrough();  // the global options below are also read after a command's name
   app.set_version_flag("--version", gmcc::cli::version_line());
   std::string time_limit, memory_limit;
   app.add_option("--time-limit", time_limit,
-                 "end the run after this many seconds, with a message and exit "
-                 "status 3 "
+                 "end the run after this many seconds, with a message and exit status 3 "
                  "(temporary files removed); default: no limit")
       ->type_name("SECONDS");
-  app.add_option(
-         "--memory-limit", memory_limit,
-         "limit the address space to this many MiB (setrlimit RLIMIT_AS); "
-         "reaching it "
-         "ends the run with a message and exit status 3; default: no limit")
+  app.add_option("--memory-limit", memory_limit,
+                 "limit the address space to this many MiB (setrlimit RLIMIT_AS); reaching it "
+                 "ends the run with a message and exit status 3; default: no limit")
       ->type_name("MIB");
   gmcc::cli::SelectOptions select_options;
-  CLI::App *select = gmcc::cli::add_select_command(app, select_options);
+  CLI::App* select = gmcc::cli::add_select_command(app, select_options);
   gmcc::cli::AccuracyOptions accuracy_options;
-  CLI::App *accuracy = gmcc::cli::add_accuracy_command(app, accuracy_options);
+  CLI::App* accuracy = gmcc::cli::add_accuracy_command(app, accuracy_options);
   gmcc::cli::ReproduceOptions reproduce_options;
-  CLI::App *reproduce =
-      gmcc::cli::add_reproduce_command(app, reproduce_options);
-  CLI::App *cite = app.add_subcommand(
-      "cite", "print a BibTeX entry for this build of gmcc (version, git "
-              "commit, commit date) "
+  CLI::App* reproduce = gmcc::cli::add_reproduce_command(app, reproduce_options);
+  CLI::App* cite = app.add_subcommand(
+      "cite", "print a BibTeX entry for this build of gmcc (version, git commit, commit date) "
               "and the paper it implements (docs/cli.md \"Provenance\")");
   try {
     app.parse(argc, argv);
-  } catch (const CLI::CallForHelp &e) {
+  } catch (const CLI::CallForHelp& e) {
     return print_help_or_version(app, e);
-  } catch (const CLI::CallForAllHelp &e) {
+  } catch (const CLI::CallForAllHelp& e) {
     return print_help_or_version(app, e);
-  } catch (const CLI::CallForVersion &e) {
+  } catch (const CLI::CallForVersion& e) {
     return print_help_or_version(app, e);
-  } catch (const CLI::ParseError &e) {
+  } catch (const CLI::ParseError& e) {
     // One line, like every other error.
     std::string problem = e.what();
-    for (char &c : problem)
-      if (c == '\n' || c == '\r')
-        c = ' ';
-    std::cerr << "gmcc: error: " << problem << " (run "
-              << command_of(app, argc, argv) << " --help for usage)\n";
+    for (char& c : problem)
+      if (c == '\n' || c == '\r') c = ' ';
+    std::cerr << "gmcc: error: " << problem << " (run " << command_of(app, argc, argv)
+              << " --help for usage)\n";
     return 2;
   }
   try {
     std::optional<gmcc::cli::TimeLimit> watchdog;
     if (!time_limit.empty())
-      watchdog.emplace(
-          gmcc::cli::integer_option("--time-limit", time_limit, 1, 10000000));
+      watchdog.emplace(gmcc::cli::integer_option("--time-limit", time_limit, 1, 10000000));
     if (!memory_limit.empty())
-      gmcc::cli::limit_memory(gmcc::cli::integer_option(
-          "--memory-limit", memory_limit, 1, std::uint64_t(1) << 40));
+      gmcc::cli::limit_memory(
+          gmcc::cli::integer_option("--memory-limit", memory_limit, 1, std::uint64_t(1) << 40));
     gmcc::cli::set_activity("running " + command_of(app, argc, argv));
     gmcc::cli::record_command(app);
     int status = 0;
-    if (cite->parsed())
-      gmcc::cli::write_stdout(gmcc::cli::bibtex_of_this_build());
-    else if (select->parsed())
-      status = gmcc::cli::run_select(select_options);
-    else if (accuracy->parsed())
-      status = gmcc::cli::run_accuracy(accuracy_options);
-    else if (reproduce->parsed())
-      status = gmcc::cli::run_reproduce(*reproduce, reproduce_options);
-    gmcc::cli::write_stdout(
-        ""); // what a command wrote without write_stdout, flushed and checked
+    if (cite->parsed()) gmcc::cli::write_stdout(gmcc::cli::bibtex_of_this_build());
+    else if (select->parsed()) status = gmcc::cli::run_select(select_options);
+    else if (accuracy->parsed()) status = gmcc::cli::run_accuracy(accuracy_options);
+    else if (reproduce->parsed()) status = gmcc::cli::run_reproduce(*reproduce, reproduce_options);
+    gmcc::cli::write_stdout("");  // what a command wrote without write_stdout, flushed and checked
     return status;
-  } catch (const gmcc::InputError &e) {
+  } catch (const gmcc::InputError& e) {
     std::cerr << "gmcc: error: " << e.what() << "\n";
     return 2;
-  } catch (const std::bad_alloc &) {
+  } catch (const std::bad_alloc&) {
     gmcc::cli::exit_out_of_memory();
-  } catch (const std::system_error &e) {
-    // A thread that could not be made within --memory-limit (its stack is
-    // address space).
-    if (gmcc::cli::memory_limit_mib() &&
-        (e.code() == std::errc::resource_unavailable_try_again ||
-         e.code() == std::errc::not_enough_memory))
+  } catch (const std::system_error& e) {
+    // A thread that could not be made within --memory-limit (its stack is address space).
+    if (gmcc::cli::memory_limit_mib() && (e.code() == std::errc::resource_unavailable_try_again ||
+                                          e.code() == std::errc::not_enough_memory))
       gmcc::cli::exit_out_of_memory();
     std::cerr << "gmcc: internal error: " << e.what() << "\n";
     return 1;
-  } catch (const std::exception &e) {
+  } catch (const std::exception& e) {
     std::cerr << "gmcc: internal error: " << e.what() << "\n";
     return 1;
   }

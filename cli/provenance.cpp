@@ -11,41 +11,38 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 struct Command {
-  std::string name; // "select", "reproduce synthetic"
+  std::string name;  // "select", "reproduce synthetic"
   Json options = Json::object();
 };
 
-Command &recorded() {
+Command& recorded() {
   static Command c;
   return c;
 }
 
 // Options that say where output goes or how long the run may take, not what it
 // computes.
-const std::set<std::string> &not_recorded() {
-  static const std::set<std::string> names{
-      "--csv",        "--plot",         "--scenes-out", "--out",    "--shard",
-      "--time-limit", "--memory-limit", "--help",       "--version"};
+const std::set<std::string>& not_recorded() {
+  static const std::set<std::string> names{"--csv",          "--plot",  "--scenes-out",
+                                           "--out",          "--shard", "--time-limit",
+                                           "--memory-limit", "--help",  "--version"};
   return names;
 }
 
 // The options of one (sub)command: given ones with their values, the others
 // with their default when CLI11 knows it.
-void collect(const CLI::App &app, Json &options) {
-  for (const CLI::Option *opt : app.get_options()) {
-    if (opt->get_lnames().empty())
-      continue; // positional or short-only: none in gmcc
+void collect(const CLI::App& app, Json& options) {
+  for (const CLI::Option* opt : app.get_options()) {
+    if (opt->get_lnames().empty()) continue;  // positional or short-only: none in gmcc
     const std::string name = "--" + opt->get_lnames().front();
-    if (not_recorded().count(name))
-      continue;
+    if (not_recorded().count(name)) continue;
     if (opt->count() > 0) {
-      const std::vector<std::string> &results = opt->results();
-      if (opt->get_type_size() == 0) { // a flag
+      const std::vector<std::string>& results = opt->results();
+      if (opt->get_type_size() == 0) {  // a flag
         options[name] = true;
       } else {
         std::string joined;
-        for (const std::string &r : results)
-          joined += (joined.empty() ? "" : ",") + r;
+        for (const std::string& r : results) joined += (joined.empty() ? "" : ",") + r;
         options[name] = joined;
       }
     } else if (opt->get_type_size() == 0) {
@@ -56,19 +53,18 @@ void collect(const CLI::App &app, Json &options) {
   }
 }
 
-} // namespace
+}  // namespace
 
-void record_command(const CLI::App &app) {
+void record_command(const CLI::App& app) {
   Command c;
   Json options = Json::object();
   collect(app,
-          options); // the global options (none recorded today but future ones)
-  const CLI::App *current = &app;
+          options);  // the global options (none recorded today but future ones)
+  const CLI::App* current = &app;
   for (;;) {
-    const std::vector<const CLI::App *> subs =
-        current->get_subcommands([](const CLI::App *a) { return a->parsed(); });
-    if (subs.empty())
-      break;
+    const std::vector<const CLI::App*> subs =
+        current->get_subcommands([](const CLI::App* a) { return a->parsed(); });
+    if (subs.empty()) break;
     current = subs.front();
     c.name += (c.name.empty() ? "" : " ") + current->get_name();
     collect(*current, options);
@@ -85,9 +81,8 @@ Json provenance_json() {
   p["command"] = recorded().name;
   p["options"] = recorded().options;
   Json inputs = Json::array();
-  for (const FileDigest &f : files_read())
-    inputs.push_back(
-        Json{{"path", f.path}, {"bytes", f.bytes}, {"sha256", f.sha256}});
+  for (const FileDigest& f : files_read())
+    inputs.push_back(Json{{"path", f.path}, {"bytes", f.bytes}, {"sha256", f.sha256}});
   p["inputs"] = std::move(inputs);
   return p;
 }
@@ -97,15 +92,13 @@ std::string provenance_csv_line() {
 }
 
 std::string version_line() {
-  return "gmcc " + std::string(gmcc_version()) + " (commit " +
-         std::string(gmcc_commit()) + ", " + std::string(gmcc_commit_date()) +
-         ")";
+  return "gmcc " + std::string(gmcc_version()) + " (commit " + std::string(gmcc_commit()) + ", " +
+         std::string(gmcc_commit_date()) + ")";
 }
 
 std::string bibtex_of_this_build() {
   const std::string date(gmcc_commit_date());
-  const std::string year =
-      date.size() >= 4 && date != "unknown" ? date.substr(0, 4) : "";
+  const std::string year = date.size() >= 4 && date != "unknown" ? date.substr(0, 4) : "";
   std::string b =
       "@article{Finlayson1999Selection,\n"
       "  author  = {Graham D. Finlayson and Steven D. Hordley},\n"
@@ -123,10 +116,9 @@ std::string bibtex_of_this_build() {
       "},\n"
       "  note    = {git commit " +
       std::string(gmcc_commit()) + "},\n";
-  if (!year.empty())
-    b += "  year    = {" + year + "},\n  date    = {" + date + "},\n";
+  if (!year.empty()) b += "  year    = {" + year + "},\n  date    = {" + date + "},\n";
   b += "}\n";
   return b;
 }
 
-} // namespace gmcc::cli
+}  // namespace gmcc::cli

@@ -9,13 +9,12 @@
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
-
 #include <string>
 
 namespace gmcc::cli {
 
 /// Remember the parsed command line (call once, after parsing).
-void record_command(const CLI::App &app);
+void record_command(const CLI::App& app);
 
 /// The record: {"software", "version", "commit", "command", "options",
 /// "inputs"}, inputs being the files read so far.
@@ -32,4 +31,4 @@ std::string version_line();
 /// A BibTeX entry citing this build: version, commit and commit date.
 std::string bibtex_of_this_build();
 
-} // namespace gmcc::cli
+}  // namespace gmcc::cli

@@ -24,11 +24,11 @@ inline constexpr std::size_t chart_patches = 24;
 
 /// One image: its chart's patch colours and its light.
 struct ChartImage {
-  std::size_t index = 0; ///< 1-based, as in the data files
-  std::string name;      ///< "8D5U5524", "IMG_0301"
-  std::string camera;    ///< "Canon1D" or "Canon5D"
-  Colour truth; ///< ground-truth illuminant RGB (the recommended one: r + g + b
-                ///< = 1)
+  std::size_t index = 0;  ///< 1-based, as in the data files
+  std::string name;       ///< "8D5U5524", "IMG_0301"
+  std::string camera;     ///< "Canon1D" or "Canon5D"
+  Colour truth;           ///< ground-truth illuminant RGB (the recommended one: r + g + b
+                          ///< = 1)
   /// Patch k + 1's mean camera RGB; empty where the data has none (NaN
   /// upstream).
   std::array<std::optional<Colour>, chart_patches> patches;
@@ -37,7 +37,7 @@ struct ChartImage {
 /// The whole set, in the order of the ground-truth file.
 struct ChartDataset {
   std::vector<ChartImage> images;
-  std::size_t missing_patches = 0; ///< patches with no colour, over every image
+  std::size_t missing_patches = 0;  ///< patches with no colour, over every image
 };
 
 /// Parse the two files' text. `truth_text`: header
@@ -55,14 +55,11 @@ struct ChartDataset {
 ///         order, an image in the patch file that the truth file lacks (or
 ///         under another name), a patch number out of range or repeated, a NaN
 ///         in some channels only.
-ChartDataset parse_gehler_shi(const std::string &patches_text,
-                              const std::string &patches_file,
-                              const std::string &truth_text,
-                              const std::string &truth_file);
+ChartDataset parse_gehler_shi(const std::string& patches_text, const std::string& patches_file,
+                              const std::string& truth_text, const std::string& truth_file);
 
 /// Read and parse the two files (read_text_file, then parse_gehler_shi).
 /// \throws InputError as parse_gehler_shi, or if a file cannot be read.
-ChartDataset read_gehler_shi(const std::string &patches_path,
-                             const std::string &truth_path);
+ChartDataset read_gehler_shi(const std::string& patches_path, const std::string& truth_path);
 
-} // namespace gmcc
+}  // namespace gmcc

@@ -24,8 +24,8 @@ inline constexpr std::size_t max_image_pixels = std::size_t(1) << 28;
 /// in the file.
 struct RgbImage {
   std::size_t width = 0, height = 0;
-  int bits = 16; ///< 8 or 16: the file's sample depth (values < 2^bits)
-  std::vector<std::uint16_t> samples; ///< width · height · 3
+  int bits = 16;                       ///< 8 or 16: the file's sample depth (values < 2^bits)
+  std::vector<std::uint16_t> samples;  ///< width · height · 3
 
   std::uint16_t at(std::size_t x, std::size_t y, int channel) const {
     return samples[(y * width + x) * 3 + static_cast<std::size_t>(channel)];
@@ -40,18 +40,18 @@ struct RgbImage {
 /// or corrupt, grey or palette,
 ///         another channel count or bit depth, floating-point samples, more
 ///         than max_image_pixels pixels.
-RgbImage decode_image(const std::string &bytes, const std::string &file);
+RgbImage decode_image(const std::string& bytes, const std::string& file);
 
 /// Read a PNG or TIFF file (read_binary_file, then decode_image).
-RgbImage read_image(const std::string &path);
+RgbImage read_image(const std::string& path);
 
 /// A 16-bit RGB PNG of `image` (samples as they are, whatever image.bits), no
 /// gamma chunk. \throws std::invalid_argument if the image is empty or its
 /// samples do not match its size.
-std::string encode_png16(const RgbImage &image);
+std::string encode_png16(const RgbImage& image);
 
 /// A 16-bit RGB TIFF (uncompressed strips) of `image`: for tests and for users'
 /// round trips. \throws std::invalid_argument as encode_png16.
-std::string encode_tiff16(const RgbImage &image);
+std::string encode_tiff16(const RgbImage& image);
 
-} // namespace gmcc
+}  // namespace gmcc

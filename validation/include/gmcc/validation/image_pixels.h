@@ -30,9 +30,8 @@ namespace gmcc {
 
 /// How pixels become colours.
 struct PixelRules {
-  std::uint32_t black_level = 0; ///< subtracted from every channel
-  std::optional<std::uint32_t>
-      saturation; ///< drop pixels with a raw channel >= this
+  std::uint32_t black_level = 0;            ///< subtracted from every channel
+  std::optional<std::uint32_t> saturation;  ///< drop pixels with a raw channel >= this
   /// Polygons to exclude, in pixel coordinates: x to the right, y down, pixel
   /// (i, j) the unit square [i, i+1) × [j, j+1) with its centre at (i + ½, j +
   /// ½). A pixel whose centre lies inside a polygon or on its boundary
@@ -40,23 +39,20 @@ struct PixelRules {
   std::vector<std::vector<Point2>> exclude_polygons;
   /// Per pixel (row-major, width · height), false to exclude; empty for none.
   std::vector<bool> keep;
-  std::uint32_t bin =
-      1; ///< block size b for binning; 1: every kept pixel is a colour
+  std::uint32_t bin = 1;  ///< block size b for binning; 1: every kept pixel is a colour
 };
 
 /// What happened to the pixels, each counted once, in the order of the steps.
 struct PixelCounts {
-  std::uint64_t pixels = 0; ///< width · height
-  std::uint64_t masked = 0; ///< excluded by a polygon or the mask image
-  std::uint64_t saturated =
-      0;                  ///< of the rest, dropped for a channel >= saturation
-  std::uint64_t kept = 0; ///< the rest
-  std::uint64_t colours = 0; ///< distinct colours returned (after binning)
+  std::uint64_t pixels = 0;     ///< width · height
+  std::uint64_t masked = 0;     ///< excluded by a polygon or the mask image
+  std::uint64_t saturated = 0;  ///< of the rest, dropped for a channel >= saturation
+  std::uint64_t kept = 0;       ///< the rest
+  std::uint64_t colours = 0;    ///< distinct colours returned (after binning)
 };
 
 struct ImageColours {
-  std::vector<Colour>
-      colours; ///< distinct, in order of first appearance (row-major)
+  std::vector<Colour> colours;  ///< distinct, in order of first appearance (row-major)
   PixelCounts counts;
 };
 
@@ -64,11 +60,11 @@ struct ImageColours {
 /// \throws std::invalid_argument if bin is 0, `keep` is neither empty nor width
 /// · height long, or
 ///         a polygon has fewer than 3 vertices.
-ImageColours image_colours(const RgbImage &image, const PixelRules &rules);
+ImageColours image_colours(const RgbImage& image, const PixelRules& rules);
 
 /// The pixels a polygon excludes, row-major (true: centre inside or on the
 /// boundary). Exposed for tests and for `gmcc estimate`'s report.
-std::vector<bool> polygon_cover(const std::vector<Point2> &polygon,
-                                std::size_t width, std::size_t height);
+std::vector<bool> polygon_cover(const std::vector<Point2>& polygon, std::size_t width,
+                                std::size_t height);
 
-} // namespace gmcc
+}  // namespace gmcc

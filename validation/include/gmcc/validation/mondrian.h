@@ -16,24 +16,20 @@ namespace gmcc {
 
 struct MondrianSpec {
   std::size_t width = 320, height = 240;
-  std::size_t
-      columns = 8,
-      rows = 6; ///< the grid of rectangles (cell sides differ by ≤ 1 pixel)
-  std::uint64_t seed =
-      1; ///< which surface each cell shows, and the saturated pixels
-  std::uint32_t black_level = 0; ///< added to every sample
+  std::size_t columns = 8,
+              rows = 6;           ///< the grid of rectangles (cell sides differ by ≤ 1 pixel)
+  std::uint64_t seed = 1;         ///< which surface each cell shows, and the saturated pixels
+  std::uint32_t black_level = 0;  ///< added to every sample
   /// The brightest channel of the brightest surface shown is `peak` above the
   /// black level; the rest in proportion (exact scale, samples rounded half
   /// up).
   std::uint32_t peak = 60000;
-  std::size_t saturated_pixels =
-      0; ///< draws of a pixel set to 65535 in every channel
+  std::size_t saturated_pixels = 0;  ///< draws of a pixel set to 65535 in every channel
 };
 
 struct Mondrian {
-  RgbImage image; ///< 16-bit
-  std::vector<std::size_t>
-      surfaces; ///< the surface shown in each cell, row-major
+  RgbImage image;                     ///< 16-bit
+  std::vector<std::size_t> surfaces;  ///< the surface shown in each cell, row-major
 };
 
 /// Render `colours` (surface colours under the light) as a Mondrian. The
@@ -44,7 +40,6 @@ struct Mondrian {
 /// empty, a size is 0, there are more cells than
 ///         pixels, the black level plus peak exceeds 65534, or the colours
 ///         shown are all black.
-Mondrian render_mondrian(const std::vector<Colour> &colours,
-                         const MondrianSpec &spec);
+Mondrian render_mondrian(const std::vector<Colour>& colours, const MondrianSpec& spec);
 
-} // namespace gmcc
+}  // namespace gmcc
