@@ -8,9 +8,13 @@ Exit status 0 when every citation resolves, 1 with one line per problem (FILE:LI
 
 Files scanned: the tracked files (`git ls-files`; without git, every file under DIR but build*/
 and .git/) whose names end in .cpp .h .hpp .c .py .md .in .txt .cmake .dict .sh .cff .gp, or
-that lie in scripts/. The fuzzers' inputs (fuzz/corpus/, fuzz/findings/) are data, not text.
+that lie in scripts/. The fuzzers' inputs (fuzz/corpus/, fuzz/findings/) are data, not text,
+and this script's own examples are skipped.
 
 What is checked:
+
+A citation may wrap onto the next line (of the same comment: the next line's `//`, `///`, `#` or
+`*` is skipped).
 
 1. Section citations `docs/<page>.md §<x>` (also `<page>.md §<x>` without the folder, and
    `[<page>.md](<link>) §<x>`; a list `docs/math.md §1a, §1b and §3` cites each). A page named
@@ -24,10 +28,10 @@ What is checked:
        "### 4.3 Shallow constructions" number 4.3
    so §2 matches "## 2. …" only, not "### 2.1 …" and not "## 1b …".
 2. Heading citations `docs/<page>.md "<heading>"` (a comma may come between; the quotes may be
-   escaped, \\"…\\", inside a C++ string; a heading may wrap onto the next comment line). The
-   quoted text must equal a heading of that page, compared after removing backticks, the
-   heading's number (as above) and collapsing white space; a trailing parenthesis of the heading
-   may be left out: "JSON output" cites "JSON output (`--json`)".
+   escaped, \\"…\\", inside a C++ string). The quoted text must equal a heading of that page,
+   compared after removing backticks, the heading's number (as above) and collapsing white space;
+   a trailing parenthesis of the heading may be left out: "JSON output" cites
+   "JSON output (`--json`)".
 3. Markdown links `[text](target)` in .md and .md.in files: a relative target must exist (a
    docs/src/*.md.in template is read as if it were in docs/, where it is generated), and an
    anchor `#a` must be the GitHub anchor of one of that page's headings (lower case; characters
@@ -46,6 +50,7 @@ import tempfile
 TEXT_SUFFIXES = (".cpp", ".h", ".hpp", ".c", ".py", ".md", ".in", ".txt", ".cmake", ".dict",
                  ".sh", ".cff", ".gp")
 DATA_FOLDERS = ("fuzz/corpus/", "fuzz/findings/")
+SELF = "tests/docs/check_citations.py"  # its examples and planted mistakes are not citations
 
 # Built from pieces so that this file does not cite what it forbids.
 _OUTSIDE_NAMES = "|".join(["SP" + "EC", "MA" + "TH", "ARCHI" + "TECTURE", "ST" + "YLE"])
@@ -154,7 +159,7 @@ class Checker:
                 names += [os.path.relpath(os.path.join(d, f), self.root) for f in files]
         for n in sorted(names):
             n = n.replace(os.sep, "/")
-            if n.startswith(DATA_FOLDERS):
+            if n.startswith(DATA_FOLDERS) or n == SELF:
                 continue
             if n.endswith(TEXT_SUFFIXES) or n.startswith("scripts/"):
                 if os.path.isfile(os.path.join(self.root, n)):
@@ -182,7 +187,13 @@ class Checker:
             for pattern, why in FORBIDDEN:
                 for m in pattern.finditer(line):
                     self.report(where, f"{why}: {m.group(0)!r}")
-            for m in SECTION_CITE.finditer(line):
+            # A citation may wrap onto the next line of the same comment or paragraph.
+            joined = line
+            if i + 1 < len(lines):
+                joined = line + " " + COMMENT_PREFIX.sub("", lines[i + 1], count=1)
+            for m in SECTION_CITE.finditer(joined):
+                if m.start() >= len(line):
+                    break
                 target = self.page_path(m.group(1), m.group(2))
                 page = self.page(target)
                 for x in SECTION_NUMBER.findall(m.group(3)):
@@ -193,12 +204,7 @@ class Checker:
                     elif x not in page.numbers:
                         self.report(where, f"cites {target} §{x}: no heading numbered {x} "
                                            f"(numbers: {', '.join(sorted(page.numbers)) or 'none'})")
-            # A quoted heading may wrap onto the next line of the same comment.
-            text = line
-            if HEADING_CITE.search(line) and any(
-                    not m.group(4) for m in HEADING_CITE.finditer(line)) and i + 1 < len(lines):
-                text = line + " " + COMMENT_PREFIX.sub("", lines[i + 1], count=1)
-            for m in HEADING_CITE.finditer(text):
+            for m in HEADING_CITE.finditer(joined):
                 if m.start() >= len(line):
                     break
                 if not m.group(4):
@@ -253,13 +259,17 @@ SELF_TEST_FILES = {
                     "// docs/cli.md \"gmcc select\", docs/cli.md, \"Input files\"\n"
                     "// docs/math.md \"Plain heading\" and docs/math.md \"Plain\n"
                     "// heading (--json)\"\n"
-                    "x = \"see docs/cli.md, \\\"Input files\\\"\";\n",
+                    "x = \"see docs/cli.md, \\\"Input files\\\"\";\n"
+                    "// wrapped: docs/math.md\n// §1b, and docs/cli.md\n// \"Input files\".\n",
     "src/bad.cpp": "// docs/math.md §2\n"                 # 2 is not a heading's number
                    "// docs/math.md §1, §9\n"             # 9 only inside a fence
                    "// docs/nothing.md §1\n"              # no page
                    "// docs/cli.md \"Output files\"\n"    # no heading
                    "// see " + "SP" + "EC §5 and " + "MA" + "TH 1a.7\n"
-                   "// ../" + "shared/docs/x\n",
+                   "// ../" + "shared/docs/x\n"
+                   "// wrapped: docs/math.md\n"
+                   "// §7 and docs/cli.md\n"           # 7 is no heading's number
+                   "// \"Output files\".\n",
     "scripts/tool": "# " + "ARCHI" + "TECTURE.md explains\n",
     "build/ignored.cpp": "// " + "SP" + "EC §1\n",
 }
@@ -274,6 +284,8 @@ SELF_TEST_EXPECTED = [
     "src/bad.cpp:5: cites a background document",
     "src/bad.cpp:5: cites a background document",
     "src/bad.cpp:6: cites a path outside the repository",
+    "src/bad.cpp:7: cites docs/math.md §7: no heading numbered 7",
+    "src/bad.cpp:8: cites docs/cli.md \"Output files\": no such heading",
 ]
 
 
