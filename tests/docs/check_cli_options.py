@@ -11,11 +11,12 @@ under "Subcommands:", recursively (`gmcc reproduce synthetic --help`, …). A co
 the long names (`--name`) in the first column of its "Options:" list; `--help` is left out.
 
 Where docs/cli.md lists a command's options:
-* its section: the `## ` section whose heading is `` `gmcc CMD` `` for the first word of the
-  command (with its `###` subsections); for `gmcc` itself, the text above the first `## `;
+* its section: the `## ` section whose heading starts with `` `gmcc CMD` `` for the first word
+  of the command (`` ## `gmcc cite` and `gmcc --version` `` is cite's), with its `###`
+  subsections; for `gmcc` itself, the text above the first `## `;
 * synopsis lines in that section's ``` blocks: a line `gmcc CMD SUB … [--opt …]` lists its
   options for the command `CMD SUB` (as many leading words as name commands), and so do the
-  indented lines that continue it;
+  indented lines that continue it; a line for a command of another section is left to that one;
 * option tables in that section: rows whose first cell starts with `` `--``; every `--name` in
   the first cell is listed. If the table has a column headed `commands`, a row applies to the
   commands named in it by their last word (`all`: every command of the section that has no
@@ -77,7 +78,7 @@ def sections(doc):
     for line in doc.splitlines():
         m = re.match(r"^##\s+(.*)$", line)
         if m and not line.startswith("###"):
-            h = re.match(r"^`gmcc ([a-z][\w-]*)`$", m.group(1).strip())
+            h = re.match(r"^`gmcc ([a-z][\w-]*)`", m.group(1).strip())
             key = h.group(1) if h else None
             if key is not None:
                 out[key] = []
@@ -108,7 +109,8 @@ def listed(lines, tree, first):
                     else:
                         break
                 current = tuple(path)
-                found.setdefault(current, set())
+                if current not in found:  # another section's command: listed there
+                    current = None
             elif not line[:1].isspace():
                 current = None
             if current is not None:
@@ -171,8 +173,9 @@ gmcc [--time-limit S] COMMAND
 ```
 gmcc run --a X [--b-opt x|y] [--gone]
 ```
-## `gmcc exp`
+## `gmcc exp` and more words
 ```
+gmcc --time-limit S exp one
 gmcc exp one [--c N]
 gmcc exp two [--c N]
 ```
