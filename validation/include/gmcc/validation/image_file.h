@@ -3,7 +3,7 @@
 /// Linear camera images as the colour-constancy datasets ship them: 8- or
 /// 16-bit RGB PNG (libpng) and TIFF (libtiff), read as stored — no gamma,
 /// colour-space or ICC conversion, no scaling — so that a pixel's numbers are
-/// the camera's linear responses (docs/cli.md "gmcc estimate"). Writing returns
+/// the camera's linear responses (docs/conventions.md §8). Writing returns
 /// the bytes; the command line puts them in place whole.
 
 #include <gmcc/validation/input_error.h>

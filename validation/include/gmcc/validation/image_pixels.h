@@ -1,21 +1,15 @@
 #pragma once
 /// \file image_pixels.h
-/// From a linear camera image to the colours gmcc's geometry takes (docs/cli.md
-/// "gmcc estimate"), each step explicit and exact, in this order for every
-/// pixel:
-///   1. a mask excludes pixels (a polygon such as a calibration chart's
-///   corners, and/or a mask
-///      image);
-///   2. saturation: a pixel with any channel at or above the threshold (raw
-///   value, before the
+/// From a linear camera image to the colours gmcc's geometry takes
+/// (docs/conventions.md §8), each step explicit and exact, in this order for every pixel:
+///   1. a mask excludes pixels (a polygon such as a calibration chart's corners, and/or a
+///      mask image);
+///   2. saturation: a pixel with any channel at or above the threshold (raw value, before the
 ///      black level) is dropped, since its true colour is unknown;
-///   3. black level: subtracted from every channel, negative results clamped to
-///   0;
-///   4. binning (optional): the kept pixels of each b×b block are averaged,
-///   exactly, into one
+///   3. black level: subtracted from every channel, negative results clamped to 0;
+///   4. binning (optional): the kept pixels of each b×b block are averaged, exactly, into one
 ///      colour;
-///   5. the distinct colours are returned (their convex hull is what the gamut
-///   method uses, so
+///   5. the distinct colours are returned (their convex hull is what the gamut method uses, so
 ///      repeated colours add nothing).
 
 #include <gmcc/geometry/colour.h>
@@ -63,7 +57,7 @@ struct ImageColours {
 ImageColours image_colours(const RgbImage& image, const PixelRules& rules);
 
 /// The pixels a polygon excludes, row-major (true: centre inside or on the
-/// boundary). Exposed for tests and for `gmcc estimate`'s report.
+/// boundary). Exposed for tests and reports.
 std::vector<bool> polygon_cover(const std::vector<Point2>& polygon, std::size_t width,
                                 std::size_t height);
 

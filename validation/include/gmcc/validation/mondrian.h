@@ -1,7 +1,7 @@
 #pragma once
 /// \file mondrian.h
 /// A synthetic linear camera image for testing the image pipeline end to end
-/// (docs/cli.md "gmcc estimate"): a Mondrian — a grid of flat rectangles, each
+/// (docs/conventions.md §8): a Mondrian — a grid of flat rectangles, each
 /// one surface's colour under the scene's light — quantised to 16 bits above a
 /// black level, with a few saturated pixels.
 
