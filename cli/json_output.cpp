@@ -190,9 +190,14 @@ Json scene_json(const PreparedCanonical& c, const SceneResult& r, bool canonical
 }
 
 void finish_document(Json& document) {
-  // Provenance (version, commit, options, input checksums) is to be added here, once for every
-  // JSON document select writes.
+  // Provenance (version, commit, options, input checksums: provenance.h) is to be added here,
+  // once for every JSON document select writes.
   (void)document;
+}
+
+std::string json_lines_preamble() {
+  // The first line {"provenance": …} of a JSON Lines output is to be returned here.
+  return {};
 }
 
 std::string select_json(const PreparedCanonical& c, const SceneResult& r) {

@@ -18,9 +18,14 @@ using Json = nlohmann::ordered_json;
 /// truth, and with `canonical_members` canonical_gamut and canonical_illuminant; then input.
 Json scene_json(const PreparedCanonical& canonical, const SceneResult& result, bool canonical_members);
 
-/// Every JSON document `gmcc select` writes (the one object, each batch record) passes here once,
-/// complete, before it is written: the one place where a provenance object would be added.
+/// Every JSON document `gmcc select` writes (the one object, 2-D or 3-D) passes here once,
+/// complete, before it is written: the one place where its "provenance" member is to be added
+/// (docs/cli.md "Provenance").
 void finish_document(Json& document);
+
+/// What a JSON Lines output of `gmcc select --images` starts with, before its records: the one
+/// place for its first line {"provenance": …} (docs/cli.md "Provenance"); empty for now.
+std::string json_lines_preamble();
 
 /// One JSON object, pretty-printed, ending in a newline.
 std::string select_json(const PreparedCanonical& canonical, const SceneResult& result);

@@ -173,7 +173,7 @@ int run_select_batch(const SelectOptions& o, const SelectSettings& settings) {
   const std::string text =
       read_text_file(file, {max_scene_file_bytes, "scene file", "JSON Lines, one scene a line"});
 
-  std::string out;
+  std::string out = json_lines_preamble();
   std::size_t scenes = 0, failed = 0;
   bool warned = settings.canonical_illuminant_given;
   std::string_view rest(text);
@@ -205,7 +205,6 @@ int run_select_batch(const SelectOptions& o, const SelectSettings& settings) {
       record["error"] = scene_error(e, file, number, canonical.file);
       ++failed;
     }
-    finish_document(record);
     out += record.dump();
     out += '\n';
   }
