@@ -173,6 +173,20 @@ int run_select_batch(const SelectOptions& o, const SelectSettings& settings) {
   const std::string text =
       read_text_file(file, {max_scene_file_bytes, "scene file", "JSON Lines, one scene a line"});
 
+  // The scene limit, checked before any work.
+  {
+    std::size_t count = 0, number = 1;
+    for (std::size_t start = 0; start < text.size(); ++number) {
+      std::size_t end = text.find('\n', start);
+      if (end == std::string::npos) end = text.size();
+      if (text.find_first_not_of(" \t\r", start) < end && ++count > max_batch_scenes)
+        throw InputError(file, number,
+                         "more than " + std::to_string(max_batch_scenes) +
+                             " scenes, the limit for one file (the records are kept in memory "
+                             "until all are done): split the file");
+      start = end + 1;
+    }
+  }
   std::string out = json_lines_preamble();
   std::size_t scenes = 0, failed = 0;
   bool warned = settings.canonical_illuminant_given;

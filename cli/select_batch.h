@@ -11,6 +11,9 @@ namespace gmcc::cli {
 
 /// Largest scene file accepted, in bytes (read whole, like a colour file).
 inline constexpr std::size_t max_scene_file_bytes = std::size_t(1) << 30;
+/// Most scenes in one file: the records are written at once when all are done, a few KB each
+/// (11 colours: about 4 KB), so 10^5 scenes keep the output under about 0.5 GB of memory.
+inline constexpr std::size_t max_batch_scenes = 100000;
 
 /// One scene of a scene file, as read from its line.
 struct BatchScene {

@@ -170,6 +170,12 @@ def main():
                                  jsonl(['{"colours":[[1,1,1]]}\n']), *C)
             expect(rc == 2 and out == "" and "no usable colour" in err, (rc, out, err))
 
+        def batch_scene_limit():
+            # 10^5 + 1 scene lines: refused before any work, naming the line past the limit.
+            path = jsonl(["\n"] + ["x\n"] * 100001)
+            rc, out, err = r.run("--canonical", square, "--images", path, *C)
+            expect(rc == 2 and out == "" and f"{path}:100002: more than 100000 scenes" in err, (rc, err))
+
         def batch_constraint_and_recovery():
             lights = r.file("1,1,2\n1,1,3\n")
             lines = ['{"colours":[[1,1,1]]}\n', '{"colours":[[1,1,1],[4,1,1]]}\n']
