@@ -5,6 +5,7 @@
 
 #include <gmcc/validation/text_file.h>
 
+#include <cstdio>
 #include <iostream>
 
 namespace gmcc::cli {
@@ -30,7 +31,7 @@ class ExactSax {
   bool start_object(std::size_t) { return open(Json::object()); }
   bool key(string_t& k) {
     if (stack_.back()->contains(k)) {
-      error_ = "the member \"" + k.substr(0, 40) + "\" appears twice";
+      error_ = "the member " + quoted_text(k) + " appears twice";
       return false;
     }
     key_ = k;
@@ -43,7 +44,22 @@ class ExactSax {
     std::string what = e.what();
     const auto bracket = what.find("] ");
     if (what.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) what.erase(0, bracket + 2);
-    error_ = "not a JSON object (" + what + ")";
+    // The parser's message quotes the input it read: keep it short and printable.
+    std::string printable;
+    for (const char ch : what.substr(0, 200)) {
+      const auto b = static_cast<unsigned char>(ch);
+      if (b >= 0x20 && b < 0x7f) {
+        printable += ch;
+      } else {
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "\\x%02X", b);
+        printable += hex;
+      }
+    }
+    if (what.size() > 200) printable += "...";
+    error_ = "not a JSON object (" + printable + ")";
+    if (what.find("number overflow") != std::string::npos)
+      error_ += "; write numbers beyond the range of doubles as strings, \"1e400\"";
     (void)position;
     return false;
   }
@@ -138,8 +154,8 @@ void parse_batch_scene(const std::string& text, const std::string& file, BatchSc
   try {
     for (const auto& [k, v] : j.items())
       if (k != "id" && k != "colours" && k != "truth")
-        throw std::invalid_argument("unknown member \"" + k.substr(0, 40) +
-                                    "\" (a scene has id, colours and truth)");
+        throw std::invalid_argument("unknown member " + quoted_text(k) +
+                                    " (a scene has id, colours and truth)");
     if (!j.contains("colours"))
       throw std::invalid_argument("no \"colours\" member (a list of [r, g, b])");
     const Json& c = j["colours"];
@@ -219,7 +235,8 @@ int run_select_batch(const SelectOptions& o, const SelectSettings& settings) {
       record["error"] = scene_error(e, file, number, canonical.file);
       ++failed;
     }
-    out += record.dump();
+    // Invalid UTF-8 can only come from the input quoted in a message: replaced, not fatal.
+    out += record.dump(-1, ' ', false, Json::error_handler_t::replace);
     out += '\n';
   }
   if (scenes == 0) throw InputError(file, 0, "no scenes (expected JSON Lines, one scene a line)");

@@ -147,11 +147,32 @@ def main():
             expect(by_line[2]["error"].startswith(f"{path}:2: not a JSON object"), by_line[2])
             expect(by_line[4]["id"] == "x" and "colours[0]" in by_line[4]["error"], by_line[4])
             expect(by_line[4]["error"].startswith(f"{path}:4:"), by_line[4])
-            expect("unknown member \"colors\"" in by_line[5]["error"], by_line[5])
+            expect("unknown member 'colors'" in by_line[5]["error"], by_line[5])
             expect(by_line[7]["error"].startswith(f"{path}:7: truth:"), by_line[7])
             expect("colours[0][0] is negative" in by_line[8]["error"], by_line[8])
             expect("colours[0][0]" in by_line[9]["error"], by_line[9])
             expect("error" not in by_line[10] and by_line[10]["id"] == 7, by_line[10])
+
+        def batch_odd_lines():
+            path = os.path.join(tmp, "odd.jsonl")
+            with open(path, "wb") as f:
+                f.write(b'{"colours":[[1e400,1,1]]}\n'
+                        b'{"colours":[["\xff\xfe",1,1]]}\n'
+                        b'{"caf\xc3\xa9":1,"colours":[[3,3,2]]}\n'
+                        b'{"colours":[[1,1,1]]} trailing\n'
+                        b'{"colours":[[[[[[[[[[1]]]]]]]]]]}\n'
+                        b'{"colours":[["1e400",1,1]]}\n'
+                        b'{"colours":[[3,3,2]]}\n')
+            rc, out, err = r.run("--canonical", square, "--images", path, *C)
+            recs = [json.loads(x) for x in out.splitlines()]
+            expect(rc == 2 and len(recs) == 7, (rc, out, err))
+            expect("as strings" in recs[0]["error"], recs[0])
+            expect(recs[1]["error"].startswith(f"{path}:2: not a JSON object"), recs[1])
+            expect("unknown member" in recs[2]["error"], recs[2])
+            expect("end of input" in recs[3]["error"], recs[3])
+            expect("nested" in recs[4]["error"], recs[4])
+            expect("exceeds 1e150" in recs[5]["error"], recs[5])
+            expect("error" not in recs[6], recs[6])
 
         def batch_unbounded_and_blue():
             rc, out, err = r.run("--canonical", square, "--images",
