@@ -1,5 +1,7 @@
 #include "json_output.h"
 
+#include "provenance.h"
+
 #include <gmcc/geometry/rational.h>
 
 #include <nlohmann/json.hpp>
@@ -190,14 +192,18 @@ Json scene_json(const PreparedCanonical& c, const SceneResult& r, bool canonical
 }
 
 void finish_document(Json& document) {
-  // Provenance (version, commit, options, input checksums: provenance.h) is to be added here,
+  // Provenance first (version, commit, options, input checksums: docs/cli.md "Provenance"),
   // once for every JSON document select writes.
-  (void)document;
+  Json out;
+  out["provenance"] = provenance_json();
+  for (auto& [key, value] : document.items()) out[key] = std::move(value);
+  document = std::move(out);
 }
 
 std::string json_lines_preamble() {
-  // The first line {"provenance": …} of a JSON Lines output is to be returned here.
-  return {};
+  Json line;
+  line["provenance"] = provenance_json();
+  return line.dump() + "\n";
 }
 
 std::string select_json(const PreparedCanonical& c, const SceneResult& r) {

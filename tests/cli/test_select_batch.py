@@ -28,6 +28,14 @@ def angle_deg(u, v):
     return math.degrees(math.atan2(math.sqrt(sum(x * x for x in cross)), dot))
 
 
+def scene_records(out):
+    """The records of a batch's JSON Lines output, after its provenance line
+    (docs/cli.md "Provenance"; test_provenance.py checks that line's content)."""
+    lines = out.splitlines()
+    expect(lines and set(json.loads(lines[0])) == {"provenance"}, f"first line {lines[:1]}")
+    return [json.loads(x) for x in lines[1:]]
+
+
 def main():
     binary = sys.argv[1]
     with tempfile.TemporaryDirectory() as tmp:
@@ -94,7 +102,7 @@ def main():
             lines = [f'{{"id":"{i}","colours":[[{j}]],"truth":[2,2,3]}}\n' for i, _, j in scenes]
             rc, out, err = r.run("--canonical", square, "--images", jsonl(lines), *C)
             expect(rc == 0 and err == "", (rc, err))
-            records = [json.loads(x) for x in out.splitlines()]
+            records = scene_records(out)
             expect(len(records) == len(scenes), out)
             for rec, (i, csv, _) in zip(records, scenes):
                 one_run = r.json("--canonical", square, "--image", r.file(csv), "--truth", "2,2,3", *C)
@@ -111,7 +119,7 @@ def main():
             rc, out, err = r.run("--canonical", square, "--images", jsonl(lines),
                                  "--illuminant-worst-case", "off")
             expect(rc == 0 and err.count("warning") == 1, (rc, err))
-            recs = [json.loads(x) for x in out.splitlines()]
+            recs = scene_records(out)
             expect(len(recs) == 3 and all("worst_case_illuminant_deg" not in rec["selections"]["max_area"]
                                           for rec in recs), recs)
             expect(all("worst_case_deg" in rec["selections"]["max_area"] for rec in recs), recs)
@@ -121,7 +129,7 @@ def main():
             can = r.file("0.1,0.2,0.3\n")
             rc, out, err = r.run("--canonical", can, "--images",
                                  jsonl(['{"colours":[[0.3,0.1,0.7]]}\n']), *C)
-            rec = json.loads(out)
+            (rec,) = scene_records(out)
             expect(rc == 0 and rec["feasible_set"]["vertices"] == [["7/9", "14/3"]], (rc, out, err))
             expect("id" not in rec, rec)
 
@@ -138,7 +146,7 @@ def main():
                      '{"id":7,"colours":[[3,3,2]]}\n']
             path = jsonl(lines)
             rc, out, err = r.run("--canonical", square, "--images", path, *C)
-            records = [json.loads(x) for x in out.splitlines()]
+            records = scene_records(out)
             expect(rc == 2, (rc, err))
             expect("could not be selected" in err and err.count("\n") == 1, err)
             expect(len(records) == 9, out)
@@ -164,7 +172,7 @@ def main():
                         b'{"colours":[["1e400",1,1]]}\n'
                         b'{"colours":[[3,3,2]]}\n')
             rc, out, err = r.run("--canonical", square, "--images", path, *C)
-            recs = [json.loads(x) for x in out.splitlines()]
+            recs = scene_records(out)
             expect(rc == 2 and len(recs) == 7, (rc, out, err))
             expect("as strings" in recs[0]["error"], recs[0])
             expect(recs[1]["error"].startswith(f"{path}:2: not a JSON object"), recs[1])
@@ -179,7 +187,7 @@ def main():
                                  jsonl(['{"colours":[[0,1,1],[0,2,1]]}\n',
                                         '{"colours":[[1,1,1],[1,1,0]]}\n']),
                                  "--nonpositive-blue", "reject", *C)
-            recs = [json.loads(x) for x in out.splitlines()]
+            recs = scene_records(out)
             expect(rc == 2 and "unbounded" in recs[0]["error"], (rc, recs))
             expect("colours[1]: b <= 0" in recs[1]["error"], recs[1])
 
@@ -202,7 +210,7 @@ def main():
             lines = ['{"colours":[[1,1,1]]}\n', '{"colours":[[1,1,1],[4,1,1]]}\n']
             rc, out, err = r.run("--canonical", square, "--images", jsonl(lines), "--illuminants",
                                  lights, "--on-empty", "min-violation", *C)
-            recs = [json.loads(x) for x in out.splitlines()]
+            recs = scene_records(out)
             expect(rc == 0, (rc, err))
             expect(recs[0]["constraint"]["kind"] == "segment" and recs[0]["feasible_set"]["kind"] == "point", recs[0])
             expect(recs[1]["recovery"]["applied"] is True, recs[1])
