@@ -1,0 +1,37 @@
+// Writes the test images of `gmcc estimate` (tests/cli/test_estimate.py): a Mondrian of the
+// shipped sample's 8 Munsell chips under D75 (narrow-band sensors; data/samples), 120x90 pixels
+// in 4x3 cells, 16-bit above a black level of 256 with the brightest channel at 60000 above it,
+// and 20 draws of saturated pixels, as OUT/mondrian.png and OUT/mondrian.tif.
+//   make_mondrian_images DATA_DIR OUT_DIR
+#include <gmcc/validation/colour_csv.h>
+#include <gmcc/validation/image_file.h>
+#include <gmcc/validation/mondrian.h>
+
+#include <fstream>
+#include <iostream>
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    std::cerr << "usage: make_mondrian_images DATA_DIR OUT_DIR\n";
+    return 2;
+  }
+  const std::string data = argv[1], out = argv[2];
+  const gmcc::ColourTable chips = gmcc::read_colour_csv(data + "/samples/image_munsell_D75.csv");
+  gmcc::MondrianSpec spec;
+  spec.width = 120;
+  spec.height = 90;
+  spec.columns = 4;
+  spec.rows = 3;
+  spec.seed = 1;
+  spec.black_level = 256;
+  spec.peak = 60000;
+  spec.saturated_pixels = 20;
+  const gmcc::Mondrian m = gmcc::render_mondrian(chips.colours, spec);
+  for (const auto& [name, bytes] : {std::pair<std::string, std::string>{"mondrian.png", gmcc::encode_png16(m.image)},
+                                    {"mondrian.tif", gmcc::encode_tiff16(m.image)}}) {
+    std::ofstream f(out + "/" + name, std::ios::binary);
+    f << bytes;
+    if (!f) return 1;
+  }
+  return 0;
+}
