@@ -7,6 +7,7 @@
 #include "integer_option.h"
 #include "limit_exit.h"
 #include "memory_limit.h"
+#include "merge.h"
 #include "reproduce.h"
 #include "select.h"
 #include "time_limit.h"
@@ -81,6 +82,8 @@ int main(int argc, char** argv) {
   CLI::App* accuracy = gmcc::cli::add_accuracy_command(app, accuracy_options);
   gmcc::cli::ReproduceOptions reproduce_options;
   CLI::App* reproduce = gmcc::cli::add_reproduce_command(app, reproduce_options);
+  gmcc::cli::MergeOptions merge_options;
+  CLI::App* merge = gmcc::cli::add_merge_command(app, merge_options);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -110,6 +113,7 @@ int main(int argc, char** argv) {
     if (select->parsed()) status = gmcc::cli::run_select(select_options);
     else if (accuracy->parsed()) status = gmcc::cli::run_accuracy(accuracy_options);
     else if (reproduce->parsed()) status = gmcc::cli::run_reproduce(*reproduce, reproduce_options);
+    else if (merge->parsed()) status = gmcc::cli::run_merge(merge_options);
     gmcc::cli::write_stdout("");  // what a command wrote without write_stdout, flushed and checked
     return status;
   } catch (const gmcc::InputError& e) {
