@@ -254,6 +254,11 @@ int expansion_table(const ReproduceOptions& o) {
   const ExperimentSetup setup = synthetic(o);
   ExperimentConfig base = config_from(o);
   base.progress = nullptr;
+  // The three runs' CSV rows (prefixed by the expansion) and scene records (a section each).
+  std::optional<PendingFile> csv_file, scenes_file;
+  if (!o.csv_path.empty()) csv_file.emplace(o.csv_path);
+  if (!o.scenes_out_path.empty()) scenes_file.emplace(o.scenes_out_path);
+  std::string csv, scenes;
   struct Row {
     std::string label;
     Expansion expansion;
@@ -271,6 +276,16 @@ int expansion_table(const ReproduceOptions& o) {
     ExperimentConfig c = base;
     c.expansion = row.expansion;
     const ExperimentResult r = run_gamut_experiment(setup, c);
+    if (csv_file) {
+      const std::string rows = experiment_csv(r);
+      const std::string prefix = to_string(c.expansion.policy) + "," + to_string(c.expansion.factor) + ",";
+      for (std::size_t start = 0, end; start < rows.size(); start = end + 1) {
+        end = rows.find('\n', start);
+        if (start == 0 && csv.empty()) csv += "expansion_policy,expansion_factor," + rows.substr(0, end + 1);
+        else if (start != 0) csv += prefix + rows.substr(start, end + 1 - start);
+      }
+    }
+    if (scenes_file) scenes += experiment_scenes_jsonl(r);
     double sum[2][3] = {}, count[2] = {};
     for (const ExperimentCell& cell : r.cells) {
       const int band = cell.surfaces <= 5 ? 0 : 1;
@@ -284,6 +299,8 @@ int expansion_table(const ReproduceOptions& o) {
                   sum[1][1] / std::max(count[1], 1.0), sum[1][2] / std::max(count[1], 1.0));
     std::cout << line;
   }
+  if (csv_file) csv_file->commit(csv);
+  if (scenes_file) scenes_file->commit(scenes);
   return 0;
 }
 
@@ -313,6 +330,12 @@ CLI::App* add_reproduce_command(CLI::App& app, ReproduceOptions& o) {
   CLI::App* exp = cmd->add_subcommand(
       "expansion", "the synthetic experiment without expansion and with 10% under each policy");
   add_common_options(exp, o);
+  exp->add_option("--csv", o.csv_path,
+                  "write one row per (expansion, light, surfaces, rule): expansion_policy, "
+                  "expansion_factor, then the columns of reproduce synthetic --csv");
+  exp->add_option("--scenes-out", o.scenes_out_path,
+                  "write the three runs' per-scene records (JSON Lines), each run a setup line "
+                  "followed by its scenes");
   return cmd;
 }
 
