@@ -231,6 +231,35 @@ def main():
             expect(open(p("t1.jsonl"), "rb").read() == open(p("t2.jsonl"), "rb").read(), "records differ by --threads")
         r.check("records identical for 1 and 2 threads", threads_do_not_matter)
 
+        def expansion_outputs():
+            rc, _, err = r.run("expansion", "--scenes", "2", "--surfaces", "3", "--csv", p("e.csv"),
+                               "--scenes-out", p("e.jsonl"))
+            expect(rc == 0, err)
+            rows = list(csv.DictReader(open(p("e.csv"))))
+            expect(len(rows) == 3 * 4 * 3 * 3, f"rows per (expansion, light, n, rule): {len(rows)}")
+            expect({(x["expansion_policy"], x["expansion_factor"]) for x in rows} ==
+                   {("none", "0"), ("centroid-clip", "1/10"), ("multiplicative", "1/10")}, "the three expansions")
+            recs = lines(p("e.jsonl"))
+            setups = [i for i, x in enumerate(recs) if "format" in x]
+            expect(setups == [0, 25, 50], f"a setup line per run: {setups}")
+            # The scenes do not depend on the expansion (docs: Scene generator).
+            expect([x["drawn"] for x in recs[1:25]] == [x["drawn"] for x in recs[26:50]] ==
+                   [x["drawn"] for x in recs[51:75]], "same scenes under every expansion")
+        r.check("expansion --csv and --scenes-out", expansion_outputs)
+
+        def json_aggregates():
+            doc = json.load(open(p("w.json")))
+            rows = list(csv.DictReader(open(p("w.csv"))))
+            expect(doc["setup"]["experiment"] == "synthetic" and len(doc["cells"]) == 2 * 4, "setup and cells")
+            for row in rows:
+                cell = [c for c in doc["cells"] if c["light"] == row["illuminant"] and c["surfaces"] == int(row["surfaces"])]
+                st = cell[0]["rules"][row["rule"]]
+                for q in ("error", "worst_case", "illuminant_error", "reproduction_error"):
+                    for k in ("mean", "se", "median", "trimean", "best25", "worst25", "p95", "max"):
+                        col = f"{k}_{q}_deg"
+                        expect(f"{float(st[q + '_deg'][k]):.6f}" == row[col], f"JSON {q}.{k} vs CSV {col}")
+        r.check("JSON aggregates agree with the CSV", json_aggregates)
+
         def bad(runner, args, words):
             before = set(os.listdir(tmp))
             rc, out, err = runner.run(*args)
