@@ -195,7 +195,7 @@ def main():
                             continue
                         got = row[col]
                         if math.isnan(v):
-                            expect(got == "nan", f"{col}: {got}, expected nan")
+                            expect(got == "", f"{col}: {got!r}, expected an empty field")
                         else:
                             expect(abs(float(got) - v) <= 1.5e-6, f"{row['illuminant']} n={row['surfaces']} "
                                    f"{row['rule']} {col}: CSV {got}, records {v:.9f}")
@@ -259,6 +259,14 @@ def main():
                         col = f"{k}_{q}_deg"
                         expect(f"{float(st[q + '_deg'][k]):.6f}" == row[col], f"JSON {q}.{k} vs CSV {col}")
         r.check("JSON aggregates agree with the CSV", json_aggregates)
+
+        def one_scene():
+            rc, out, err = r.run("synthetic", "--scenes", "1", "--surfaces", "2", "--csv", p("one.csv"))
+            expect(rc == 0 and "nan" not in out, err)
+            for row in csv.DictReader(open(p("one.csv"))):
+                expect(row["se_error_deg"] == "" and row["mean_error_deg"] == row["median_error_deg"] ==
+                       row["trimean_error_deg"] == row["best25_error_deg"] == row["p95_error_deg"], row)
+        r.check("one scene per cell: no standard error, every quantile the value", one_scene)
 
         def bad(runner, args, words):
             before = set(os.listdir(tmp))

@@ -106,7 +106,10 @@ std::string experiment_csv(const ExperimentResult& r) {
           << num(s.error.max) << ',' << c.empty << ',' << s.truth_in_feasible_set;
       for (const Quantity& q : quantities)
         for (const Statistic& st : statistics)
-          if (!original_column(std::string(st.name) + "_" + q.name + "_deg")) out << ',' << num(s.*q.member.*st.member);
+          if (!original_column(std::string(st.name) + "_" + q.name + "_deg")) {
+            const double x = s.*q.member.*st.member;
+            out << ',' << (std::isnan(x) ? std::string() : num(x));  // undefined (se of one value): empty
+          }
       out << ',' << s.illuminant.n << '\n';
     }
   return out.str();
@@ -242,8 +245,9 @@ std::string experiment_table(const ExperimentResult& r) {
     for (std::size_t k = 0; k < c.rules.size(); ++k) {
       const ErrorStatistics& e = c.rules[k].error;
       char line[256];
-      std::snprintf(line, sizeof line, "  %-3d %-16s %9.3f %7.3f %7.3f %7.3f %7.3f %7.3f %7.3f %7.3f\n",
-                    c.surfaces, r.rules[k].c_str(), e.mean, e.standard_error, e.median, e.trimean, e.best25,
+      const std::string se = std::isnan(e.standard_error) ? "-" : num(e.standard_error, "%.3f");
+      std::snprintf(line, sizeof line, "  %-3d %-16s %9.3f %7s %7.3f %7.3f %7.3f %7.3f %7.3f %7.3f\n",
+                    c.surfaces, r.rules[k].c_str(), e.mean, se.c_str(), e.median, e.trimean, e.best25,
                     e.worst25, e.p95, e.max);
       out << line;
     }
