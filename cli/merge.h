@@ -1,7 +1,7 @@
 #pragma once
 // `gmcc merge`: the per-scene files of the shards of one `gmcc reproduce` run (--shard K/N
 // --scenes-out FILE) combined into the outputs of the whole run, byte for byte
-// (docs/reproduction.md §"Sharding").
+// (docs/reproduction.md "Sharding").
 
 #include <CLI/CLI.hpp>
 

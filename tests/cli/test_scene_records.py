@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 """`gmcc reproduce --scenes-out`, the statistics and `--shard` + `gmcc merge` end to end.
 
-1. The scene generator, regenerated in Python from docs/reproduction.md §"Scene generator"
+1. The scene generator, regenerated in Python from docs/reproduction.md "Scene generator"
    alone (seed words, std::seed_seq, MT19937-64, Lemire's sampler, the partial Fisher-Yates
    draw), must give every scene's `drawn` surfaces, scene by scene, for the synthetic and the
    camera experiment, with a seed above 2^32.
 2. Every CSV statistic of a run, recomputed in Python (statistics, exact sums) from its per-scene records following
-   docs/reproduction.md §"Statistics", must match the CSV's 6 decimals.
+   docs/reproduction.md "Statistics", must match the CSV's 6 decimals.
 3. A reduced run whole and in 3 shards merged by `gmcc merge` must give the same bytes: records,
    CSV, JSON, table and plot data; and the records must not depend on --threads.
 4. Bad shards and merges: exit 2, a message, nothing written.
@@ -29,7 +29,7 @@ from cli_harness import Runner, expect  # noqa: E402
 M32, M64 = (1 << 32) - 1, (1 << 64) - 1
 
 
-# --- docs/reproduction.md §"Scene generator", step by step -----------------------------------
+# --- docs/reproduction.md "Scene generator", step by step -----------------------------------
 
 def seed_words(S, light, n, s):  # step 1
     return [S & M32, S >> 32, light, n, s & M32, s >> 32]
@@ -110,7 +110,7 @@ def draw(S, light, n, s, K):  # step 5
     return pool[:n]
 
 
-# --- docs/reproduction.md §"Statistics" --------------------------------------------------------
+# --- docs/reproduction.md "Statistics" --------------------------------------------------------
 
 def quantile(x, p):
     h = (len(x) - 1) * p

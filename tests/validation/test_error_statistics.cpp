@@ -1,4 +1,4 @@
-// error_statistics.h on hand-computed examples (docs/reproduction.md §"Statistics"), and the
+// error_statistics.h on hand-computed examples (docs/reproduction.md "Statistics"), and the
 // per-scene records: shards of a run hold the whole run's scenes, and a cell summarised from
 // them is the run's own cell.
 #include <gmcc/validation/error_statistics.h>

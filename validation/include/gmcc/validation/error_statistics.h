@@ -2,7 +2,7 @@
 /// \file error_statistics.h
 /// The summary statistics every experiment reports for a list of angular errors: mean, standard
 /// error, median, trimean, best 25%, worst 25%, 95th percentile and maximum, each defined
-/// precisely in docs/reproduction.md §"Statistics". Deterministic: the same values in the same
+/// precisely in docs/reproduction.md "Statistics". Deterministic: the same values in the same
 /// order give the same bits.
 
 #include <cstdint>

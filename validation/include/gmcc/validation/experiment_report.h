@@ -34,7 +34,7 @@ std::vector<std::string> experiment_csv_added_columns();
 std::string experiment_setup_json(const ExperimentResult& result);
 
 /// Per-scene records (ExperimentResult::scenes) as JSON Lines: the setup object, then one object
-/// per scene in canonical order (docs/reproduction.md §"Per-scene records"). Numbers are the
+/// per scene in canonical order (docs/reproduction.md "Per-scene records"). Numbers are the
 /// shortest decimal that reads back as the same double, so a merge reproduces every statistic.
 std::string experiment_scenes_jsonl(const ExperimentResult& result);
 

@@ -64,7 +64,7 @@ struct ExperimentConfig {
   unsigned threads = 0;        ///< worker threads (0: the hardware's); results do not depend on it
   /// Run only part `shard_index` (1-based) of `shard_count` disjoint parts: the scenes in
   /// canonical order (light, then surface count, then scene index) numbered g = 0, 1, …, T − 1,
-  /// part K holds ⌊(K−1)·T/N⌋ ≤ g < ⌊K·T/N⌋ (docs/reproduction.md §"Sharding"). A scene's
+  /// part K holds ⌊(K−1)·T/N⌋ ≤ g < ⌊K·T/N⌋ (docs/reproduction.md "Sharding"). A scene's
   /// result never depends on the sharding. The cells then summarise only the part's scenes.
   std::uint64_t shard_index = 1, shard_count = 1;
   /// Keep every scene's record in ExperimentResult::scenes (for --scenes-out and merging).
@@ -138,7 +138,7 @@ ExperimentCell summarise_cell(const std::string& light, int n, std::vector<const
 /// Run the experiment. Scene (light ℓ, count n, index s) draws n distinct surfaces uniformly with
 /// its own generator, std::mt19937_64 seeded by std::seed_seq of the six 32-bit words
 /// {seed low, seed high, ℓ, n, s low, s high} (both fully specified by the C++ standard; the
-/// draw is docs/reproduction.md §"Scene generator"), so the result is identical for any thread
+/// draw is docs/reproduction.md "Scene generator"), so the result is identical for any thread
 /// count, any sharding and on any platform.
 /// \throws std::invalid_argument if a cell asks for more surfaces than there are.
 ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const ExperimentConfig& config);
