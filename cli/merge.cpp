@@ -162,6 +162,7 @@ CLI::App* add_merge_command(CLI::App& app, MergeOptions& o) {
 
 int run_merge(const MergeOptions& o) {
   std::optional<ExperimentResult> result;
+  std::string provenance;  // the first part's: the whole run's, as every part records the same run
   std::optional<ExperimentOutputs> outputs;
   json setup;
   std::string first_file;
@@ -177,13 +178,21 @@ int run_merge(const MergeOptions& o) {
       std::size_t end = text.find('\n', start);
       if (end == std::string::npos) end = text.size();
       const Place at{file, ++line};
+      const auto first = text.begin() + static_cast<std::ptrdiff_t>(start);
+      const auto last = text.begin() + static_cast<std::ptrdiff_t>(end);
+      start = end + 1;
       json j;
       try {
-        j = json::parse(text.begin() + static_cast<std::ptrdiff_t>(start), text.begin() + static_cast<std::ptrdiff_t>(end));
+        j = json::parse(first, last);
       } catch (const json::exception&) {
         bad(at, "not a JSON object");
       }
-      start = end + 1;
+      if (line == 1 && j.is_object() && j.size() == 1 && j.contains("provenance")) {
+        // Kept as written (member order too): the merged outputs' provenance. Every part records
+        // the same run (--shard, --threads and the output paths are not recorded).
+        if (provenance.empty()) provenance = nlohmann::ordered_json::parse(first, last).at("provenance").dump();
+        continue;
+      }
       if (header) {
         header = false;
         if (!result) {
@@ -237,7 +246,7 @@ int run_merge(const MergeOptions& o) {
       result->cells.push_back(summarise_cell(result->lights[l], result->config.min_surfaces + static_cast<int>(k),
                                              std::move(cell), result->rules.size()));
     }
-  return outputs->write(*result);
+  return outputs->write(*result, provenance);
 }
 
 }  // namespace gmcc::cli

@@ -3,6 +3,7 @@
 #include "integer_option.h"
 #include "limit_exit.h"
 #include "output_files.h"
+#include "provenance.h"
 #include "write_stdout.h"
 
 #include <gmcc/geometry/illumination_constraint.h>
@@ -160,11 +161,11 @@ ExperimentOutputs::ExperimentOutputs(const ReportPaths& paths, const std::string
   }
 }
 
-int ExperimentOutputs::write(const ExperimentResult& result) {
+int ExperimentOutputs::write(const ExperimentResult& result, const std::string& provenance) {
   set_activity("writing the reports");
-  if (scenes_) scenes_->commit(experiment_scenes_jsonl(result));
-  if (csv_) csv_->commit(experiment_csv(result));
-  if (json_) json_->commit(experiment_json(result));
+  if (scenes_) scenes_->commit(experiment_scenes_jsonl(result, provenance));
+  if (csv_) csv_->commit(experiment_csv(result, provenance));
+  if (json_) json_->commit(experiment_json(result, provenance));
   if (dat_) dat_->commit(experiment_plot_data(result));
   if (gp_) gp_->commit(experiment_plot_script(result, stem_));
   if (result.config.shard_count > 1) {
@@ -201,7 +202,7 @@ int report(const ExperimentSetup& setup, ExperimentConfig config, const Reproduc
   } catch (const std::invalid_argument& e) {
     throw InputError("--surfaces", 0, e.what());
   }
-  return outputs.write(result);
+  return outputs.write(result, provenance_json().dump());
 }
 
 ExperimentSetup synthetic(const ReproduceOptions& o) {
@@ -299,8 +300,9 @@ int expansion_table(const ReproduceOptions& o) {
                   sum[1][1] / std::max(count[1], 1.0), sum[1][2] / std::max(count[1], 1.0));
     std::cout << line;
   }
-  if (csv_file) csv_file->commit(csv);
-  if (scenes_file) scenes_file->commit(scenes);
+  const std::string provenance = provenance_json().dump();
+  if (csv_file) csv_file->commit("# gmcc-provenance: " + provenance + "\n" + csv);
+  if (scenes_file) scenes_file->commit("{\"provenance\":" + provenance + "}\n" + scenes);
   return 0;
 }
 

@@ -44,8 +44,9 @@ class ExperimentOutputs {
  public:
   ExperimentOutputs(const ReportPaths& paths, const std::string& stem);
   /// Write every requested file and the table (stdout), then draw with gnuplot if --plot.
+  /// `provenance` (a JSON object, docs/cli.md "Provenance") heads the CSV, JSON and records.
   /// Returns the exit status.
-  int write(const ExperimentResult& result);
+  int write(const ExperimentResult& result, const std::string& provenance);
 
  private:
   ReportPaths paths_;

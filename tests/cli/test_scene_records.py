@@ -133,8 +133,27 @@ def stats(values):
 
 
 def lines(path):
+    """The records of a --scenes-out file, after its provenance line (checked here)."""
     with open(path) as f:
-        return [json.loads(line) for line in f]
+        records = [json.loads(line) for line in f]
+    expect(list(records[0]) == ["provenance"], f"{path}: the first line is not the provenance")
+    check_provenance(records[0]["provenance"])
+    return records[1:]
+
+
+def check_provenance(p):
+    expect(p["software"] == "gmcc" and p["command"].startswith("reproduce ") and "--seed" in p["options"],
+           f"provenance {p}")
+    for name in ("--threads", "--shard", "--scenes-out", "--csv", "--json", "--plot"):
+        expect(name not in p["options"], f"{name} is recorded in the provenance")
+
+
+def read_csv(path):
+    with open(path) as f:
+        first = f.readline()
+        expect(first.startswith("# gmcc-provenance: "), f"{path}: no provenance line")
+        check_provenance(json.loads(first[len("# gmcc-provenance: "):]))
+        return list(csv.DictReader(f))
 
 
 def main():
@@ -175,7 +194,7 @@ def main():
             expect(rc == 0, err)
             recs = lines(p("st.jsonl"))
             setup, scenes = recs[0], recs[1:]
-            rows = list(csv.DictReader(open(p("st.csv"))))
+            rows = read_csv(p("st.csv"))
             expect(len(rows) == len(setup["lights"]) * 4 * len(setup["rules"]), "one row per cell and rule")
             names = {"error": "error_deg", "worst_case": "worst_case_deg",
                      "illuminant_error": "illuminant_error_deg", "reproduction_error": "reproduction_error_deg"}
@@ -235,7 +254,7 @@ def main():
             rc, _, err = r.run("expansion", "--scenes", "2", "--surfaces", "3", "--csv", p("e.csv"),
                                "--scenes-out", p("e.jsonl"))
             expect(rc == 0, err)
-            rows = list(csv.DictReader(open(p("e.csv"))))
+            rows = read_csv(p("e.csv"))
             expect(len(rows) == 3 * 4 * 3 * 3, f"rows per (expansion, light, n, rule): {len(rows)}")
             expect({(x["expansion_policy"], x["expansion_factor"]) for x in rows} ==
                    {("none", "0"), ("centroid-clip", "1/10"), ("multiplicative", "1/10")}, "the three expansions")
@@ -249,7 +268,9 @@ def main():
 
         def json_aggregates():
             doc = json.load(open(p("w.json")))
-            rows = list(csv.DictReader(open(p("w.csv"))))
+            expect(list(doc)[:2] == ["provenance", "setup"], list(doc)[:3])
+            check_provenance(doc["provenance"])
+            rows = read_csv(p("w.csv"))
             expect(doc["setup"]["experiment"] == "synthetic" and len(doc["cells"]) == 2 * 4, "setup and cells")
             for row in rows:
                 cell = [c for c in doc["cells"] if c["light"] == row["illuminant"] and c["surfaces"] == int(row["surfaces"])]
@@ -263,7 +284,7 @@ def main():
         def one_scene():
             rc, out, err = r.run("synthetic", "--scenes", "1", "--surfaces", "2", "--csv", p("one.csv"))
             expect(rc == 0 and "nan" not in out, err)
-            for row in csv.DictReader(open(p("one.csv"))):
+            for row in read_csv(p("one.csv")):
                 expect(row["se_error_deg"] == "" and row["mean_error_deg"] == row["median_error_deg"] ==
                        row["trimean_error_deg"] == row["best25_error_deg"] == row["p95_error_deg"], row)
         r.check("one scene per cell: no standard error, every quantile the value", one_scene)
@@ -292,7 +313,7 @@ def main():
             bad(merge, [p("s1.jsonl"), p("other.jsonl"), "--csv", p("out.csv")], ["another run"])
             with open(p("broken.jsonl"), "w") as f:
                 f.write(open(p("s1.jsonl")).read().replace('"drawn":[', '"drawn":[1,', 1))
-            bad(merge, [p("broken.jsonl"), p("s2.jsonl"), p("s3.jsonl")], ["broken.jsonl:2:"])
+            bad(merge, [p("broken.jsonl"), p("s2.jsonl"), p("s3.jsonl")], ["broken.jsonl:3:"])
             bad(merge, [p("no-such-file.jsonl")], ["no-such-file"])
         r.check("merge refuses missing, repeated, foreign and broken parts", merge_errors)
 

@@ -87,9 +87,9 @@ std::vector<std::string> experiment_csv_added_columns() {
   return columns;
 }
 
-std::string experiment_csv(const ExperimentResult& r) {
+std::string experiment_csv(const ExperimentResult& r, const std::string& provenance) {
   std::ostringstream out;
-  // (A provenance block, as '#' comment lines, would go here, before the header row.)
+  if (!provenance.empty()) out << "# gmcc-provenance: " << provenance << '\n';
   out << "illuminant,surfaces,rule,mean_error_deg,mean_worst_case_deg,scenes,median_error_deg,"
          "median_worst_case_deg,mean_illuminant_error_deg,median_illuminant_error_deg,"
          "mean_reproduction_error_deg,max_error_deg,empty_scenes,truth_in_feasible_set";
@@ -118,7 +118,6 @@ std::string experiment_csv(const ExperimentResult& r) {
 std::string experiment_setup_json(const ExperimentResult& r) {
   const ExperimentConfig& c = r.config;
   std::string out = "{\"format\":\"gmcc-reproduce\",\"format_version\":1,";
-  // (A "provenance" member — version, commit, options, checksums — would go here.)
   out += "\"experiment\":" + json_string(r.name) + ",\"figure\":" + json_string(r.figure) + ",\"lights\":[";
   for (std::size_t i = 0; i < r.lights.size(); ++i) out += (i ? "," : "") + json_string(r.lights[i]);
   out += "],\"rules\":[";
@@ -137,8 +136,9 @@ std::string experiment_setup_json(const ExperimentResult& r) {
   return out + "}";
 }
 
-std::string experiment_scenes_jsonl(const ExperimentResult& r) {
-  std::string out = experiment_setup_json(r) + "\n";
+std::string experiment_scenes_jsonl(const ExperimentResult& r, const std::string& provenance) {
+  std::string out = provenance.empty() ? std::string() : "{\"provenance\":" + provenance + "}\n";
+  out += experiment_setup_json(r) + "\n";
   for (const SceneRecord& s : r.scenes) {
     out += "{\"light\":" + json_string(r.lights.at(s.light)) + ",\"light_index\":" + std::to_string(s.light) +
            ",\"surfaces\":" + std::to_string(s.surfaces) + ",\"scene\":" + std::to_string(s.scene) + ",\"drawn\":[";
@@ -168,8 +168,9 @@ std::string experiment_scenes_jsonl(const ExperimentResult& r) {
   return out;
 }
 
-std::string experiment_json(const ExperimentResult& r) {
-  std::string out = "{\"setup\":" + experiment_setup_json(r) + ",\"cells\":[";
+std::string experiment_json(const ExperimentResult& r, const std::string& provenance) {
+  std::string out = provenance.empty() ? "{" : "{\"provenance\":" + provenance + ",";
+  out += "\"setup\":" + experiment_setup_json(r) + ",\"cells\":[";
   for (std::size_t i = 0; i < r.cells.size(); ++i) {
     const ExperimentCell& c = r.cells[i];
     out += std::string(i ? "," : "") + "\n{\"light\":" + json_string(c.light) + ",\"surfaces\":" +

@@ -19,7 +19,9 @@ namespace gmcc {
 /// mean_reproduction_error_deg,max_error_deg,empty_scenes,truth_in_feasible_set, then the
 /// columns of experiment_csv_added_columns (docs/cli.md lists them all).
 /// `scenes` counts the scenes that had a feasible map (those averaged); `empty_scenes` the others.
-std::string experiment_csv(const ExperimentResult& result);
+/// \param provenance a JSON object (docs/cli.md "Provenance") written first as the comment line
+///        `# gmcc-provenance: …`; none when empty.
+std::string experiment_csv(const ExperimentResult& result, const std::string& provenance = {});
 
 /// The columns experiment_csv appends to the original fourteen, in order: for each quantity
 /// (error, worst_case, illuminant_error, reproduction_error) the statistics of ErrorStatistics
@@ -36,11 +38,13 @@ std::string experiment_setup_json(const ExperimentResult& result);
 /// Per-scene records (ExperimentResult::scenes) as JSON Lines: the setup object, then one object
 /// per scene in canonical order (docs/reproduction.md "Per-scene records"). Numbers are the
 /// shortest decimal that reads back as the same double, so a merge reproduces every statistic.
-std::string experiment_scenes_jsonl(const ExperimentResult& result);
+/// \param provenance a JSON object written first as the line `{"provenance": …}`; none when empty.
+std::string experiment_scenes_jsonl(const ExperimentResult& result, const std::string& provenance = {});
 
 /// The aggregates as one JSON document: `setup`, then `cells`, each with every rule's
 /// statistics of the four quantities (numbers as in experiment_scenes_jsonl, NaN as null).
-std::string experiment_json(const ExperimentResult& result);
+/// \param provenance a JSON object, the document's first member `provenance`; none when empty.
+std::string experiment_json(const ExperimentResult& result, const std::string& provenance = {});
 
 /// A readable table: per light, mean map-space error and mean worst case per rule and count,
 /// and the 3-D mean's improvement over the better of the other two; then, per light, count and
