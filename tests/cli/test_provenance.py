@@ -39,7 +39,8 @@ def source_commit():
                            text=True, timeout=30)
     except (OSError, subprocess.SubprocessError):
         return None
-    return p.stdout.strip() if p.returncode == 0 and os.path.isdir(os.path.join(ROOT, ".git")) else None
+    # .git is a folder in a clone and a file in a `git worktree` checkout: both are checkouts.
+    return p.stdout.strip() if p.returncode == 0 and os.path.exists(os.path.join(ROOT, ".git")) else None
 
 
 def sha256(path):
