@@ -102,7 +102,7 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
     for (int i = 0; i < n; ++i)
       std::swap(pool[static_cast<std::size_t>(i)],
                 pool[static_cast<std::size_t>(i) + below(g, pool.size() - static_cast<std::size_t>(i))]);
-    rec.drawn.assign(pool.begin(), pool.begin() + n);
+    if (config.keep_scenes) rec.drawn.assign(pool.begin(), pool.begin() + n);  // only records need it
     // The scene's chromaticities by address: the light's precomputed ones, or this scene's own.
     std::vector<const Point2*> image;
     std::vector<Point2> own;
