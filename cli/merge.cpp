@@ -82,9 +82,11 @@ ExperimentResult result_of(const json& h, const Place& at) {
   c.max_surfaces = get<int>(h, "max_surfaces", at);
   c.scenes = get<std::uint64_t>(h, "scenes", at);
   c.seed = get<std::uint64_t>(h, "seed", at);
-  if (c.min_surfaces < 1 || c.max_surfaces < c.min_surfaces || c.max_surfaces > 1000 || c.scenes < 1 ||
-      c.scenes > 1000000 || r.lights.empty() || r.lights.size() > 1000 || r.rules.empty() || r.rules.size() > 16)
-    bad(at, "the setup's counts are out of range");
+  // reproduce's own limits (docs/cli.md "Resource limits").
+  if (c.min_surfaces < 1 || c.max_surfaces < c.min_surfaces || c.max_surfaces > 24 || c.scenes < 1 ||
+      c.scenes > 1000000 || r.lights.empty() || r.lights.size() > 64 || r.rules.empty() || r.rules.size() > 5)
+    bad(at, "the setup's counts are out of range (reproduce's limits: 1 to 24 surfaces, 1 to 10^6 scenes, "
+            "1 to 64 lights, 1 to 5 rules)");
   const json& e = member(h, "expansion", at);
   try {
     c.expansion.policy = expansion_policy_from_string(get<std::string>(e, "policy", at));
@@ -166,8 +168,16 @@ int run_merge(const MergeOptions& o) {
   std::optional<ExperimentOutputs> outputs;
   json setup;
   std::string first_file;
-  std::vector<std::optional<SceneRecord>> scenes;  // by global index (light, n, s)
-  std::vector<Place> from;
+  // Every record with its global index g (light, n, s) and where it was read: sorted by g at the
+  // end, so memory follows the records read, not the scene count a setup line claims.
+  struct Read {
+    std::uint64_t g;
+    Place at;
+    SceneRecord scene;
+  };
+  std::vector<Read> scenes;
+  std::uint64_t total = 0;
+  std::size_t cells = 0;
   const TextFileRules rules{kMaxSceneFileBytes, "scene file", "JSON Lines from gmcc reproduce --scenes-out"};
   for (const std::string& file : o.files) {
     set_activity("reading " + file);
@@ -201,43 +211,40 @@ int run_merge(const MergeOptions& o) {
           first_file = file;
           // Outputs opened once the run is known (the plot's stem is its name), before the work.
           outputs.emplace(ReportPaths{o.csv_path, o.json_path, o.scenes_out_path, o.plot_dir}, result->name);
-          const std::size_t cells = static_cast<std::size_t>(result->config.max_surfaces - result->config.min_surfaces + 1);
-          scenes.resize(result->lights.size() * cells * result->config.scenes);
-          from.resize(scenes.size());
+          cells = static_cast<std::size_t>(result->config.max_surfaces - result->config.min_surfaces + 1);
+          total = result->lights.size() * cells * result->config.scenes;
         } else if (comparable(j) != setup) {
           bad(at, "another run's setup than " + first_file + "'s (only \"shard\" and \"provenance\" may differ)");
         }
         continue;
       }
       SceneRecord s = record_of(j, *result, at);
-      const std::size_t cells = static_cast<std::size_t>(result->config.max_surfaces - result->config.min_surfaces + 1);
-      const std::size_t g = (s.light * cells + static_cast<std::size_t>(s.surfaces - result->config.min_surfaces)) *
-                                result->config.scenes + s.scene;
-      if (scenes[g]) {
-        const Place& before = from[g];
-        bad(at, "scene " + std::to_string(s.scene) + " of " + result->lights[s.light] + " with " +
-                    std::to_string(s.surfaces) + " surfaces is already in " + before.file + ":" +
-                    std::to_string(before.line));
-      }
       if (s.rules.size() != (s.kind == ConvexKind::empty ? 0 : result->rules.size()))
         bad(at, "\"rules\" must be null exactly when the feasible set is empty");
-      scenes[g] = std::move(s);
-      from[g] = at;
+      const std::uint64_t g = (s.light * cells + static_cast<std::size_t>(s.surfaces - result->config.min_surfaces)) *
+                                  result->config.scenes + s.scene;
+      scenes.push_back({g, at, std::move(s)});
     }
     if (header) throw InputError(file, 0, "empty: no setup line");
   }
-  const std::size_t cells = static_cast<std::size_t>(result->config.max_surfaces - result->config.min_surfaces + 1);
-  for (std::size_t g = 0; g < scenes.size(); ++g)
-    if (!scenes[g]) {
-      const std::size_t cell = g / result->config.scenes;
-      throw InputError(o.files.front(), 0,
-                       "scene " + std::to_string(g % result->config.scenes) + " of " + result->lights[cell / cells] +
-                           " with " + std::to_string(result->config.min_surfaces + static_cast<int>(cell % cells)) +
-                           " surfaces is in none of the files: a shard is missing");
-    }
+  set_activity("checking the scenes");
+  std::stable_sort(scenes.begin(), scenes.end(), [](const Read& a, const Read& b) { return a.g < b.g; });
+  auto name = [&](std::uint64_t g) {
+    const std::uint64_t cell = g / result->config.scenes;
+    return "scene " + std::to_string(g % result->config.scenes) + " of " + result->lights[cell / cells] + " with " +
+           std::to_string(result->config.min_surfaces + static_cast<int>(cell % cells)) + " surfaces";
+  };
+  for (std::size_t i = 1; i < scenes.size(); ++i)
+    if (scenes[i].g == scenes[i - 1].g)
+      bad(scenes[i].at, name(scenes[i].g) + " is already in " + scenes[i - 1].at.file + ":" +
+                            std::to_string(scenes[i - 1].at.line));
+  for (std::uint64_t g = 0; g < total; ++g)
+    if (g >= scenes.size() || scenes[g].g != g)
+      throw InputError(o.files.front(), 0, name(g) + " is in none of the files: a shard is missing");
   set_activity("merging the scenes");
   result->scenes.reserve(scenes.size());
-  for (std::optional<SceneRecord>& s : scenes) result->scenes.push_back(std::move(*s));
+  for (Read& r : scenes) result->scenes.push_back(std::move(r.scene));
+  std::vector<Read>().swap(scenes);
   for (std::size_t l = 0; l < result->lights.size(); ++l)
     for (std::size_t k = 0; k < cells; ++k) {
       std::vector<const SceneRecord*> cell;
