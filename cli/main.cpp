@@ -8,6 +8,7 @@
 #include "integer_option.h"
 #include "limit_exit.h"
 #include "memory_limit.h"
+#include "merge.h"
 #include "provenance.h"
 #include "reproduce.h"
 #include "select.h"
@@ -85,6 +86,8 @@ int main(int argc, char** argv) {
   CLI::App* reproduce = gmcc::cli::add_reproduce_command(app, reproduce_options);
   gmcc::cli::EstimateOptions estimate_options;
   CLI::App* estimate = gmcc::cli::add_estimate_command(app, estimate_options);
+  gmcc::cli::MergeOptions merge_options;
+  CLI::App* merge = gmcc::cli::add_merge_command(app, merge_options);
   CLI::App* cite = app.add_subcommand(
       "cite", "print a BibTeX entry for this build of gmcc (version, git commit, commit date) "
               "and the paper it implements (docs/cli.md \"Provenance\")");
@@ -120,6 +123,7 @@ int main(int argc, char** argv) {
     else if (select->parsed()) status = gmcc::cli::run_select(select_options);
     else if (accuracy->parsed()) status = gmcc::cli::run_accuracy(accuracy_options);
     else if (reproduce->parsed()) status = gmcc::cli::run_reproduce(*reproduce, reproduce_options);
+    else if (merge->parsed()) status = gmcc::cli::run_merge(merge_options);
     gmcc::cli::write_stdout("");  // what a command wrote without write_stdout, flushed and checked
     return status;
   } catch (const gmcc::InputError& e) {

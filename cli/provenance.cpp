@@ -21,11 +21,12 @@ Command& recorded() {
 }
 
 // Options that say where output goes or how long the run may take, not what it
-// computes.
+// computes (--threads: results do not depend on it; --json: reproduce's is a
+// file name, select's a format flag the output shows by itself).
 const std::set<std::string>& not_recorded() {
-  static const std::set<std::string> names{"--csv",          "--plot",  "--scenes-out",
-                                           "--out",          "--shard", "--time-limit",
-                                           "--memory-limit", "--help",  "--version"};
+  static const std::set<std::string> names{
+      "--csv",          "--plot", "--scenes-out", "--out",       "--shard", "--time-limit",
+      "--memory-limit", "--help", "--version",    "--corrected", "--json",  "--threads"};
   return names;
 }
 

@@ -1,7 +1,8 @@
 // Writes the test images of `gmcc estimate` (tests/cli/test_estimate.py): a Mondrian of the
 // shipped sample's 8 Munsell chips under D75 (narrow-band sensors; data/samples), 120x90 pixels
 // in 4x3 cells, 16-bit above a black level of 256 with the brightest channel at 60000 above it,
-// and 20 draws of saturated pixels, as OUT/mondrian.png and OUT/mondrian.tif.
+// and 20 draws of saturated pixels, as OUT/mondrian.png and OUT/mondrian.tif; OUT/shown.csv
+// holds the exact colours of the chips the cells show (lines of the sample file, each once).
 //   make_mondrian_images DATA_DIR OUT_DIR
 #include <gmcc/validation/colour_csv.h>
 #include <gmcc/validation/image_file.h>
@@ -9,6 +10,7 @@
 
 #include <fstream>
 #include <iostream>
+#include <vector>
 
 int main(int argc, char** argv) {
   if (argc != 3) {
@@ -33,5 +35,14 @@ int main(int argc, char** argv) {
     f << bytes;
     if (!f) return 1;
   }
-  return 0;
+  std::ofstream shown(out + "/shown.csv");
+  std::vector<bool> seen(chips.colours.size());
+  for (std::size_t s : m.surfaces)
+    if (!seen[s]) {
+      seen[s] = true;
+      const gmcc::Colour& c = chips.colours[s];
+      shown << gmcc::to_string(c.r) << "," << gmcc::to_string(c.g) << "," << gmcc::to_string(c.b)
+            << "\n";
+    }
+  return shown ? 0 : 1;
 }
