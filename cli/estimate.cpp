@@ -78,6 +78,11 @@ Settings settings_of(const EstimateOptions& o) {
   }
   for (const std::string& text : o.exclude_polygons) s.pixels.exclude_polygons.push_back(polygon(text));
   s.pixels.bin = static_cast<std::uint32_t>(integer_option("--bin", o.bin, 1, 4096));
+  s.pixels.colour_set = o.colour_set == "distinct" ? ColourSet::distinct : ColourSet::hull;
+  if (s.pixels.bin > 1 && o.command && o.command->count("--colour-set"))
+    throw InputError("--colour-set", 0,
+                     "with --bin the binned colours are passed as they are (their hull is taken "
+                     "by the geometry); give one of --bin or --colour-set");
   s.scene.canonical_illuminant = light("--canonical-illuminant", o.canonical_illuminant);
   if (!o.truth.empty()) {
     if (o.images.size() != 1)
@@ -173,6 +178,12 @@ CLI::App* add_estimate_command(CLI::App& app, EstimateOptions& o) {
                   "excluded");
   cmd->add_option("--bin", o.bin, "average the kept pixels of each BxB block into one colour, 1 to 4096")
       ->capture_default_str();
+  cmd->add_option("--colour-set", o.colour_set,
+                  "the colours passed to the geometry: hull (the pixels whose chromaticities are "
+                  "vertices of the exact chromaticity hull: all the 2-D feasible set depends on) "
+                  "or distinct (every distinct colour)")
+      ->check(CLI::IsMember({"hull", "distinct"}))
+      ->capture_default_str();
   cmd->add_option("--truth", o.truth,
                   "r,g,b of the true light (one image): each rule's errors against it")
       ->type_name("R,G,B");
@@ -232,7 +243,13 @@ int run_estimate(const EstimateOptions& o) {
       for (std::size_t p = 0; p < rules.keep.size(); ++p)
         rules.keep[p] = mask->samples[3 * p] || mask->samples[3 * p + 1] || mask->samples[3 * p + 2];
     }
-    const ImageColours colours = image_colours(image, rules);
+    const ImageColours colours = [&] {
+      try {
+        return image_colours(image, rules);
+      } catch (const std::length_error& e) {
+        throw InputError(path, 0, std::string(e.what()) + " (--colour-set hull, --bin)");
+      }
+    }();
     if (colours.colours.empty())
       throw InputError(path, 0, "no pixel left after the mask and saturation (" +
                                     std::to_string(colours.counts.masked) + " masked, " +
@@ -255,12 +272,17 @@ int run_estimate(const EstimateOptions& o) {
     record["bits"] = image.bits;
     record["pixels"] = {{"total", colours.counts.pixels},     {"masked", colours.counts.masked},
                         {"saturated", colours.counts.saturated}, {"kept", colours.counts.kept},
-                        {"colours", colours.counts.colours}};
+                        {"colours", colours.counts.colours},
+                        {"hull_vertices", colours.counts.hull_vertices},
+                        {"no_chromaticity", colours.counts.no_chromaticity}};
     Json estimates = Json::object();
     text << path << ": " << image.width << "x" << image.height << " (" << image.bits
          << "-bit), " << colours.counts.masked << " pixels masked, " << colours.counts.saturated
          << " saturated, " << colours.counts.kept << " kept, " << colours.counts.colours
-         << " distinct colours\n  feasible set: " << to_string(result.feasible.kind) << ", "
+         << " distinct colours";
+    if (rules.colour_set == ColourSet::hull && rules.bin == 1)
+      text << ", " << colours.counts.hull_vertices << " on the chromaticity hull";
+    text << "\n  feasible set: " << to_string(result.feasible.kind) << ", "
          << result.feasible.vertices.size() << " vertices\n";
     for (int k = 0; k < 3; ++k) {
       const std::optional<Selection>& sel = rule(result.selections, k);

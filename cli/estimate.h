@@ -18,6 +18,7 @@ struct EstimateOptions {
   std::vector<std::string> exclude_polygons;
   std::string mask_path;
   std::string bin = "1";
+  std::string colour_set = "hull";  // hull | distinct
   std::string truth;                          // r,g,b of the true light (one image)
   std::string canonical_illuminant = "1,1,1";
   std::string expand_policy = "none";

@@ -85,6 +85,15 @@ def main():
                 light = img["estimates"][rule]["light"]
                 expect(abs(sum(x * x for x in light) - 1) < 1e-12, f"unit light {light}")
 
+        def hull_equals_distinct():
+            # The hull's few colours give the same feasible set and selections as every distinct
+            # colour (the 2-D feasible set depends on the chromaticity hull only).
+            a = estimate(png)["images"][0]
+            b = estimate(png, "--colour-set", "distinct")["images"][0]
+            expect(a["pixels"]["hull_vertices"] < b["pixels"]["colours"], (a["pixels"], b["pixels"]))
+            for key in ("feasible_set", "selections", "estimates"):
+                expect(a[key] == b[key], f"{key} differs between --colour-set hull and distinct")
+
         def corrected_images():
             out = os.path.join(tmp, "corrected")
             rc, _, err = r.run(*base, "--corrected", out, png)
@@ -120,6 +129,7 @@ def main():
         r.check("png_equals_tiff", png_equals_tiff)
         r.check("pixel_counts", pixel_counts)
         r.check("agrees_with_select_on_exact_colours", agrees_with_select_on_exact_colours)
+        r.check("hull_equals_distinct", hull_equals_distinct)
         r.check("corrected_images", corrected_images)
         r.check("bad_inputs", bad_inputs)
         print(f"{r.passed} passed, {r.failed} failed")

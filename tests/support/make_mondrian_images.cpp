@@ -3,25 +3,28 @@
 // in 4x3 cells, 16-bit above a black level of 256 with the brightest channel at 60000 above it,
 // and 20 draws of saturated pixels, as OUT/mondrian.png and OUT/mondrian.tif; OUT/shown.csv
 // holds the exact colours of the chips the cells show (lines of the sample file, each once).
-//   make_mondrian_images DATA_DIR OUT_DIR
+//   make_mondrian_images DATA_DIR OUT_DIR [WIDTH HEIGHT [NOISE]]   (default 120 90 0; a larger,
+//   noisy image for timing, as in docs/performance.md "Images")
 #include <gmcc/validation/colour_csv.h>
 #include <gmcc/validation/image_file.h>
 #include <gmcc/validation/mondrian.h>
 
 #include <fstream>
 #include <iostream>
+#include <string>
 #include <vector>
 
 int main(int argc, char** argv) {
-  if (argc != 3) {
-    std::cerr << "usage: make_mondrian_images DATA_DIR OUT_DIR\n";
+  if (argc != 3 && argc != 5 && argc != 6) {
+    std::cerr << "usage: make_mondrian_images DATA_DIR OUT_DIR [WIDTH HEIGHT [NOISE]]\n";
     return 2;
   }
   const std::string data = argv[1], out = argv[2];
   const gmcc::ColourTable chips = gmcc::read_colour_csv(data + "/samples/image_munsell_D75.csv");
   gmcc::MondrianSpec spec;
-  spec.width = 120;
-  spec.height = 90;
+  spec.width = argc >= 5 ? std::stoul(argv[3]) : 120;
+  spec.height = argc >= 5 ? std::stoul(argv[4]) : 90;
+  spec.noise = argc == 6 ? static_cast<std::uint32_t>(std::stoul(argv[5])) : 0;
   spec.columns = 4;
   spec.rows = 3;
   spec.seed = 1;

@@ -206,12 +206,23 @@ BOOST_AUTO_TEST_CASE(pixel_rules_hand_counts) {
   BOOST_TEST(out.counts.masked == 0u);
   BOOST_TEST(out.counts.saturated == 2u);
   BOOST_TEST(out.counts.kept == 6u);
-  // Distinct after the black level: (80,180,280) twice, (30,40,50), (0,0,0),
-  // (10,0,0).
+  // Distinct after the black level, in increasing order: (0,0,0), (10,0,0), (30,40,50),
+  // (80,180,280) (twice in the image).
   BOOST_TEST(out.counts.colours == 4u);
-  BOOST_TEST((out.colours[0] == Colour{80, 180, 280}));
-  BOOST_TEST((out.colours[2] == Colour{0, 0, 0}));
-  BOOST_TEST((out.colours[3] == Colour{10, 0, 0}));
+  BOOST_TEST((out.colours[0] == Colour{0, 0, 0}));
+  BOOST_TEST((out.colours[1] == Colour{10, 0, 0}));
+  BOOST_TEST((out.colours[3] == Colour{80, 180, 280}));
+  // The hull's colour set: of the chromaticities (30/50, 40/50) and (80/280, 180/280) (b = 0
+  // for the other two), a segment, whose two ends are returned as (x, y, 1).
+  PixelRules hull_rules = rules;
+  hull_rules.colour_set = ColourSet::hull;
+  const ImageColours hull = image_colours(im, hull_rules);
+  BOOST_TEST(hull.counts.colours == 4u);
+  BOOST_TEST(hull.counts.no_chromaticity == 2u);
+  BOOST_TEST(hull.counts.hull_vertices == 2u);
+  BOOST_TEST_REQUIRE(hull.colours.size() == 2u);
+  BOOST_TEST((hull.colours[0] == Colour{Rational(2, 7), Rational(9, 14), 1}));
+  BOOST_TEST((hull.colours[1] == Colour{Rational(3, 5), Rational(4, 5), 1}));
   // Mask the first column by polygon and pixel (3,1) by the mask image.
   rules.exclude_polygons = {square(0, 0, 1, 2)};
   rules.keep.assign(8, true);
@@ -229,8 +240,8 @@ BOOST_AUTO_TEST_CASE(pixel_rules_hand_counts) {
   rules.bin = 2;
   out = image_colours(im, rules);
   BOOST_TEST(out.counts.colours == 2u);
-  BOOST_TEST((out.colours[0] == Colour{Rational(160, 3), 120, Rational(560, 3)}));
-  BOOST_TEST((out.colours[1] == Colour{40, Rational(220, 3), 110}));
+  BOOST_TEST((out.colours[1] == Colour{Rational(160, 3), 120, Rational(560, 3)}));
+  BOOST_TEST((out.colours[0] == Colour{40, Rational(220, 3), 110}));
   rules.bin = 0;
   BOOST_CHECK_THROW(image_colours(im, rules), std::invalid_argument);
   rules.bin = 1;

@@ -1,11 +1,13 @@
 #include <gmcc/validation/image_pixels.h>
 
+#include <gmcc/geometry/chromaticity_hull.h>
+#include <gmcc/validation/colour_csv.h>
+
 #include <algorithm>
 #include <array>
 #include <map>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 
 namespace gmcc {
 namespace {
@@ -100,7 +102,8 @@ ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
     std::uint64_t n = 0;
   };
   std::vector<Block> blocks(b == 1 ? 0 : bw * bh);
-  std::unordered_map<std::uint64_t, bool> seen;  // b = 1: distinct integer triples
+  std::vector<std::uint64_t> keys;  // b = 1: every kept pixel as r·2^32 + g·2^16 + b
+  if (b == 1) keys.reserve(static_cast<std::size_t>(out.counts.pixels));
   for (std::size_t y = 0; y < h; ++y)
     for (std::size_t x = 0; x < w; ++x) {
       const std::size_t i = y * w + x;
@@ -121,16 +124,47 @@ ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
       ++out.counts.kept;
       for (std::uint32_t& c : v) c = c > rules.black_level ? c - rules.black_level : 0;
       if (b == 1) {
-        const std::uint64_t key = (std::uint64_t(v[0]) << 32) | (std::uint64_t(v[1]) << 16) | v[2];
-        if (seen.emplace(key, true).second)
-          out.colours.push_back({Rational(v[0]), Rational(v[1]), Rational(v[2])});
+        keys.push_back((std::uint64_t(v[0]) << 32) | (std::uint64_t(v[1]) << 16) | v[2]);
       } else {
         Block& block = blocks[(y / b) * bw + x / b];
         for (int c = 0; c < 3; ++c) block.sum[c] += v[c];
         ++block.n;
       }
     }
-  if (b != 1) {
+  if (b == 1) {
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    out.counts.colours = keys.size();
+    auto channels = [](std::uint64_t key) {
+      return std::array<std::uint32_t, 3>{static_cast<std::uint32_t>(key >> 32),
+                                          static_cast<std::uint32_t>((key >> 16) & 0xffff),
+                                          static_cast<std::uint32_t>(key & 0xffff)};
+    };
+    if (rules.colour_set == ColourSet::hull) {
+      std::vector<std::array<double, 3>> colours;  // integers below 2^16: exact in double
+      colours.reserve(keys.size());
+      for (std::uint64_t key : keys) {
+        const auto c = channels(key);
+        colours.push_back({double(c[0]), double(c[1]), double(c[2])});
+      }
+      const ChromaticityHull hull = chromaticity_hull(colours);
+      out.counts.no_chromaticity = hull.dropped;
+      for (const Point2& p : hull.hull.vertices) out.colours.push_back({p.x, p.y, Rational(1)});
+      out.counts.hull_vertices = out.colours.size();
+      return out;
+    }
+    if (keys.size() > max_colours)
+      throw std::length_error(std::to_string(keys.size()) + " distinct colours, more than the " +
+                              std::to_string(max_colours) +
+                              " a colour set may hold: use the hull colour set or binning");
+    out.colours.reserve(keys.size());
+    for (std::uint64_t key : keys) {
+      const auto c = channels(key);
+      out.colours.push_back({Rational(c[0]), Rational(c[1]), Rational(c[2])});
+    }
+    return out;
+  }
+  {
     std::map<std::array<Rational, 3>, bool,
              bool (*)(const std::array<Rational, 3>&, const std::array<Rational, 3>&)>
         distinct([](const std::array<Rational, 3>& p, const std::array<Rational, 3>& q) {
@@ -144,8 +178,9 @@ ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
                            mpz_class(static_cast<unsigned long>(block.n)));
         mean[c].canonicalize();
       }
-      if (distinct.emplace(mean, true).second) out.colours.push_back({mean[0], mean[1], mean[2]});
+      distinct.emplace(mean, true);
     }
+    for (const auto& [mean, unused] : distinct) out.colours.push_back({mean[0], mean[1], mean[2]});
   }
   out.counts.colours = out.colours.size();
   return out;

@@ -1,5 +1,6 @@
 #include <gmcc/validation/mondrian.h>
 
+#include <algorithm>
 #include <array>
 #include <random>
 #include <stdexcept>
@@ -56,6 +57,13 @@ Mondrian render_mondrian(const std::vector<Colour>& colours, const MondrianSpec&
       const auto& v = cell_samples[row * spec.columns + column];
       for (int c = 0; c < 3; ++c)
         im.samples[(y * spec.width + x) * 3 + static_cast<std::size_t>(c)] = v[c];
+    }
+  }
+  if (spec.noise > 0) {
+    const std::uint64_t span = 2 * std::uint64_t(spec.noise) + 1;
+    for (std::uint16_t& v : im.samples) {
+      const std::int64_t x = std::int64_t(v) + std::int64_t(g() % span) - spec.noise;
+      v = static_cast<std::uint16_t>(std::clamp<std::int64_t>(x, 0, 65534));
     }
   }
   for (std::size_t k = 0; k < spec.saturated_pixels; ++k) {

@@ -10,7 +10,10 @@
 ///   4. binning (optional): the kept pixels of each b×b block are averaged, exactly, into one
 ///      colour;
 ///   5. the distinct colours are returned (their convex hull is what the gamut method uses, so
-///      repeated colours add nothing).
+///      repeated colours add nothing) or, with ColourSet::hull, only those whose perspective
+///      chromaticities are vertices of the exact chromaticity hull (chromaticity_hull.h), which
+///      is all the 2-D feasible set depends on: a 10-megapixel image then costs the geometry a
+///      few dozen colours.
 
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/point.h>
@@ -23,6 +26,13 @@
 namespace gmcc {
 
 /// How pixels become colours.
+/// What step 5 returns.
+enum class ColourSet {
+  distinct,  ///< every distinct colour, in increasing (r, g, b) order
+  hull,      ///< without binning: one colour (x, y, 1) per vertex of the hull of the
+             ///< chromaticities (x, y) = (r/b, g/b), counter-clockwise (b = 0 has none)
+};
+
 struct PixelRules {
   std::uint32_t black_level = 0;            ///< subtracted from every channel
   std::optional<std::uint32_t> saturation;  ///< drop pixels with a raw channel >= this
@@ -34,6 +44,8 @@ struct PixelRules {
   /// Per pixel (row-major, width · height), false to exclude; empty for none.
   std::vector<bool> keep;
   std::uint32_t bin = 1;  ///< block size b for binning; 1: every kept pixel is a colour
+  /// With bin > 1 the binned colours are always returned as ColourSet::distinct.
+  ColourSet colour_set = ColourSet::distinct;
 };
 
 /// What happened to the pixels, each counted once, in the order of the steps.
@@ -42,7 +54,9 @@ struct PixelCounts {
   std::uint64_t masked = 0;     ///< excluded by a polygon or the mask image
   std::uint64_t saturated = 0;  ///< of the rest, dropped for a channel >= saturation
   std::uint64_t kept = 0;       ///< the rest
-  std::uint64_t colours = 0;    ///< distinct colours returned (after binning)
+  std::uint64_t colours = 0;    ///< distinct colours (after binning)
+  std::uint64_t hull_vertices = 0;    ///< ColourSet::hull: vertices returned
+  std::uint64_t no_chromaticity = 0;  ///< ColourSet::hull: distinct colours with b = 0
 };
 
 struct ImageColours {
@@ -51,7 +65,8 @@ struct ImageColours {
 };
 
 /// Apply the rules to `image`.
-/// \throws std::invalid_argument if bin is 0, `keep` is neither empty nor width
+/// \throws std::length_error for ColourSet::distinct with more than max_colours (colour_csv.h)
+///         distinct colours; std::invalid_argument if bin is 0, `keep` is neither empty nor width
 /// · height long, or
 ///         a polygon has fewer than 3 vertices.
 ImageColours image_colours(const RgbImage& image, const PixelRules& rules);

@@ -25,6 +25,10 @@ struct MondrianSpec {
   /// up).
   std::uint32_t peak = 60000;
   std::size_t saturated_pixels = 0;  ///< draws of a pixel set to 65535 in every channel
+  /// Sensor noise: each sample of each pixel gets an integer drawn uniformly from [-noise,
+  /// noise] (g() mod (2·noise + 1) − noise, pixels row-major, channels r, g, b), clamped to
+  /// [0, 65534]; 0 for none.
+  std::uint32_t noise = 0;
 };
 
 struct Mondrian {
