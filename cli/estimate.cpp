@@ -37,52 +37,15 @@ Colour light(const std::string& option, const std::string& text) {
   return t.colours[0];
 }
 
-// "x1,y1,x2,y2,..." in pixel coordinates, read exactly.
-std::vector<Point2> polygon(const std::string& text) {
-  std::vector<Rational> numbers;
-  for (std::size_t start = 0;;) {
-    const auto comma = text.find(',', start);
-    const std::string field = text.substr(start, comma - start);
-    try {
-      numbers.push_back(parse_rational(field));
-    } catch (const std::invalid_argument& e) {
-      throw InputError("--exclude-polygon", 0, quoted_text(text) + ": " + e.what());
-    }
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  if (numbers.size() % 2 != 0 || numbers.size() < 6)
-    throw InputError("--exclude-polygon", 0,
-                     quoted_text(text) + ": expected x1,y1,x2,y2,x3,y3[,...], 3 or more vertices");
-  std::vector<Point2> p;
-  for (std::size_t i = 0; i < numbers.size(); i += 2) p.push_back({numbers[i], numbers[i + 1]});
-  return p;
-}
-
 struct Settings {
   SelectSceneOptions scene;
-  PixelRules pixels;
-  bool saturation_max = false;  // the image's own maximum code, 2^bits - 1
+  PixelSettings pixels;
   std::optional<Colour> truth;
 };
 
 Settings settings_of(const EstimateOptions& o) {
   Settings s;
-  s.pixels.black_level =
-      static_cast<std::uint32_t>(integer_option("--black-level", o.black_level, 0, 65535));
-  if (o.saturation == "max") {
-    s.saturation_max = true;
-  } else if (o.saturation != "none") {
-    s.pixels.saturation =
-        static_cast<std::uint32_t>(integer_option("--saturation", o.saturation, 1, 65536));
-  }
-  for (const std::string& text : o.exclude_polygons) s.pixels.exclude_polygons.push_back(polygon(text));
-  s.pixels.bin = static_cast<std::uint32_t>(integer_option("--bin", o.bin, 1, 4096));
-  s.pixels.colour_set = o.colour_set == "distinct" ? ColourSet::distinct : ColourSet::hull;
-  if (s.pixels.bin > 1 && o.command && o.command->count("--colour-set"))
-    throw InputError("--colour-set", 0,
-                     "with --bin the binned colours are passed as they are (their hull is taken "
-                     "by the geometry); give one of --bin or --colour-set");
+  s.pixels = pixel_settings(o.pixels);
   s.scene.canonical_illuminant = light("--canonical-illuminant", o.canonical_illuminant);
   if (!o.truth.empty()) {
     if (o.images.size() != 1)
@@ -163,27 +126,7 @@ CLI::App* add_estimate_command(CLI::App& app, EstimateOptions& o) {
   cmd->add_option("--canonical", o.canonical_path, "canonical colours, one r,g,b per line")
       ->required();
   cmd->add_option("images", o.images, "image files (PNG or TIFF, linear RGB)")->required();
-  cmd->add_option("--black-level", o.black_level, "subtracted from every channel, 0 to 65535")
-      ->capture_default_str();
-  cmd->add_option("--saturation", o.saturation,
-                  "drop pixels with any raw channel at or above this: a value, max (the file's "
-                  "largest code, 2^bits - 1) or none")
-      ->capture_default_str();
-  cmd->add_option("--exclude-polygon", o.exclude_polygons,
-                  "x1,y1,x2,y2,x3,y3[,...]: exclude the pixels whose centres lie in this polygon "
-                  "(pixel coordinates, y down; repeatable), e.g. a chart's four corners")
-      ->take_first();
-  cmd->add_option("--mask", o.mask_path,
-                  "a PNG or TIFF of the image's size: pixels where it is 0 in every channel are "
-                  "excluded");
-  cmd->add_option("--bin", o.bin, "average the kept pixels of each BxB block into one colour, 1 to 4096")
-      ->capture_default_str();
-  cmd->add_option("--colour-set", o.colour_set,
-                  "the colours passed to the geometry: hull (the pixels whose chromaticities are "
-                  "vertices of the exact chromaticity hull: all the 2-D feasible set depends on) "
-                  "or distinct (every distinct colour)")
-      ->check(CLI::IsMember({"hull", "distinct"}))
-      ->capture_default_str();
+  add_pixel_options(*cmd, o.pixels);
   cmd->add_option("--truth", o.truth,
                   "r,g,b of the true light (one image): each rule's errors against it")
       ->type_name("R,G,B");
@@ -219,8 +162,6 @@ int run_estimate(const EstimateOptions& o) {
       throw select_input_error(e, canonical, nullptr, nullptr);
     }
   }();
-  std::optional<RgbImage> mask;
-  if (!o.mask_path.empty()) mask = read_image(o.mask_path);
   if (!o.corrected_dir.empty()) ensure_directory(o.corrected_dir);
 
   Json document;
@@ -229,31 +170,9 @@ int run_estimate(const EstimateOptions& o) {
   // Files are committed only once every image is done: nothing half-written on an error.
   std::vector<std::pair<std::filesystem::path, std::string>> outputs;
   for (const std::string& path : o.images) {
-    const RgbImage image = read_image(path);
-    PixelRules rules = s.pixels;
-    const std::uint32_t max_code = (1u << image.bits) - 1;
-    if (s.saturation_max) rules.saturation = max_code;
-    if (mask) {
-      if (mask->width != image.width || mask->height != image.height)
-        throw InputError(o.mask_path, 0,
-                         "the mask is " + std::to_string(mask->width) + "x" +
-                             std::to_string(mask->height) + ", the image " + path + " is " +
-                             std::to_string(image.width) + "x" + std::to_string(image.height));
-      rules.keep.resize(image.width * image.height);
-      for (std::size_t p = 0; p < rules.keep.size(); ++p)
-        rules.keep[p] = mask->samples[3 * p] || mask->samples[3 * p + 1] || mask->samples[3 * p + 2];
-    }
-    const ImageColours colours = [&] {
-      try {
-        return image_colours(image, rules);
-      } catch (const std::length_error& e) {
-        throw InputError(path, 0, std::string(e.what()) + " (--colour-set hull, --bin)");
-      }
-    }();
-    if (colours.colours.empty())
-      throw InputError(path, 0, "no pixel left after the mask and saturation (" +
-                                    std::to_string(colours.counts.masked) + " masked, " +
-                                    std::to_string(colours.counts.saturated) + " saturated)");
+    RgbImage image;
+    PixelRules rules;
+    const ImageColours colours = image_colours_of(path, s.pixels, &image, &rules);
     SceneResult result;
     try {
       result = select_scene(prepared, colours.colours, s.truth);

@@ -5,6 +5,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "pixel_options.h"
+
 #include <string>
 #include <vector>
 
@@ -13,12 +15,7 @@ namespace gmcc::cli {
 struct EstimateOptions {
   std::string canonical_path;
   std::vector<std::string> images;
-  std::string black_level = "0";
-  std::string saturation = "max";  // max (2^bits - 1), none, or a value
-  std::vector<std::string> exclude_polygons;
-  std::string mask_path;
-  std::string bin = "1";
-  std::string colour_set = "hull";  // hull | distinct
+  PixelOptions pixels;
   std::string truth;                          // r,g,b of the true light (one image)
   std::string canonical_illuminant = "1,1,1";
   std::string expand_policy = "none";

@@ -1,0 +1,117 @@
+#include "pixel_options.h"
+
+#include <gmcc/geometry/rational.h>
+#include <gmcc/validation/input_error.h>
+
+#include "integer_option.h"
+
+namespace gmcc::cli {
+namespace {
+
+// "x1,y1,x2,y2,..." in pixel coordinates, read exactly.
+std::vector<Point2> polygon(const std::string& text) {
+  std::vector<Rational> numbers;
+  for (std::size_t start = 0;;) {
+    const auto comma = text.find(',', start);
+    const std::string field = text.substr(start, comma - start);
+    try {
+      numbers.push_back(parse_rational(field));
+    } catch (const std::invalid_argument& e) {
+      throw InputError("--exclude-polygon", 0, quoted_text(text) + ": " + e.what());
+    }
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (numbers.size() % 2 != 0 || numbers.size() < 6)
+    throw InputError("--exclude-polygon", 0,
+                     quoted_text(text) + ": expected x1,y1,x2,y2,x3,y3[,...], 3 or more vertices");
+  std::vector<Point2> p;
+  for (std::size_t i = 0; i < numbers.size(); i += 2) p.push_back({numbers[i], numbers[i + 1]});
+  return p;
+}
+
+}  // namespace
+
+void add_pixel_options(CLI::App& cmd, PixelOptions& o) {
+  o.command = &cmd;
+  cmd.add_option("--black-level", o.black_level, "subtracted from every channel, 0 to 65535")
+      ->capture_default_str();
+  cmd.add_option("--saturation", o.saturation,
+                 "drop pixels with any raw channel at or above this: a value, max (the file's "
+                 "largest code, 2^bits - 1) or none")
+      ->capture_default_str();
+  cmd.add_option("--exclude-polygon", o.exclude_polygons,
+                 "x1,y1,x2,y2,x3,y3[,...]: exclude the pixels whose centres lie in this polygon "
+                 "(pixel coordinates, y down; repeatable), e.g. a chart's four corners");
+  cmd.add_option("--mask", o.mask_path,
+                 "a PNG or TIFF of the image's size: pixels where it is 0 in every channel are "
+                 "excluded");
+  cmd.add_option("--bin", o.bin,
+                 "average the kept pixels of each BxB block into one colour, 1 to 4096")
+      ->capture_default_str();
+  cmd.add_option("--colour-set", o.colour_set,
+                 "the colours passed on: hull (the pixels whose chromaticities are vertices of "
+                 "the exact chromaticity hull: all the 2-D feasible set depends on) or distinct "
+                 "(every distinct colour, at most 10^6)")
+      ->check(CLI::IsMember({"hull", "distinct"}))
+      ->capture_default_str();
+}
+
+PixelSettings pixel_settings(const PixelOptions& o) {
+  PixelSettings s;
+  PixelRules& r = s.rules;
+  r.black_level = static_cast<std::uint32_t>(integer_option("--black-level", o.black_level, 0, 65535));
+  if (o.saturation == "max") {
+    s.saturation_max = true;
+  } else if (o.saturation != "none") {
+    r.saturation = static_cast<std::uint32_t>(integer_option("--saturation", o.saturation, 1, 65536));
+  }
+  for (const std::string& text : o.exclude_polygons) r.exclude_polygons.push_back(polygon(text));
+  r.bin = static_cast<std::uint32_t>(integer_option("--bin", o.bin, 1, 4096));
+  r.colour_set = o.colour_set == "distinct" ? ColourSet::distinct : ColourSet::hull;
+  if (r.bin > 1 && o.command && o.command->count("--colour-set"))
+    throw InputError("--colour-set", 0,
+                     "with --bin the binned colours are passed as they are (their hull is taken "
+                     "by the geometry); give one of --bin or --colour-set");
+  if (!o.mask_path.empty()) s.mask = read_image(o.mask_path);
+  return s;
+}
+
+ImageColours image_colours_of(const std::string& path, const PixelSettings& s, RgbImage* image_out,
+                              PixelRules* rules_out) {
+  RgbImage image = read_image(path);
+  PixelRules rules = s.rules;
+  if (s.saturation_max) rules.saturation = (1u << image.bits) - 1;
+  if (s.mask) {
+    const RgbImage& mask = *s.mask;
+    if (mask.width != image.width || mask.height != image.height)
+      throw InputError(path, 0,
+                       "the mask is " + std::to_string(mask.width) + "x" +
+                           std::to_string(mask.height) + ", this image " +
+                           std::to_string(image.width) + "x" + std::to_string(image.height));
+    rules.keep.resize(image.width * image.height);
+    for (std::size_t p = 0; p < rules.keep.size(); ++p)
+      rules.keep[p] = mask.samples[3 * p] || mask.samples[3 * p + 1] || mask.samples[3 * p + 2];
+  }
+  ImageColours colours;
+  try {
+    colours = image_colours(image, rules);
+  } catch (const std::length_error& e) {
+    throw InputError(path, 0, std::string(e.what()) + " (--colour-set hull, --bin)");
+  }
+  if (colours.colours.empty())
+    throw InputError(path, 0,
+                     "no usable pixel after the mask and saturation (" +
+                         std::to_string(colours.counts.masked) + " masked, " +
+                         std::to_string(colours.counts.saturated) + " saturated" +
+                         (colours.counts.no_chromaticity
+                              ? ", " + std::to_string(colours.counts.no_chromaticity) +
+                                    " distinct colours with b = 0"
+                              : std::string()) +
+                         ")");
+  if (image_out) *image_out = std::move(image);
+  if (rules_out) *rules_out = std::move(rules);
+  return colours;
+}
+
+}  // namespace gmcc::cli

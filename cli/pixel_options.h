@@ -1,0 +1,43 @@
+#pragma once
+// The image pre-processing options shared by `gmcc estimate` and `gmcc canonical --from-images`
+// (docs/conventions.md §8; docs/cli.md "gmcc estimate").
+
+#include <gmcc/validation/image_file.h>
+#include <gmcc/validation/image_pixels.h>
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gmcc::cli {
+
+struct PixelOptions {
+  std::string black_level = "0";
+  std::string saturation = "max";  // max (2^bits - 1), none, or a value
+  std::vector<std::string> exclude_polygons;
+  std::string mask_path;
+  std::string bin = "1";
+  std::string colour_set = "hull";  // hull | distinct
+  const CLI::App* command = nullptr;
+};
+
+/// Register --black-level, --saturation, --exclude-polygon, --mask, --bin, --colour-set.
+void add_pixel_options(CLI::App& command, PixelOptions& options);
+
+/// The rules those options give, checked (the mask image is read by image_colours_of).
+/// \throws InputError naming the option.
+struct PixelSettings {
+  PixelRules rules;
+  bool saturation_max = false;  // the image's own largest code, 2^bits - 1
+  std::optional<RgbImage> mask;
+};
+PixelSettings pixel_settings(const PixelOptions& options);
+
+/// Read the image at `path` and apply the settings to it (the mask must have its size).
+/// \throws InputError naming the file.
+ImageColours image_colours_of(const std::string& path, const PixelSettings& settings,
+                              RgbImage* image_out = nullptr, PixelRules* rules_out = nullptr);
+
+}  // namespace gmcc::cli
