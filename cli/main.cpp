@@ -3,6 +3,7 @@
 // 3 a resource limit reached (--time-limit, --memory-limit, memory exhausted); a signal ends
 // the run with its default action, temporary files removed (docs/cli.md).
 #include "accuracy.h"
+#include "canonical.h"
 #include "estimate.h"
 #include "exit_cleanup.h"
 #include "integer_option.h"
@@ -88,6 +89,8 @@ int main(int argc, char** argv) {
   CLI::App* estimate = gmcc::cli::add_estimate_command(app, estimate_options);
   gmcc::cli::MergeOptions merge_options;
   CLI::App* merge = gmcc::cli::add_merge_command(app, merge_options);
+  gmcc::cli::CanonicalOptions canonical_options;
+  CLI::App* canonical = gmcc::cli::add_canonical_command(app, canonical_options);
   CLI::App* cite = app.add_subcommand(
       "cite", "print a BibTeX entry for this build of gmcc (version, git commit, commit date) "
               "and the paper it implements (docs/cli.md \"Provenance\")");
@@ -119,6 +122,7 @@ int main(int argc, char** argv) {
     gmcc::cli::record_command(app);
     int status = 0;
     if (cite->parsed()) gmcc::cli::write_stdout(gmcc::cli::bibtex_of_this_build());
+    else if (canonical->parsed()) status = gmcc::cli::run_canonical(canonical_options);
     else if (estimate->parsed()) status = gmcc::cli::run_estimate(estimate_options);
     else if (select->parsed()) status = gmcc::cli::run_select(select_options);
     else if (accuracy->parsed()) status = gmcc::cli::run_accuracy(accuracy_options);

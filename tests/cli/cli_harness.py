@@ -23,8 +23,10 @@ class Runner:
             f.write(text)
         return path
 
-    def run(self, *args, timeout=None):
-        p = subprocess.run([self.binary, *self.prefix, *args], capture_output=True, text=True,
+    def run(self, *args, timeout=None, prefix=None):
+        """Exit status, stdout and stderr; `prefix` replaces the script's subcommand."""
+        first = self.prefix if prefix is None else list(prefix)
+        p = subprocess.run([self.binary, *first, *args], capture_output=True, text=True,
                            timeout=timeout or self.timeout)
         return p.returncode, p.stdout, p.stderr
 

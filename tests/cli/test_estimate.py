@@ -16,6 +16,7 @@ What is checked, each by a route independent of the image code where one exists:
 """
 
 import json
+from fractions import Fraction
 import os
 import subprocess
 import sys
@@ -94,6 +95,44 @@ def main():
             for key in ("feasible_set", "selections", "estimates"):
                 expect(a[key] == b[key], f"{key} differs between --colour-set hull and distinct")
 
+        def learned_canonical():
+            # gmcc canonical --from-images: the image's pixels divided by its light. Then the
+            # true map takes the image's colours exactly onto the learned ones: truth in F.
+            truths = os.path.join(tmp, "truths.csv")
+            with open(truths, "w") as f:
+                f.write("image,r,g,b\nmondrian.png," + D75 + "\n")
+            learned = os.path.join(tmp, "learned.csv")
+            rc, out, err = r.run("--from-images", "--truths", truths, "--black-level", "256",
+                                 "--out", learned, png, prefix=["canonical"])
+            expect(rc == 0 and out == "", f"exit {rc}: {err}")
+            with open(learned) as f:
+                lines = [x for x in f.read().splitlines() if not x.startswith("#")]
+            expect(lines[0] == "r,g,b", lines[:1])
+            got = [tuple(Fraction(v) for v in x.split(",")) for x in lines[1:]]
+            # Independently: the hull of the shown chips' chromaticities under a white light.
+            e = [Fraction(v) for v in D75.split(",")]
+            with open(os.path.join(tmp, "shown.csv")) as f:
+                chips = [[Fraction(v) for v in x.split(",")] for x in f.read().split()]
+            pts = sorted({(c[0] / e[0] / (c[2] / e[2]), c[1] / e[1] / (c[2] / e[2])) for c in chips})
+            def half(points):
+                h = []
+                for p in points:
+                    while len(h) >= 2 and ((h[-1][0] - h[-2][0]) * (p[1] - h[-2][1])
+                                           - (h[-1][1] - h[-2][1]) * (p[0] - h[-2][0])) <= 0:
+                        h.pop()
+                    h.append(p)
+                return h[:-1]
+            hull = half(pts) + half(pts[::-1])
+            expect(len(got) == len(hull), f"{len(got)} learned vertices, {len(hull)} expected")
+            for v in hull:
+                expect(any(abs(g[0] - v[0]) <= v[0] / 1000 and abs(g[1] - v[1]) <= v[1] / 1000
+                           and g[2] == 1 for g in got), f"vertex {v} not learned: {got}")
+            doc = json.loads(r.run("--canonical", learned, "--black-level", "256", "--truth", D75,
+                                   "--json", png)[1])
+            expect(doc["images"][0]["truth"]["in_feasible_set"] is True, "truth in F exactly")
+            rc, _, err = r.run("--from-images", "--truths", truths, tif, prefix=["canonical"])
+            expect(rc == 2 and "no light for image" in err, err)
+
         def corrected_images():
             out = os.path.join(tmp, "corrected")
             rc, _, err = r.run(*base, "--corrected", out, png)
@@ -130,6 +169,7 @@ def main():
         r.check("pixel_counts", pixel_counts)
         r.check("agrees_with_select_on_exact_colours", agrees_with_select_on_exact_colours)
         r.check("hull_equals_distinct", hull_equals_distinct)
+        r.check("learned_canonical", learned_canonical)
         r.check("corrected_images", corrected_images)
         r.check("bad_inputs", bad_inputs)
         print(f"{r.passed} passed, {r.failed} failed")
