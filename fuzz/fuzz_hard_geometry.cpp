@@ -313,6 +313,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!finite_doubles(F)) return 0;  // beyond the doubles: select_maps refuses (fuzz_geometry checks it)
 
   const gmcc::Colour light{2, 1, Rational(3, 7)};
+  if (const char* path = std::getenv("GMCC_FUZZ_DUMP_F")) {  // F's exact vertices, one "x y" a line
+    if (std::FILE* out = std::fopen(path, "w")) {           // (bench_worst_case_illuminant reads them)
+      for (const Point2& v : fv) std::fprintf(out, "%s %s\n", v.x.get_str().c_str(), v.y.get_str().c_str());
+      std::fclose(out);
+    }
+  }
   if (std::getenv("GMCC_FUZZ_TIMES")) {  // select_maps's parts, one by one, to say which is slow
     stage("(before the parts)");
     const gmcc::MapEstimate a = gmcc::max_area(F);
