@@ -82,17 +82,19 @@ int main(int argc, char** argv) {
     for (const std::string& route : routes) {
       double best = 1e300;
       IlluminantWorstCase w;
+      internal::IlluminantRouteWork work;
       for (int r = 0; r < repeat; ++r) {
         const double t0 = cpu_seconds();
-        w = internal::worst_case_illuminant(F, m, light, by_name.at(route));
+        w = internal::worst_case_illuminant(F, m, light, by_name.at(route), &work);
         best = std::min(best, cpu_seconds() - t0);
       }
       const bool agrees = !first || (w.angle_deg == first->angle_deg && w.location == first->location &&
                                      w.at_vertex == first->at_vertex);
       same = same && agrees;
       if (!first) first = w;
-      std::printf("%-9s %-16s %10.4f s  %.17g deg  %s%s\n", rule.c_str(), route.c_str(), best, w.angle_deg,
-                  w.at_vertex ? "at a vertex" : "inside an edge", agrees ? "" : "  DIFFERS");
+      std::printf("%-9s %-16s %10.4f s  %.17g deg  %-14s  exact: %zu vertices, %zu edges, %zu Sturm%s\n",
+                  rule.c_str(), route.c_str(), best, w.angle_deg, w.at_vertex ? "at a vertex" : "inside an edge",
+                  work.exact_vertices, work.exact_edges, work.sturm_edges, agrees ? "" : "  DIFFERS");
     }
   }
   return same ? 0 : 1;

@@ -296,7 +296,8 @@ class SineFilter {
  public:
   SineFilter(const std::vector<Point2>& vs, const Point2& m, const Colour& c) : vs_(vs), m_(m), c_(c) {}
 
-  void refine(std::vector<std::size_t>& candidates, std::vector<std::size_t>& edges) {
+  // Returns the last precision used.
+  unsigned refine(std::vector<std::size_t>& candidates, std::vector<std::size_t>& edges) {
     const std::size_t n = vs_.size();
     std::vector<std::size_t> needed = candidates;
     for (std::size_t i : edges) needed.insert(needed.end(), {i, (i + 1) % n});
@@ -345,7 +346,7 @@ class SineFilter {
       const std::size_t after = candidates.size() + edges.size();
       // Enough: one candidate left; or nothing decided at a precision that was not the limit
       // (the boxes are); or the cap.
-      if (after <= 1 || (after == before && precise) || bits >= 8192) return;
+      if (after <= 1 || (after == before && precise) || bits >= 8192) return static_cast<unsigned>(bits);
     }
   }
 
@@ -378,7 +379,8 @@ class SineFilter {
 }  // namespace
 
 IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const Point2& m, const Colour& c,
-                                                    IlluminantRoute route) {
+                                                    IlluminantRoute route, IlluminantRouteWork* work) {
+  IlluminantRouteWork tally;
   const bool filtered = route != IlluminantRoute::exact;
   const bool certified = route == IlluminantRoute::certified;
   if (F.kind == ConvexKind::empty)
@@ -432,7 +434,10 @@ IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const P
       continue;
     edges.push_back(i);
   }
-  if (certified && candidates.size() + edges.size() > 1) SineFilter(vs, m, c).refine(candidates, edges);
+  if (certified && candidates.size() + edges.size() > 1)
+    tally.sine_bits = SineFilter(vs, m, c).refine(candidates, edges);
+  tally.exact_vertices = candidates.size();
+  tally.exact_edges = edges.size();
 
   IlluminantWorstCase worst;
   worst.location = vs[candidates.front()];
@@ -476,12 +481,14 @@ IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const P
     // No stationary point inside the edge: roots_in_unit_interval would find at most t = 1,
     // the vertex q, which is no new candidate.
     if (certified && no_root_in_open_unit_interval(stationary)) continue;
+    ++tally.sturm_edges;
     for (const Rational& t : roots_in_unit_interval(stationary)) {
       if (t == 1) continue;  // the vertex q, already a candidate
       consider({Rational(p.x + t * da), Rational(p.y + t * db)}, false);
     }
   }
   worst.angle_deg = illuminant_angular_error_deg(m, worst.location, c);
+  if (work) *work = tally;
   return worst;
 }
 

@@ -6,6 +6,8 @@
 
 #include <gmcc/selection/worst_case_illuminant.h>
 
+#include <cstddef>
+
 namespace gmcc::internal {
 
 enum class IlluminantRoute {
@@ -19,7 +21,15 @@ enum class IlluminantRoute {
   certified,
 };
 
+/// How much exact work a call did (for tests and the benchmark).
+struct IlluminantRouteWork {
+  std::size_t exact_vertices = 0;  ///< vertices whose closeness was computed in ℚ
+  std::size_t exact_edges = 0;     ///< edges whose quartic was built in ℤ
+  std::size_t sturm_edges = 0;     ///< of those, edges whose roots went through a Sturm sequence
+  unsigned sine_bits = 0;          ///< the sin² filter's last precision (0: not run)
+};
+
 IlluminantWorstCase worst_case_illuminant(const ConvexSet2& F, const Point2& m, const Colour& canonical_illuminant,
-                                          IlluminantRoute route);
+                                          IlluminantRoute route, IlluminantRouteWork* work = nullptr);
 
 }  // namespace gmcc::internal
