@@ -1,5 +1,7 @@
 #include "accuracy.h"
 
+#include "provenance.h"
+
 #include "integer_option.h"
 #include "limit_exit.h"
 #include "output_files.h"
@@ -450,7 +452,7 @@ int run_accuracy(const AccuracyOptions& options) {
     results.push_back(measure(w, o));
   }
 
-  if (csv_file) csv_file->commit(csv(results));
+  if (csv_file) csv_file->commit(provenance_csv_line() + csv(results));
   const std::vector<Series> series = plot_series(o);
   if (dat_file) dat_file->commit(plot_data(results, series));
   if (gp_file) gp_file->commit(plot_script(series));

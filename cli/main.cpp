@@ -7,6 +7,7 @@
 #include "integer_option.h"
 #include "limit_exit.h"
 #include "memory_limit.h"
+#include "provenance.h"
 #include "reproduce.h"
 #include "select.h"
 #include "time_limit.h"
@@ -65,7 +66,7 @@ int main(int argc, char** argv) {
                "(Finlayson & Hordley 1999, \"Selection for gamut mapping colour constancy\")"};
   app.require_subcommand(1);
   app.fallthrough();  // the global options below are also read after a command's name
-  app.set_version_flag("--version", "gmcc 0.1.0");
+  app.set_version_flag("--version", gmcc::cli::version_line());
   std::string time_limit, memory_limit;
   app.add_option("--time-limit", time_limit,
                  "end the run after this many seconds, with a message and exit status 3 "
@@ -81,6 +82,9 @@ int main(int argc, char** argv) {
   CLI::App* accuracy = gmcc::cli::add_accuracy_command(app, accuracy_options);
   gmcc::cli::ReproduceOptions reproduce_options;
   CLI::App* reproduce = gmcc::cli::add_reproduce_command(app, reproduce_options);
+  CLI::App* cite = app.add_subcommand(
+      "cite", "print a BibTeX entry for this build of gmcc (version, git commit, commit date) "
+              "and the paper it implements (docs/cli.md \"Provenance\")");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -106,8 +110,10 @@ int main(int argc, char** argv) {
       gmcc::cli::limit_memory(
           gmcc::cli::integer_option("--memory-limit", memory_limit, 1, std::uint64_t(1) << 40));
     gmcc::cli::set_activity("running " + command_of(app, argc, argv));
+    gmcc::cli::record_command(app);
     int status = 0;
-    if (select->parsed()) status = gmcc::cli::run_select(select_options);
+    if (cite->parsed()) gmcc::cli::write_stdout(gmcc::cli::bibtex_of_this_build());
+    else if (select->parsed()) status = gmcc::cli::run_select(select_options);
     else if (accuracy->parsed()) status = gmcc::cli::run_accuracy(accuracy_options);
     else if (reproduce->parsed()) status = gmcc::cli::run_reproduce(*reproduce, reproduce_options);
     gmcc::cli::write_stdout("");  // what a command wrote without write_stdout, flushed and checked

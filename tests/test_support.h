@@ -54,7 +54,7 @@ inline Point2 times(const Point2& m, const Point2& q) {
   return {Rational(m.x * q.x), Rational(m.y * q.y)};
 }
 
-/// The definition of the feasible set (SPEC §1): m is feasible iff m ⊙ q ∈ G_c for every q.
+/// The definition of the feasible set (docs/math.md §1): m is feasible iff m ⊙ q ∈ G_c for every q.
 inline bool feasible_by_definition(const ConvexSet2& gamut, const std::vector<Point2>& image,
                                    const Point2& m) {
   for (const Point2& q : image)

@@ -16,8 +16,8 @@ namespace gmcc {
 namespace {
 using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 using KPoint = Kernel::Point_2;
-// With CGAL::CGAL's -DCGAL_USE_GMPXX=1 the exact type is mpq_class (MATH §3d), so values cross
-// this boundary without conversion.
+// With CGAL::CGAL's -DCGAL_USE_GMPXX=1 the exact type is mpq_class (docs/derivations.md §4.1), so
+// values cross this boundary without conversion.
 static_assert(std::is_same<Kernel::FT::Exact_type, mpq_class>::value,
               "gmcc expects CGAL built with CGAL_USE_GMPXX (link CGAL::CGAL)");
 

@@ -19,11 +19,11 @@ namespace {
 
 // Exact clipping in homogeneous integer coordinates, with filtered predicates. A line (a, b, c)
 // means a·x + b·y <= c with integer coefficients. A vertex is kept *symbolically*, as the pair of
-// input lines it is the intersection of (MATH §3b, item 4: every vertex is the meet of two input
-// lines, so constructions never nest). Every decision is the sign of a small determinant of line
-// coefficients: it is first evaluated in double from rounded coefficients with a rigorous error
-// bound, and only when |value| does not exceed the bound in exact integer arithmetic (GMP), from
-// exact lines built on demand. Exact coordinates are constructed only for the final vertices.
+// input lines it is the intersection of (docs/derivations.md §4.3: every vertex is the meet of two
+// input lines, so constructions never nest). Every decision is the sign of a small determinant of
+// line coefficients: it is first evaluated in double from rounded coefficients with a rigorous
+// error bound, and only when |value| does not exceed the bound in exact integer arithmetic (GMP),
+// from exact lines built on demand. Exact coordinates are constructed only for the final vertices.
 struct Line {
   mpz_class a, b, c;
 };

@@ -1,5 +1,6 @@
-// The library's 3-D CGAL translation unit (MATH §3c, §3e): exact LP (CGAL QP solver), exact 3-D
-// hulls and half-space intersection. Heavy includes stay here, behind plain interfaces.
+// The library's 3-D CGAL translation unit (docs/derivations.md §4.4, §4.5): exact LP (CGAL QP
+// solver), exact 3-D hulls and half-space intersection. Heavy includes stay here, behind plain
+// interfaces.
 #include <gmcc/geometry/convex_hull.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>

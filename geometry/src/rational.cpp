@@ -1,4 +1,4 @@
-// The one place where text and doubles become exact rationals (SPEC §1 "Exact input").
+// The one place where text and doubles become exact rationals (docs/conventions.md §1).
 #include <gmcc/geometry/point.h>
 #include <gmcc/geometry/rational.h>
 

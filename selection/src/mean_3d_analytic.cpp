@@ -32,7 +32,8 @@ long log2_size(const Rational& x) {
 }
 
 // Bits the closed form needs: the edge terms are O(ε) and τ is O(ε²) for a polygon of angular
-// width ε (MATH §1a.7), so 2·log2(1/ε) bits cancel; add 53 for the answer and 40 guard bits.
+// width ε (docs/derivations.md §1.6), so 2·log2(1/ε) bits cancel; add 53 for the answer and 40
+// guard bits.
 unsigned automatic_precision(const std::vector<Point2>& v) {
   Rational width2 = 0;
   for (const Point2& p : v)
@@ -50,7 +51,7 @@ std::array<I, 2> direction_map(const ConvexSet2& F, Make make) {
   const auto& v = F.vertices;
   std::array<I, 3> dir{make(Rational(0)), make(Rational(0)), make(Rational(0))};
   if (F.kind == ConvexKind::segment) {
-    // û1 + û2: the bisector of the end rays (MATH §1a.6).
+    // û1 + û2: the bisector of the end rays (docs/derivations.md §1.5).
     for (const Point2& p : v) {
       const Vec3 u = lift(p);
       const I inv_norm = make(Rational(1)) / sqrt(make(dot(u, u)));

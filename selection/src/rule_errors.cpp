@@ -156,9 +156,9 @@ std::optional<std::array<RuleErrors, 3>> stage(const std::vector<V>& v, const st
     const std::array<E, 3> lifted{m1, m2, one};
     const E error = angle_deg<E>(lifted, {t1, t2, one});
     // Worst case: every vertex at an acute angle to the map (u·v > 0), so the maximum is at a
-    // vertex (MATH §1e). There the angle falls as (u·v)²/|v|² rises (|u| is common): only vertices
-    // whose key may be the least need their angle; the enclosure of a maximum is the maximum of
-    // the ends.
+    // vertex (docs/derivations.md §3.1). There the angle falls as (u·v)²/|v|² rises (|u| is
+    // common): only vertices whose key may be the least need their angle; the enclosure of a
+    // maximum is the maximum of the ends.
     keys.clear();
     T least_hi = E::unbounded;
     for (const V& p : v) {

@@ -18,11 +18,11 @@ double worst_case_map_deg(const ConvexSet2& F, const Point2& m) {
   // u = (m, 1), v(x) = (x, 1).
   auto dot_m = [&](const Point2& v) { return Rational(m.x * v.x + m.y * v.y + 1); };
   // With u·v > 0 at every vertex (always so for m >= 0 and F in the quadrant) every angle on F is
-  // below 90°, where the angle is quasi-convex, so a vertex attains the maximum (MATH §1e).
-  // Otherwise (an estimate outside the quadrant: the closed form at a forced low precision; found
-  // by fuzz_geometry) an edge can hold it inside: on v = p + t·d, d/dt (u·v)/|v| ∝
-  // (u·d)|v|² − (u·v)(v·d) is linear in t (the t² terms cancel), so each edge adds at most one
-  // rational candidate.
+  // below 90°, where the angle is quasi-convex, so a vertex attains the maximum
+  // (docs/derivations.md §3.1). Otherwise (an estimate outside the quadrant: the closed form at a
+  // forced low precision; found by fuzz_geometry) an edge can hold it inside: on v = p + t·d, d/dt
+  // (u·v)/|v| ∝ (u·d)|v|² − (u·v)(v·d) is linear in t (the t² terms cancel), so each edge adds at
+  // most one rational candidate.
   const auto& vs = F.vertices;
   bool acute = nonnegative(m) && std::all_of(vs.begin(), vs.end(), nonnegative);
   if (!acute) {

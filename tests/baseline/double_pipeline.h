@@ -92,7 +92,8 @@ inline std::string kind(const std::vector<P>& f) {
   return f.empty() ? "empty" : f.size() == 1 ? "point" : f.size() == 2 ? "segment" : "polygon";
 }
 
-/// argmax x·y over the vertices and the edge stationary points (MATH §1d in doubles).
+/// argmax x·y over the vertices and the edge stationary points (docs/derivations.md §2.3 in
+/// doubles).
 inline P max_area(const std::vector<P>& f) {
   P best{NAN, NAN};
   double bv = -INFINITY;

@@ -9,8 +9,8 @@ at 10^4 and 10^5 samples only) and checks, from the CSV, at every width w = 10 .
     reported bound is no more than the rounding to double;
   * the certified closed form: error <= its bound + the reference's bound (both are rigorous,
     so this cannot fail unless one of them is wrong), and <= 1e-15 relative;
-  * the double closed form (MATH 1a.7): fine at w = 10 and 1 (<= 1e-14), broken at w = 1e-8
-    (> 1e-6), and worse at 1e-6 than at 1e-2;
+  * the double closed form (docs/derivations.md §1.6): fine at w = 10 and 1 (<= 1e-14), broken
+    at w = 1e-8 (> 1e-6), and worse at 1e-6 than at 1e-2;
   * quadrature: order 16 within its own estimate (+ the reference's bound); every order within
     1.5 times its estimate; order 16 no worse than order 2; and for w <= 1e-4 every order >= 4
     within 1e-15 relative (it works in offsets, so small polygons do not cancel);
@@ -57,7 +57,12 @@ def run(binary, args):
 def read_csv(path):
     with open(path, newline="") as f:
         text = f.read()
-    rows = list(csv.DictReader(text.splitlines()))
+    # The first line is the provenance record (docs/cli.md "Provenance"; test_provenance.py).
+    lines = text.splitlines()
+    if lines and lines[0].startswith("# gmcc-provenance: "):
+        lines = lines[1:]
+        text = text.split("\n", 1)[1]
+    rows = list(csv.DictReader(lines))
     return text, rows
 
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Determinism (SPEC 6): identical inputs and seeds give identical output bytes.
+"""Determinism (docs/conventions.md §7): identical inputs and seeds give identical output bytes.
 
     /usr/bin/python3 tests/cli/test_determinism.py GMCC_BINARY
 

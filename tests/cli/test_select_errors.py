@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Input handling of `gmcc select` (SPEC 5): bad input and odd-but-valid input.
+"""Input handling of `gmcc select` (docs/cli.md "Input files"): bad input and odd-but-valid input.
 
     /usr/bin/python3 tests/cli/test_select_errors.py GMCC_BINARY
 

@@ -6,7 +6,7 @@
                      [--keep DIR] [--jobs J]
 
 For every case the two CSVs are written to a temporary directory and the binary is run as
-`GMCC_BINARY select --canonical C.csv --image I.csv --json`.  Compared (SPEC 5):
+`GMCC_BINARY select --canonical C.csv --image I.csv --json`.  Compared (docs/cli.md "JSON output"):
   * feasible_set.kind; vertices exactly (a polygon as a cyclic counter-clockwise sequence, a
     segment as a set of 2 end points, a point as itself, empty as []); area exactly; the strings
     must be reduced "p/q" or "p";
@@ -45,7 +45,7 @@ APPROX_REL = 1e-15
 
 
 # --------------------------------------------------------------------------------------------
-# Writing exact numbers as CSV text in the accepted spellings (SPEC 5)
+# Writing exact numbers as CSV text in the accepted spellings (docs/cli.md "Input files")
 # --------------------------------------------------------------------------------------------
 
 
@@ -94,7 +94,7 @@ def number_text(x, rng):
 
 def csv_text(colours, rng, dressing=True):
     """CSV text for [(r, g, b)] exact colours; with `dressing`, sometimes a header, comments,
-    blank lines, spaces around numbers and CRLF line ends (all valid per SPEC 5)."""
+    blank lines, spaces around numbers and CRLF line ends (all valid: docs/cli.md "Input files")."""
     lines = []
     if dressing and rng.random() < 0.3:
         lines.append("r,g,b")
@@ -208,7 +208,8 @@ def random_case(rng, index):
     if rng.random() < 0.1:
         image = image + [(Fr(0), Fr(0), Fr(0))]
     if rng.random() < 0.05:
-        # Tiny feasible polygon: the image is G_c shrunk about its centroid (MATH 1a.7).
+        # Tiny feasible polygon: the image is G_c shrunk about its centroid
+        # (docs/derivations.md §1.6).
         hull = so.convex_hull(chroma(canonical))
         if len(hull) >= 3:
             delta = Fr(1, 10 ** rng.randint(3, 9))
@@ -220,13 +221,13 @@ def random_case(rng, index):
 
 
 def fixed_cases():
-    """Degenerate and hand-derived cases (SPEC 1 "kind", MATH 1a.6, 1d)."""
+    """Degenerate and hand-derived cases (docs/conventions.md §6, docs/derivations.md §1.5, §2)."""
     cases = []
     one = (1, 1, 1)
     square = [(1, 1, 1), (2, 1, 1), (2, 2, 1), (1, 2, 1)]  # chromaticities [1,2]^2
     pentagon = [(11, 7, 10), (14, 6, 10), (16, 9, 10), (13, 12, 10), (10, 10, 10)]
 
-    # The paper's toy example (BMVC'97 text, MATH 1a.6): feasible maps on the segment
+    # The paper's toy example (BMVC'97 text, docs/derivations.md §1.5): feasible maps on the segment
     # (3,2)-(1/3,2/3) when the canonical colours are (3,2,1), (1,2,3) and the image is white.
     cases.append(Case("toy-example", [(3, 2, 1), (1, 2, 3)], [one],
                       canonical_text="r,g,b\n3,2,1\n1,2,3\n", image_text="1,1,1\n",
@@ -273,11 +274,13 @@ def fixed_cases():
     cases.append(Case("box-segment", square, [one, (2, 1, 1)],
                       expect={"kind": "segment", "max_area": (Fr(1), Fr(2))}))
     cases.append(Case("box-empty", square, [one, (3, 3, 1)], expect={"kind": "empty"}))
-    # Max-area in an edge interior: triangle (1,5),(5,1),(1,1) -> (3,3) on a + b = 6 (MATH 1d).
+    # Max-area in an edge interior: triangle (1,5),(5,1),(1,1) -> (3,3) on a + b = 6
+    # (docs/derivations.md §2.2).
     cases.append(Case("max-area-edge-interior", [(1, 5, 1), (5, 1, 1), (1, 1, 1)], [one],
                       expect={"max_area": (Fr(3), Fr(3)), "mean_2d": (Fr(7, 3), Fr(7, 3))}))
     # Tiny feasible sets of width ~1e-9: the box with q = (1,1) and (2-2e-9, 2-2e-9); and the
-    # pentagon with an image shrunk about its centroid by 1 - 1e-9 (MATH 1a.7 conditioning).
+    # pentagon with an image shrunk about its centroid by 1 - 1e-9 (the conditioning of
+    # docs/derivations.md §1.6).
     e = Fr(2, 10 ** 9)
     cases.append(Case("tiny-box", square, [one, (2 - e, 2 - e, 1)], expect={"kind": "polygon"}))
     hull = so.convex_hull(chroma(pentagon))
@@ -606,7 +609,7 @@ def main():
     if stats:
         print(f"mean_3d: max |map - true|/|true| = {stats.get('mean3d_max_rel', 0):.3e}, "
               f"max error_bound/|true| = {stats.get('mean3d_max_bound_rel', 0):.3e} "
-              f"(SPEC 6 asks for 1e-15 relative); worst_case_deg max diff = "
+              f"(docs/conventions.md §7 asks for 1e-15 relative); worst_case_deg max diff = "
               f"{stats.get('worst_max_diff', 0):.3e} deg")
     print(f"{passed} passed, {failed} failed")
     return 1 if failed else 0

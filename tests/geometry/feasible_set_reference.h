@@ -53,7 +53,7 @@ inline std::vector<HalfPlane> half_planes(const ConvexSet2& set) {
 // coprime integer coefficients; a vertex is (X, Y, W), W > 0, the point (X/W, Y/W). Every new
 // vertex is the intersection of two *input* lines (the edge's and the clip line), so coordinate
 // sizes stay bounded by the inputs' instead of growing clip after clip, and side tests are
-// integer arithmetic with no gcd (MATH §3b, item 4: keep constructions shallow).
+// integer arithmetic with no gcd (docs/derivations.md §4.3: keep constructions shallow).
 struct Line {
   mpz_class a, b, c;
 };

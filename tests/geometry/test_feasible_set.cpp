@@ -26,7 +26,7 @@ bool on_boundary(const ConvexSet2& set, const Point2& p) {
 BOOST_AUTO_TEST_SUITE(feasible_set_2d)
 
 // Finlayson & Hordley (1999) Fig. 1 / BMVC'97 §3: canonical colours (3,2,1) and (1,2,3), image
-// colour (1,1,1): the feasible maps are the segment (3,2)–(1/3,2/3) (MATH §1a.6).
+// colour (1,1,1): the feasible maps are the segment (3,2)–(1/3,2/3) (docs/derivations.md §1.5).
 BOOST_AUTO_TEST_CASE(paper_toy_example_is_a_segment) {
   const auto c = perspective_chromaticities({{3, 2, 1}, {1, 2, 3}}, NonPositiveBluePolicy::reject);
   const ConvexSet2 F = feasible_set(convex_hull(c.points), {{1, 1}});

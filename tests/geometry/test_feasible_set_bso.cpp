@@ -1,6 +1,7 @@
 // Oracle: CGAL's Boolean set operations compute ⋂ (G_c ⊘ q) by an independent route.
 // They are regularised (closure of interior), so lower-dimensional results come back empty:
-// for those cases only the kind is compared (MATH §3b). This is the tests' one CGAL TU.
+// for those cases only the kind is compared (docs/derivations.md §4.2). This is the tests' one
+// CGAL TU.
 #include "../test_support.h"
 
 #include <gmcc/geometry/feasible_set.h>

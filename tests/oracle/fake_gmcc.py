@@ -7,7 +7,8 @@
 With GMCC_FAKE_BUG=<name> it injects one known bug, to show that the drivers catch it:
   float_parse     numbers read as doubles and then converted exactly (0.1 != 1/10)
   clockwise       polygon vertices listed clockwise
-  mean3d_double   3-D mean by Arvo's formula in double precision (MATH 1a.7), tiny error bound
+  mean3d_double   3-D mean by Arvo's formula in double precision (docs/derivations.md §1.6),
+                  tiny error bound
   worst_acos      worst-case angle via acos of the normalised dot product in double
   degenerate_empty  segment/point feasible sets reported as empty (regularised Booleans)
   unreduced       integers written "p/1"

@@ -2,8 +2,8 @@
 """Independent oracle for the synthetic colour-constancy experiment of
 Finlayson & Hordley (1999), section 4, Fig. 3.
 
-Written from the experiment's description only (paper section 4, SPEC section 1-2
-and 4, MATH section 1a); it shares no code with the C++ tool.  Standard library
+Written from the experiment's description only (paper section 4, docs/reproduction.md §1,
+docs/math.md §1-§2, docs/derivations.md §1); it shares no code with the C++ tool.  Standard library
 only, double precision throughout, its own random generator.  It is meant for a
 *statistical* cross-check: the scenes differ from the C++ tool's, so only the
 cell means can be compared, within their sampling error.
@@ -350,7 +350,7 @@ def select_rules(poly):
                 "mean_3d": (s[0] / s[2], s[1] / s[2])}
     m2d = (o[0] + cx / (3.0 * area2), o[1] + cy / (3.0 * area2))
     if diam <= 1e-3 * max(1.0, scale):
-        # Arvo's sum cancels for tiny polygons (MATH 1a.7); there the weighted
+        # Arvo's sum cancels for tiny polygons (docs/derivations.md §1.6); there the weighted
         # and plain centroids differ by O(diam^2), far below what matters here.
         m3d = m2d
     else:

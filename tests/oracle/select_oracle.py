@@ -1,27 +1,30 @@
 #!/usr/bin/python3
 """Independent reference implementation (test oracle) of `gmcc select`.
 
-Written from docs/SPEC.md (sections 1, 2, 5) and docs/MATH.md (sections 1a, 1b, 1d, 1e "map
-space") only, without looking at the C++ sources, so that it can catch their bugs.  It is meant
-to be slow and obviously right rather than fast:
+Written from the contract and the mathematics only (docs/conventions.md, docs/math.md §1-§2,
+docs/cli.md "JSON output", docs/derivations.md §1, §2 and §3.1), without looking at the C++
+sources, so that it can catch their bugs.  It is meant to be slow and obviously right rather than
+fast:
 
-* every geometric quantity is an exact `fractions.Fraction` (SPEC 1, "Exact input");
+* every geometric quantity is an exact `fractions.Fraction` (docs/conventions.md §1);
 * the feasible set is computed by a method deliberately different from the production one
-  (SPEC 1 / MATH 3b use Sutherland-Hodgman clipping): the canonical gamut and *every* image
+  (docs/math.md §1 clips with Sutherland-Hodgman): the canonical gamut and *every* image
   chromaticity (not only the image-hull vertices) are turned into integer half-planes
   a*m1 + b*m2 <= c, and F is recovered line by line as the exact 1-D intersection
   "F restricted to each constraint line" (an interval), whose end points are the vertices of F;
-* the 3-D mean is Arvo's closed form (MATH 1a.2) evaluated with mpmath at >= 60 significant
-  digits (more for thin polygons, MATH 1a.7), checked against a second evaluation with 30 more
-  digits;
-* worst-case angles (MATH 1e, map space) are evaluated as atan2(|a x b|, a.b) in mpmath.
+* the 3-D mean is Arvo's closed form (docs/derivations.md §1.2) evaluated with mpmath at >= 60
+  significant digits (more for thin polygons, docs/derivations.md §1.6), checked against a second
+  evaluation with 30 more digits;
+* worst-case angles (docs/derivations.md §3.1, map space) are evaluated as atan2(|a x b|, a.b) in
+  mpmath.
 
 Use it as a module (`select_from_files`, `select_from_chromaticities`) or as a command line:
 
     /usr/bin/python3 select_oracle.py C.csv I.csv
 
-which prints the JSON object of SPEC 5 on stdout, or `gmcc: error: FILE:LINE: what` on stderr
-and exit status 2 for bad input.  Only the Python 3.11 standard library and python3-mpmath.
+which prints the JSON object of docs/cli.md "JSON output" on stdout, or
+`gmcc: error: FILE:LINE: what` on stderr and exit status 2 for bad input.  Only the Python 3.11
+standard library and python3-mpmath.
 """
 
 import json
@@ -38,7 +41,8 @@ import mpmath
 
 
 class InputError(Exception):
-    """Bad user input (SPEC 5): exit status 2, one message naming the file and line."""
+    """Bad user input (docs/cli.md "Input files"): exit status 2, one message naming the file
+    and line."""
 
     def __init__(self, path, line, what):
         super().__init__(what)
@@ -59,8 +63,8 @@ class UndefinedResult(Exception):
 
 
 # --------------------------------------------------------------------------------------------
-# Exact CSV reading (SPEC 5: one colour per line `r,g,b`, optional header, comments, blanks,
-# CRLF, BOM, decimals read exactly as rationals, or p/q)
+# Exact CSV reading (docs/cli.md "Input files": one colour per line `r,g,b`, optional header,
+# comments, blanks, CRLF, BOM, decimals read exactly as rationals, or p/q)
 # --------------------------------------------------------------------------------------------
 
 # An unsigned decimal: "12", "12.5", "12.", ".5", optionally with an exponent ("1.5e-3").
@@ -141,10 +145,10 @@ def read_colours(path):
 
 
 def chromaticities(path, colours):
-    """Perspective chromaticities q = (r/b, g/b) (SPEC 1, paper eq. 10).
+    """Perspective chromaticities q = (r/b, g/b) (docs/conventions.md §2, paper eq. 10).
 
     Colours with b = 0 have none and are dropped (the default policy); returns (qs, dropped).
-    No usable colour at all is bad input (SPEC 5, "empty set of usable colours")."""
+    No usable colour at all is bad input (docs/conventions.md §2)."""
     qs = [(r / b, g / b) for _, (r, g, b) in colours if b > 0]
     dropped = len(colours) - len(qs)
     if not qs:
@@ -219,7 +223,7 @@ def _integer_constraint(a, b, c):
 
 
 def map_constraints(canonical_hull, image_qs):
-    """All constraints on the map m (SPEC 1 "Feasible set"): for every image chromaticity q and
+    """All constraints on the map m (docs/math.md §1): for every image chromaticity q and
     every half-plane n.x <= c of G_c, (m1 q1, m2 q2) in G_c gives (n1 q1) m1 + (n2 q2) m2 <= c.
 
     Written through the half-plane form it also covers q with a zero component, where "G_c
@@ -306,7 +310,7 @@ def contains(polygon_or_degenerate, x):
 
 
 # --------------------------------------------------------------------------------------------
-# Selection rules (SPEC 2)
+# Selection rules (docs/math.md §2)
 # --------------------------------------------------------------------------------------------
 
 
@@ -325,7 +329,8 @@ def area_and_centroid(vertices):
 
 
 def mean_2d(kind, vertices):
-    """Barnard's 2-D mean: area centroid of F; segment: midpoint; point: itself (SPEC 2)."""
+    """Barnard's 2-D mean: area centroid of F; segment: midpoint; point: itself
+    (docs/math.md §2)."""
     if kind == "polygon":
         return area_and_centroid(vertices)[1]
     if kind == "segment":
@@ -335,12 +340,12 @@ def mean_2d(kind, vertices):
 
 
 def max_area(kind, vertices):
-    """argmax m1*m2 over F by exact candidate enumeration (MATH 1d.4): every vertex, plus on
-    each edge p + t(q - p) with da*db < 0 the stationary point
+    """argmax m1*m2 over F by exact candidate enumeration (docs/derivations.md §2.3): every
+    vertex, plus on each edge p + t(q - p) with da*db < 0 the stationary point
     t* = -(da*p_b + db*p_a) / (2 da db) when 0 < t* < 1.
 
     Raises UndefinedResult if the maximiser is not unique (only possible when max = 0, i.e. F on
-    an axis, outside the open positive quadrant MATH 1d assumes)."""
+    an axis, outside the open positive quadrant docs/derivations.md §2.1 assumes)."""
     candidates = list(vertices)
     if kind == "polygon":
         edges = [(vertices[i], vertices[(i + 1) % len(vertices)]) for i in range(len(vertices))]
@@ -379,11 +384,12 @@ def _mpf(x):
 
 
 def _arvo_map(vertices, dps):
-    """3-D mean of a CCW polygon by Arvo's formula (MATH 1a.2) at `dps` digits:
+    """3-D mean of a CCW polygon by Arvo's formula (docs/derivations.md §1.2) at `dps` digits:
     tau = 1/2 sum_i theta_i (u_i x u_{i+1}) / |u_i x u_{i+1}|, theta_i = atan2(|c_i|, u_i.u_{i+1}),
     u_i = (a_i, b_i, 1) unnormalised; c_i and u_i.u_{i+1} are exact rationals fed to mpmath.
-    Orientation (MATH 1a.4): with the lift (a, b, 1) a CCW polygon is CCW from outside, so the
-    sum is taken as is; the sign is checked through tau_3 > 0 (tau_3 = Omega-weighted > 0)."""
+    Orientation (docs/derivations.md §1.4): with the lift (a, b, 1) a CCW polygon is CCW from
+    outside, so the sum is taken as is; the sign is checked through tau_3 > 0 (tau_3 =
+    Omega-weighted > 0)."""
     with mpmath.workdps(dps):
         tau = [mpmath.mpf(0)] * 3
         n = len(vertices)
@@ -400,12 +406,13 @@ def _arvo_map(vertices, dps):
 
 
 def mean_3d(kind, vertices):
-    """Finlayson & Hordley's 3-D mean (SPEC 2, MATH 1a).  Returns ((m1, m2) as mpf, error_bound).
+    """Finlayson & Hordley's 3-D mean (docs/math.md §2, docs/derivations.md §1).  Returns
+    ((m1, m2) as mpf, error_bound).
 
     polygon: Arvo's closed form at 60 + guard digits, where the guard grows with the thinness
-    perimeter/area (the edge sum cancels like u/width, MATH 1a.7); the result is recomputed with
-    30 more digits and the difference (plus a margin) is the stated error bound.
-    segment: perspective of u1/|u1| + u2/|u2| (bisector of the fan, MATH 1a.6).
+    perimeter/area (the edge sum cancels like u/width, docs/derivations.md §1.6); the result is
+    recomputed with 30 more digits and the difference (plus a margin) is the stated error bound.
+    segment: perspective of u1/|u1| + u2/|u2| (bisector of the fan, docs/derivations.md §1.5).
     point: itself (exact, error bound 0)."""
     if kind == "point":
         return (_mpf(vertices[0][0]), _mpf(vertices[0][1])), 0.0
@@ -437,8 +444,8 @@ def mean_3d(kind, vertices):
 
 
 def angle_deg(m, v):
-    """Angle in degrees between (m, 1) and (v, 1) (MATH 1e, map space), atan2 form (no acos
-    cancellation near 0), evaluated at 60 digits from the exact or mpf inputs."""
+    """Angle in degrees between (m, 1) and (v, 1) (docs/derivations.md §3.1, map space), atan2
+    form (no acos cancellation near 0), evaluated at 60 digits from the exact or mpf inputs."""
     with mpmath.workdps(60):
         a = [_mpf(m[0]), _mpf(m[1]), mpmath.mpf(1)]
         b = [_mpf(v[0]), _mpf(v[1]), mpmath.mpf(1)]
@@ -448,23 +455,25 @@ def angle_deg(m, v):
 
 
 def worst_case_deg(m, vertices):
-    """Worst-case map angular error: max over the vertices of F (MATH 1e, quasi-convexity)."""
+    """Worst-case map angular error: max over the vertices of F (docs/derivations.md §3.1,
+    quasi-convexity)."""
     return max(angle_deg(m, v) for v in vertices)
 
 
 # --------------------------------------------------------------------------------------------
-# The whole `select` computation and its JSON (SPEC 5)
+# The whole `select` computation and its JSON (docs/cli.md "JSON output")
 # --------------------------------------------------------------------------------------------
 
 
 def rational_text(x):
-    """Reduced 'p/q', or 'p' for an integer (SPEC 5)."""
+    """Reduced 'p/q', or 'p' for an integer (docs/cli.md "JSON output")."""
     x = Fraction(x)
     return str(x.numerator) if x.denominator == 1 else f"{x.numerator}/{x.denominator}"
 
 
 def select_from_chromaticities(canonical_qs, image_qs):
-    """The `gmcc select` result (a dict shaped like the JSON of SPEC 5) from chromaticities.
+    """The `gmcc select` result (a dict shaped like the JSON of docs/cli.md "JSON output") from
+    chromaticities.
 
     Exact values are kept beside the JSON under the key "_exact" (Fractions / mpf) for the
     drivers; `to_json` drops it."""

@@ -5,16 +5,19 @@ independent brute-force routes, so that a disagreement with the C++ binary can b
     /usr/bin/python3 tests/oracle/selftest_oracle.py [--cases N] [--seed S]
 
 Checks (each asserts; the last line is `N passed, N failed`):
-* hand-derived cases: the paper's toy example (MATH 1a.6 / 4.1), axis-aligned boxes, points,
-  segments, empty sets, zero chromaticity components;
+* hand-derived cases: the paper's toy example (docs/derivations.md §1.5), axis-aligned boxes,
+  points, segments, empty sets, zero chromaticity components;
 * feasible set: line-interval method == Sutherland-Hodgman clipping of G_c / q (the production
-  method, MATH 3b, re-implemented here in Fractions) on random cases with a polygon G_c, exactly;
+  method, docs/math.md §1, re-implemented here in Fractions) on random cases with a polygon G_c,
+  exactly;
   and, for polygon, segment and point gamuts alike, membership of random rational maps by the
   definition (diag(m) q in G_c for every q) == membership in F;
-* max-area: no sampled point of F (boundary and interior) has a larger product (MATH 1d);
+* max-area: no sampled point of F (boundary and interior) has a larger product
+  (docs/derivations.md §2);
 * 3-D mean: Arvo closed form == weighted planar centroid with w = (1+a^2+b^2)^-2 integrated by
-  mpmath quadrature over a fan triangulation (MATH 1a.3), and == a thin-polygon limit check;
-* worst-case angle: the vertex maximum >= a dense boundary sample (MATH 1e).
+  mpmath quadrature over a fan triangulation (docs/derivations.md §1.3), and == a thin-polygon
+  limit check;
+* worst-case angle: the vertex maximum >= a dense boundary sample (docs/derivations.md §3.1).
 """
 
 import argparse
@@ -46,7 +49,8 @@ def check(cond, what):
 
 def hand_cases():
     # The paper's toy example: canonical (3,2,1), (1,2,3); image white.  F is the segment
-    # (1/3,2/3)-(3,2); max-area (3,2); 2-D mean (5/3,4/3); 3-D mean (1,1) (MATH 1a.6).
+    # (1/3,2/3)-(3,2); max-area (3,2); 2-D mean (5/3,4/3); 3-D mean (1,1)
+    # (docs/derivations.md §1.5).
     r = so.select_from_chromaticities([(Fr(3), Fr(2)), (Fr(1, 3), Fr(2, 3))], [(Fr(1), Fr(1))])
     e = r["_exact"]
     check(e["kind"] == "segment" and set(e["vertices"]) == {(3, 2), (Fr(1, 3), Fr(2, 3))},
@@ -227,8 +231,8 @@ def route_checks(rng, ncases):
 
 
 def weighted_centroid_quadrature(vertices, dps=30):
-    """MATH 1a.3: m = int (a,b) w / int w, w = (1+a^2+b^2)^-2, over a fan triangulation,
-    each triangle by mpmath.quad on the unit square through the Duffy map."""
+    """docs/derivations.md §1.3: m = int (a,b) w / int w, w = (1+a^2+b^2)^-2, over a fan
+    triangulation, each triangle by mpmath.quad on the unit square through the Duffy map."""
     with mpmath.workdps(dps):
         v = [(so._mpf(x), so._mpf(y)) for x, y in vertices]
         num = [mpmath.mpf(0), mpmath.mpf(0)]
@@ -265,8 +269,8 @@ def mean3d_checks(rng, ncases):
         mq = weighted_centroid_quadrature(e["vertices"])
         err = max(abs(m[0] - mq[0]), abs(m[1] - mq[1]))
         check(err < 1e-12 * max(1, abs(m[0]), abs(m[1])), f"Arvo vs quadrature: {err}")
-    # Large polygon of MATH 1a.5 is not given exactly; instead the (1.1, 0.7) 5-gon family of
-    # MATH 1a.7 scaled to width 1e-9: the 3-D mean approaches the 2-D mean of a tiny polygon
+    # The (1.1, 0.7) 5-gon family of the conditioning tests (docs/derivations.md §1.6)
+    # scaled to width 1e-9: the 3-D mean approaches the 2-D mean of a tiny polygon
     # and Arvo at high precision must match the quadrature written in offsets.
     base = [(Fr(0), Fr(0)), (Fr(3), Fr(-1)), (Fr(5), Fr(2)), (Fr(2), Fr(5)), (Fr(-1), Fr(3))]
     for width in (Fr(1, 100), Fr(1, 10**6), Fr(1, 10**9)):

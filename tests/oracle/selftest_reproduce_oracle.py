@@ -5,7 +5,7 @@ For random scenes of the synthetic experiment it rasterises the feasible set on 
 fine grid, straight from the definition (m is feasible iff (m1 q1, m2 q2) lies in
 the canonical hull for every image chromaticity q), and compares with the
 oracle's clipped polygon: area, area centroid (mean_2d), the centroid weighted by
-(1 + a^2 + b^2)^-2 (MATH 1a.3, = mean_3d), max of m1 m2 (max_area) and the
+(1 + a^2 + b^2)^-2 (docs/derivations.md §1.3, = mean_3d), max of m1 m2 (max_area) and the
 worst-case angle.  Also checks the computed daylights against the CIE table and
 that the true map is feasible.  Exit 0 iff all checks pass.
 

@@ -1,8 +1,9 @@
 #pragma once
 // An independent numerical route to the 3-D mean for tests: the weighted planar centroid
-// m = ∫_F (a, b) w dA / ∫_F w dA with w = (1 + a² + b²)^-2 (MATH §1a.3), by Duffy-collapsed
-// Gauss–Legendre on the fan triangles of F, in long double and in offsets from the fan apex so
-// that small polygons do not cancel (MATH §1c). Shares no code with the closed form.
+// m = ∫_F (a, b) w dA / ∫_F w dA with w = (1 + a² + b²)^-2 (docs/derivations.md §1.3), by
+// Duffy-collapsed Gauss–Legendre on the fan triangles of F, in long double and in offsets from the
+// fan apex so that small polygons do not cancel (docs/derivations.md §1.6). Shares no code with the
+// closed form.
 
 #include <gmcc/geometry/convex_set.h>
 

@@ -23,7 +23,7 @@ double max_abs_diff(const std::array<double, 2>& a, const std::array<long double
 double max_abs_diff(const std::array<double, 2>& a, const std::array<double, 2>& b) {
   return std::max(std::fabs(a[0] - b[0]), std::fabs(a[1] - b[1]));
 }
-// A 5-gon of the given width around (11/10, 7/10) (MATH §1a.7's conditioning example).
+// A 5-gon of the given width around (11/10, 7/10) (the conditioning of docs/derivations.md §1.6).
 ConvexSet2 small_pentagon(const Rational& width) {
   const Point2 c{Rational(11, 10), Rational(7, 10)};
   const std::vector<std::pair<int, int>> shape{{0, 0}, {3, -1}, {5, 2}, {2, 5}, {-1, 3}};
@@ -36,7 +36,7 @@ ConvexSet2 small_pentagon(const Rational& width) {
 BOOST_AUTO_TEST_SUITE(mean_3d_rule)
 
 // Finlayson & Hordley (1999) toy example: the 3-D mean recovers the true map (1, 1) under the
-// fan-bisector convention for segments (MATH §1a.6).
+// fan-bisector convention for segments (docs/derivations.md §1.5).
 BOOST_AUTO_TEST_CASE(paper_toy_example_recovers_the_identity) {
   const ConvexSet2 toy{ConvexKind::segment, {{Rational(1, 3), Rational(2, 3)}, {3, 2}}};
   const MapEstimate e = mean_3d_analytic(toy);
@@ -96,8 +96,8 @@ BOOST_AUTO_TEST_CASE(closed_form_agrees_with_a_4096_bit_evaluation) {
   }
 }
 
-// SPEC §6: agrees with a high-precision evaluation to 1e-15 relative down to width 1e-9,
-// where the double-precision closed form is garbage (MATH §1a.7).
+// docs/conventions.md §7: agrees with a high-precision evaluation to 1e-15 relative down to width
+// 1e-9, where the double-precision closed form is garbage (docs/derivations.md §1.6).
 BOOST_AUTO_TEST_CASE(tiny_feasible_sets_double_fails_mpfi_does_not) {
   for (const char* w : {"1/100", "1/10000", "1/1000000", "1/1000000000", "1/1000000000000"}) {
     const ConvexSet2 F = small_pentagon(Rational(w));

@@ -1,4 +1,4 @@
-// The three routes to the 3-D mean (SPEC §2) against each other, within their own bounds.
+// The three routes to the 3-D mean (docs/math.md §2) against each other, within their own bounds.
 #include "../test_support.h"
 
 #include <gmcc/selection/mean_3d.h>

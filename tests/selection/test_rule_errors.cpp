@@ -71,8 +71,8 @@ BOOST_AUTO_TEST_CASE(agrees_with_the_exact_route_within_its_accuracy) {
   }
   // The route is meant to answer on nearly every enclosed feasible set (else it buys nothing).
   // Thin cones (F small against |(m, 1)|: maps up to 300 here) defeat the double stage in about
-  // 10% of these scenes (the closed form cancels 2·log2(1/width) bits, MATH §1a.7); the
-  // extended-precision stage answers all but a few of those.
+  // 10% of these scenes (the closed form cancels 2·log2(1/width) bits, docs/derivations.md §1.6);
+  // the extended-precision stage answers all but a few of those.
   BOOST_TEST(answered >= scenes * 97 / 100, answered << " of " << scenes);
   BOOST_TEST(scenes >= 200);
 }

@@ -99,7 +99,8 @@ bool on_boundary(const ConvexSet2& F, const Point2& x) {
   return false;
 }
 
-// MATH §4 item 7: the polygon on which the vertex rule misses the illuminant-space maximum.
+// docs/derivations.md §3.2: the polygon on which the vertex rule misses the illuminant-space
+// maximum.
 ConvexSet2 counter_example_polygon() {
   const char* text[][2] = {{"0.2537", "0.1239"}, {"2.1735", "0.4157"}, {"1.9574", "1.028"},
                            {"1.328", "2.206"},   {"0.9505", "1.9681"}, {"0.4909", "1.424"},
@@ -178,7 +179,7 @@ BOOST_AUTO_TEST_CASE(counter_example_beats_the_vertex_rule) {
   BOOST_TEST(on_boundary(F, w.location));
   BOOST_TEST(worst_case_illuminant_deg(F, m, white) == w.angle_deg);
   BOOST_TEST(illuminant_angular_error_deg(m, w.location, white) == w.angle_deg);
-  // And the dense search agrees (MATH §1e: 39.8192° both ways).
+  // And the dense search agrees (docs/derivations.md §3.2: 39.8192° both ways).
   const Dense d = dense_boundary(F, m, white, 20000);
   BOOST_TEST(w.angle_deg >= d.max - 1e-9);
   BOOST_TEST(w.angle_deg <= d.max + d.slack);

@@ -1,5 +1,7 @@
 #include <gmcc/validation/text_file.h>
 
+#include <gmcc/validation/file_digest.h>
+
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/stat.h>
@@ -31,7 +33,7 @@ class Accumulator {
     if (n > rules_.max_bytes - text_.size())
       throw InputError(path_, 0, "larger than the " + std::to_string(rules_.max_bytes >> 20) +
                                      " MiB limit for " + rules_.noun + "s");
-    if (const void* nul = std::memchr(data, '\0', n)) {
+    if (const void* nul = rules_.binary ? nullptr : std::memchr(data, '\0', n)) {
       const auto at = static_cast<std::size_t>(static_cast<const char*>(nul) - data);
       const std::size_t line =
           lines_before_ + static_cast<std::size_t>(std::count(data, data + at, '\n')) + 1;
@@ -108,9 +110,8 @@ std::string read_fifo(int fd, const std::string& path, const TextFileRules& rule
   }
 }
 
-}  // namespace
-
-std::string read_text_file(const std::string& path, const TextFileRules& rules) {
+// The bytes of the file, by its kind (read_text_file's contract).
+std::string read_whole(const std::string& path, const TextFileRules& rules) {
   // Non-blocking, so that opening a FIFO with no writer returns at once (a blocking open would
   // wait for a writer forever); other files are switched back to blocking reads.
   Descriptor in{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY)};
@@ -131,6 +132,20 @@ std::string read_text_file(const std::string& path, const TextFileRules& rules) 
   const int flags = ::fcntl(in.fd, F_GETFL);
   if (flags < 0 || ::fcntl(in.fd, F_SETFL, flags & ~O_NONBLOCK) < 0) cannot_read(path, errno);
   return read_stream(in.fd, path, rules);
+}
+
+}  // namespace
+
+std::string read_text_file(const std::string& path, const TextFileRules& rules) {
+  std::string bytes = read_whole(path, rules);
+  record_file_read(path, bytes);
+  return bytes;
+}
+
+std::string read_binary_file(const std::string& path, std::size_t max_bytes,
+                             const std::string& noun) {
+  TextFileRules rules{max_bytes, noun, noun, true};
+  return read_text_file(path, rules);
 }
 
 }  // namespace gmcc

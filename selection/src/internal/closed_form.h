@@ -1,8 +1,8 @@
 #pragma once
-// The 3-D mean's closed form τ = ½ Σ θ_i c_i/|c_i| (MATH §1a) in midpoint–radius enclosures
-// (geometry/enclosure.h), generic in their precision: doubles for rule_errors' first stage, x87
-// extended precision for its second stage and for mean_3d_analytic's fast path. Internal to
-// gmcc::selection.
+// The 3-D mean's closed form τ = ½ Σ θ_i c_i/|c_i| (docs/derivations.md §1.2) in midpoint–radius
+// enclosures (geometry/enclosure.h), generic in their precision: doubles for rule_errors' first
+// stage, x87 extended precision for its second stage and for mean_3d_analytic's fast path. Internal
+// to gmcc::selection.
 
 #include <gmcc/geometry/enclosure.h>
 
@@ -53,8 +53,8 @@ E theta_over_s(T s_lo, T s_hi, const E& d) {
 template <class E, class V>
 std::optional<std::array<E, 2>> mean_3d_direction(const std::vector<V>& v) {
   using T = decltype(E::mid);
-  // τ = ½ Σ θ_i c_i/|c_i| with c_i = p_i × p_{i+1}, p = (x, y, 1) (MATH §1a); the ½ and the
-  // orientation cancel in (τ1/τ3, τ2/τ3). c_i from the edge e = p_{i+1} − p_i:
+  // τ = ½ Σ θ_i c_i/|c_i| with c_i = p_i × p_{i+1}, p = (x, y, 1) (docs/derivations.md §1.2); the ½
+  // and the orientation cancel in (τ1/τ3, τ2/τ3). c_i from the edge e = p_{i+1} − p_i:
   // (−e_y, e_x, x_i·e_y − y_i·e_x), exact in direction however short the edge.
   std::array<E, 3> tau{};
   const std::size_t n = v.size();

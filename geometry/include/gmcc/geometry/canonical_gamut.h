@@ -2,7 +2,7 @@
 /// \file canonical_gamut.h
 /// The canonical gamut G_c: the convex hull of the canonical chromaticities (Forsyth 1990;
 /// Finlayson 1996 §3), optionally expanded as the seed paper did (Finlayson & Hordley 1999 §4:
-/// "expanded by 10%"), by a named policy that keeps chromaticities positive (SPEC §1).
+/// "expanded by 10%"), by a named policy that keeps chromaticities positive (docs/math.md §1).
 
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/convex_set.h>

@@ -1,6 +1,6 @@
 #pragma once
 /// \file colour.h
-/// A colour: a linear sensor response (r, g, b), exact, finite and >= 0 (SPEC §1).
+/// A colour: a linear sensor response (r, g, b), exact, finite and >= 0 (docs/conventions.md §1).
 
 #include <gmcc/geometry/rational.h>
 

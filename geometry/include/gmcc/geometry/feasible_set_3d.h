@@ -31,8 +31,8 @@ enum class CanonicalBlack {
 /// empty; s* = 0 means some inequalities hold with equality on all of F3 — the LP's non-zero
 /// multipliers name them (complementary slackness) and they become equalities, until s* > 0.
 /// The equalities' rank r gives the dimension 3 − r: a polytope by CGAL::halfspace_intersection_3
-/// around the strictly interior LP point (MATH §3c; facets re-derived exactly from the
-/// constraint planes), a polygon by exact 2-D clipping in its plane, a segment by an exact
+/// around the strictly interior LP point (docs/derivations.md §4.4; facets re-derived exactly from
+/// the constraint planes), a polygon by exact 2-D clipping in its plane, a segment by an exact
 /// interval on its line, or the LP point itself.
 /// \param canonical non-empty, channels >= 0. \param image non-empty, channels >= 0.
 /// \throws std::invalid_argument on empty or negative input; UnboundedFeasibleSet (from

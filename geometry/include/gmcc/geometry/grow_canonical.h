@@ -1,7 +1,7 @@
 #pragma once
 /// \file grow_canonical.h
-/// A recovery policy for an empty feasible set (SPEC §3): grow the canonical gamut until some
-/// map fits, as Barnard did (Barnard, Cardei & Funt 2002, Part I §3: the canonical gamut is
+/// A recovery policy for an empty feasible set (docs/math.md §1): grow the canonical gamut until
+/// some map fits, as Barnard did (Barnard, Cardei & Funt 2002, Part I §3: the canonical gamut is
 /// enlarged when real data leave no feasible map), and say by how much.
 
 #include <gmcc/geometry/convex_set.h>

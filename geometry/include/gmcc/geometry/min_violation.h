@@ -1,6 +1,6 @@
 #pragma once
 /// \file min_violation.h
-/// A recovery policy for an empty feasible set (SPEC §3): the maps that violate the gamut
+/// A recovery policy for an empty feasible set (docs/math.md §1): the maps that violate the gamut
 /// constraints least, under a stated measure — a Chebyshev ("minimax") solution of the
 /// infeasible system of Forsyth's (1990) constraints, computed as an exact linear program.
 

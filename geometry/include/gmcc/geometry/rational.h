@@ -1,6 +1,6 @@
 #pragma once
 /// \file rational.h
-/// The one boundary where text or floating-point data becomes exact (SPEC §1 "Exact input").
+/// The one boundary where text or floating-point data becomes exact (docs/conventions.md §1).
 
 #include <gmpxx.h>
 

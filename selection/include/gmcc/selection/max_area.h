@@ -9,7 +9,7 @@
 
 namespace gmcc {
 
-/// argmax_{m ∈ F} m1·m2, exactly (MATH §1d).
+/// argmax_{m ∈ F} m1·m2, exactly (docs/derivations.md §2).
 ///
 /// m1·m2 is strictly log-concave on the open quadrant, so the maximiser is unique and lies on
 /// the north-east chain of ∂F: it is a vertex or the stationary point

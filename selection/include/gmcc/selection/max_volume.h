@@ -1,14 +1,14 @@
 #pragma once
 /// \file max_volume.h
 /// Forsyth's (1990) CRULE-MV selection: the map that makes the corrected image as colourful as
-/// possible, argmax d1·d2·d3 over the 3-D feasible set (MATH §1d item 5).
+/// possible, argmax d1·d2·d3 over the 3-D feasible set (docs/derivations.md §2.4).
 
 #include <gmcc/geometry/convex_set_3.h>
 #include <gmcc/selection/map_estimate_3.h>
 
 namespace gmcc {
 
-/// argmax_{d ∈ F3} d1·d2·d3, certified (MATH §1d.5).
+/// argmax_{d ∈ F3} d1·d2·d3, certified (docs/derivations.md §2.4).
 ///
 /// log(d1·d2·d3) is strictly concave on the open octant, so the maximiser is unique (when the
 /// maximum is > 0). It is a vertex; or, on a facet (or the polygon's plane) n·d = k whose

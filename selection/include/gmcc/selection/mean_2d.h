@@ -9,7 +9,7 @@
 namespace gmcc {
 
 /// The exact area centroid of F (gmcc::centroid): ∫_F m dA / ∫_F dA. Degenerate F: a segment
-/// gives its midpoint, a point itself (SPEC §2). Rational, exact.
+/// gives its midpoint, a point itself (docs/math.md §2). Rational, exact.
 /// \pre F is not empty. Complexity O(n).
 MapEstimate mean_2d(const ConvexSet2& F);
 

@@ -1,7 +1,7 @@
 #pragma once
 /// \file mean_3d.h
 /// The 3-D mean of Finlayson & Hordley (1999) §3.2 — the centroid of (cone over F) ∩ unit ball,
-/// projected back to the plane — by any of its three independent routes (SPEC §2).
+/// projected back to the plane — by any of its three independent routes (docs/math.md §2).
 
 #include <gmcc/selection/mean_3d_analytic.h>
 #include <gmcc/selection/mean_3d_monte_carlo.h>

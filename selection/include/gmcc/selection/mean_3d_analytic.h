@@ -24,16 +24,16 @@ struct AnalyticOptions {
 ///
 /// With p_i = (a_i, b_i, 1) the lifted vertices in order, c_i = p_i × p_{i+1} and
 /// θ_i = atan2(|c_i|, p_i·p_{i+1}), the solid's first moment is ¼τ with
-///   τ = ½ Σ_i θ_i c_i / |c_i|          (Lambert; Arvo 1995, SIGGRAPH; MATH §1a.2)
+///   τ = ½ Σ_i θ_i c_i / |c_i|          (Lambert; Arvo 1995, SIGGRAPH; docs/derivations.md §1.2)
 /// and the map is (τ1/τ3, τ2/τ3): the direction depends neither on the ball's radius nor on the
-/// orientation (MATH §1a.1, §1a.4). c_i and p_i·p_{i+1} are exact rationals, enclosed before any
-/// rounding; the result is an enclosure, so `error_bounds` are rigorous (the extended-precision
-/// fast path relies on the x87 fpatan's < 1 ulp error and allows 4 ulps), and `map` is, per
-/// component, the correctly rounded double (`correctly_rounded`; false only at the precision cap
-/// or a forced precision, with a `note`).
-/// Degenerate F (SPEC §2, MATH §1a.6): a segment gives the perspective of the bisector
-/// u1/|u1| + u2/|u2| of its end rays (the centroid of the planar fan ∩ unit disk); a point is
-/// itself (exact). A forced precision too low to bound the quotient within the doubles (τ3's
+/// orientation (docs/derivations.md §1.1, §1.4). c_i and p_i·p_{i+1} are exact rationals, enclosed
+/// before any rounding; the result is an enclosure, so `error_bounds` are rigorous (the
+/// extended-precision fast path relies on the x87 fpatan's < 1 ulp error and allows 4 ulps), and
+/// `map` is, per component, the correctly rounded double (`correctly_rounded`; false only at the
+/// precision cap or a forced precision, with a `note`).
+/// Degenerate F (docs/math.md §2, docs/derivations.md §1.5): a segment gives the perspective of the
+/// bisector u1/|u1| + u2/|u2| of its end rays (the centroid of the planar fan ∩ unit disk); a point
+/// is itself (exact). A forced precision too low to bound the quotient within the doubles (τ3's
 /// enclosure holding 0, or nearly) gives an estimate that is not `valid`, with a note; the
 /// automatic precision doubles until it is tight instead.
 /// \pre F is not empty. Complexity O(n) interval operations.

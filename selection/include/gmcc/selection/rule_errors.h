@@ -28,7 +28,8 @@ struct RuleErrors {
 inline constexpr double rule_errors_accuracy = 0x1p-36;
 
 /// Errors of the max-area map (§3.1), the 2-D mean (§3.2) and the 3-D mean by its closed form
-/// (§3.3, MATH §1a) against a known true map, for F given by feasible_polygon, in that order.
+/// (§3.3, docs/derivations.md §1) against a known true map, for F given by feasible_polygon, in
+/// that order.
 ///
 /// Every value is computed in midpoint–radius double intervals (enclosure.h) from F's certified
 /// vertex enclosures: the max-area map is the candidate (vertex, or the stationary point
@@ -36,8 +37,8 @@ inline constexpr double rule_errors_accuracy = 0x1p-36;
 /// certainly above all others' (the maximiser is unique: m1·m2 is strictly quasi-concave on the
 /// quadrant); the 2-D mean the fan centroid; the 3-D mean τ = ½ Σ θ_i c_i/|c_i| with θ/|c|
 /// enclosed by its monotonicity (no cancellation for short edges); the worst case the largest
-/// vertex angle (every vertex certainly at an acute angle to the map: MATH §1e). The map that
-/// is scored is each rule's exact map (for the 3-D mean, the exact irrational one).
+/// vertex angle (every vertex certainly at an acute angle to the map: docs/derivations.md §3.1).
+/// The map that is scored is each rule's exact map (for the 3-D mean, the exact irrational one).
 ///
 /// \returns nothing when F is not enclosed (degenerate or out of the filter's range), when a
 /// decision is uncertain (near-tied max-area candidates, a stationary point at an edge's end, a

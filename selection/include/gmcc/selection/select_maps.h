@@ -18,9 +18,9 @@ struct Selection {
   /// worst_case_map_deg(F, estimate), at the estimate's double map when it is not rational;
   /// absent when the estimate is not valid (Monte Carlo with too few samples).
   std::optional<double> worst_case_deg;
-  /// worst_case_illuminant_deg(F, estimate, c): the same in illuminant space (MATH §1e, exact
-  /// edge quartics); absent when the estimate is not valid or F or the map touches an axis
-  /// (an illuminant c ⊘ (m, 1) needs m > 0).
+  /// worst_case_illuminant_deg(F, estimate, c): the same in illuminant space
+  /// (docs/derivations.md §3.2, exact edge quartics); absent when the estimate is not valid or F
+  /// or the map touches an axis (an illuminant c ⊘ (m, 1) needs m > 0).
   std::optional<double> worst_case_illuminant_deg;
 };
 

@@ -1,8 +1,8 @@
 #pragma once
 /// \file worst_case_illuminant.h
 /// Worst-case illuminant recovery error of a selection: the largest angle between the illuminant
-/// it implies and the illuminant implied by any map of the feasible set (MATH §1e, illuminant
-/// space; the measure of Hordley & Finlayson 2006 [Hordley2006Reevaluation]).
+/// it implies and the illuminant implied by any map of the feasible set (docs/derivations.md §3.2,
+/// illuminant space; the measure of Hordley & Finlayson 2006 [Hordley2006Reevaluation]).
 
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/convex_set.h>
@@ -25,9 +25,9 @@ struct IlluminantWorstCase {
 /// max over x ∈ F of ∠(c ⊘ (m, 1), c ⊘ (x, 1)) for the canonical illuminant c.
 ///
 /// The vertex rule of worst_case_map_deg is not exact here: the componentwise reciprocal does not
-/// preserve convexity (MATH §1e gives a 3.5° counter-example). The maximum lies on ∂F (the angle
-/// to a fixed direction has no interior maximum on a region of the positive octant). On an edge
-/// x(t) = p + t(q − p), t ∈ [0, 1], the implied illuminant has direction
+/// preserve convexity (docs/derivations.md §3.2 gives a 3.5° counter-example). The maximum lies on
+/// ∂F (the angle to a fixed direction has no interior maximum on a region of the positive octant).
+/// On an edge x(t) = p + t(q − p), t ∈ [0, 1], the implied illuminant has direction
 /// v(t) = (c1·b(t), c2·a(t), c3·a(t)·b(t)) (c ⊘ (a, b, 1) times a·b > 0), and with e the
 /// estimate's illuminant the angle is stationary where (e·v′)|v|² − (e·v)(v·v′) = 0, a quartic
 /// (its t⁵ terms cancel; the code checks this). Its coefficients are built exactly in ℚ, its

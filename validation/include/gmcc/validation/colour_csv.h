@@ -1,6 +1,6 @@
 #pragma once
 /// \file colour_csv.h
-/// Reading colour files: one linear RGB per line, numbers read exactly (SPEC §5).
+/// Reading colour files: one linear RGB per line, numbers read exactly (docs/cli.md "Input files").
 
 #include <gmcc/geometry/colour.h>
 #include <gmcc/validation/input_error.h>

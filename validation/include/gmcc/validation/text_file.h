@@ -22,15 +22,22 @@ struct TextFileRules {
   std::size_t max_bytes;  ///< larger files are rejected
   std::string noun;       ///< "colour file": "is a directory, not a colour file", "limit for colour files"
   std::string expected;   ///< "text lines r,g,b": "binary data (a NUL byte): expected text lines r,g,b"
+  bool binary = false;    ///< true: NUL bytes are data (an image file), not an error
 };
 
 /// The bytes of the file at `path`. A regular file's size is checked before reading; anything
 /// else is read as a stream until end of file, with the size limit applied as it grows. A named
 /// FIFO that no program has opened for writing is waited for up to fifo_writer_wait_seconds;
 /// once a writer is there, the read waits for it as long as it keeps the FIFO open.
+/// The file's path, size and SHA-256 are recorded for provenance (file_digest.h).
 /// \throws InputError naming the file (and, for a NUL byte, its 1-based line): missing or
 ///         unreadable, a directory or socket, larger than rules.max_bytes, holding a NUL byte,
 ///         a FIFO with no writer.
 std::string read_text_file(const std::string& path, const TextFileRules& rules);
+
+/// The bytes of a binary file (an image): read_text_file with rules.binary set, so that only the
+/// size limit applies to the content. Recorded for provenance like every input.
+/// \throws InputError as read_text_file, except for NUL bytes.
+std::string read_binary_file(const std::string& path, std::size_t max_bytes, const std::string& noun);
 
 }  // namespace gmcc

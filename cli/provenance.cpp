@@ -1,0 +1,124 @@
+#include "provenance.h"
+
+#include <gmcc/validation/build_info.h>
+#include <gmcc/validation/file_digest.h>
+
+#include <set>
+
+namespace gmcc::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+struct Command {
+  std::string name;  // "select", "reproduce synthetic"
+  Json options = Json::object();
+};
+
+Command& recorded() {
+  static Command c;
+  return c;
+}
+
+// Options that say where output goes or how long the run may take, not what it
+// computes.
+const std::set<std::string>& not_recorded() {
+  static const std::set<std::string> names{"--csv",          "--plot",  "--scenes-out",
+                                           "--out",          "--shard", "--time-limit",
+                                           "--memory-limit", "--help",  "--version"};
+  return names;
+}
+
+// The options of one (sub)command: given ones with their values, the others
+// with their default when CLI11 knows it.
+void collect(const CLI::App& app, Json& options) {
+  for (const CLI::Option* opt : app.get_options()) {
+    if (opt->get_lnames().empty()) continue;  // positional or short-only: none in gmcc
+    const std::string name = "--" + opt->get_lnames().front();
+    if (not_recorded().count(name)) continue;
+    if (opt->count() > 0) {
+      const std::vector<std::string>& results = opt->results();
+      if (opt->get_type_size() == 0) {  // a flag
+        options[name] = true;
+      } else {
+        std::string joined;
+        for (const std::string& r : results) joined += (joined.empty() ? "" : ",") + r;
+        options[name] = joined;
+      }
+    } else if (opt->get_type_size() == 0) {
+      options[name] = false;
+    } else if (!opt->get_default_str().empty()) {
+      options[name] = opt->get_default_str();
+    }
+  }
+}
+
+}  // namespace
+
+void record_command(const CLI::App& app) {
+  Command c;
+  Json options = Json::object();
+  collect(app,
+          options);  // the global options (none recorded today but future ones)
+  const CLI::App* current = &app;
+  for (;;) {
+    const std::vector<const CLI::App*> subs =
+        current->get_subcommands([](const CLI::App* a) { return a->parsed(); });
+    if (subs.empty()) break;
+    current = subs.front();
+    c.name += (c.name.empty() ? "" : " ") + current->get_name();
+    collect(*current, options);
+  }
+  c.options = std::move(options);
+  recorded() = std::move(c);
+}
+
+Json provenance_json() {
+  Json p;
+  p["software"] = "gmcc";
+  p["version"] = std::string(gmcc_version());
+  p["commit"] = std::string(gmcc_commit());
+  p["command"] = recorded().name;
+  p["options"] = recorded().options;
+  Json inputs = Json::array();
+  for (const FileDigest& f : files_read())
+    inputs.push_back(Json{{"path", f.path}, {"bytes", f.bytes}, {"sha256", f.sha256}});
+  p["inputs"] = std::move(inputs);
+  return p;
+}
+
+std::string provenance_csv_line() {
+  return "# gmcc-provenance: " + provenance_json().dump() + "\n";
+}
+
+std::string version_line() {
+  return "gmcc " + std::string(gmcc_version()) + " (commit " + std::string(gmcc_commit()) + ", " +
+         std::string(gmcc_commit_date()) + ")";
+}
+
+std::string bibtex_of_this_build() {
+  const std::string date(gmcc_commit_date());
+  const std::string year = date.size() >= 4 && date != "unknown" ? date.substr(0, 4) : "";
+  std::string b =
+      "@article{Finlayson1999Selection,\n"
+      "  author  = {Graham D. Finlayson and Steven D. Hordley},\n"
+      "  title   = {Selection for gamut mapping colour constancy},\n"
+      "  journal = {Image and Vision Computing},\n"
+      "  volume  = {17}, number = {8}, pages = {597--604}, year = {1999},\n"
+      "  doi     = {10.1016/S0262-8856(98)00179-6}\n"
+      "}\n"
+      "@software{gmcc,\n"
+      "  title   = {gmcc: gamut-mapping colour constancy with exact "
+      "geometry},\n"
+      "  author  = {{The gmcc developers}},\n"
+      "  version = {" +
+      std::string(gmcc_version()) +
+      "},\n"
+      "  note    = {git commit " +
+      std::string(gmcc_commit()) + "},\n";
+  if (!year.empty()) b += "  year    = {" + year + "},\n  date    = {" + date + "},\n";
+  b += "}\n";
+  return b;
+}
+
+}  // namespace gmcc::cli

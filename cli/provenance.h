@@ -1,0 +1,34 @@
+#pragma once
+// Provenance of every output the command line writes (docs/cli.md
+// "Provenance"): the gmcc version and git commit of the build, the command and
+// its content-determining options (with their defaults, seeds included), and
+// the size and SHA-256 of every input file read. Output destinations (--csv,
+// --plot, --scenes-out, ...), --shard and the resource limits are not recorded:
+// they do not change what is written, so a merged sharded run and the whole run
+// carry the same record.
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace gmcc::cli {
+
+/// Remember the parsed command line (call once, after parsing).
+void record_command(const CLI::App& app);
+
+/// The record: {"software", "version", "commit", "command", "options",
+/// "inputs"}, inputs being the files read so far.
+nlohmann::ordered_json provenance_json();
+
+/// The record as one CSV comment line, "# gmcc-provenance: {compact JSON}\n",
+/// for the top of a CSV file (gmcc's readers, and pandas with comment='#', skip
+/// it).
+std::string provenance_csv_line();
+
+/// "gmcc 0.2.0 (commit <hash>, <date>)".
+std::string version_line();
+
+/// A BibTeX entry citing this build: version, commit and commit date.
+std::string bibtex_of_this_build();
+
+}  // namespace gmcc::cli

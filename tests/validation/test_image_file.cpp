@@ -1,0 +1,293 @@
+// Image files (image_file.h) and pixel selection (image_pixels.h): round trips
+// through the project's own encoders and libpng's, samples read as stored (no
+// gamma), a clear message for each kind of bad file, and the pixel rules
+// against hand-computed counts and an independent point-in-polygon test.
+#include <gmcc/validation/image_file.h>
+#include <gmcc/validation/image_pixels.h>
+#include <gmcc/validation/mondrian.h>
+#include <png.h>
+#include <tiffio.h>
+
+#include <boost/test/unit_test.hpp>
+#include <cstdio>
+#include <random>
+#include <set>
+#include <string>
+
+using namespace gmcc;
+
+namespace {
+
+RgbImage ramp(std::size_t w, std::size_t h, int bits) {
+  RgbImage im;
+  im.width = w;
+  im.height = h;
+  im.bits = bits;
+  for (std::size_t i = 0; i < w * h * 3; ++i)
+    im.samples.push_back(static_cast<std::uint16_t>((i * 7919 + 13) % (bits == 8 ? 256 : 65536)));
+  return im;
+}
+
+std::string error_of(const std::string& bytes) {
+  try {
+    decode_image(bytes, "i.png");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// libpng's simplified writer (8-bit; it writes an sRGB chunk, which gmcc must
+// ignore).
+std::string png8(png_uint_32 format, const std::vector<png_byte>& pixels, png_uint_32 w,
+                 png_uint_32 h) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  image.width = w;
+  image.height = h;
+  image.format = format;
+  png_alloc_size_t size = 0;
+  BOOST_REQUIRE(png_image_write_to_memory(&image, nullptr, &size, 0, pixels.data(), 0, nullptr));
+  std::string out(size, '\0');
+  BOOST_REQUIRE(png_image_write_to_memory(&image, out.data(), &size, 0, pixels.data(), 0, nullptr));
+  out.resize(size);
+  return out;
+}
+
+// A one-channel TIFF, written to a temporary file by libtiff.
+std::string grey_tiff() {
+  char name[] = "/tmp/gmcc_test_grey_XXXXXX";
+  const int fd = mkstemp(name);
+  BOOST_REQUIRE(fd >= 0);
+  close(fd);
+  TIFF* t = TIFFOpen(name, "w");
+  BOOST_REQUIRE(t);
+  TIFFSetField(t, TIFFTAG_IMAGEWIDTH, 2u);
+  TIFFSetField(t, TIFFTAG_IMAGELENGTH, 1u);
+  TIFFSetField(t, TIFFTAG_SAMPLESPERPIXEL, 1);
+  TIFFSetField(t, TIFFTAG_BITSPERSAMPLE, 16);
+  TIFFSetField(t, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_MINISBLACK);
+  std::uint16_t row[2] = {1, 2};
+  TIFFWriteScanline(t, row, 0, 0);
+  TIFFClose(t);
+  std::FILE* f = std::fopen(name, "rb");
+  std::string bytes;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) bytes.append(buf, n);
+  std::fclose(f);
+  std::remove(name);
+  return bytes;
+}
+
+// Independent of polygon_cover: is p inside the polygon or on its boundary?
+// (exact; even–odd by a ray to +x, with points on an edge decided first)
+bool inside_or_on(const std::vector<Point2>& poly, const Point2& p) {
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point2& a = poly[i];
+    const Point2& b = poly[(i + 1) % n];
+    const Rational cross = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+    if (cross == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
+        std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y))
+      return true;
+  }
+  bool in = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point2& a = poly[i];
+    const Point2& b = poly[(i + 1) % n];
+    if ((a.y > p.y) != (b.y > p.y)) {
+      const Rational x = a.x + (b.x - a.x) * (p.y - a.y) / (b.y - a.y);
+      if (p.x < x) in = !in;
+    }
+  }
+  return in;
+}
+
+Rational quarter(int k) {
+  Rational q(k, 4);
+  q.canonicalize();  // gmcc's rationals are always in lowest terms
+  return q;
+}
+
+std::vector<Point2> square(Rational x0, Rational y0, Rational x1, Rational y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(image_file)
+
+BOOST_AUTO_TEST_CASE(png_and_tiff_round_trips) {
+  const RgbImage im = ramp(7, 5, 16);
+  for (const std::string& bytes : {encode_png16(im), encode_tiff16(im)}) {
+    const RgbImage back = decode_image(bytes, "x");
+    BOOST_TEST(back.width == 7u);
+    BOOST_TEST(back.height == 5u);
+    BOOST_TEST(back.bits == 16);
+    BOOST_TEST(back.samples == im.samples);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(eight_bit_png_read_as_stored) {
+  // RGBA 8-bit with an sRGB chunk: the alpha is dropped, the values are not
+  // linearised.
+  const std::vector<png_byte> px = {10, 20, 30, 255, 200, 100, 0, 128};
+  const RgbImage im = decode_image(png8(PNG_FORMAT_RGBA, px, 2, 1), "x");
+  BOOST_TEST(im.bits == 8);
+  BOOST_TEST((im.samples == std::vector<std::uint16_t>{10, 20, 30, 200, 100, 0}));
+}
+
+BOOST_AUTO_TEST_CASE(bad_files_get_clear_messages) {
+  BOOST_TEST(error_of("hello, world") ==
+             "i.png: not a PNG or TIFF image (its first bytes are neither signature)");
+  BOOST_TEST(error_of("") ==
+             "i.png: not a PNG or TIFF image (its first bytes are neither signature)");
+  const std::string png = encode_png16(ramp(40, 40, 16));
+  BOOST_TEST(error_of(png.substr(0, png.size() / 2)).find("i.png: PNG: ") == 0u);
+  BOOST_TEST(error_of(png8(PNG_FORMAT_GRAY, {1, 2}, 2, 1)) ==
+             "i.png: PNG: a grey image: expected three channels r, g, b");
+  BOOST_TEST(error_of(grey_tiff()).find("i.png: photometric interpretation 1: expected RGB (2)") ==
+             0u);
+  const std::string tiff = encode_tiff16(ramp(40, 40, 16));
+  BOOST_TEST(error_of(tiff.substr(0, 200)) != "");
+  BOOST_CHECK_THROW(encode_png16(RgbImage{}), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(polygon_cover_hand_counts) {
+  // Centres (i + ½, j + ½): the square [1,3]² holds 4 of them; [½, 5/2]² has 9
+  // on or inside.
+  auto count = [](const std::vector<bool>& v) { return std::count(v.begin(), v.end(), true); };
+  BOOST_TEST(count(polygon_cover(square(1, 1, 3, 3), 4, 4)) == 4);
+  BOOST_TEST(count(polygon_cover(
+                 square(Rational(1, 2), Rational(1, 2), Rational(5, 2), Rational(5, 2)), 4, 4)) ==
+             9);
+  // A diamond whose corners are centres: (2½,½), (4½,2½), (2½,4½), (½,2½)
+  // covers 1+3+5+3+1.
+  const std::vector<Point2> diamond = {{Rational(5, 2), Rational(1, 2)},
+                                       {Rational(9, 2), Rational(5, 2)},
+                                       {Rational(5, 2), Rational(9, 2)},
+                                       {Rational(1, 2), Rational(5, 2)}};
+  BOOST_TEST(count(polygon_cover(diamond, 6, 6)) == 13);
+  // Partly outside the image: only the pixels inside count.
+  BOOST_TEST(count(polygon_cover(square(-10, -10, 2, 1), 4, 4)) == 2);
+  BOOST_CHECK_THROW(polygon_cover({{0, 0}, {1, 1}}, 4, 4), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(polygon_cover_agrees_with_a_direct_test) {
+  std::mt19937_64 gen(20261123);
+  std::uniform_int_distribution<int> coord(-4,
+                                           28);  // in quarters: -1 to 7 pixels
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<Point2> poly;
+    const int n = 3 + trial % 6;  // convex or not, maybe self-intersecting: even–odd either way
+    for (int k = 0; k < n; ++k) poly.push_back({quarter(coord(gen)), quarter(coord(gen))});
+    const std::vector<bool> cover = polygon_cover(poly, 6, 6);
+    for (int y = 0; y < 6; ++y)
+      for (int x = 0; x < 6; ++x) {
+        const Point2 c{Rational(2 * x + 1, 2), Rational(2 * y + 1, 2)};
+        BOOST_TEST_REQUIRE(cover[static_cast<std::size_t>(y * 6 + x)] == inside_or_on(poly, c),
+                           "trial " << trial << " pixel " << x << "," << y);
+      }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(pixel_rules_hand_counts) {
+  // 4×2 image; pixel values chosen by hand.
+  RgbImage im;
+  im.width = 4;
+  im.height = 2;
+  im.samples = {100, 200, 300, 100, 200, 300, 1000, 5,  5,  50,  60,  70,    // row 0
+                999, 999, 999, 20,  20,  20,  30,   10, 10, 100, 200, 300};  // row 1
+  PixelRules rules;
+  rules.black_level = 20;
+  rules.saturation = 999;  // channel >= 999: pixels (2,0) and (0,1)
+  ImageColours out = image_colours(im, rules);
+  BOOST_TEST(out.counts.pixels == 8u);
+  BOOST_TEST(out.counts.masked == 0u);
+  BOOST_TEST(out.counts.saturated == 2u);
+  BOOST_TEST(out.counts.kept == 6u);
+  // Distinct after the black level: (80,180,280) twice, (30,40,50), (0,0,0),
+  // (10,0,0).
+  BOOST_TEST(out.counts.colours == 4u);
+  BOOST_TEST((out.colours[0] == Colour{80, 180, 280}));
+  BOOST_TEST((out.colours[2] == Colour{0, 0, 0}));
+  BOOST_TEST((out.colours[3] == Colour{10, 0, 0}));
+  // Mask the first column by polygon and pixel (3,1) by the mask image.
+  rules.exclude_polygons = {square(0, 0, 1, 2)};
+  rules.keep.assign(8, true);
+  rules.keep[7] = false;
+  out = image_colours(im, rules);
+  BOOST_TEST(out.counts.masked == 3u);
+  BOOST_TEST(out.counts.saturated == 1u);  // (2,0); (0,1) was masked first
+  BOOST_TEST(out.counts.kept == 4u);
+  // 2×2 binning without masks: block 0 keeps (0,0),(1,0),(1,1) → (80+80+0,
+  // 180+180+0, 280+280+0)/3; block 1 keeps (3,0),(2,1),(3,1) → ((30+10+80)/3,
+  // (40+0+180)/3, (50+0+280)/3).
+  rules = PixelRules{};
+  rules.black_level = 20;
+  rules.saturation = 999;
+  rules.bin = 2;
+  out = image_colours(im, rules);
+  BOOST_TEST(out.counts.colours == 2u);
+  BOOST_TEST((out.colours[0] == Colour{Rational(160, 3), 120, Rational(560, 3)}));
+  BOOST_TEST((out.colours[1] == Colour{40, Rational(220, 3), 110}));
+  rules.bin = 0;
+  BOOST_CHECK_THROW(image_colours(im, rules), std::invalid_argument);
+  rules.bin = 1;
+  rules.keep.assign(3, true);
+  BOOST_CHECK_THROW(image_colours(im, rules), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(mondrian_is_what_it_says) {
+  const std::vector<Colour> colours = {{1, 2, 3}, {Rational(1, 3), 1, 1}, {6, 5, 4}, {0, 1, 1}};
+  MondrianSpec spec;
+  spec.width = 40;
+  spec.height = 30;
+  spec.columns = 4;
+  spec.rows = 3;
+  spec.black_level = 100;
+  spec.peak = 6000;
+  spec.saturated_pixels = 5;
+  spec.seed = 7;
+  const Mondrian m = render_mondrian(colours, spec);
+  BOOST_TEST(render_mondrian(colours, spec).image.samples == m.image.samples);  // reproducible
+  spec.seed = 8;
+  BOOST_TEST(render_mondrian(colours, spec).surfaces != m.surfaces);
+  // The brightest channel shown is black + peak; every cell's samples are black
+  // + round(c·scale).
+  Rational brightest = 0;
+  for (std::size_t s : m.surfaces)
+    brightest = std::max({brightest, colours[s].r, colours[s].g, colours[s].b});
+  const Rational scale = Rational(6000) / brightest;
+  std::uint64_t saturated = 0;
+  for (std::size_t y = 0; y < 30; ++y)
+    for (std::size_t x = 0; x < 40; ++x) {
+      if (m.image.at(x, y, 0) == 65535) {
+        ++saturated;
+        continue;
+      }
+      const Colour& c = colours[m.surfaces[(y / 10) * 4 + x / 10]];
+      const Rational* channel[3] = {&c.r, &c.g, &c.b};
+      for (int k = 0; k < 3; ++k) {
+        const Rational exact = *channel[k] * scale;
+        const Rational stored = Rational(m.image.at(x, y, k)) - 100;
+        BOOST_TEST_REQUIRE(abs(stored - exact) <= Rational(1, 2));
+      }
+    }
+  BOOST_TEST(saturated >= 1u);
+  BOOST_TEST(saturated <= 5u);
+  // Through a PNG file and the pixel rules: the saturated pixels dropped, and
+  // one colour per surface shown.
+  PixelRules rules;
+  rules.black_level = 100;
+  rules.saturation = 65535;
+  const ImageColours out = image_colours(decode_image(encode_png16(m.image), "m.png"), rules);
+  BOOST_TEST(out.counts.saturated == saturated);
+  const std::set<std::size_t> shown(m.surfaces.begin(), m.surfaces.end());
+  BOOST_TEST(out.counts.colours == shown.size());
+  BOOST_CHECK_THROW(render_mondrian({}, spec), std::invalid_argument);
+  spec.peak = 65535;
+  BOOST_CHECK_THROW(render_mondrian(colours, spec), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

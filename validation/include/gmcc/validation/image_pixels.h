@@ -1,0 +1,64 @@
+#pragma once
+/// \file image_pixels.h
+/// From a linear camera image to the colours gmcc's geometry takes
+/// (docs/conventions.md §8), each step explicit and exact, in this order for every pixel:
+///   1. a mask excludes pixels (a polygon such as a calibration chart's corners, and/or a
+///      mask image);
+///   2. saturation: a pixel with any channel at or above the threshold (raw value, before the
+///      black level) is dropped, since its true colour is unknown;
+///   3. black level: subtracted from every channel, negative results clamped to 0;
+///   4. binning (optional): the kept pixels of each b×b block are averaged, exactly, into one
+///      colour;
+///   5. the distinct colours are returned (their convex hull is what the gamut method uses, so
+///      repeated colours add nothing).
+
+#include <gmcc/geometry/colour.h>
+#include <gmcc/geometry/point.h>
+#include <gmcc/validation/image_file.h>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace gmcc {
+
+/// How pixels become colours.
+struct PixelRules {
+  std::uint32_t black_level = 0;            ///< subtracted from every channel
+  std::optional<std::uint32_t> saturation;  ///< drop pixels with a raw channel >= this
+  /// Polygons to exclude, in pixel coordinates: x to the right, y down, pixel
+  /// (i, j) the unit square [i, i+1) × [j, j+1) with its centre at (i + ½, j +
+  /// ½). A pixel whose centre lies inside a polygon or on its boundary
+  /// (even–odd rule; exact arithmetic) is excluded.
+  std::vector<std::vector<Point2>> exclude_polygons;
+  /// Per pixel (row-major, width · height), false to exclude; empty for none.
+  std::vector<bool> keep;
+  std::uint32_t bin = 1;  ///< block size b for binning; 1: every kept pixel is a colour
+};
+
+/// What happened to the pixels, each counted once, in the order of the steps.
+struct PixelCounts {
+  std::uint64_t pixels = 0;     ///< width · height
+  std::uint64_t masked = 0;     ///< excluded by a polygon or the mask image
+  std::uint64_t saturated = 0;  ///< of the rest, dropped for a channel >= saturation
+  std::uint64_t kept = 0;       ///< the rest
+  std::uint64_t colours = 0;    ///< distinct colours returned (after binning)
+};
+
+struct ImageColours {
+  std::vector<Colour> colours;  ///< distinct, in order of first appearance (row-major)
+  PixelCounts counts;
+};
+
+/// Apply the rules to `image`.
+/// \throws std::invalid_argument if bin is 0, `keep` is neither empty nor width
+/// · height long, or
+///         a polygon has fewer than 3 vertices.
+ImageColours image_colours(const RgbImage& image, const PixelRules& rules);
+
+/// The pixels a polygon excludes, row-major (true: centre inside or on the
+/// boundary). Exposed for tests and reports.
+std::vector<bool> polygon_cover(const std::vector<Point2>& polygon, std::size_t width,
+                                std::size_t height);
+
+}  // namespace gmcc

@@ -1,0 +1,344 @@
+#include <gmcc/validation/image_file.h>
+#include <gmcc/validation/text_file.h>
+#include <png.h>
+#include <tiffio.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+namespace gmcc {
+namespace {
+
+// ---- PNG (libpng's classic interface: no transformation but byte order and
+// alpha) ----
+
+struct PngSource {
+  const unsigned char* data;
+  std::size_t size, pos;
+};
+
+struct PngFailure {
+  char message[256] = "";
+};
+
+void png_read_bytes(png_structp png, png_bytep out, png_size_t n) {
+  auto* source = static_cast<PngSource*>(png_get_io_ptr(png));
+  if (n > source->size - source->pos) png_error(png, "truncated: the file ends inside the image");
+  std::memcpy(out, source->data + source->pos, n);
+  source->pos += n;
+}
+
+void png_fail(png_structp png, png_const_charp message) {
+  auto* failure = static_cast<PngFailure*>(png_get_error_ptr(png));
+  std::snprintf(failure->message, sizeof failure->message, "%s", message);
+  png_longjmp(png, 1);
+}
+
+void png_quiet(png_structp, png_const_charp) {}
+
+// Decodes into *out; on failure returns false with failure->message set. The
+// buffers live in the caller, so the longjmp of an error skips no destructor.
+bool decode_png(const std::string& bytes, RgbImage* out, std::vector<unsigned char>* buffer,
+                std::vector<png_bytep>* rows, PngFailure* failure) {
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, failure, png_fail, png_quiet);
+  if (!png) {
+    std::snprintf(failure->message, sizeof failure->message, "libpng could not start");
+    return false;
+  }
+  png_infop info = png_create_info_struct(png);
+  PngSource source{reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), 0};
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
+    if (!failure->message[0])
+      std::snprintf(failure->message, sizeof failure->message, "libpng could not start");
+    return false;
+  }
+  png_set_read_fn(png, &source, png_read_bytes);
+  png_set_user_limits(png, 1u << 20, 1u << 20);
+  png_read_info(png, info);
+  const png_uint_32 width = png_get_image_width(png, info);
+  const png_uint_32 height = png_get_image_height(png, info);
+  const int depth = png_get_bit_depth(png, info);
+  const int type = png_get_color_type(png, info);
+  if (type != PNG_COLOR_TYPE_RGB && type != PNG_COLOR_TYPE_RGB_ALPHA)
+    png_error(png, type == PNG_COLOR_TYPE_PALETTE
+                       ? "a palette image: expected linear RGB samples"
+                       : "a grey image: expected three channels r, g, b");
+  if (depth != 8 && depth != 16) png_error(png, "expected 8 or 16 bits per sample");
+  if (std::size_t(width) * height > max_image_pixels) png_error(png, "more than 2^28 pixels");
+  if (depth == 16) png_set_swap(png);  // big-endian in the file; native order here
+  if (type == PNG_COLOR_TYPE_RGB_ALPHA) png_set_strip_alpha(png);
+  png_read_update_info(png, info);
+  const std::size_t row_bytes = png_get_rowbytes(png, info);
+  buffer->resize(row_bytes * height);
+  rows->resize(height);
+  for (png_uint_32 y = 0; y < height; ++y) (*rows)[y] = buffer->data() + y * row_bytes;
+  png_read_image(png, rows->data());
+  png_read_end(png, nullptr);
+  png_destroy_read_struct(&png, &info, nullptr);
+  out->width = width;
+  out->height = height;
+  out->bits = depth;
+  out->samples.resize(std::size_t(width) * height * 3);
+  for (std::size_t i = 0; i < out->samples.size(); ++i)
+    if (depth == 8) {
+      out->samples[i] = (*buffer)[i];
+    } else {
+      std::uint16_t v;
+      std::memcpy(&v, buffer->data() + 2 * i, 2);
+      out->samples[i] = v;
+    }
+  return true;
+}
+
+void png_write_bytes(png_structp png, png_bytep data, png_size_t n) {
+  static_cast<std::string*>(png_get_io_ptr(png))->append(reinterpret_cast<const char*>(data), n);
+}
+void png_flush_nothing(png_structp) {}
+
+bool encode_png(const RgbImage& image, std::string* out, std::vector<std::uint16_t>* row,
+                PngFailure* failure) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, failure, png_fail, png_quiet);
+  if (!png) return false;
+  png_infop info = png_create_info_struct(png);
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, info ? &info : nullptr);
+    return false;
+  }
+  png_set_write_fn(png, out, png_write_bytes, png_flush_nothing);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
+               static_cast<png_uint_32>(image.height), 16, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  png_set_swap(png);
+  row->resize(image.width * 3);
+  for (std::size_t y = 0; y < image.height; ++y) {
+    std::copy_n(image.samples.begin() + static_cast<std::ptrdiff_t>(y * image.width * 3),
+                image.width * 3, row->begin());
+    png_write_row(png, reinterpret_cast<png_const_bytep>(row->data()));
+  }
+  png_write_end(png, info);
+  png_destroy_write_struct(&png, &info);
+  return true;
+}
+
+// ---- TIFF (libtiff over a memory buffer) ----
+
+thread_local std::string tiff_message;
+
+void tiff_error(const char*, const char* format, va_list args) {
+  char text[512];
+  std::vsnprintf(text, sizeof text, format, args);
+  if (tiff_message.empty()) tiff_message = text;
+}
+void tiff_warning(const char*, const char*, va_list) {}
+
+struct TiffMemory {
+  std::string* writable = nullptr;  // for writing
+  const std::string* readable = nullptr;
+  toff_t pos = 0;
+  std::size_t size() const { return writable ? writable->size() : readable->size(); }
+};
+
+tsize_t tiff_read(thandle_t h, tdata_t data, tsize_t n) {
+  auto* m = static_cast<TiffMemory*>(h);
+  const std::string& s = m->writable ? *m->writable : *m->readable;
+  if (m->pos >= s.size()) return 0;
+  const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(n), s.size() - m->pos);
+  std::memcpy(data, s.data() + m->pos, k);
+  m->pos += k;
+  return static_cast<tsize_t>(k);
+}
+tsize_t tiff_write(thandle_t h, tdata_t data, tsize_t n) {
+  auto* m = static_cast<TiffMemory*>(h);
+  if (!m->writable) return 0;
+  std::string& s = *m->writable;
+  if (s.size() < m->pos + static_cast<std::size_t>(n))
+    s.resize(m->pos + static_cast<std::size_t>(n));
+  std::memcpy(&s[m->pos], data, static_cast<std::size_t>(n));
+  m->pos += static_cast<toff_t>(n);
+  return n;
+}
+toff_t tiff_seek(thandle_t h, toff_t offset, int whence) {
+  auto* m = static_cast<TiffMemory*>(h);
+  const toff_t base = whence == SEEK_SET ? 0 : whence == SEEK_CUR ? m->pos : m->size();
+  m->pos = base + offset;
+  return m->pos;
+}
+int tiff_close(thandle_t) { return 0; }
+toff_t tiff_size(thandle_t h) { return static_cast<TiffMemory*>(h)->size(); }
+int tiff_map(thandle_t, tdata_t*, toff_t*) { return 0; }
+void tiff_unmap(thandle_t, tdata_t, toff_t) {}
+
+struct TiffHandle {
+  TIFF* tif;
+  ~TiffHandle() {
+    if (tif) TIFFClose(tif);
+  }
+};
+
+void install_tiff_handlers() {
+  static const bool once = [] {
+    TIFFSetErrorHandler(tiff_error);
+    TIFFSetWarningHandler(tiff_warning);
+    return true;
+  }();
+  (void)once;
+}
+
+[[noreturn]] void tiff_fail(const std::string& file, const std::string& problem) {
+  std::string why = problem;
+  if (!tiff_message.empty()) why += " (" + tiff_message + ")";
+  tiff_message.clear();
+  throw InputError(file, 0, why);
+}
+
+RgbImage decode_tiff(const std::string& bytes, const std::string& file) {
+  install_tiff_handlers();
+  tiff_message.clear();
+  TiffMemory memory;
+  memory.readable = &bytes;
+  TiffHandle h{TIFFClientOpen(file.c_str(), "rm", &memory, tiff_read, tiff_write, tiff_seek,
+                              tiff_close, tiff_size, tiff_map, tiff_unmap)};
+  if (!h.tif) tiff_fail(file, "not a readable TIFF");
+  std::uint32_t width = 0, height = 0;
+  std::uint16_t spp = 1, bps = 1, photometric = 0, planar = PLANARCONFIG_CONTIG,
+                format = SAMPLEFORMAT_UINT;
+  TIFFGetField(h.tif, TIFFTAG_IMAGEWIDTH, &width);
+  TIFFGetField(h.tif, TIFFTAG_IMAGELENGTH, &height);
+  TIFFGetFieldDefaulted(h.tif, TIFFTAG_SAMPLESPERPIXEL, &spp);
+  TIFFGetFieldDefaulted(h.tif, TIFFTAG_BITSPERSAMPLE, &bps);
+  TIFFGetFieldDefaulted(h.tif, TIFFTAG_PLANARCONFIG, &planar);
+  TIFFGetFieldDefaulted(h.tif, TIFFTAG_SAMPLEFORMAT, &format);
+  if (!TIFFGetField(h.tif, TIFFTAG_PHOTOMETRIC, &photometric)) photometric = 0xffff;
+  if (photometric != PHOTOMETRIC_RGB)
+    tiff_fail(file, "photometric interpretation " + std::to_string(photometric) +
+                        ": expected RGB (2), linear samples r, g, b");
+  if (spp != 3 && spp != 4)
+    tiff_fail(file,
+              std::to_string(spp) + " samples per pixel: expected 3 (r, g, b) or 4 (with alpha)");
+  if (bps != 8 && bps != 16)
+    tiff_fail(file, std::to_string(bps) + " bits per sample: expected 8 or 16");
+  if (format != SAMPLEFORMAT_UINT) tiff_fail(file, "samples are not unsigned integers");
+  if (planar != PLANARCONFIG_CONTIG)
+    tiff_fail(file, "separate colour planes: expected interleaved r, g, b");
+  if (width == 0 || height == 0) tiff_fail(file, "an empty image");
+  if (std::size_t(width) * height > max_image_pixels) tiff_fail(file, "more than 2^28 pixels");
+  RgbImage image;
+  image.width = width;
+  image.height = height;
+  image.bits = bps;
+  image.samples.resize(std::size_t(width) * height * 3);
+  const std::size_t bytes_per_sample = bps / 8;
+  auto store = [&](const unsigned char* pixel, std::size_t x, std::size_t y) {
+    for (int c = 0; c < 3; ++c) {
+      std::uint16_t v;
+      if (bps == 8) {
+        v = pixel[c];
+      } else {
+        std::memcpy(&v, pixel + 2 * c, 2);  // libtiff gives native byte order
+      }
+      image.samples[(y * width + x) * 3 + static_cast<std::size_t>(c)] = v;
+    }
+  };
+  const std::size_t pixel_bytes = spp * bytes_per_sample;
+  if (TIFFIsTiled(h.tif)) {
+    std::uint32_t tw = 0, th = 0;
+    TIFFGetField(h.tif, TIFFTAG_TILEWIDTH, &tw);
+    TIFFGetField(h.tif, TIFFTAG_TILELENGTH, &th);
+    if (tw == 0 || th == 0) tiff_fail(file, "a tiled TIFF without tile sizes");
+    std::vector<unsigned char> tile(static_cast<std::size_t>(TIFFTileSize(h.tif)));
+    if (tile.size() < std::size_t(tw) * th * pixel_bytes) tiff_fail(file, "inconsistent tile size");
+    for (std::uint32_t ty = 0; ty < height; ty += th)
+      for (std::uint32_t tx = 0; tx < width; tx += tw) {
+        if (TIFFReadTile(h.tif, tile.data(), tx, ty, 0, 0) < 0)
+          tiff_fail(file, "truncated or corrupt tile data");
+        for (std::uint32_t y = ty; y < std::min(height, ty + th); ++y)
+          for (std::uint32_t x = tx; x < std::min(width, tx + tw); ++x)
+            store(tile.data() + (std::size_t(y - ty) * tw + (x - tx)) * pixel_bytes, x, y);
+      }
+  } else {
+    std::vector<unsigned char> line(static_cast<std::size_t>(TIFFScanlineSize(h.tif)));
+    if (line.size() < std::size_t(width) * pixel_bytes) tiff_fail(file, "inconsistent row size");
+    for (std::uint32_t y = 0; y < height; ++y) {
+      if (TIFFReadScanline(h.tif, line.data(), y, 0) < 0)
+        tiff_fail(file, "truncated or corrupt at row " + std::to_string(y + 1));
+      for (std::uint32_t x = 0; x < width; ++x) store(line.data() + x * pixel_bytes, x, y);
+    }
+  }
+  tiff_message.clear();
+  return image;
+}
+
+void check_encodable(const RgbImage& image) {
+  if (image.width == 0 || image.height == 0 || image.width > (1u << 20) ||
+      image.height > (1u << 20) || image.samples.size() != image.width * image.height * 3)
+    throw std::invalid_argument("encode: an empty image, or samples that do not match its size");
+}
+
+}  // namespace
+
+RgbImage decode_image(const std::string& bytes, const std::string& file) {
+  static const char png_signature[] = "\x89PNG\r\n\x1a\n";
+  if (bytes.compare(0, 8, png_signature, 8) == 0) {
+    RgbImage image;
+    std::vector<unsigned char> buffer;
+    std::vector<png_bytep> rows;
+    PngFailure failure;
+    if (!decode_png(bytes, &image, &buffer, &rows, &failure))
+      throw InputError(file, 0, std::string("PNG: ") + failure.message);
+    return image;
+  }
+  if (bytes.compare(0, 4, "II*\0", 4) == 0 || bytes.compare(0, 4, "MM\0*", 4) == 0 ||
+      bytes.compare(0, 4, "II+\0", 4) == 0 || bytes.compare(0, 4, "MM\0+", 4) == 0)
+    return decode_tiff(bytes, file);
+  throw InputError(file, 0, "not a PNG or TIFF image (its first bytes are neither signature)");
+}
+
+RgbImage read_image(const std::string& path) {
+  return decode_image(read_binary_file(path, max_image_file_bytes, "image file"), path);
+}
+
+std::string encode_png16(const RgbImage& image) {
+  check_encodable(image);
+  std::string out;
+  std::vector<std::uint16_t> row;
+  PngFailure failure;
+  if (!encode_png(image, &out, &row, &failure))
+    throw std::runtime_error(std::string("PNG encoding failed: ") + failure.message);
+  return out;
+}
+
+std::string encode_tiff16(const RgbImage& image) {
+  check_encodable(image);
+  install_tiff_handlers();
+  tiff_message.clear();
+  std::string out;
+  TiffMemory memory;
+  memory.writable = &out;
+  {
+    TiffHandle h{TIFFClientOpen("memory", "w", &memory, tiff_read, tiff_write, tiff_seek,
+                                tiff_close, tiff_size, tiff_map, tiff_unmap)};
+    if (!h.tif) throw std::runtime_error("TIFF encoding failed: " + tiff_message);
+    TIFFSetField(h.tif, TIFFTAG_IMAGEWIDTH, static_cast<std::uint32_t>(image.width));
+    TIFFSetField(h.tif, TIFFTAG_IMAGELENGTH, static_cast<std::uint32_t>(image.height));
+    TIFFSetField(h.tif, TIFFTAG_SAMPLESPERPIXEL, 3);
+    TIFFSetField(h.tif, TIFFTAG_BITSPERSAMPLE, 16);
+    TIFFSetField(h.tif, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_RGB);
+    TIFFSetField(h.tif, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
+    TIFFSetField(h.tif, TIFFTAG_COMPRESSION, COMPRESSION_NONE);
+    TIFFSetField(h.tif, TIFFTAG_ROWSPERSTRIP, 16);
+    std::vector<std::uint16_t> row(image.width * 3);
+    for (std::size_t y = 0; y < image.height; ++y) {
+      std::copy_n(image.samples.begin() + static_cast<std::ptrdiff_t>(y * image.width * 3),
+                  image.width * 3, row.begin());
+      if (TIFFWriteScanline(h.tif, row.data(), static_cast<std::uint32_t>(y), 0) < 0)
+        throw std::runtime_error("TIFF encoding failed: " + tiff_message);
+    }
+  }  // TIFFClose writes the directory
+  return out;
+}
+
+}  // namespace gmcc

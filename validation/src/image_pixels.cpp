@@ -1,0 +1,154 @@
+#include <gmcc/validation/image_pixels.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+
+namespace gmcc {
+namespace {
+
+constexpr long kFar = 1L << 40;  // beyond any image side: clamping here changes no pixel
+
+// floor(q) (up = false) or ceil(q) (up = true), clamped to [-kFar, kFar].
+long long rounded(const Rational& q, bool up) {
+  mpz_class r;
+  (up ? mpz_cdiv_q : mpz_fdiv_q)(r.get_mpz_t(), q.get_num_mpz_t(), q.get_den_mpz_t());
+  if (r > kFar) return kFar;
+  if (r < -kFar) return -kFar;
+  return r.get_si();
+}
+long long floor_of(const Rational& q) { return rounded(q, false); }
+long long ceil_of(const Rational& q) { return rounded(q, true); }
+
+}  // namespace
+
+std::vector<bool> polygon_cover(const std::vector<Point2>& polygon, std::size_t width,
+                                std::size_t height) {
+  if (polygon.size() < 3) throw std::invalid_argument("a mask polygon needs at least 3 vertices");
+  std::vector<bool> cover(width * height, false);
+  const std::size_t n = polygon.size();
+  // Row j's centres lie on y = j + ½. The centres inside (even–odd) lie between
+  // pairs of the sorted crossings of the non-horizontal edges, counted
+  // half-open at their lower end so that a vertex on the line is crossed once
+  // or not at all; the boundary is added by closed intervals: crossings
+  // themselves, vertices on the line, and horizontal edges on it.
+  Rational y_min = polygon[0].y, y_max = polygon[0].y;
+  for (const Point2& p : polygon) {
+    y_min = std::min(y_min, p.y);
+    y_max = std::max(y_max, p.y);
+  }
+  const long long first = std::max<long long>(0, ceil_of(y_min - Rational(1, 2)));
+  const long long last =
+      std::min<long long>(static_cast<long long>(height) - 1, floor_of(y_max - Rational(1, 2)));
+  std::vector<Rational> crossings;
+  auto mark = [&](long long row, const Rational& lo, const Rational& hi) {
+    const long long a = std::max<long long>(0, ceil_of(lo - Rational(1, 2)));
+    const long long b =
+        std::min<long long>(static_cast<long long>(width) - 1, floor_of(hi - Rational(1, 2)));
+    for (long long x = a; x <= b; ++x) cover[static_cast<std::size_t>(row) * width + x] = true;
+  };
+  for (long long row = first; row <= last; ++row) {
+    const Rational y = Rational(static_cast<long>(2 * row + 1), 2);
+    crossings.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point2& a = polygon[i];
+      const Point2& b = polygon[(i + 1) % n];
+      if (a.y == y && b.y == y) {
+        mark(row, std::min(a.x, b.x), std::max(a.x, b.x));
+        continue;
+      }
+      if (a.y == y) mark(row, a.x, a.x);
+      if ((a.y <= y) != (b.y <= y)) {
+        const Rational x = a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y);
+        crossings.push_back(x);
+      }
+    }
+    std::sort(crossings.begin(), crossings.end());
+    for (std::size_t k = 0; k + 1 < crossings.size(); k += 2)
+      mark(row, crossings[k], crossings[k + 1]);
+  }
+  return cover;
+}
+
+ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
+  if (rules.bin == 0) throw std::invalid_argument("the binning block size must be at least 1");
+  const std::size_t w = image.width, h = image.height;
+  if (!rules.keep.empty() && rules.keep.size() != w * h)
+    throw std::invalid_argument("the mask has " + std::to_string(rules.keep.size()) +
+                                " pixels, the image " + std::to_string(w * h));
+  std::vector<bool> excluded(w * h, false);
+  for (const std::vector<Point2>& polygon : rules.exclude_polygons) {
+    const std::vector<bool> cover = polygon_cover(polygon, w, h);
+    for (std::size_t i = 0; i < cover.size(); ++i)
+      if (cover[i]) excluded[i] = true;
+  }
+  if (!rules.keep.empty())
+    for (std::size_t i = 0; i < w * h; ++i)
+      if (!rules.keep[i]) excluded[i] = true;
+
+  ImageColours out;
+  out.counts.pixels = static_cast<std::uint64_t>(w) * h;
+  const std::uint32_t b = rules.bin;
+  const std::size_t bw = (w + b - 1) / b, bh = (h + b - 1) / b;
+  // Per block: the sums of the kept pixels' channels (exact integers) and their
+  // number.
+  struct Block {
+    std::uint64_t sum[3] = {0, 0, 0};
+    std::uint64_t n = 0;
+  };
+  std::vector<Block> blocks(b == 1 ? 0 : bw * bh);
+  std::unordered_map<std::uint64_t, bool> seen;  // b = 1: distinct integer triples
+  for (std::size_t y = 0; y < h; ++y)
+    for (std::size_t x = 0; x < w; ++x) {
+      const std::size_t i = y * w + x;
+      if (excluded[i]) {
+        ++out.counts.masked;
+        continue;
+      }
+      std::uint32_t v[3];
+      bool saturated = false;
+      for (int c = 0; c < 3; ++c) {
+        v[c] = image.samples[3 * i + static_cast<std::size_t>(c)];
+        if (rules.saturation && v[c] >= *rules.saturation) saturated = true;
+      }
+      if (saturated) {
+        ++out.counts.saturated;
+        continue;
+      }
+      ++out.counts.kept;
+      for (std::uint32_t& c : v) c = c > rules.black_level ? c - rules.black_level : 0;
+      if (b == 1) {
+        const std::uint64_t key = (std::uint64_t(v[0]) << 32) | (std::uint64_t(v[1]) << 16) | v[2];
+        if (seen.emplace(key, true).second)
+          out.colours.push_back({Rational(v[0]), Rational(v[1]), Rational(v[2])});
+      } else {
+        Block& block = blocks[(y / b) * bw + x / b];
+        for (int c = 0; c < 3; ++c) block.sum[c] += v[c];
+        ++block.n;
+      }
+    }
+  if (b != 1) {
+    std::map<std::array<Rational, 3>, bool,
+             bool (*)(const std::array<Rational, 3>&, const std::array<Rational, 3>&)>
+        distinct([](const std::array<Rational, 3>& p, const std::array<Rational, 3>& q) {
+          return std::lexicographical_compare(p.begin(), p.end(), q.begin(), q.end());
+        });
+    for (const Block& block : blocks) {
+      if (block.n == 0) continue;
+      std::array<Rational, 3> mean;
+      for (int c = 0; c < 3; ++c) {
+        mean[c] = Rational(mpz_class(static_cast<unsigned long>(block.sum[c])),
+                           mpz_class(static_cast<unsigned long>(block.n)));
+        mean[c].canonicalize();
+      }
+      if (distinct.emplace(mean, true).second) out.colours.push_back({mean[0], mean[1], mean[2]});
+    }
+  }
+  out.counts.colours = out.colours.size();
+  return out;
+}
+
+}  // namespace gmcc
