@@ -305,41 +305,37 @@ class SineFilter {
     needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
     std::vector<std::array<Rational, 2>> delta;  // δ = x − m of needed[k], exact
     for (std::size_t i : needed) delta.push_back({Rational(vs_[i].x - m_.x), Rational(vs_[i].y - m_.y)});
-    auto slot = [&](std::size_t i) {
-      return static_cast<std::size_t>(std::lower_bound(needed.begin(), needed.end(), i) - needed.begin());
-    };
     for (mpfr_prec_t bits = 128;; bits *= 2) {
       set_constants(bits);
-      std::vector<Interval> at_vertex;  // s at needed[k], and the vertex's own boxes (points)
-      std::vector<std::array<Interval, 4>> point;
-      for (std::size_t k = 0; k < needed.size(); ++k) {
-        const Point2& v = vs_[needed[k]];
-        point.push_back({Interval(v.x, bits), Interval(v.y, bits), Interval(delta[k][0], bits), Interval(delta[k][1], bits)});
-        at_vertex.push_back(sine(point.back()));
-      }
+      // Vertex i as the point box (x1, x2, δ1, δ2), enclosed afresh (only what is left is kept).
+      auto point = [&](std::size_t i) {
+        const std::size_t k = static_cast<std::size_t>(std::lower_bound(needed.begin(), needed.end(), i) - needed.begin());
+        return std::array<Interval, 4>{Interval(vs_[i].x, bits), Interval(vs_[i].y, bits), Interval(delta[k][0], bits),
+                                       Interval(delta[k][1], bits)};
+      };
+      std::vector<Interval> at_vertex;  // s at candidates[k]
+      for (std::size_t i : candidates) at_vertex.push_back(sine(point(i)));
       // The greatest lower end among the candidates: some vertex has s at least this.
-      const Interval* best = &at_vertex[slot(candidates.front())];
-      for (std::size_t i : candidates) {
-        const Interval& si = at_vertex[slot(i)];
-        if (mpfr_cmp(&si.get()->left, &best->get()->left) > 0) best = &si;
-      }
-      mpfr_srcptr floor = &best->get()->left;
+      std::size_t best = 0;
+      for (std::size_t k = 1; k < at_vertex.size(); ++k)
+        if (mpfr_cmp(&at_vertex[k].get()->left, &at_vertex[best].get()->left) > 0) best = k;
+      mpfr_srcptr floor = &at_vertex[best].get()->left;
       const std::size_t before = candidates.size() + edges.size();
       bool precise = true;  // every candidate's s enclosed to a relative 2^-(bits/2)
       std::vector<std::size_t> kept;
-      for (std::size_t i : candidates) {
-        const Interval& si = at_vertex[slot(i)];
-        if (mpfr_cmp(&si.get()->right, floor) < 0) continue;
-        kept.push_back(i);
-        precise = precise && tight(si, static_cast<int>(bits / 2));
+      for (std::size_t k = 0; k < candidates.size(); ++k) {
+        if (mpfr_cmp(&at_vertex[k].get()->right, floor) < 0) continue;
+        kept.push_back(candidates[k]);
+        precise = precise && tight(at_vertex[k], static_cast<int>(bits / 2));
       }
       candidates = std::move(kept);
       kept.clear();
+      std::optional<std::pair<std::size_t, std::array<Interval, 4>>> last;  // the last edge's end
       for (std::size_t i : edges) {
-        const auto& p = point[slot(i)];
-        const auto& q = point[slot((i + 1) % n)];
-        std::array<Interval, 4> box = p;
-        for (int j = 0; j < 4; ++j) mpfi_union(box[j].get(), p[j].get(), q[j].get());
+        std::array<Interval, 4> box = last && last->first == i ? last->second : point(i);
+        const std::size_t j = (i + 1) % n;
+        last.emplace(j, point(j));
+        for (int c = 0; c < 4; ++c) mpfi_union(box[c].get(), box[c].get(), last->second[c].get());
         if (mpfr_cmp(&sine(box).get()->right, floor) >= 0) kept.push_back(i);
       }
       edges = std::move(kept);
