@@ -1,15 +1,17 @@
 #include "json_output.h"
 
+#include "provenance.h"
+
 #include <gmcc/geometry/rational.h>
 
 #include <nlohmann/json.hpp>
 
+#include <charconv>
 #include <cstdio>
 #include <sstream>
 
 namespace gmcc::cli {
 namespace {
-using Json = nlohmann::ordered_json;
 
 Json exact_pair(const Point2& p) { return Json::array({to_string(p.x), to_string(p.y)}); }
 Json approx_pair(const Point2& p) {
@@ -81,9 +83,27 @@ Json constraint_json(const ConstraintReport& c) {
 
 Json exact_number(const Rational& x) { return to_string(x); }
 
+void truth_text(std::ostream& out, const TruthReport& t) {
+  const auto m = to_double_nearest(t.map);
+  out << "against the true light (" << to_string(t.light.r) << ", " << to_string(t.light.g)
+      << ", " << to_string(t.light.b) << "): true map (" << fmt(m[0]) << ", " << fmt(m[1]) << "), "
+      << (t.in_feasible_set ? "inside" : "outside") << " the feasible set\n";
+  auto line = [&out](const char* name, const std::optional<TruthErrors>& e) {
+    if (!e) return;
+    out << "  " << name << "  map error " << fmt(e->map_error_deg) << " deg";
+    if (e->illuminant_error_deg)
+      out << ", illuminant " << fmt(*e->illuminant_error_deg) << " deg, reproduction "
+          << fmt(*e->reproduction_error_deg) << " deg";
+    out << "\n";
+  };
+  line("max-area", t.max_area);
+  line("2-D mean", t.mean_2d);
+  line("3-D mean", t.mean_3d);
+}
+
 Json recovery_json(const RecoveryReport& rec) {
   Json j;
-  j["policy"] = rec.policy;
+  j["policy"] = to_string(rec.policy);
   j["applied"] = rec.applied;
   if (!rec.reason.empty()) j["reason"] = rec.reason;
   if (rec.grown) {
@@ -110,9 +130,38 @@ Json recovery_json(const RecoveryReport& rec) {
   return j;
 }
 
+Json truth_json(const TruthReport& t) {
+  Json j;
+  j["light"] = Json::array({to_string(t.light.r), to_string(t.light.g), to_string(t.light.b)});
+  j["map"] = approx_pair(t.map);
+  j["map_exact"] = exact_pair(t.map);
+  j["in_feasible_set"] = t.in_feasible_set;
+  Json errors = Json::object();
+  auto add = [&errors](const char* rule, const std::optional<TruthErrors>& e) {
+    if (!e) return;
+    Json x;
+    x["map_error_deg"] = e->map_error_deg;
+    x["illuminant_error_deg"] = e->illuminant_error_deg ? Json(*e->illuminant_error_deg) : Json();
+    x["reproduction_error_deg"] = e->reproduction_error_deg ? Json(*e->reproduction_error_deg) : Json();
+    errors[rule] = x;
+  };
+  add("max_area", t.max_area);
+  add("mean_2d", t.mean_2d);
+  add("mean_3d", t.mean_3d);
+  j["errors"] = errors;
+  return j;
+}
+
+// Shortest text that reads back as the same double: distinct doubles print distinctly.
+std::string shortest(double x) {
+  char buf[64];
+  const auto end = std::to_chars(buf, buf + sizeof buf, x).ptr;
+  return std::string(buf, end);
+}
+
 }  // namespace
 
-std::string select_json(const SelectReport& r) {
+Json scene_json(const PreparedCanonical& c, const SceneResult& r, bool canonical_members) {
   Json j;
   j["feasible_set"] = convex_set_json(r.feasible);
   if (!r.empty_reason.empty()) j["feasible_set"]["reason"] = r.empty_reason;
@@ -123,29 +172,56 @@ std::string select_json(const SelectReport& r) {
   if (r.selections.mean_2d) sel["mean_2d"] = selection_json(*r.selections.mean_2d);
   if (r.selections.mean_3d) sel["mean_3d"] = selection_json(*r.selections.mean_3d);
   j["selections"] = sel;
-  Json cg = convex_set_json(r.canonical_gamut);
-  cg["expansion"] = {{"policy", to_string(r.expansion.policy)},
-                     {"factor", to_string(r.expansion.factor)}};
-  j["canonical_gamut"] = cg;
-  j["canonical_illuminant"] = Json::array({to_string(r.canonical_illuminant.r),
-                                           to_string(r.canonical_illuminant.g),
-                                           to_string(r.canonical_illuminant.b)});
-  j["input"] = {{"canonical_colours", r.canonical_colours},
-                {"canonical_dropped_nonpositive_blue", r.canonical_dropped},
-                {"image_colours", r.image_colours},
-                {"image_dropped_nonpositive_blue", r.image_dropped}};
+  if (r.truth) j["truth"] = truth_json(*r.truth);
+  if (canonical_members) {
+    Json cg = convex_set_json(c.gamut);
+    cg["expansion"] = {{"policy", to_string(c.options.expansion.policy)},
+                       {"factor", to_string(c.options.expansion.factor)}};
+    j["canonical_gamut"] = cg;
+    const Colour& ci = c.options.canonical_illuminant;
+    j["canonical_illuminant"] = Json::array({to_string(ci.r), to_string(ci.g), to_string(ci.b)});
+    j["input"] = {{"canonical_colours", c.colours},
+                  {"canonical_dropped_nonpositive_blue", c.dropped},
+                  {"image_colours", r.image_colours},
+                  {"image_dropped_nonpositive_blue", r.image_dropped}};
+  } else {
+    j["input"] = {{"image_colours", r.image_colours},
+                  {"image_dropped_nonpositive_blue", r.image_dropped}};
+  }
+  return j;
+}
+
+void finish_document(Json& document) {
+  // Provenance first (version, commit, options, input checksums: docs/cli.md "Provenance"),
+  // once for every JSON document select writes.
+  Json out;
+  out["provenance"] = provenance_json();
+  for (auto& [key, value] : document.items()) out[key] = std::move(value);
+  document = std::move(out);
+}
+
+std::string json_lines_preamble() {
+  Json line;
+  line["provenance"] = provenance_json();
+  return line.dump() + "\n";
+}
+
+std::string select_json(const PreparedCanonical& c, const SceneResult& r) {
+  Json j = scene_json(c, r, true);
+  finish_document(j);
   return j.dump(2) + "\n";
 }
 
-std::string select_text(const SelectReport& r) {
+std::string select_text(const PreparedCanonical& c, const SceneResult& r) {
   std::ostringstream out;
-  out << "canonical gamut: " << to_string(r.canonical_gamut.kind) << ", "
-      << r.canonical_gamut.vertices.size() << " vertices from " << r.canonical_colours
+  const Expansion& expansion = c.options.expansion;
+  out << "canonical gamut: " << to_string(c.gamut.kind) << ", "
+      << c.gamut.vertices.size() << " vertices from " << c.colours
       << " colours";
-  if (r.canonical_dropped) out << " (" << r.canonical_dropped << " with b <= 0 dropped)";
-  if (r.expansion.policy != ExpansionPolicy::none)
-    out << "; expanded by " << to_string(r.expansion.factor) << " ("
-        << to_string(r.expansion.policy) << ")";
+  if (c.dropped) out << " (" << c.dropped << " with b <= 0 dropped)";
+  if (expansion.policy != ExpansionPolicy::none)
+    out << "; expanded by " << to_string(expansion.factor) << " ("
+        << to_string(expansion.policy) << ")";
   out << "\nimage: " << r.image_colours << " colours";
   if (r.image_dropped) out << " (" << r.image_dropped << " with b <= 0 dropped)";
   if (r.constraint)
@@ -155,7 +231,7 @@ std::string select_text(const SelectReport& r) {
         << fmt(to_double_nearest(area(r.constraint->unconstrained)));
   if (r.recovery && r.recovery->applied) {
     out << "\nthe feasible set was empty (" << r.recovery->reason << "); recovered by "
-        << r.recovery->policy << ": ";
+        << to_string(r.recovery->policy) << ": ";
     if (r.recovery->grown)
       out << "canonical gamut grown multiplicatively by "
           << fmt(to_double_nearest(r.recovery->grown->factor)) << " (least factor in ("
@@ -172,15 +248,25 @@ std::string select_text(const SelectReport& r) {
     out << ", " << r.feasible.vertices.size() << " vertices, area "
         << fmt(to_double_nearest(area(r.feasible)));
   out << "\n";
-  for (const Point2& v : r.feasible.vertices) {
-    const auto d = to_double_nearest(v);
-    out << "  (" << fmt(d[0]) << ", " << fmt(d[1]) << ")\n";
+  // Each vertex as the shortest decimals that read back as its nearest doubles; where two
+  // distinct vertices round to the same doubles (a sliver), their exact values too.
+  std::vector<std::array<double, 2>> approx;
+  for (const Point2& v : r.feasible.vertices) approx.push_back(to_double_nearest(v));
+  for (std::size_t i = 0; i < approx.size(); ++i) {
+    out << "  (" << shortest(approx[i][0]) << ", " << shortest(approx[i][1]) << ")";
+    bool shared = false;
+    for (std::size_t k = 0; k < approx.size(); ++k) shared = shared || (k != i && approx[k] == approx[i]);
+    if (shared)
+      out << "  exact (" << to_string(r.feasible.vertices[i].x) << ", "
+          << to_string(r.feasible.vertices[i].y) << ")";
+    out << "\n";
   }
   if (r.feasible.kind == ConvexKind::empty) {
     out << r.empty_reason << "\n";
     if (r.recovery && r.recovery->grown && !r.recovery->grown->found)
       out << "grow-canonical: still empty at factor " << to_string(*r.recovery->grown->empty_below)
           << "\n";
+    if (r.truth) truth_text(out, *r.truth);
     return out.str();
   }
   out << "selections (perspective map d1/d3, d2/d3; worst-case map-space error):\n";
@@ -213,6 +299,7 @@ std::string select_text(const SelectReport& r) {
   line("max-area", *r.selections.max_area);
   line("2-D mean", *r.selections.mean_2d);
   line("3-D mean", *r.selections.mean_3d);
+  if (r.truth) truth_text(out, *r.truth);
   return out.str();
 }
 

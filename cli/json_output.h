@@ -1,51 +1,35 @@
 #pragma once
-// What `gmcc select` prints: the JSON contract of docs/cli.md "JSON output" and a short summary for people.
+// What `gmcc select` prints: the JSON contract of docs/cli.md "JSON output", the batch records of
+// "Batch selection", and a short summary for people.
 
-#include <gmcc/geometry/canonical_gamut.h>
-#include <gmcc/geometry/convex_set.h>
-#include <gmcc/geometry/grow_canonical.h>
-#include <gmcc/geometry/min_violation.h>
-#include <gmcc/selection/select_maps.h>
+#include <gmcc/selection/prepare_canonical.h>
+#include <gmcc/selection/select_scene.h>
+
+#include <nlohmann/json.hpp>
 
 #include <cstddef>
-#include <optional>
 #include <string>
 
 namespace gmcc::cli {
 
-/// Finlayson's illumination constraint, when --illuminants is given.
-struct ConstraintReport {
-  std::size_t illuminants = 0;
-  ConvexSet2 maps;           ///< C: hull of the lights' perspective maps
-  ConvexSet2 unconstrained;  ///< F before F ∩ C
-};
+using Json = nlohmann::ordered_json;
 
-/// What --on-empty did. `applied` is false when F was not empty or the policy could not help.
-struct RecoveryReport {
-  std::string policy = "none";
-  std::string reason;  ///< why F was empty
-  bool applied = false;
-  std::optional<GrownFeasibleSet> grown;      ///< grow-canonical
-  Rational precision;                         ///< grow-canonical: bisection precision
-  std::optional<MinViolation> min_violation;  ///< min-violation
-};
+/// The members of one scene's JSON object: feasible_set, constraint, recovery, selections,
+/// truth, and with `canonical_members` canonical_gamut and canonical_illuminant; then input.
+Json scene_json(const PreparedCanonical& canonical, const SceneResult& result, bool canonical_members);
 
-struct SelectReport {
-  Expansion expansion;
-  Colour canonical_illuminant{1, 1, 1};
-  std::size_t canonical_colours = 0, canonical_dropped = 0;
-  std::size_t image_colours = 0, image_dropped = 0;
-  ConvexSet2 canonical_gamut;
-  ConvexSet2 feasible;
-  std::string empty_reason;  ///< why `feasible` is empty (set only then)
-  std::optional<ConstraintReport> constraint;
-  std::optional<RecoveryReport> recovery;
-  Selections selections;
-};
+/// Every JSON document `gmcc select` writes (the one object, 2-D or 3-D) passes here once,
+/// complete, before it is written: the one place where its "provenance" member is to be added
+/// (docs/cli.md "Provenance").
+void finish_document(Json& document);
+
+/// What a JSON Lines output of `gmcc select --images` starts with, before its records: the one
+/// place for its first line {"provenance": …} (docs/cli.md "Provenance"); empty for now.
+std::string json_lines_preamble();
 
 /// One JSON object, pretty-printed, ending in a newline.
-std::string select_json(const SelectReport& report);
+std::string select_json(const PreparedCanonical& canonical, const SceneResult& result);
 /// A short readable summary.
-std::string select_text(const SelectReport& report);
+std::string select_text(const PreparedCanonical& canonical, const SceneResult& result);
 
 }  // namespace gmcc::cli

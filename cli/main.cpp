@@ -3,10 +3,12 @@
 // 3 a resource limit reached (--time-limit, --memory-limit, memory exhausted); a signal ends
 // the run with its default action, temporary files removed (docs/cli.md).
 #include "accuracy.h"
+#include "estimate.h"
 #include "exit_cleanup.h"
 #include "integer_option.h"
 #include "limit_exit.h"
 #include "memory_limit.h"
+#include "merge.h"
 #include "provenance.h"
 #include "reproduce.h"
 #include "select.h"
@@ -82,6 +84,10 @@ int main(int argc, char** argv) {
   CLI::App* accuracy = gmcc::cli::add_accuracy_command(app, accuracy_options);
   gmcc::cli::ReproduceOptions reproduce_options;
   CLI::App* reproduce = gmcc::cli::add_reproduce_command(app, reproduce_options);
+  gmcc::cli::EstimateOptions estimate_options;
+  CLI::App* estimate = gmcc::cli::add_estimate_command(app, estimate_options);
+  gmcc::cli::MergeOptions merge_options;
+  CLI::App* merge = gmcc::cli::add_merge_command(app, merge_options);
   CLI::App* cite = app.add_subcommand(
       "cite", "print a BibTeX entry for this build of gmcc (version, git commit, commit date) "
               "and the paper it implements (docs/cli.md \"Provenance\")");
@@ -113,9 +119,11 @@ int main(int argc, char** argv) {
     gmcc::cli::record_command(app);
     int status = 0;
     if (cite->parsed()) gmcc::cli::write_stdout(gmcc::cli::bibtex_of_this_build());
+    else if (estimate->parsed()) status = gmcc::cli::run_estimate(estimate_options);
     else if (select->parsed()) status = gmcc::cli::run_select(select_options);
     else if (accuracy->parsed()) status = gmcc::cli::run_accuracy(accuracy_options);
     else if (reproduce->parsed()) status = gmcc::cli::run_reproduce(*reproduce, reproduce_options);
+    else if (merge->parsed()) status = gmcc::cli::run_merge(merge_options);
     gmcc::cli::write_stdout("");  // what a command wrote without write_stdout, flushed and checked
     return status;
   } catch (const gmcc::InputError& e) {

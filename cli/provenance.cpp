@@ -21,11 +21,12 @@ Command& recorded() {
 }
 
 // Options that say where output goes or how long the run may take, not what it
-// computes.
+// computes (--threads: results do not depend on it; --json: reproduce's is a
+// file name, select's a format flag the output shows by itself).
 const std::set<std::string>& not_recorded() {
-  static const std::set<std::string> names{"--csv",          "--plot",  "--scenes-out",
-                                           "--out",          "--shard", "--time-limit",
-                                           "--memory-limit", "--help",  "--version"};
+  static const std::set<std::string> names{
+      "--csv",          "--plot", "--scenes-out", "--out",       "--shard", "--time-limit",
+      "--memory-limit", "--help", "--version",    "--corrected", "--json",  "--threads"};
   return names;
 }
 
@@ -38,14 +39,14 @@ void collect(const CLI::App& app, Json& options) {
     if (not_recorded().count(name)) continue;
     if (opt->count() > 0) {
       const std::vector<std::string>& results = opt->results();
-      if (opt->get_type_size() == 0) {  // a flag
+      if (opt->get_expected_max() == 0) {  // a flag
         options[name] = true;
       } else {
         std::string joined;
         for (const std::string& r : results) joined += (joined.empty() ? "" : ",") + r;
         options[name] = joined;
       }
-    } else if (opt->get_type_size() == 0) {
+    } else if (opt->get_expected_max() == 0) {
       options[name] = false;
     } else if (!opt->get_default_str().empty()) {
       options[name] = opt->get_default_str();

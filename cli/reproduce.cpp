@@ -3,6 +3,7 @@
 #include "integer_option.h"
 #include "limit_exit.h"
 #include "output_files.h"
+#include "provenance.h"
 #include "write_stdout.h"
 
 #include <gmcc/geometry/illumination_constraint.h>
@@ -43,6 +44,13 @@ void add_common_options(CLI::App* cmd, ReproduceOptions& o) {
 
 void add_output_options(CLI::App* cmd, ReproduceOptions& o) {
   cmd->add_option("--csv", o.csv_path, "write one row per (light, surfaces, rule) to this CSV file");
+  cmd->add_option("--json", o.json_path, "write every cell's statistics as one JSON document to this file");
+  cmd->add_option("--scenes-out", o.scenes_out_path,
+                  "write one JSON Lines record per scene to this file (a setup line, then the "
+                  "scenes: surfaces drawn, F, every rule's map and errors)");
+  cmd->add_option("--shard", o.shard,
+                  "run only part K of N disjoint parts of the scenes (K/N, e.g. 2/8); needs "
+                  "--scenes-out; combine the parts with gmcc merge");
   cmd->add_option("--plot", o.plot_dir,
                   "write <experiment>.dat/.gp to this folder and draw .png/.svg with gnuplot");
   cmd->add_option("--canonical", o.canonical, "the canonical light");
@@ -107,6 +115,27 @@ ExperimentConfig config_from(const ReproduceOptions& o) {
   } catch (const std::invalid_argument& e) {
     throw InputError("--shading", 0, e.what());
   }
+  if (!o.shard.empty()) {
+    const std::string& t = o.shard;
+    const std::size_t slash = t.find('/');
+    const std::string why = "expected K/N with 1 <= K <= N <= 1000000 (part K of N), e.g. 2/8; got " + quoted_text(t);
+    auto digits = [](const std::string& x) {
+      return !x.empty() && x.size() <= 7 && x.find_first_not_of("0123456789") == std::string::npos;
+    };
+    if (slash == std::string::npos || !digits(t.substr(0, slash)) || !digits(t.substr(slash + 1)))
+      throw InputError("--shard", 0, why);
+    c.shard_index = std::stoull(t.substr(0, slash));
+    c.shard_count = std::stoull(t.substr(slash + 1));
+    if (c.shard_index < 1 || c.shard_index > c.shard_count || c.shard_count > 1000000)
+      throw InputError("--shard", 0, why);
+    if (o.scenes_out_path.empty())
+      throw InputError("--shard", 0, "a shard needs --scenes-out FILE: gmcc merge combines the shards' files");
+    for (const auto& [path, option] : {std::pair{&o.csv_path, "--csv"}, {&o.json_path, "--json"}, {&o.plot_dir, "--plot"}})
+      if (!path->empty())
+        throw InputError(option, 0, "not with --shard: a shard's statistics cover only its part; write "
+                                    "--scenes-out and run gmcc merge on the shards' files for the whole tables");
+  }
+  c.keep_scenes = !o.scenes_out_path.empty();
   if (::isatty(STDERR_FILENO))
     c.progress = [](std::uint64_t done, std::uint64_t total) {
       const int width = 40, filled = static_cast<int>(width * done / std::max<std::uint64_t>(total, 1));
@@ -119,7 +148,42 @@ ExperimentConfig config_from(const ReproduceOptions& o) {
   return c;
 }
 
-// Runs an experiment and writes its table, CSV and figure, each file whole or not at all.
+}  // namespace
+
+ExperimentOutputs::ExperimentOutputs(const ReportPaths& paths, const std::string& stem) : paths_(paths), stem_(stem) {
+  if (!paths.csv.empty()) csv_.emplace(paths.csv);
+  if (!paths.json.empty()) json_.emplace(paths.json);
+  if (!paths.scenes_out.empty()) scenes_.emplace(paths.scenes_out);
+  if (!paths.plot_dir.empty()) {
+    ensure_directory(paths.plot_dir);
+    dat_.emplace(std::filesystem::path(paths.plot_dir) / (stem + ".dat"));
+    gp_.emplace(std::filesystem::path(paths.plot_dir) / (stem + ".gp"));
+  }
+}
+
+int ExperimentOutputs::write(const ExperimentResult& result, const std::string& provenance) {
+  set_activity("writing the reports");
+  if (scenes_) scenes_->commit(experiment_scenes_jsonl(result, provenance));
+  if (csv_) csv_->commit(experiment_csv(result, provenance));
+  if (json_) json_->commit(experiment_json(result, provenance));
+  if (dat_) dat_->commit(experiment_plot_data(result));
+  if (gp_) gp_->commit(experiment_plot_script(result, stem_));
+  if (result.config.shard_count > 1) {
+    std::uint64_t scenes = 0;
+    for (const ExperimentCell& c : result.cells) scenes += c.scenes;
+    write_stdout("gmcc reproduce " + result.name + ": shard " + std::to_string(result.config.shard_index) + "/" +
+                 std::to_string(result.config.shard_count) + ", " + std::to_string(scenes) +
+                 " scenes written to " + paths_.scenes_out + " (gmcc merge combines the shards)\n");
+    return 0;
+  }
+  write_stdout(experiment_table(result));
+  return paths_.plot_dir.empty() ? 0 : draw_with_gnuplot(paths_.plot_dir, stem_, "gmcc reproduce");
+}
+
+namespace {
+
+// Runs an experiment and writes its table, CSV, JSON, scene records and figure, each file whole
+// or not at all.
 int report(const ExperimentSetup& setup, ExperimentConfig config, const ReproduceOptions& o) {
   if (!o.illuminants_path.empty()) {
     set_activity("reading " + o.illuminants_path);
@@ -130,13 +194,7 @@ int report(const ExperimentSetup& setup, ExperimentConfig config, const Reproduc
       throw InputError(lights.file, lights.lines[e.index], "an illuminant needs every channel > 0");
     }
   }
-  std::optional<PendingFile> csv_file, dat_file, gp_file;
-  if (!o.csv_path.empty()) csv_file.emplace(o.csv_path);
-  if (!o.plot_dir.empty()) {
-    ensure_directory(o.plot_dir);
-    dat_file.emplace(std::filesystem::path(o.plot_dir) / (setup.name + ".dat"));
-    gp_file.emplace(std::filesystem::path(o.plot_dir) / (setup.name + ".gp"));
-  }
+  ExperimentOutputs outputs({o.csv_path, o.json_path, o.scenes_out_path, o.plot_dir}, setup.name);
   ExperimentResult result;
   set_activity("running the " + setup.name + " experiment");
   try {
@@ -144,11 +202,7 @@ int report(const ExperimentSetup& setup, ExperimentConfig config, const Reproduc
   } catch (const std::invalid_argument& e) {
     throw InputError("--surfaces", 0, e.what());
   }
-  if (csv_file) csv_file->commit(experiment_csv(result));
-  if (dat_file) dat_file->commit(experiment_plot_data(result));
-  if (gp_file) gp_file->commit(experiment_plot_script(result, setup.name));
-  write_stdout(experiment_table(result));
-  return o.plot_dir.empty() ? 0 : draw_with_gnuplot(o.plot_dir, setup.name, "gmcc reproduce");
+  return outputs.write(result, provenance_json().dump());
 }
 
 ExperimentSetup synthetic(const ReproduceOptions& o) {
@@ -201,6 +255,11 @@ int expansion_table(const ReproduceOptions& o) {
   const ExperimentSetup setup = synthetic(o);
   ExperimentConfig base = config_from(o);
   base.progress = nullptr;
+  // The three runs' CSV rows (prefixed by the expansion) and scene records (a section each).
+  std::optional<PendingFile> csv_file, scenes_file;
+  if (!o.csv_path.empty()) csv_file.emplace(o.csv_path);
+  if (!o.scenes_out_path.empty()) scenes_file.emplace(o.scenes_out_path);
+  std::string csv, scenes;
   struct Row {
     std::string label;
     Expansion expansion;
@@ -218,11 +277,21 @@ int expansion_table(const ReproduceOptions& o) {
     ExperimentConfig c = base;
     c.expansion = row.expansion;
     const ExperimentResult r = run_gamut_experiment(setup, c);
+    if (csv_file) {
+      const std::string rows = experiment_csv(r);
+      const std::string prefix = to_string(c.expansion.policy) + "," + to_string(c.expansion.factor) + ",";
+      for (std::size_t start = 0, end; start < rows.size(); start = end + 1) {
+        end = rows.find('\n', start);
+        if (start == 0 && csv.empty()) csv += "expansion_policy,expansion_factor," + rows.substr(0, end + 1);
+        else if (start != 0) csv += prefix + rows.substr(start, end + 1 - start);
+      }
+    }
+    if (scenes_file) scenes += experiment_scenes_jsonl(r);
     double sum[2][3] = {}, count[2] = {};
     for (const ExperimentCell& cell : r.cells) {
       const int band = cell.surfaces <= 5 ? 0 : 1;
       count[band] += 1;
-      for (int k = 0; k < 3; ++k) sum[band][k] += cell.rules[k].mean_error_deg;
+      for (int k = 0; k < 3; ++k) sum[band][k] += cell.rules[k].error.mean;
     }
     char line[256];
     std::snprintf(line, sizeof line, "  %-20s %3zu vertices %16.3f %9.3f %9.3f %20.3f %9.3f %9.3f\n",
@@ -231,6 +300,9 @@ int expansion_table(const ReproduceOptions& o) {
                   sum[1][1] / std::max(count[1], 1.0), sum[1][2] / std::max(count[1], 1.0));
     std::cout << line;
   }
+  const std::string provenance = provenance_json().dump();
+  if (csv_file) csv_file->commit("# gmcc-provenance: " + provenance + "\n" + csv);
+  if (scenes_file) scenes_file->commit("{\"provenance\":" + provenance + "}\n" + scenes);
   return 0;
 }
 
@@ -260,6 +332,12 @@ CLI::App* add_reproduce_command(CLI::App& app, ReproduceOptions& o) {
   CLI::App* exp = cmd->add_subcommand(
       "expansion", "the synthetic experiment without expansion and with 10% under each policy");
   add_common_options(exp, o);
+  exp->add_option("--csv", o.csv_path,
+                  "write one row per (expansion, light, surfaces, rule): expansion_policy, "
+                  "expansion_factor, then the columns of reproduce synthetic --csv");
+  exp->add_option("--scenes-out", o.scenes_out_path,
+                  "write the three runs' per-scene records (JSON Lines), each run a setup line "
+                  "followed by its scenes");
   return cmd;
 }
 

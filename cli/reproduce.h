@@ -3,8 +3,13 @@
 // (docs/reproduction.md): `synthetic` (Fig. 3), `camera` (a Fig. 5 analogue), `expansion`
 // (the canonical-gamut expansion sensitivity table).
 
+#include "output_files.h"
+
+#include <gmcc/validation/gamut_experiment.h>
+
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,9 +25,33 @@ struct ReproduceOptions {
   std::string canonical_surfaces = "sfu1995";  // camera: sfu1995 | macbeth
   std::string mean3d_method = "analytic";
   std::string csv_path, plot_dir;
+  std::string json_path;         // the aggregates as JSON
+  std::string scenes_out_path;   // per-scene records, JSON Lines
+  std::string shard;             // K/N: run only part K of N
   std::string illuminants_path;  // plausible lights for the illumination constraint
   bool crule = false;            // also 3-D CRULE
   std::string shading = "0";     // intensity variation: image colours scaled by U[shading, 1]
+};
+
+/// Where an experiment's reports go (each optional; the table always goes to stdout).
+struct ReportPaths {
+  std::string csv, json, scenes_out, plot_dir;
+};
+
+/// The output files of an experiment's reports, opened at construction (before the work, so a
+/// bad path is reported first) and written whole by write(). Shared by reproduce and merge.
+class ExperimentOutputs {
+ public:
+  ExperimentOutputs(const ReportPaths& paths, const std::string& stem);
+  /// Write every requested file and the table (stdout), then draw with gnuplot if --plot.
+  /// `provenance` (a JSON object, docs/cli.md "Provenance") heads the CSV, JSON and records.
+  /// Returns the exit status.
+  int write(const ExperimentResult& result, const std::string& provenance);
+
+ private:
+  ReportPaths paths_;
+  std::string stem_;
+  std::optional<PendingFile> csv_, json_, scenes_, dat_, gp_;
 };
 
 /// Register `reproduce` with its subcommands `synthetic`, `camera`, `expansion`.

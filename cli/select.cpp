@@ -3,85 +3,104 @@
 #include "integer_option.h"
 #include "json_output.h"
 #include "select_3d.h"
+#include "select_batch.h"
 #include "write_stdout.h"
 
-#include <gmcc/geometry/feasible_set.h>
-#include <gmcc/geometry/illumination_constraint.h>
-#include <gmcc/geometry/intersection.h>
 #include <gmcc/validation/colour_csv.h>
+
+#include <iostream>
 
 namespace gmcc::cli {
 namespace {
 
-// Largest coordinate accepted for chromaticities, gamuts and maps: far beyond any physical
-// value, and small enough that every number gmcc reports as a double (coordinates, enclosures
-// rounded outward, areas up to 1e300) stays finite.
-const Rational& max_coordinate() {
-  static const Rational limit = parse_rational("1e150");
-  return limit;
+// Was the option given on the command line? Without the parsed command (an in-process caller),
+// an option counts as given when it differs from its default.
+bool given(const SelectOptions& o, const std::string& name, const std::string& value,
+           const std::string& default_value) {
+  return o.command ? o.command->count(name) > 0 : value != default_value;
 }
-bool within_limit(const Point2& p) { return p.x <= max_coordinate() && p.y <= max_coordinate(); }
 
-// Chromaticities of a colour file under the blue policy, with line-accurate errors.
-Chromaticities chromaticities_of(const ColourTable& table, NonPositiveBluePolicy policy) {
-  Chromaticities c;
+// One r,g,b with channels > 0, for --canonical-illuminant and --truth.
+Colour light_option(const std::string& name, const std::string& text) {
   try {
-    c = perspective_chromaticities(table.colours, policy);
-  } catch (const NonPositiveBlue& e) {
-    throw InputError(table.file, table.lines[e.index],
-                     "b <= 0: this colour has no perspective chromaticity (r/b, g/b); "
-                     "use --nonpositive-blue drop to skip such colours");
+    const ColourTable c = parse_colour_csv(text, name);
+    if (c.colours.size() != 1) throw InputError(name, 0, "expected one r,g,b");
+    const Colour& l = c.colours[0];
+    for (const Rational* x : {&l.r, &l.g, &l.b})
+      if (sgn(*x) <= 0) throw InputError(name, 0, "every channel must be > 0");
+    return l;
+  } catch (const InputError& e) {
+    // Keep the reader's reason (a digit limit, a malformed number, a channel <= 0), without its
+    // "NAME:1:" prefix.
+    std::string why = e.what();
+    const std::string prefix = e.file() + (e.line() ? ":" + std::to_string(e.line()) : "") + ": ";
+    if (why.compare(0, prefix.size(), prefix) == 0) why.erase(0, prefix.size());
+    throw InputError(name, 0, quoted_text(text) + " is not a light r,g,b with channels > 0: " + why);
   }
-  if (c.points.empty())
-    throw InputError(table.file, 0,
-                     "no usable colour: every colour has b = 0 and so no chromaticity");
-  for (std::size_t i = 0; i < c.points.size(); ++i)
-    if (!within_limit(c.points[i]))
-      throw InputError(table.file, table.lines[c.source_index[i]],
-                       "the chromaticity r/b or g/b exceeds 1e150, the largest gmcc accepts "
-                       "(it reports doubles): is b nearly 0?");
-  return c;
 }
 
-constexpr std::size_t kMaxMinViolationEdges = 2000;
-
-// --on-empty: when F is empty, apply the policy and replace F by what it recovers.
-RecoveryReport recover(const std::string& policy, const Expansion& expansion,
-                       const std::vector<Point2>& canonical, const std::vector<Point2>& image,
-                       SelectReport& r) {
-  RecoveryReport rec;
-  rec.policy = policy;
-  if (r.feasible.kind != ConvexKind::empty) return rec;
-  rec.reason = r.empty_reason;
-  const std::optional<ConvexSet2> C =
-      r.constraint ? std::optional<ConvexSet2>(r.constraint->maps) : std::nullopt;
-  if (policy == "grow-canonical") {
-    if (expansion.policy == ExpansionPolicy::centroid_clip)
+// Options that cannot apply in this run are refused, each with the reason (docs/cli.md).
+void reject_inapplicable(const SelectOptions& o) {
+  auto is_given = [&o](const std::string& name, const std::string& value, const std::string& d) {
+    return given(o, name, value, d);
+  };
+  const bool has_image = !o.image_path.empty(), has_images = !o.images_path.empty();
+  if (has_image == has_images)
+    throw InputError(has_image ? "--images" : "--image", 0,
+                     has_image ? "give --image (one image) or --images (a batch), not both"
+                               : "one of --image (one image) or --images (a batch) is required");
+  if (o.space == "3d") {
+    if (is_given("--expand", o.expand_factor, "0") || is_given("--expand-policy", o.expand_policy, "none"))
+      throw InputError("--expand", 0, "expansion applies to the 2-D gamut only, not to --space 3d");
+    if (!o.illuminants_path.empty())
+      throw InputError("--illuminants", 0, "the illumination constraint is 2-D only, not --space 3d");
+    if (is_given("--on-empty", o.on_empty, "none"))
       throw InputError("--on-empty", 0,
-                       "grow-canonical grows the gamut by the multiplicative policy; it cannot "
-                       "continue a centroid-clip expansion (use --expand-policy multiplicative)");
-    GrowCanonicalOptions g;
-    g.start = expansion.factor;
-    rec.precision = g.precision;
-    rec.grown = grow_canonical_until_feasible(canonical, image, C, g);
-    if (!rec.grown->found) return rec;
-    r.feasible = rec.grown->feasible;
-  } else {
-    // min_violation clips its minimisers edge by edge in rationals: O(k·m²) for m gamut edges and
-    // k image hull vertices (2000 edges, 3 image vertices: about 13 s; 6000: 150 s). Refused up
-    // front beyond kMaxMinViolationEdges (docs/cli.md "Resource limits").
-    if (r.canonical_gamut.vertices.size() > kMaxMinViolationEdges)
-      throw InputError("--on-empty", 0,
-                       "min-violation takes canonical gamuts of at most " +
-                           std::to_string(kMaxMinViolationEdges) + " vertices; this one has " +
-                           std::to_string(r.canonical_gamut.vertices.size()) +
-                           " (grow-canonical has no such limit)");
-    rec.min_violation = min_violation(r.canonical_gamut, image, C);
-    r.feasible = rec.min_violation->feasible;
+                       "recovery policies are 2-D only, not --space 3d; with --black include the "
+                       "3-D feasible set is never empty");
+    for (const auto& [name, value, d] :
+         {std::tuple<std::string, std::string, std::string>{"--mean3d", o.mean3d_method, "analytic"},
+          {"--precision", o.precision_bits, "0"}, {"--order", o.order, "12"},
+          {"--samples", o.samples, "1000000"}, {"--seed", o.seed, "1"}})
+      if (is_given(name, value, d))
+        throw InputError(name, 0,
+                         "the 3-D mean and its routes are 2-D rules; --space 3d selects max-volume "
+                         "and the centroid exactly, with no route to choose");
+    if (is_given("--canonical-illuminant", o.canonical_illuminant, "1,1,1"))
+      throw InputError("--canonical-illuminant", 0,
+                       "--space 3d reports no illuminant-space error, so the canonical light is "
+                       "not used");
+    if (is_given("--nonpositive-blue", o.nonpositive_blue, "drop"))
+      throw InputError("--nonpositive-blue", 0,
+                       "--space 3d maps colours, not chromaticities: a colour with b = 0 is used "
+                       "as it is");
+    if (!o.truth.empty())
+      throw InputError("--truth", 0, "scoring against truth is 2-D only, not --space 3d");
+    if (is_given("--illuminant-worst-case", o.illuminant_worst_case, "on"))
+      throw InputError("--illuminant-worst-case", 0,
+                       "--space 3d reports no illuminant-space worst case");
+    if (has_images)
+      throw InputError("--images", 0, "batch selection is 2-D only, not --space 3d");
+    return;
   }
-  rec.applied = true;
-  r.empty_reason.clear();
-  return rec;
+  if (is_given("--black", o.black, "include"))
+    throw InputError("--black", 0, "black in the canonical gamut applies to --space 3d only");
+  const std::string route = o.mean3d_method;
+  if (route != "monte-carlo")
+    for (const auto& [name, value, d] : {std::tuple<std::string, std::string, std::string>{
+                                             "--samples", o.samples, "1000000"},
+                                         {"--seed", o.seed, "1"}})
+      if (is_given(name, value, d))
+        throw InputError(name, 0, "applies to --mean3d monte-carlo only, not to the " + route +
+                                      " route");
+  if (route != "quadrature" && is_given("--order", o.order, "12"))
+    throw InputError("--order", 0, "applies to --mean3d quadrature only, not to the " + route + " route");
+  if (route != "analytic" && is_given("--precision", o.precision_bits, "0"))
+    throw InputError("--precision", 0,
+                     "applies to --mean3d analytic only, not to the " + route + " route");
+  if (has_images && !o.truth.empty())
+    throw InputError("--truth", 0,
+                     "with --images each scene gives its own true light (its \"truth\" member)");
 }
 
 }  // namespace
@@ -91,10 +110,15 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
       "select",
       "Feasible set of perspective diagonal maps for an image and a canonical gamut, and the "
       "three selection rules of Finlayson & Hordley (1999): max-area, 2-D mean, 3-D mean.");
+  o.command = cmd;
   cmd->add_option("--canonical", o.canonical_path,
                   "canonical colours, one r,g,b per line (decimal or p/q, read exactly)")
       ->required();
-  cmd->add_option("--image", o.image_path, "image colours, same format")->required();
+  cmd->add_option("--image", o.image_path, "image colours, same format (or --images)");
+  cmd->add_option("--images", o.images_path,
+                  "batch: many images against the one canonical gamut, JSON Lines, one scene a "
+                  "line {\"id\", \"colours\": [[r,g,b], ...], \"truth\": [r,g,b]}; prints JSON "
+                  "Lines, one record a scene (docs/cli.md \"Batch selection\")");
   cmd->add_flag("--json", o.json, "print one JSON object (docs/cli.md, \"JSON output\") instead of a summary");
   cmd->add_option("--expand", o.expand_factor,
                   "expand the canonical gamut by this factor (0.1 = 10%; exact)")
@@ -118,8 +142,9 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
   cmd->add_option("--seed", o.seed, "monte-carlo: seed of the mt19937_64 generator, 0 to 2^64-1")
       ->capture_default_str();
   cmd->add_option("--canonical-illuminant", o.canonical_illuminant,
-                  "r,g,b of the canonical light, for the illuminant-space worst case "
-                  "(e = c ⊘ d; exact numbers, all > 0)")
+                  "r,g,b of the canonical light c, as the camera sees it: the maps c ⊘ e of "
+                  "--illuminants and --truth, and the illuminant-space errors (exact numbers, "
+                  "all > 0)")
       ->capture_default_str();
   cmd->add_option("--nonpositive-blue", o.nonpositive_blue,
                   "colours with b <= 0 have no chromaticity: drop (count them) or reject")
@@ -127,7 +152,17 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
       ->capture_default_str();
   cmd->add_option("--illuminants", o.illuminants_path,
                   "plausible lights, one r,g,b per line (as the camera sees them): keep only the "
-                  "maps in the convex hull of their maps c ⊘ e (Finlayson 1996)");
+                  "maps in the convex hull of their maps c ⊘ e (Finlayson 1996); c is "
+                  "--canonical-illuminant, so give it too");
+  cmd->add_option("--truth", o.truth,
+                  "r,g,b of the true light under which the image was taken (as the camera sees "
+                  "it): adds each rule's map-space, illuminant and reproduction errors against "
+                  "its map c ⊘ e");
+  cmd->add_option("--illuminant-worst-case", o.illuminant_worst_case,
+                  "on: each rule's illuminant-space worst case (exact edge quartics, about a "
+                  "third of a scene's time); off: leave it out")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
   cmd->add_option("--on-empty", o.on_empty,
                   "when F is empty: none (report it), grow-canonical (least multiplicative "
                   "expansion of the canonical gamut, by bisection) or min-violation (maps of least "
@@ -148,104 +183,95 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
 SelectSettings select_settings(const SelectOptions& o) {
   SelectSettings s;
   s.json = o.json;
-  s.on_empty = o.on_empty;
-  s.nonpositive_blue =
+  SelectSceneOptions& scene = s.scene;
+  scene.on_empty = recovery_policy_from_string(o.on_empty);
+  scene.nonpositive_blue =
       o.nonpositive_blue == "reject" ? NonPositiveBluePolicy::reject : NonPositiveBluePolicy::drop;
   try {
-    s.expansion.policy = expansion_policy_from_string(o.expand_policy);
-    s.expansion.factor = parse_rational(o.expand_factor);
-    if (sgn(s.expansion.factor) < 0) throw std::invalid_argument("must be >= 0");
-    if (sgn(s.expansion.factor) > 0 && s.expansion.policy == ExpansionPolicy::none)
+    scene.expansion.policy = expansion_policy_from_string(o.expand_policy);
+    scene.expansion.factor = parse_rational(o.expand_factor);
+    if (sgn(scene.expansion.factor) < 0) throw std::invalid_argument("must be >= 0");
+    if (sgn(scene.expansion.factor) > 0 && scene.expansion.policy == ExpansionPolicy::none)
       throw std::invalid_argument("needs --expand-policy centroid-clip or multiplicative");
   } catch (const std::invalid_argument& e) {
     throw InputError("--expand", 0, e.what());
   }
-  try {
-    const ColourTable c = parse_colour_csv(o.canonical_illuminant, "--canonical-illuminant");
-    if (c.colours.size() != 1) throw InputError("--canonical-illuminant", 0, "expected one r,g,b");
-    s.canonical_illuminant = c.colours[0];
-    for (const Rational* x : {&s.canonical_illuminant.r, &s.canonical_illuminant.g, &s.canonical_illuminant.b})
-      if (sgn(*x) <= 0) throw InputError("--canonical-illuminant", 0, "every channel must be > 0");
-  } catch (const InputError& e) {
-    // Keep the reader's reason (a digit limit, a malformed number, a channel <= 0), without its
-    // "--canonical-illuminant:1:" prefix.
-    std::string why = e.what();
-    const std::string prefix = e.file() + (e.line() ? ":" + std::to_string(e.line()) : "") + ": ";
-    if (why.compare(0, prefix.size(), prefix) == 0) why.erase(0, prefix.size());
-    throw InputError("--canonical-illuminant", 0,
-                     quoted_text(o.canonical_illuminant) + " is not a light r,g,b with channels > 0: " + why);
-  }
+  if (scene.on_empty == RecoveryPolicy::grow_canonical &&
+      scene.expansion.policy == ExpansionPolicy::centroid_clip)
+    throw InputError("--on-empty", 0,
+                     "grow-canonical grows the gamut by the multiplicative policy; it cannot "
+                     "continue a centroid-clip expansion (use --expand-policy multiplicative)");
+  scene.illuminant_worst_case = o.illuminant_worst_case != "off";
+  scene.canonical_illuminant = light_option("--canonical-illuminant", o.canonical_illuminant);
+  s.canonical_illuminant_given = given(o, "--canonical-illuminant", o.canonical_illuminant, "1,1,1");
+  if (!o.truth.empty()) s.truth = light_option("--truth", o.truth);
 
-  s.mean3d.method = mean3d_method_from_string(o.mean3d_method);
-  s.mean3d.precision_bits = static_cast<unsigned>(integer_option("--precision", o.precision_bits, 0, 1u << 20));
-  if (s.mean3d.precision_bits != 0 && s.mean3d.precision_bits < 53)
+  Mean3dOptions& m = scene.mean3d;
+  m.method = mean3d_method_from_string(o.mean3d_method);
+  m.precision_bits = static_cast<unsigned>(integer_option("--precision", o.precision_bits, 0, 1u << 20));
+  if (m.precision_bits != 0 && m.precision_bits < 53)
     throw InputError("--precision", 0, "must be 0 (automatic) or from 53 to 1048576 bits");
-  s.mean3d.order = static_cast<unsigned>(integer_option("--order", o.order, 1, 256));
-  s.mean3d.samples = integer_option("--samples", o.samples, 1, 1000000000);
-  s.mean3d.seed = integer_option("--seed", o.seed, 0, ~std::uint64_t(0));
+  m.order = static_cast<unsigned>(integer_option("--order", o.order, 1, 256));
+  m.samples = integer_option("--samples", o.samples, 1, 1000000000);
+  m.seed = integer_option("--seed", o.seed, 0, ~std::uint64_t(0));
+  reject_inapplicable(o);  // after each value is checked: a malformed value is named as such
   return s;
 }
 
-std::string select_output(const SelectSettings& s, const ColourTable& canonical,
-                          const ColourTable& image, const ColourTable* illuminants) {
-  SelectReport r;
-  r.expansion = s.expansion;
-  r.canonical_illuminant = s.canonical_illuminant;
-  const Chromaticities cq = chromaticities_of(canonical, s.nonpositive_blue);
-  const Chromaticities iq = chromaticities_of(image, s.nonpositive_blue);
-  r.canonical_colours = canonical.colours.size();
-  r.canonical_dropped = cq.dropped;
-  r.image_colours = image.colours.size();
-  r.image_dropped = iq.dropped;
+InputError select_input_error(const SceneInputError& e, const ColourTable& canonical,
+                              const ColourTable* image, const ColourTable* illuminants) {
+  std::string problem = e.what();
+  if (e.problem == SceneProblem::nonpositive_blue)
+    problem += "; use --nonpositive-blue drop to skip such colours";
+  auto in_table = [&](const ColourTable& t) {
+    return InputError(t.file, e.index ? t.lines[*e.index] : 0, problem);
+  };
+  switch (e.input) {
+    case SceneInput::canonical: return in_table(canonical);
+    case SceneInput::image:
+      if (!image) break;
+      if (e.problem == SceneProblem::too_large && !e.index)
+        problem = "against the canonical gamut of " + canonical.file + ", " + problem;
+      return in_table(*image);
+    case SceneInput::illuminants:
+      if (illuminants) return in_table(*illuminants);
+      return InputError("--illuminants", 0, problem);
+    case SceneInput::truth: return InputError("--truth", 0, problem);
+    case SceneInput::canonical_illuminant: return InputError("--canonical-illuminant", 0, problem);
+    case SceneInput::expansion: return InputError("--expand", 0, problem);
+    case SceneInput::on_empty: return InputError("--on-empty", 0, problem);
+  }
+  return InputError("--image", 0, problem);
+}
 
-  r.canonical_gamut = canonical_gamut(cq.points, s.expansion);
-  for (const Point2& v : r.canonical_gamut.vertices)
-    if (!within_limit(v))
-      throw InputError("--expand", 0,
-                       "the expanded canonical gamut exceeds 1e150, the largest coordinate "
-                       "gmcc accepts (it reports doubles)");
+std::string select_output(const SelectSettings& settings, const ColourTable& canonical,
+                          const ColourTable& image, const ColourTable* illuminants) {
+  SelectSceneOptions options = settings.scene;
+  if (illuminants) options.illuminants = illuminants->colours;
   try {
-    r.feasible = feasible_set(r.canonical_gamut, iq.points);
-  } catch (const UnboundedFeasibleSet& e) {
-    throw InputError(image.file, 0, e.what());
+    const PreparedCanonical prepared = prepare_canonical(canonical.colours, options);
+    const SceneResult result = select_scene(prepared, image.colours, settings.truth);
+    return settings.json ? select_json(prepared, result) : select_text(prepared, result);
+  } catch (const SceneInputError& e) {
+    throw select_input_error(e, canonical, &image, illuminants);
   }
-  // F's coordinates are canonical over image chromaticities: both within the limit can still
-  // give maps beyond it.
-  for (const Point2& v : r.feasible.vertices)
-    if (!within_limit(v))
-      throw InputError(image.file, 0,
-                       "against the canonical gamut of " + canonical.file +
-                           ", the feasible maps exceed 1e150, the largest coordinate gmcc "
-                           "accepts (it reports doubles): the canonical chromaticities are "
-                           "that much larger than this image's");
-  if (illuminants) {
-    ConstraintReport c;
-    c.illuminants = illuminants->colours.size();
-    try {
-      c.maps = illumination_constraint(illuminants->colours, r.canonical_illuminant);
-    } catch (const NonPositiveIlluminant& e) {
-      throw InputError(illuminants->file, illuminants->lines[e.index],
-                       "an illuminant needs every channel > 0 (its map c ⊘ e is undefined)");
-    }
-    c.unconstrained = r.feasible;
-    // F ∩ C in the feasible set's own convex pass (C's edges as extra lines): linear in |C|,
-    // where intersecting the finished F with C cost O(|F|·|C|) (issue 13).
-    r.feasible = feasible_set(CanonicalConstraints(r.canonical_gamut, c.maps), iq.points);
-    r.constraint = std::move(c);
-  }
-  if (r.feasible.kind == ConvexKind::empty)
-    r.empty_reason = r.constraint && r.constraint->unconstrained.kind != ConvexKind::empty
-                         ? "the feasible set is not empty, but it holds no map of a plausible "
-                           "illuminant (--illuminants)"
-                         : "no diagonal map takes every image colour into the canonical gamut";
-  if (s.on_empty != "none") r.recovery = recover(s.on_empty, s.expansion, cq.points, iq.points, r);
-  r.selections = select_maps(r.feasible, {s.mean3d, r.canonical_illuminant});
-  return s.json ? select_json(r) : select_text(r);
+}
+
+void warn_default_canonical_illuminant(const std::string& option) {
+  std::cerr << "gmcc: warning: " << option
+            << ": the map c ⊘ e of a light uses the canonical light c, here the default 1,1,1; "
+               "give --canonical-illuminant R,G,B (the canonical light as the camera sees it), "
+               "or the maps may miss the true one (docs/cli.md \"gmcc select\")\n";
 }
 
 int run_select(const SelectOptions& o) {
-  if (o.space == "3d") return run_select_3d(o);
   const SelectSettings settings = select_settings(o);
+  if (o.space == "3d") return run_select_3d(o);
+  if (!settings.canonical_illuminant_given) {
+    if (!o.illuminants_path.empty()) warn_default_canonical_illuminant("--illuminants");
+    if (settings.truth) warn_default_canonical_illuminant("--truth");
+  }
+  if (!o.images_path.empty()) return run_select_batch(o, settings);
   const ColourTable canonical = read_colour_csv(o.canonical_path);
   const ColourTable image = read_colour_csv(o.image_path);
   std::optional<ColourTable> illuminants;

@@ -1,5 +1,7 @@
 #include "select_3d.h"
 
+#include "json_output.h"
+
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/selection/crule_3d.h>
 #include <gmcc/validation/colour_csv.h>
@@ -12,7 +14,6 @@
 
 namespace gmcc::cli {
 namespace {
-using Json = nlohmann::ordered_json;
 
 Json exact3(const Point3& p) { return Json::array({to_string(p.x), to_string(p.y), to_string(p.z)}); }
 Json approx3(const Point3& p) {
@@ -47,14 +48,7 @@ std::string fmt(double x) {
 }  // namespace
 
 int run_select_3d(const SelectOptions& o) {
-  if (o.expand_factor != "0" || o.expand_policy != "none")
-    throw InputError("--expand", 0, "expansion applies to the 2-D gamut only, not to --space 3d");
-  if (!o.illuminants_path.empty())
-    throw InputError("--illuminants", 0, "the illumination constraint is 2-D only, not --space 3d");
-  if (o.on_empty != "none")
-    throw InputError("--on-empty", 0,
-                     "recovery policies are 2-D only, not --space 3d; with --black include the "
-                     "3-D feasible set is never empty");
+  // The options that cannot apply to the 3-D route were refused by select_settings.
   const CanonicalBlack black = o.black == "exclude" ? CanonicalBlack::exclude : CanonicalBlack::include;
   const ColourTable canonical = read_colour_csv(o.canonical_path);
   const ColourTable image = read_colour_csv(o.image_path);
@@ -89,6 +83,7 @@ int run_select_3d(const SelectOptions& o) {
                             {"colours", canonical.colours.size()}};
     j["input"] = {{"canonical_colours", canonical.colours.size()},
                   {"image_colours", image.colours.size()}};
+    finish_document(j);
     out << j.dump(2) << "\n";
   } else {
     out << "3-D feasible set of diagonal maps (CRULE; canonical gamut "

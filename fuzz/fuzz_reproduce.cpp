@@ -108,11 +108,11 @@ void check_experiment(const gmcc::ExperimentResult& r, bool exact_model) {
     for (std::size_t k = 0; k < cell.rules.size(); ++k) {
       const gmcc::RuleStats& s = cell.rules[k];
       const std::string rule = where + r.rules[k];
-      check_angle(s.mean_error_deg, rule + " mean error");
-      check_angle(s.median_error_deg, rule + " median error");
-      check_angle(s.max_error_deg, rule + " max error");
-      check_angle(s.mean_worst_case_deg, rule + " mean worst case");
-      check_angle(s.mean_reproduction_error_deg, rule + " mean reproduction error");
+      check_angle(s.error.mean, rule + " mean error");
+      check_angle(s.error.median, rule + " median error");
+      check_angle(s.error.max, rule + " max error");
+      check_angle(s.worst_case.mean, rule + " mean worst case");
+      check_angle(s.reproduction.mean, rule + " mean reproduction error");
       FUZZ_CHECK(!exact_model || s.truth_in_feasible_set == cell.scenes,
                  rule + ": the true map outside F under the exact diagonal model");
     }

@@ -298,9 +298,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   o.mean3d_method = (flags >> 1 & 3) == 2 ? "quadrature" : (flags >> 1 & 3) == 3 ? "monte-carlo" : "analytic";
   static const char* const orders[] = {"4", "1", "2", "16"};
   static const char* const samples[] = {"3000", "1", "10", "100"};
-  o.order = orders[more >> 5 & 3];
-  o.samples = samples[more >> 5 & 3];
-  o.seed = std::to_string(flags);
+  // Each route's own options only: the others are refused (docs/cli.md, options that cannot apply).
+  if (o.mean3d_method == "quadrature") o.order = orders[more >> 5 & 3];
+  if (o.mean3d_method == "monte-carlo") o.samples = samples[more >> 5 & 3], o.seed = std::to_string(flags);
   switch (flags >> 3 & 3) {
     case 1: o.expand_policy = "centroid-clip", o.expand_factor = "1/10"; break;
     case 2: o.expand_policy = "multiplicative", o.expand_factor = "1/10"; break;
@@ -310,8 +310,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (flags & 32) o.nonpositive_blue = "reject";
   if (flags & 64) o.canonical_illuminant = "2,1,3/7";
   // Forced precisions: the lowest accepted, a low one, and one past the automatic first step.
-  if (flags & 128) o.precision_bits = more & 128 ? "53" : "60";
-  else if (more & 128) o.precision_bits = "200";
+  if (o.mean3d_method == "analytic") {
+    if (flags & 128) o.precision_bits = more & 128 ? "53" : "60";
+    else if (more & 128) o.precision_bits = "200";
+  }
   static const char* const on_empty[] = {"none", "grow-canonical", "min-violation", "none"};
   o.on_empty = on_empty[more & 3];
   const bool space_3d = more & 4;
@@ -319,7 +321,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     o.space = "3d";
     o.black = more & 8 ? "exclude" : "include";
     // The 2-D-only options must be refused; mostly they are left out so that the 3-D route runs.
-    if (!(more & 16)) o.expand_policy = "none", o.expand_factor = "0", o.on_empty = "none";
+    if (!(more & 16)) {
+      o.expand_policy = "none", o.expand_factor = "0", o.on_empty = "none";
+      o.mean3d_method = "analytic", o.order = "12", o.samples = "1000000", o.seed = "1";
+      o.precision_bits = "0", o.canonical_illuminant = "1,1,1", o.nonpositive_blue = "drop";
+    }
   }
 
   std::string out;
@@ -338,6 +344,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       FUZZ_CHECK(gmcc::cli::run_select(o) == 0, "run_select returned non-zero without an error");
       out = capture.text();
     } else {
+      o.image_path = "image.csv";  // the files are parsed below, in memory
       const gmcc::cli::SelectSettings settings = gmcc::cli::select_settings(o);
       const gmcc::ColourTable canonical = gmcc::parse_colour_csv(canonical_text, "canonical.csv");
       const gmcc::ColourTable image = gmcc::parse_colour_csv(image_text, "image.csv");
@@ -351,7 +358,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     bool named = false;
     for (const std::string& name : {dir + "canonical.csv", dir + "image.csv", dir + "illuminants.csv",
                                     std::string("--expand"), std::string("--on-empty"),
-                                    std::string("--illuminants")})
+                                    std::string("--illuminants"), std::string("--mean3d"),
+                                    std::string("--precision"), std::string("--order"),
+                                    std::string("--samples"), std::string("--seed"),
+                                    std::string("--canonical-illuminant"),
+                                    std::string("--nonpositive-blue")})
       named = named || message.rfind(name, 0) == 0;
     FUZZ_CHECK(named, "message names no file: " + message);
     FUZZ_CHECK(message.find('\n') == std::string::npos, "a message of more than one line");

@@ -1,4 +1,4 @@
-# gmcc reproduce camera: laid out like Finlayson & Hordley (1999) Fig. 3
+# gmcc reproduce camera: laid out like Finlayson & Hordley (1999) Fig. 5, simulated with the camera's sensors
 if (!exists('png_file')) png_file = 'camera.png'
 if (!exists('svg_file')) svg_file = 'camera.svg'
 set datafile commentschars '#'
@@ -10,6 +10,8 @@ set key top right
 set style line 1 lc rgb '#d62728' lw 2 pt 7
 set style line 2 lc rgb '#1f77b4' lw 2 pt 5
 set style line 3 lc rgb '#2ca02c' lw 2 pt 9
+set style line 4 lc rgb '#9467bd' lw 2 pt 11 dt 2
+set style line 5 lc rgb '#8c564b' lw 2 pt 13 dt 2
 do for [term = 1:2] {
   if (term == 1) { set terminal pngcairo size 1000,520 font ',9'; set output png_file }
   if (term == 2) { set terminal svg size 1000,520 font 'sans,9'; set output svg_file }

@@ -10,6 +10,8 @@ set key top right
 set style line 1 lc rgb '#d62728' lw 2 pt 7
 set style line 2 lc rgb '#1f77b4' lw 2 pt 5
 set style line 3 lc rgb '#2ca02c' lw 2 pt 9
+set style line 4 lc rgb '#9467bd' lw 2 pt 11 dt 2
+set style line 5 lc rgb '#8c564b' lw 2 pt 13 dt 2
 do for [term = 1:2] {
   if (term == 1) { set terminal pngcairo size 1000,1040 font ',9'; set output png_file }
   if (term == 2) { set terminal svg size 1000,1040 font 'sans,9'; set output svg_file }

@@ -57,7 +57,7 @@ MapEstimate mean_3d_monte_carlo(const ConvexSet2& F, std::uint64_t samples, std:
   if (F.kind == ConvexKind::segment) {
     e.valid = false;
     e.note = "the feasible set is a segment: its cone has no volume, so Monte Carlo cannot "
-             "sample it (use --mean3d analytic or quadrature)";
+             "sample it (the analytic and quadrature routes can)";
     return e;
   }
 

@@ -178,6 +178,7 @@ std::optional<std::array<RuleErrors, 3>> stage(const std::vector<V>& v, const st
     RuleErrors& e = out[r];
     e.map_error_deg = static_cast<double>(error.mid);
     e.worst_case_deg = static_cast<double>(worst.mid);
+    e.map = {static_cast<double>(m1.mid), static_cast<double>(m2.mid)};
     e.positive_map = m1.positive() && m2.positive();
     if (e.positive_map) {  // e = c ⊘ (m, 1); the reproduction error compares d_est ⊘ d_true with white
       const E illuminant = angle_deg<E>({cr / m1, cg / m2, cb}, {cr / t1, cg / t2, cb});

@@ -39,7 +39,8 @@ def source_commit():
                            text=True, timeout=30)
     except (OSError, subprocess.SubprocessError):
         return None
-    return p.stdout.strip() if p.returncode == 0 and os.path.isdir(os.path.join(ROOT, ".git")) else None
+    # .git is a directory in a clone and a file in a `git worktree` checkout.
+    return p.stdout.strip() if p.returncode == 0 and os.path.exists(os.path.join(ROOT, ".git")) else None
 
 
 def sha256(path):
@@ -114,7 +115,34 @@ def main():
             expect(p["options"].get("--seed") == "7", f"seed recorded as {p['options']}")
             expect(p["options"].get("--max-samples") == "100", f"options {p['options']}")
 
+        def select_json():
+            rc, out, err = r.run("select", "--canonical", CANONICAL, "--image", IMAGE, "--json",
+                                 "--canonical-illuminant", "1,1,1")
+            expect(rc == 0, f"select exit {rc}: {err}")
+            doc = json.loads(out)
+            expect(next(iter(doc)) == "provenance", "provenance is the first member")
+            p = doc["provenance"]
+            check_record(p, "select", version, commit)
+            expect([f["path"] for f in p["inputs"]] == [CANONICAL, IMAGE], f"inputs {p['inputs']}")
+            expect(p["options"]["--canonical"] == CANONICAL and "--json" not in p["options"],
+                   f"options {p['options']}")
+            expect(p["options"]["--mean3d"] == "analytic", "defaults are recorded")
+
+        def select_batch_jsonl():
+            scenes = os.path.join(tmp, "scenes.jsonl")
+            with open(scenes, "w") as f:
+                f.write('{"id":"a","colours":[[0.2,0.3,0.5],[0.4,0.3,0.3]]}\n')
+            rc, out, err = r.run("select", "--canonical", CANONICAL, "--images", scenes,
+                                 "--canonical-illuminant", "1,1,1")
+            expect(rc == 0, f"select --images exit {rc}: {err}")
+            first = json.loads(out.splitlines()[0])
+            expect(list(first) == ["provenance"], f"first line {list(first)}")
+            check_record(first["provenance"], "select", version, commit)
+            expect(first["provenance"]["inputs"][-1]["path"] == scenes, "the scene file's digest")
+
         r.check("version_line", version_line)
+        r.check("select_json", select_json)
+        r.check("select_batch_jsonl", select_batch_jsonl)
         r.check("cite", cite)
         r.check("citation_files", citation_files)
         r.check("accuracy_csv", accuracy_csv)

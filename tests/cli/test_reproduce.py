@@ -39,7 +39,9 @@ with tempfile.TemporaryDirectory() as tmp:
     check(r1.stdout == r2.stdout, "same seed: identical table")
     check(open(a, "rb").read() != open(c, "rb").read(), "another seed: another CSV")
 
-    rows = list(csv.DictReader(io.StringIO(open(a).read())))
+    text = open(a).read()
+    check(text.startswith("# gmcc-provenance: "), "the CSV starts with its provenance line")
+    rows = list(csv.DictReader(io.StringIO(text.split("\n", 1)[1])))
     required = {"illuminant", "surfaces", "rule", "mean_error_deg", "mean_worst_case_deg", "scenes"}
     check(required <= set(rows[0].keys()), "CSV has the required columns")
     check(len(rows) == 4 * 5 * 3, "one row per (illuminant, surfaces, rule)")

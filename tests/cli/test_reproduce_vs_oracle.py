@@ -40,7 +40,7 @@ MEASURES = (("mean_error_deg", "sd_error_deg", "error"),
 
 def read_rows(fh):
     out = {}
-    for row in csv.DictReader(fh):
+    for row in csv.DictReader(line for line in fh if not line.startswith("#")):  # provenance
         out[(row["illuminant"], int(row["surfaces"]), row["rule"])] = row
     return out
 

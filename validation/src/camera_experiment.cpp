@@ -12,6 +12,7 @@ ExperimentSetup camera_setup(const SpectralTable& sensor_table, const SpectralTa
   const Spectrum& canonical = lights.spectrum(canonical_light);
   ExperimentSetup setup;
   setup.name = "camera";
+  setup.figure = "Fig. 5, simulated with the camera's sensors";
   setup.canonical_light = render_white(canonical, sensors);
   for (const Spectrum& r : canonical_reflectances.spectra)
     setup.canonical_surfaces.push_back(render(r, canonical, sensors));

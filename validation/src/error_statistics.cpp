@@ -36,7 +36,7 @@ ErrorStatistics error_statistics(std::vector<double> v) {
   s.max = v.back();
   const std::size_t quarter = (v.size() + 3) / 4;  // ⌈n/4⌉ ≥ 1
   double low = 0, high = 0;
-  for (std::size_t i = 0; i < quarter; ++i) low += v[i];                 // ascending
+  for (std::size_t i = 0; i < quarter; ++i) low += v[i];                     // ascending
   for (std::size_t i = v.size() - quarter; i < v.size(); ++i) high += v[i];  // ascending
   s.best25 = low / static_cast<double>(quarter);
   s.worst25 = high / static_cast<double>(quarter);

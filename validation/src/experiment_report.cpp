@@ -1,7 +1,9 @@
 #include <gmcc/validation/experiment_report.h>
 
-#include <cstdio>
 #include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <vector>
 
@@ -14,24 +16,181 @@ std::string num(double x, const char* format = "%.6f") {
   return b;
 }
 
+// The shortest decimal that reads back as the same double (std::to_chars); null if not finite.
+std::string json_number(double x) {
+  if (!std::isfinite(x)) return "null";
+  char b[64];
+  const auto end = std::to_chars(b, b + sizeof b, x).ptr;
+  return std::string(b, end);
+}
+
+// A JSON string; the names written here are the program's own and the lights' (from data files).
+std::string json_string(const std::string& t) {
+  std::string out = "\"";
+  for (unsigned char c : t) {
+    if (c == '"' || c == '\\') out += '\\', out += static_cast<char>(c);
+    else if (c < 0x20) {
+      char b[8];
+      std::snprintf(b, sizeof b, "\\u%04x", c);
+      out += b;
+    } else out += static_cast<char>(c);
+  }
+  return out + "\"";
+}
+
+std::string json_set(const ConvexSet2& set) {
+  std::string out = "{\"kind\":" + json_string(to_string(set.kind)) + ",\"vertices\":[";
+  for (std::size_t i = 0; i < set.vertices.size(); ++i)
+    out += (i ? "," : "") + std::string("[") + json_string(to_string(set.vertices[i].x)) + "," +
+           json_string(to_string(set.vertices[i].y)) + "]";
+  return out + "]}";
+}
+
+// The four quantities of RuleStats, in report order, with their column and member names.
+struct Quantity {
+  const char* name;
+  ErrorStatistics RuleStats::*member;
+};
+const Quantity quantities[] = {{"error", &RuleStats::error},
+                               {"worst_case", &RuleStats::worst_case},
+                               {"illuminant_error", &RuleStats::illuminant},
+                               {"reproduction_error", &RuleStats::reproduction}};
+
+struct Statistic {
+  const char* name;
+  double ErrorStatistics::*member;
+};
+const Statistic statistics[] = {{"mean", &ErrorStatistics::mean},       {"se", &ErrorStatistics::standard_error},
+                                {"median", &ErrorStatistics::median},   {"trimean", &ErrorStatistics::trimean},
+                                {"best25", &ErrorStatistics::best25},   {"worst25", &ErrorStatistics::worst25},
+                                {"p95", &ErrorStatistics::p95},         {"max", &ErrorStatistics::max}};
+
+// The statistic columns among the original fourteen.
+bool original_column(const std::string& column) {
+  for (const char* c : {"mean_error_deg", "mean_worst_case_deg", "median_error_deg", "median_worst_case_deg",
+                        "mean_illuminant_error_deg", "median_illuminant_error_deg",
+                        "mean_reproduction_error_deg", "max_error_deg"})
+    if (column == c) return true;
+  return false;
+}
+
 }  // namespace
 
-std::string experiment_csv(const ExperimentResult& r) {
+std::vector<std::string> experiment_csv_added_columns() {
+  std::vector<std::string> columns;
+  for (const Quantity& q : quantities)
+    for (const Statistic& st : statistics) {
+      const std::string column = std::string(st.name) + "_" + q.name + "_deg";
+      if (!original_column(column)) columns.push_back(column);
+    }
+  columns.push_back("positive_map_scenes");
+  return columns;
+}
+
+std::string experiment_csv(const ExperimentResult& r, const std::string& provenance) {
   std::ostringstream out;
+  if (!provenance.empty()) out << "# gmcc-provenance: " << provenance << '\n';
   out << "illuminant,surfaces,rule,mean_error_deg,mean_worst_case_deg,scenes,median_error_deg,"
          "median_worst_case_deg,mean_illuminant_error_deg,median_illuminant_error_deg,"
-         "mean_reproduction_error_deg,max_error_deg,empty_scenes,truth_in_feasible_set\n";
+         "mean_reproduction_error_deg,max_error_deg,empty_scenes,truth_in_feasible_set";
+  for (const std::string& column : experiment_csv_added_columns()) out << ',' << column;
+  out << '\n';
   for (const ExperimentCell& c : r.cells)
     for (std::size_t k = 0; k < c.rules.size(); ++k) {
       const RuleStats& s = c.rules[k];
       out << c.light << ',' << c.surfaces << ',' << r.rules[k] << ','
-          << num(s.mean_error_deg) << ',' << num(s.mean_worst_case_deg) << ','
-          << c.scenes - c.empty << ',' << num(s.median_error_deg) << ','
-          << num(s.median_worst_case_deg) << ',' << num(s.mean_illuminant_error_deg) << ','
-          << num(s.median_illuminant_error_deg) << ',' << num(s.mean_reproduction_error_deg) << ','
-          << num(s.max_error_deg) << ',' << c.empty << ',' << s.truth_in_feasible_set << '\n';
+          << num(s.error.mean) << ',' << num(s.worst_case.mean) << ','
+          << c.scenes - c.empty << ',' << num(s.error.median) << ','
+          << num(s.worst_case.median) << ',' << num(s.illuminant.mean) << ','
+          << num(s.illuminant.median) << ',' << num(s.reproduction.mean) << ','
+          << num(s.error.max) << ',' << c.empty << ',' << s.truth_in_feasible_set;
+      for (const Quantity& q : quantities)
+        for (const Statistic& st : statistics)
+          if (!original_column(std::string(st.name) + "_" + q.name + "_deg")) {
+            const double x = s.*q.member.*st.member;
+            out << ',' << (std::isnan(x) ? std::string() : num(x));  // undefined (se of one value): empty
+          }
+      out << ',' << s.illuminant.n << '\n';
     }
   return out.str();
+}
+
+std::string experiment_setup_json(const ExperimentResult& r) {
+  const ExperimentConfig& c = r.config;
+  std::string out = "{\"format\":\"gmcc-reproduce\",\"format_version\":1,";
+  out += "\"experiment\":" + json_string(r.name) + ",\"figure\":" + json_string(r.figure) + ",\"lights\":[";
+  for (std::size_t i = 0; i < r.lights.size(); ++i) out += (i ? "," : "") + json_string(r.lights[i]);
+  out += "],\"rules\":[";
+  for (std::size_t i = 0; i < r.rules.size(); ++i) out += (i ? "," : "") + json_string(r.rules[i]);
+  out += "],\"min_surfaces\":" + std::to_string(c.min_surfaces) + ",\"max_surfaces\":" +
+         std::to_string(c.max_surfaces) + ",\"scenes\":" + std::to_string(c.scenes) + ",\"seed\":" +
+         std::to_string(c.seed) + ",\"expansion\":{\"policy\":" + json_string(to_string(c.expansion.policy)) +
+         ",\"factor\":" + json_string(to_string(c.expansion.factor)) + "},\"noise\":" + json_number(c.noise) +
+         ",\"shading\":" + json_number(c.shading) + ",\"crule\":" + (c.crule ? "true" : "false") +
+         ",\"mean3d\":" + json_string(to_string(c.mean3d.method)) +
+         ",\"canonical_gamut\":" + json_set(r.canonical_gamut) +
+         ",\"constraint\":" + (c.constraint ? json_set(*c.constraint) : std::string("null")) +
+         ",\"surface_indices\":\"0-based\"";
+  if (c.shard_count > 1)
+    out += ",\"shard\":" + json_string(std::to_string(c.shard_index) + "/" + std::to_string(c.shard_count));
+  return out + "}";
+}
+
+std::string experiment_scenes_jsonl(const ExperimentResult& r, const std::string& provenance) {
+  std::string out = provenance.empty() ? std::string() : "{\"provenance\":" + provenance + "}\n";
+  out += experiment_setup_json(r) + "\n";
+  for (const SceneRecord& s : r.scenes) {
+    out += "{\"light\":" + json_string(r.lights.at(s.light)) + ",\"light_index\":" + std::to_string(s.light) +
+           ",\"surfaces\":" + std::to_string(s.surfaces) + ",\"scene\":" + std::to_string(s.scene) + ",\"drawn\":[";
+    for (std::size_t i = 0; i < s.drawn.size(); ++i) out += (i ? "," : "") + std::to_string(s.drawn[i]);
+    out += "],\"feasible_set\":{\"kind\":" + json_string(to_string(s.kind)) + ",\"area\":" + json_number(s.area) +
+           "},\"rules\":";
+    if (s.rules.empty()) {
+      out += "null}\n";
+      continue;
+    }
+    out += "{";
+    for (std::size_t k = 0; k < s.rules.size(); ++k) {
+      const RuleRecord& x = s.rules[k];
+      out += (k ? "," : "") + json_string(r.rules.at(k)) + ":";
+      if (!x.scored) {
+        out += "null";
+        continue;
+      }
+      out += "{\"map\":[" + json_number(x.map[0]) + "," + json_number(x.map[1]) + "],\"error_deg\":" +
+             json_number(x.error_deg) + ",\"worst_case_deg\":" + json_number(x.worst_case_deg) +
+             ",\"illuminant_error_deg\":" + (x.positive_map ? json_number(x.illuminant_error_deg) : "null") +
+             ",\"reproduction_error_deg\":" + (x.positive_map ? json_number(x.reproduction_error_deg) : "null") +
+             ",\"truth_in_feasible_set\":" + (x.truth_in_feasible_set ? "true" : "false") + "}";
+    }
+    out += "}}\n";
+  }
+  return out;
+}
+
+std::string experiment_json(const ExperimentResult& r, const std::string& provenance) {
+  std::string out = provenance.empty() ? "{" : "{\"provenance\":" + provenance + ",";
+  out += "\"setup\":" + experiment_setup_json(r) + ",\"cells\":[";
+  for (std::size_t i = 0; i < r.cells.size(); ++i) {
+    const ExperimentCell& c = r.cells[i];
+    out += std::string(i ? "," : "") + "\n{\"light\":" + json_string(c.light) + ",\"surfaces\":" +
+           std::to_string(c.surfaces) + ",\"scenes\":" + std::to_string(c.scenes) + ",\"empty_scenes\":" +
+           std::to_string(c.empty) + ",\"rules\":{";
+    for (std::size_t k = 0; k < c.rules.size(); ++k) {
+      const RuleStats& s = c.rules[k];
+      out += (k ? "," : "") + json_string(r.rules.at(k)) + ":{\"truth_in_feasible_set\":" +
+             std::to_string(s.truth_in_feasible_set);
+      for (const Quantity& q : quantities) {
+        const ErrorStatistics& e = s.*q.member;
+        out += ",\"" + std::string(q.name) + "_deg\":{\"n\":" + std::to_string(e.n);
+        for (const Statistic& st : statistics) out += ",\"" + std::string(st.name) + "\":" + json_number(e.*st.member);
+        out += "}";
+      }
+      out += "}";
+    }
+    out += "}}";
+  }
+  return out + "\n]}\n";
 }
 
 std::string experiment_table(const ExperimentResult& r) {
@@ -45,7 +204,8 @@ std::string experiment_table(const ExperimentResult& r) {
   if (r.config.constraint)
     out << ", illumination constraint (" << to_string(r.config.constraint->kind) << " with "
         << r.config.constraint->vertices.size() << " vertices)";
-  out << "\nangular error of the perspective map in degrees (Finlayson & Hordley 1999, Fig. 3)\n";
+  if (r.config.shard_count > 1) out << ", shard " << r.config.shard_index << "/" << r.config.shard_count;
+  out << "\nangular error of the perspective map in degrees (Finlayson & Hordley 1999, " << r.figure << ")\n";
   std::string light;
   for (const ExperimentCell& c : r.cells) {
     if (c.light != light) {
@@ -56,23 +216,43 @@ std::string experiment_table(const ExperimentResult& r) {
           << (c.rules.size() > 3 ? "   CRULE mean error: max-volume  centroid" : "") << "\n";
     }
     const auto& s = c.rules;
-    const double best_other = std::min(s[0].mean_error_deg, s[1].mean_error_deg);
-    const double gain = s[2].mean_error_deg > 0 ? best_other / s[2].mean_error_deg - 1 : 0;
+    const double best_other = std::min(s[0].error.mean, s[1].error.mean);
+    const double gain = s[2].error.mean > 0 ? best_other / s[2].error.mean - 1 : 0;
     char line[256];
     std::snprintf(line, sizeof line,
                   "  %-3d %22.3f %9.3f %9.3f %22.3f %9.3f %9.3f %9.0f%% %6llu", c.surfaces,
-                  s[0].mean_error_deg, s[1].mean_error_deg, s[2].mean_error_deg,
-                  s[0].mean_worst_case_deg, s[1].mean_worst_case_deg, s[2].mean_worst_case_deg,
+                  s[0].error.mean, s[1].error.mean, s[2].error.mean,
+                  s[0].worst_case.mean, s[1].worst_case.mean, s[2].worst_case.mean,
                   100 * gain, static_cast<unsigned long long>(c.empty));
     out << line;
     if (s.size() > 3) {
-      std::snprintf(line, sizeof line, " %30.3f %9.3f", s[3].mean_error_deg, s[4].mean_error_deg);
+      std::snprintf(line, sizeof line, " %30.3f %9.3f", s[3].error.mean, s[4].error.mean);
       out << line;
     }
     out << "\n";
   }
   out << "\n3-D gain: how much larger the better of max-area and 2-D mean's mean error is than the "
          "3-D mean's.\n";
+  out << "\nmap-space error statistics in degrees (docs/reproduction.md, Statistics): mean, standard "
+         "error, median, trimean,\nmean of the best and of the worst 25%, 95th percentile, maximum, over "
+         "the scenes with a map\n";
+  light.clear();
+  for (const ExperimentCell& c : r.cells) {
+    if (c.light != light) {
+      light = c.light;
+      out << "\n" << light << "\n"
+          << "  n   rule                  mean      se  median trimean  best25 worst25     p95     max\n";
+    }
+    for (std::size_t k = 0; k < c.rules.size(); ++k) {
+      const ErrorStatistics& e = c.rules[k].error;
+      char line[256];
+      const std::string se = std::isnan(e.standard_error) ? "-" : num(e.standard_error, "%.3f");
+      std::snprintf(line, sizeof line, "  %-3d %-16s %9.3f %7s %7.3f %7.3f %7.3f %7.3f %7.3f %7.3f\n",
+                    c.surfaces, r.rules[k].c_str(), e.mean, se.c_str(), e.median, e.trimean, e.best25,
+                    e.worst25, e.p95, e.max);
+      out << line;
+    }
+  }
   return out.str();
 }
 
@@ -86,8 +266,8 @@ std::string experiment_plot_data(const ExperimentResult& r) {
       out << "# " << light << ": surfaces, mean error (max_area mean_2d mean_3d), mean worst case (same)\n";
     }
     out << c.surfaces;
-    for (const auto& s : c.rules) out << ' ' << num(s.mean_error_deg);
-    for (const auto& s : c.rules) out << ' ' << num(s.mean_worst_case_deg);
+    for (const auto& s : c.rules) out << ' ' << num(s.error.mean);
+    for (const auto& s : c.rules) out << ' ' << num(s.worst_case.mean);
     out << '\n';
   }
   return out.str();
@@ -99,7 +279,7 @@ std::string experiment_plot_script(const ExperimentResult& r, const std::string&
     if (lights.empty() || lights.back() != c.light) lights.push_back(c.light);
   const std::size_t rows = lights.size();
   std::ostringstream g;
-  g << "# gmcc reproduce " << r.name << ": laid out like Finlayson & Hordley (1999) Fig. 3\n"
+  g << "# gmcc reproduce " << r.name << ": laid out like Finlayson & Hordley (1999) " << r.figure << "\n"
     << "if (!exists('png_file')) png_file = '" << stem << ".png'\n"
     << "if (!exists('svg_file')) svg_file = '" << stem << ".svg'\n"
     << "set datafile commentschars '#'\n"

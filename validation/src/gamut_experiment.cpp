@@ -68,40 +68,29 @@ double normal(Generator& g) {
   return std::sqrt(-2 * std::log(u)) * std::cos(2 * M_PI * v);
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  const std::size_t h = v.size() / 2;
-  std::nth_element(v.begin(), v.begin() + static_cast<long>(h), v.end());
-  const double upper = v[h];
-  if (v.size() % 2) return upper;
-  const double lower = *std::max_element(v.begin(), v.begin() + static_cast<long>(h));
-  return (lower + upper) / 2;
-}
-
-double mean(const std::vector<double>& v) {
-  double s = 0;
-  for (double x : v) s += x;  // in scene order: deterministic
-  return v.empty() ? 0 : s / static_cast<double>(v.size());
-}
-
 Point2 exact_map(const MapEstimate& e) {
   return e.exact ? *e.exact : Point2{rational_from_double(e.map[0]), rational_from_double(e.map[1])};
 }
 
-ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& config,
-                        const CanonicalConstraints& gamut, const std::vector<Point2>& chromaticities,
-                        std::size_t light_index, int n, std::atomic<std::uint64_t>& done) {
+double to_double(const Rational& q) { return to_double_nearest(q); }
+
+// Scenes s_begin <= s < s_end of cell (light_index, n), each with its own generator.
+std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const ExperimentConfig& config,
+                                  const CanonicalConstraints& gamut, const std::vector<Point2>& chromaticities,
+                                  std::size_t light_index, int n, std::uint64_t s_begin, std::uint64_t s_end,
+                                  std::atomic<std::uint64_t>& done) {
   const TestLight& light = setup.lights[light_index];
-  ExperimentCell cell;
-  cell.light = light.name;
-  cell.surfaces = n;
   const std::size_t R = config.crule ? 5 : 3;
-  std::vector<std::vector<double>> error(R), worst(R), illuminant(R), reproduction(R);
-  cell.rules.resize(R);
+  std::vector<SceneRecord> records;
+  records.reserve(static_cast<std::size_t>(s_end - s_begin));
   std::vector<std::size_t> pool(light.surfaces.size());
   SelectionOptions selection;
   selection.mean3d = config.mean3d;
-  for (std::uint64_t s = 0; s < config.scenes; ++s, ++done) {
+  for (std::uint64_t s = s_begin; s < s_end; ++s, ++done) {
+    SceneRecord& rec = records.emplace_back();
+    rec.light = light_index;
+    rec.surfaces = n;
+    rec.scene = s;
     // std::seed_seq{these six words}, computed faster with the same output.
     internal::SeedSequence<6> seq({static_cast<std::uint32_t>(config.seed), static_cast<std::uint32_t>(config.seed >> 32),
                                    static_cast<std::uint32_t>(light_index), static_cast<std::uint32_t>(n),
@@ -113,6 +102,7 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
     for (int i = 0; i < n; ++i)
       std::swap(pool[static_cast<std::size_t>(i)],
                 pool[static_cast<std::size_t>(i) + below(g, pool.size() - static_cast<std::size_t>(i))]);
+    if (config.keep_scenes) rec.drawn.assign(pool.begin(), pool.begin() + n);  // only records need it
     // The scene's chromaticities by address: the light's precomputed ones, or this scene's own.
     std::vector<const Point2*> image;
     std::vector<Point2> own;
@@ -137,28 +127,24 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
       if (sgn(c.b) > 0) own.push_back(perspective_chromaticity(c)), image.push_back(&own.back());
       image_colours.push_back(std::move(c));
     }
-    ++cell.scenes;
-    if (image.empty()) {
-      ++cell.empty;
-      continue;
-    }
+    if (image.empty()) continue;
     const FeasiblePolygon P = feasible_polygon(gamut, image);
-    if (P.kind() == ConvexKind::empty) {
-      ++cell.empty;
-      continue;
-    }
+    rec.kind = P.kind();
+    if (P.kind() == ConvexKind::empty) continue;
+    rec.rules.resize(R);
     // With Finlayson's constraint, `gamut` carries C too: P is F ∩ C.
     const bool truth_inside = P.contains(light.true_map);
-    auto record = [&](std::size_t r, double map_error, double worst_case, bool truth) {
-      error[r].push_back(map_error);
-      worst[r].push_back(worst_case);
-      cell.rules[r].truth_in_feasible_set += truth;
-    };
     auto score = [&](std::size_t r, const Point2& m, double worst_case, bool truth) {
-      record(r, map_angular_error_deg(m, light.true_map), worst_case, truth);
-      if (sgn(m.x) > 0 && sgn(m.y) > 0) {
-        illuminant[r].push_back(illuminant_angular_error_deg(m, light.true_map, setup.canonical_light));
-        reproduction[r].push_back(reproduction_angular_error_deg(m, light.true_map));
+      RuleRecord& x = rec.rules[r];
+      x.scored = true;
+      x.map = {to_double(m.x), to_double(m.y)};
+      x.error_deg = map_angular_error_deg(m, light.true_map);
+      x.worst_case_deg = worst_case;
+      x.truth_in_feasible_set = truth;
+      x.positive_map = sgn(m.x) > 0 && sgn(m.y) > 0;
+      if (x.positive_map) {
+        x.illuminant_error_deg = illuminant_angular_error_deg(m, light.true_map, setup.canonical_light);
+        x.reproduction_error_deg = reproduction_angular_error_deg(m, light.true_map);
       }
     };
     // The fast certified route (rule_errors.h) where it applies and can certify its angles;
@@ -167,15 +153,29 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
     if (config.certified_fast_route && config.mean3d.method == Mean3dMethod::analytic && config.mean3d.precision_bits == 0)
       fast = rule_errors(P, light.true_map, setup.canonical_light);
     if (fast) {
+      // The area from the vertex enclosures' midpoints (shoelace): a description of F.
+      const std::vector<EnclosedVertex>& v = P.vertices();
+      double twice = 0;
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        const EnclosedVertex &p = v[i], &q = v[(i + 1) % v.size()];
+        twice += static_cast<double>(p.x.mid) * static_cast<double>(q.y.mid) -
+                 static_cast<double>(q.x.mid) * static_cast<double>(p.y.mid);
+      }
+      rec.area = twice / 2;
       for (std::size_t r = 0; r < 3; ++r) {
-        const RuleErrors& x = (*fast)[r];
-        record(r, x.map_error_deg, x.worst_case_deg, truth_inside);
-        if (x.positive_map) {
-          illuminant[r].push_back(x.illuminant_error_deg);
-          reproduction[r].push_back(x.reproduction_error_deg);
-        }
+        const RuleErrors& e = (*fast)[r];
+        RuleRecord& x = rec.rules[r];
+        x.scored = true;
+        x.map = e.map;
+        x.error_deg = e.map_error_deg;
+        x.worst_case_deg = e.worst_case_deg;
+        x.truth_in_feasible_set = truth_inside;
+        x.positive_map = e.positive_map;
+        x.illuminant_error_deg = e.illuminant_error_deg;
+        x.reproduction_error_deg = e.reproduction_error_deg;
       }
     } else {
+      rec.area = to_double(area(P.exact()));
       const Selections sel = select_maps(P.exact(), selection);
       const std::array<const std::optional<Selection>*, 3> rules{&sel.max_area, &sel.mean_2d, &sel.mean_3d};
       for (std::size_t r = 0; r < 3; ++r) {
@@ -198,21 +198,46 @@ ExperimentCell run_cell(const ExperimentSetup& setup, const ExperimentConfig& co
       }
     }
   }
-  for (std::size_t r = 0; r < R; ++r) {
-    RuleStats& st = cell.rules[r];
-    st.mean_error_deg = mean(error[r]);
-    st.median_error_deg = median(error[r]);
-    st.max_error_deg = error[r].empty() ? 0 : *std::max_element(error[r].begin(), error[r].end());
-    st.mean_worst_case_deg = mean(worst[r]);
-    st.median_worst_case_deg = median(worst[r]);
-    st.mean_illuminant_error_deg = mean(illuminant[r]);
-    st.median_illuminant_error_deg = median(illuminant[r]);
-    st.mean_reproduction_error_deg = mean(reproduction[r]);
-  }
-  return cell;
+  return records;
 }
 
 }  // namespace
+
+ExperimentCell summarise_cell(const std::string& light, int n, std::vector<const SceneRecord*> scenes,
+                              std::size_t R) {
+  std::sort(scenes.begin(), scenes.end(), [](const SceneRecord* a, const SceneRecord* b) { return a->scene < b->scene; });
+  ExperimentCell cell;
+  cell.light = light;
+  cell.surfaces = n;
+  cell.rules.resize(R);
+  std::vector<std::vector<double>> error(R), worst(R), illuminant(R), reproduction(R);
+  for (const SceneRecord* rec : scenes) {
+    ++cell.scenes;
+    if (rec->rules.empty()) {
+      ++cell.empty;
+      continue;
+    }
+    for (std::size_t r = 0; r < R && r < rec->rules.size(); ++r) {
+      const RuleRecord& x = rec->rules[r];
+      if (!x.scored) continue;
+      error[r].push_back(x.error_deg);
+      worst[r].push_back(x.worst_case_deg);
+      cell.rules[r].truth_in_feasible_set += x.truth_in_feasible_set;
+      if (x.positive_map) {
+        illuminant[r].push_back(x.illuminant_error_deg);
+        reproduction[r].push_back(x.reproduction_error_deg);
+      }
+    }
+  }
+  for (std::size_t r = 0; r < R; ++r) {
+    RuleStats& st = cell.rules[r];
+    st.error = error_statistics(std::move(error[r]));
+    st.worst_case = error_statistics(std::move(worst[r]));
+    st.illuminant = error_statistics(std::move(illuminant[r]));
+    st.reproduction = error_statistics(std::move(reproduction[r]));
+  }
+  return cell;
+}
 
 ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const ExperimentConfig& config) {
   if (config.min_surfaces < 1 || config.max_surfaces < config.min_surfaces)
@@ -221,8 +246,12 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
     if (static_cast<std::size_t>(config.max_surfaces) > l.surfaces.size())
       throw std::invalid_argument("light " + l.name + " has only " +
                                   std::to_string(l.surfaces.size()) + " surfaces");
+  if (config.shard_count < 1 || config.shard_index < 1 || config.shard_index > config.shard_count)
+    throw std::invalid_argument("a shard K/N needs 1 <= K <= N");
   ExperimentResult result;
   result.name = setup.name;
+  result.figure = setup.figure;
+  for (const TestLight& l : setup.lights) result.lights.push_back(l.name);
   result.config = config;
   result.config.progress = nullptr;
   result.rules.assign(experiment_rules.begin(), experiment_rules.end());
@@ -239,6 +268,18 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
   for (std::size_t l = 0; l < setup.lights.size(); ++l)
     for (int n = config.min_surfaces; n <= config.max_surfaces; ++n) jobs.push_back({l, n});
   result.cells.resize(jobs.size());
+  // The shard's scenes: global indices [first, last) of the canonical order (light, n, s).
+  const unsigned __int128 T = static_cast<unsigned __int128>(config.scenes) * jobs.size();
+  const auto first = static_cast<std::uint64_t>(T * (config.shard_index - 1) / config.shard_count);
+  const auto last = static_cast<std::uint64_t>(T * config.shard_index / config.shard_count);
+  auto scene_range = [&](std::size_t j) {
+    const unsigned __int128 base = static_cast<unsigned __int128>(config.scenes) * j;
+    auto clamp = [&](std::uint64_t g) {
+      return static_cast<std::uint64_t>(g <= base ? 0 : std::min<unsigned __int128>(g - base, config.scenes));
+    };
+    return std::pair{clamp(first), clamp(last)};
+  };
+  std::vector<std::vector<SceneRecord>> records(jobs.size());
 
   // G_c (and Finlayson's constraint C, when given) prepared once for every scene.
   const CanonicalConstraints gamut = config.constraint
@@ -272,7 +313,14 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
   auto worker = [&] {
     for (std::size_t j; (j = next++) < jobs.size();) {
       try {
-        result.cells[j] = run_cell(setup, config, gamut, chromaticities[jobs[j].light], jobs[j].light, jobs[j].n, done);
+        const auto [s_begin, s_end] = scene_range(j);
+        records[j] = run_cell(setup, config, gamut, chromaticities[jobs[j].light], jobs[j].light, jobs[j].n,
+                              s_begin, s_end, done);
+        std::vector<const SceneRecord*> scenes;
+        for (const SceneRecord& rec : records[j]) scenes.push_back(&rec);
+        result.cells[j] = summarise_cell(setup.lights[jobs[j].light].name, jobs[j].n, std::move(scenes),
+                                         result.rules.size());
+        if (!config.keep_scenes) std::vector<SceneRecord>().swap(records[j]);
       } catch (...) {
         std::lock_guard<std::mutex> lock(failure_mutex);
         if (!failure) failure = std::current_exception();
@@ -288,7 +336,7 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
   };
   std::vector<std::thread> pool =
       start_threads(std::max<std::size_t>(std::min<std::size_t>(threads, jobs.size()), 1) - 1, thread_worker);
-  const std::uint64_t total = config.scenes * jobs.size();
+  const std::uint64_t total = last - first;
   std::vector<std::thread> reporter_free_worker;
   if (config.progress) reporter_free_worker = start_threads(1, thread_worker);
   if (!reporter_free_worker.empty()) {  // report from this thread while the others work, then join in
@@ -303,6 +351,9 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
   }
   for (std::thread& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
+  if (config.keep_scenes)
+    for (std::vector<SceneRecord>& cell : records)
+      for (SceneRecord& rec : cell) result.scenes.push_back(std::move(rec));
   return result;
 }
 

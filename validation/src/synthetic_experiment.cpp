@@ -50,6 +50,7 @@ ExperimentSetup synthetic_setup(const SpectralTable& munsell, const SpectralTabl
   const Spectrum canonical = named_light(canonical_light, basis);
   ExperimentSetup setup;
   setup.name = "synthetic";
+  setup.figure = "Fig. 3";
   setup.canonical_light = {canonical.at(w[0]), canonical.at(w[1]), canonical.at(w[2])};
   for (const Spectrum& chip : munsell.spectra)
     setup.canonical_surfaces.push_back(render_narrow_band(chip, canonical, w));

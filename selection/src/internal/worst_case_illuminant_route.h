@@ -14,7 +14,7 @@ enum class IlluminantRoute {
   /// Every vertex's closeness and every edge's quartic in exact arithmetic (the definition).
   exact,
   /// Double enclosures skip vertices and edges that cannot hold the worst case (issue 13's first
-  /// round, 396d073); the rest exactly, in edge order.
+  /// round, 396d073, and the dyadic edge pieces of e97d192); the rest exactly, in edge order.
   double_filtered,
   /// The library's route: the double filter, then MPFI enclosures at increasing precision on what
   /// survives it, then the exact work on the survivors (docs/math.md §3).

@@ -21,6 +21,9 @@ struct RuleErrors {
   bool positive_map;                ///< both components of the selected map are > 0
   double illuminant_error_deg = 0;  ///< illuminant_angular_error_deg (when positive_map)
   double reproduction_error_deg = 0;///< reproduction_angular_error_deg (when positive_map)
+  /// The selected map's midpoint in doubles: within its certified enclosure, which is narrow
+  /// enough for the angles above, but not necessarily the nearest double (for records only).
+  std::array<double, 2> map{};
 };
 
 /// The certified accuracy of every angle rule_errors returns: within 2^-36·(1 + θ) degrees of the

@@ -9,6 +9,7 @@
 #include <gmcc/geometry/convex_set.h>
 #include <gmcc/geometry/convex_set_3.h>
 #include <gmcc/selection/mean_3d.h>
+#include <gmcc/validation/error_statistics.h>
 
 #include <array>
 #include <cstdint>
@@ -31,6 +32,7 @@ struct TestLight {
 /// What an experiment is made of (built by synthetic_setup or camera_setup).
 struct ExperimentSetup {
   std::string name;
+  std::string figure;                      ///< the paper's figure it reproduces, for the reports
   std::vector<Colour> canonical_surfaces;  ///< the canonical gamut's colours
   Colour canonical_light;                  ///< the canonical light as the sensors see it
   std::vector<TestLight> lights;
@@ -60,6 +62,13 @@ struct ExperimentConfig {
   /// rule_errors_accuracy).
   bool certified_fast_route = true;
   unsigned threads = 0;        ///< worker threads (0: the hardware's); results do not depend on it
+  /// Run only part `shard_index` (1-based) of `shard_count` disjoint parts: the scenes in
+  /// canonical order (light, then surface count, then scene index) numbered g = 0, 1, …, T − 1,
+  /// part K holds ⌊(K−1)·T/N⌋ ≤ g < ⌊K·T/N⌋ (docs/reproduction.md "Sharding"). A scene's
+  /// result never depends on the sharding. The cells then summarise only the part's scenes.
+  std::uint64_t shard_index = 1, shard_count = 1;
+  /// Keep every scene's record in ExperimentResult::scenes (for --scenes-out and merging).
+  bool keep_scenes = false;
   /// Called now and then from the calling thread with (scenes done, scenes in all).
   std::function<void(std::uint64_t, std::uint64_t)> progress;
 };
@@ -68,15 +77,35 @@ struct ExperimentConfig {
 inline const std::array<const char*, 3> experiment_rules{"max_area", "mean_2d", "mean_3d"};
 inline const std::array<const char*, 2> experiment_rules_3d{"crule_max_volume", "crule_centroid"};
 
-/// Statistics of one rule over the scenes of a cell that had a feasible map.
+/// Statistics of one rule over the scenes of a cell that had a feasible map (error_statistics.h).
 struct RuleStats {
-  double mean_error_deg = 0, median_error_deg = 0;            ///< map space (the paper's)
-  double mean_worst_case_deg = 0, median_worst_case_deg = 0;  ///< map space, over F
-  double mean_illuminant_error_deg = 0, median_illuminant_error_deg = 0;
-  double mean_reproduction_error_deg = 0;  ///< Finlayson & Zakizadeh (2014)
-  double max_error_deg = 0;
+  ErrorStatistics error;         ///< map-space angular error (the paper's), degrees
+  ErrorStatistics worst_case;    ///< map space, the largest angle to any map of F
+  ErrorStatistics illuminant;    ///< recovery (illuminant-space) error, over scenes with a positive map
+  ErrorStatistics reproduction;  ///< Finlayson & Zakizadeh (2014), over scenes with a positive map
   /// Scenes in which the true map lay in F (always, for an exact noise-free experiment).
   std::uint64_t truth_in_feasible_set = 0;
+};
+
+/// One rule's result in one scene.
+struct RuleRecord {
+  bool scored = false;                ///< the rule gave a map; the members below are then set
+  std::array<double, 2> map{};        ///< the perspective map (CRULE: (d1/d3, d2/d3)), as doubles
+  double error_deg = 0, worst_case_deg = 0;
+  bool positive_map = false;          ///< both components > 0: the next two are then set
+  double illuminant_error_deg = 0, reproduction_error_deg = 0;
+  bool truth_in_feasible_set = false; ///< CRULE: the true diagonal map in the 3-D feasible set
+};
+
+/// One scene: which surfaces were drawn and what every rule made of them.
+struct SceneRecord {
+  std::size_t light = 0;     ///< index into the setup's lights
+  int surfaces = 0;          ///< n
+  std::uint64_t scene = 0;   ///< s, 0-based within the (light, n) cell
+  std::vector<std::uint32_t> drawn;  ///< 0-based surface indices (data file columns), in draw order
+  ConvexKind kind = ConvexKind::empty;  ///< of F (F ∩ C with an illumination constraint)
+  double area = 0;           ///< F's area as a double (0 unless a polygon)
+  std::vector<RuleRecord> rules;  ///< in ExperimentResult::rules order; empty when F is empty
 };
 
 /// One (light, surface count) cell.
@@ -90,15 +119,27 @@ struct ExperimentCell {
 
 struct ExperimentResult {
   std::string name;
+  std::string figure;                 ///< ExperimentSetup::figure
+  std::vector<std::string> lights;    ///< the test lights' names, in setup order
   ExperimentConfig config;
   ConvexSet2 canonical_gamut;
   std::vector<std::string> rules;     ///< experiment_rules, then experiment_rules_3d with crule
   std::vector<ExperimentCell> cells;  ///< lights in setup order, then surfaces ascending
+  /// With ExperimentConfig::keep_scenes: every scene run, in canonical order (light, n, s).
+  std::vector<SceneRecord> scenes;
 };
 
+/// The cell of `light` and `n` summarised from its scenes' records (any order of scenes is
+/// taken in ascending scene index): the one aggregation used by run_gamut_experiment and by a
+/// merge of shards. \param rules the number of rules each non-empty record carries.
+ExperimentCell summarise_cell(const std::string& light, int n, std::vector<const SceneRecord*> scenes,
+                              std::size_t rules);
+
 /// Run the experiment. Scene (light ℓ, count n, index s) draws n distinct surfaces uniformly with
-/// its own generator, std::mt19937_64 seeded by std::seed_seq{seed, ℓ, n, s} (both fully specified
-/// by the C++ standard), so the result is identical for any thread count and on any platform.
+/// its own generator, std::mt19937_64 seeded by std::seed_seq of the six 32-bit words
+/// {seed low, seed high, ℓ, n, s low, s high} (both fully specified by the C++ standard; the
+/// draw is docs/reproduction.md "Scene generator"), so the result is identical for any thread
+/// count, any sharding and on any platform.
 /// \throws std::invalid_argument if a cell asks for more surfaces than there are.
 ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const ExperimentConfig& config);
 

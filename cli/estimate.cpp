@@ -1,0 +1,305 @@
+#include "estimate.h"
+
+#include <gmcc/geometry/canonical_gamut.h>
+#include <gmcc/geometry/illumination_constraint.h>
+#include <gmcc/selection/prepare_canonical.h>
+#include <gmcc/selection/select_scene.h>
+#include <gmcc/validation/colour_csv.h>
+#include <gmcc/validation/image_file.h>
+#include <gmcc/validation/image_pixels.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <sstream>
+
+#include "integer_option.h"
+#include "json_output.h"
+#include "output_files.h"
+#include "select.h"
+#include "write_stdout.h"
+
+namespace gmcc::cli {
+namespace {
+
+// One r,g,b with channels > 0 (--truth, --canonical-illuminant).
+Colour light(const std::string& option, const std::string& text) {
+  ColourTable t;
+  try {
+    t = parse_colour_csv(text, option);
+  } catch (const InputError&) {
+    throw InputError(option, 0, quoted_text(text) + " is not a light r,g,b");
+  }
+  if (t.colours.size() != 1) throw InputError(option, 0, "expected one r,g,b");
+  for (const Rational* x : {&t.colours[0].r, &t.colours[0].g, &t.colours[0].b})
+    if (sgn(*x) <= 0) throw InputError(option, 0, "every channel must be > 0");
+  return t.colours[0];
+}
+
+// "x1,y1,x2,y2,..." in pixel coordinates, read exactly.
+std::vector<Point2> polygon(const std::string& text) {
+  std::vector<Rational> numbers;
+  for (std::size_t start = 0;;) {
+    const auto comma = text.find(',', start);
+    const std::string field = text.substr(start, comma - start);
+    try {
+      numbers.push_back(parse_rational(field));
+    } catch (const std::invalid_argument& e) {
+      throw InputError("--exclude-polygon", 0, quoted_text(text) + ": " + e.what());
+    }
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (numbers.size() % 2 != 0 || numbers.size() < 6)
+    throw InputError("--exclude-polygon", 0,
+                     quoted_text(text) + ": expected x1,y1,x2,y2,x3,y3[,...], 3 or more vertices");
+  std::vector<Point2> p;
+  for (std::size_t i = 0; i < numbers.size(); i += 2) p.push_back({numbers[i], numbers[i + 1]});
+  return p;
+}
+
+struct Settings {
+  SelectSceneOptions scene;
+  PixelRules pixels;
+  bool saturation_max = false;  // the image's own maximum code, 2^bits - 1
+  std::optional<Colour> truth;
+};
+
+Settings settings_of(const EstimateOptions& o) {
+  Settings s;
+  s.pixels.black_level =
+      static_cast<std::uint32_t>(integer_option("--black-level", o.black_level, 0, 65535));
+  if (o.saturation == "max") {
+    s.saturation_max = true;
+  } else if (o.saturation != "none") {
+    s.pixels.saturation =
+        static_cast<std::uint32_t>(integer_option("--saturation", o.saturation, 1, 65536));
+  }
+  for (const std::string& text : o.exclude_polygons) s.pixels.exclude_polygons.push_back(polygon(text));
+  s.pixels.bin = static_cast<std::uint32_t>(integer_option("--bin", o.bin, 1, 4096));
+  s.scene.canonical_illuminant = light("--canonical-illuminant", o.canonical_illuminant);
+  if (!o.truth.empty()) {
+    if (o.images.size() != 1)
+      throw InputError("--truth", 0, "applies to one image; this run has " +
+                                         std::to_string(o.images.size()));
+    s.truth = light("--truth", o.truth);
+  }
+  try {
+    s.scene.expansion.policy = expansion_policy_from_string(o.expand_policy);
+    s.scene.expansion.factor = parse_rational(o.expand_factor);
+    if (sgn(s.scene.expansion.factor) < 0) throw std::invalid_argument("must be >= 0");
+    if (sgn(s.scene.expansion.factor) > 0 && s.scene.expansion.policy == ExpansionPolicy::none)
+      throw std::invalid_argument("needs --expand-policy centroid-clip or multiplicative");
+  } catch (const std::invalid_argument& e) {
+    throw InputError("--expand", 0, e.what());
+  }
+  s.scene.on_empty = recovery_policy_from_string(o.on_empty);
+  s.scene.illuminant_worst_case = o.illuminant_worst_case != "off";
+  return s;
+}
+
+// The light a perspective map m implies under the canonical light c: d = (m1, m2, 1) takes the
+// image to the canonical colours, so e = c ⊘ d = (c1/m1, c2/m2, c3), here with unit length.
+std::array<double, 3> light_of(const std::array<double, 2>& m, const Colour& c) {
+  const double e[3] = {to_double_nearest(c.r) / m[0], to_double_nearest(c.g) / m[1],
+                       to_double_nearest(c.b)};
+  const double n = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+  return {e[0] / n, e[1] / n, e[2] / n};
+}
+
+// The white-balanced image under map m: every kept channel (black level removed) times d_k,
+// d = (m1, m2, 1) scaled so that its largest component is 1 (no channel grows past its code
+// range); pixels dropped as saturated stay at the largest code.
+RgbImage corrected(const RgbImage& image, const PixelRules& rules, std::uint32_t saturation,
+                   const std::array<double, 2>& m) {
+  const double big = std::max({m[0], m[1], 1.0});
+  const double d[3] = {m[0] / big, m[1] / big, 1.0 / big};
+  RgbImage out = image;
+  out.bits = 16;
+  const double scale = image.bits == 8 ? 257.0 : 1.0;  // 8-bit codes to 16-bit
+  for (std::size_t p = 0; p < image.width * image.height; ++p) {
+    bool clipped = false;
+    for (int c = 0; c < 3; ++c) clipped = clipped || image.samples[3 * p + c] >= saturation;
+    for (int c = 0; c < 3; ++c) {
+      const std::uint32_t v = image.samples[3 * p + c];
+      if (clipped) {
+        out.samples[3 * p + c] = 65535;
+        continue;
+      }
+      const double x = (v > rules.black_level ? v - rules.black_level : 0) * d[c] * scale;
+      out.samples[3 * p + c] = static_cast<std::uint16_t>(std::min(65535.0, std::floor(x + 0.5)));
+    }
+  }
+  return out;
+}
+
+const char* const kRules[3] = {"max_area", "mean_2d", "mean_3d"};
+
+const std::optional<Selection>& rule(const Selections& s, int k) {
+  return k == 0 ? s.max_area : k == 1 ? s.mean_2d : s.mean_3d;
+}
+
+std::string fixed(double x, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
+  return buf;
+}
+
+}  // namespace
+
+CLI::App* add_estimate_command(CLI::App& app, EstimateOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "estimate",
+      "Estimate the light of linear camera images (8/16-bit PNG or TIFF) by gamut mapping: "
+      "pixels to colours by explicit pre-processing (docs/conventions.md §8), then the feasible "
+      "set and the three selection rules against one canonical gamut.");
+  o.command = cmd;
+  cmd->add_option("--canonical", o.canonical_path, "canonical colours, one r,g,b per line")
+      ->required();
+  cmd->add_option("images", o.images, "image files (PNG or TIFF, linear RGB)")->required();
+  cmd->add_option("--black-level", o.black_level, "subtracted from every channel, 0 to 65535")
+      ->capture_default_str();
+  cmd->add_option("--saturation", o.saturation,
+                  "drop pixels with any raw channel at or above this: a value, max (the file's "
+                  "largest code, 2^bits - 1) or none")
+      ->capture_default_str();
+  cmd->add_option("--exclude-polygon", o.exclude_polygons,
+                  "x1,y1,x2,y2,x3,y3[,...]: exclude the pixels whose centres lie in this polygon "
+                  "(pixel coordinates, y down; repeatable), e.g. a chart's four corners")
+      ->take_first();
+  cmd->add_option("--mask", o.mask_path,
+                  "a PNG or TIFF of the image's size: pixels where it is 0 in every channel are "
+                  "excluded");
+  cmd->add_option("--bin", o.bin, "average the kept pixels of each BxB block into one colour, 1 to 4096")
+      ->capture_default_str();
+  cmd->add_option("--truth", o.truth,
+                  "r,g,b of the true light (one image): each rule's errors against it")
+      ->type_name("R,G,B");
+  cmd->add_option("--canonical-illuminant", o.canonical_illuminant,
+                  "r,g,b of the canonical light c: the estimate of map m is c ⊘ (m, 1)")
+      ->capture_default_str();
+  cmd->add_option("--expand", o.expand_factor, "expand the canonical gamut by this factor")
+      ->capture_default_str();
+  cmd->add_option("--expand-policy", o.expand_policy, "none | centroid-clip | multiplicative")
+      ->check(CLI::IsMember({"none", "centroid-clip", "multiplicative"}))
+      ->capture_default_str();
+  cmd->add_option("--on-empty", o.on_empty, "none | grow-canonical | min-violation")
+      ->check(CLI::IsMember({"none", "grow-canonical", "min-violation"}))
+      ->capture_default_str();
+  cmd->add_option("--illuminant-worst-case", o.illuminant_worst_case,
+                  "on | off: each rule's illuminant-space worst case")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  cmd->add_flag("--json", o.json, "print one JSON document instead of a summary");
+  cmd->add_option("--corrected", o.corrected_dir,
+                  "write DIR/<image>_<rule>.png, the image white-balanced by each rule's map "
+                  "(16-bit)");
+  return cmd;
+}
+
+int run_estimate(const EstimateOptions& o) {
+  const Settings s = settings_of(o);
+  const ColourTable canonical = read_colour_csv(o.canonical_path);
+  const PreparedCanonical prepared = [&] {
+    try {
+      return prepare_canonical(canonical.colours, s.scene);
+    } catch (const SceneInputError& e) {
+      throw select_input_error(e, canonical, nullptr, nullptr);
+    }
+  }();
+  std::optional<RgbImage> mask;
+  if (!o.mask_path.empty()) mask = read_image(o.mask_path);
+  if (!o.corrected_dir.empty()) ensure_directory(o.corrected_dir);
+
+  Json document;
+  Json images = Json::array();
+  std::ostringstream text;
+  // Files are committed only once every image is done: nothing half-written on an error.
+  std::vector<std::pair<std::filesystem::path, std::string>> outputs;
+  for (const std::string& path : o.images) {
+    const RgbImage image = read_image(path);
+    PixelRules rules = s.pixels;
+    const std::uint32_t max_code = (1u << image.bits) - 1;
+    if (s.saturation_max) rules.saturation = max_code;
+    if (mask) {
+      if (mask->width != image.width || mask->height != image.height)
+        throw InputError(o.mask_path, 0,
+                         "the mask is " + std::to_string(mask->width) + "x" +
+                             std::to_string(mask->height) + ", the image " + path + " is " +
+                             std::to_string(image.width) + "x" + std::to_string(image.height));
+      rules.keep.resize(image.width * image.height);
+      for (std::size_t p = 0; p < rules.keep.size(); ++p)
+        rules.keep[p] = mask->samples[3 * p] || mask->samples[3 * p + 1] || mask->samples[3 * p + 2];
+    }
+    const ImageColours colours = image_colours(image, rules);
+    if (colours.colours.empty())
+      throw InputError(path, 0, "no pixel left after the mask and saturation (" +
+                                    std::to_string(colours.counts.masked) + " masked, " +
+                                    std::to_string(colours.counts.saturated) + " saturated)");
+    SceneResult result;
+    try {
+      result = select_scene(prepared, colours.colours, s.truth);
+    } catch (const SceneInputError& e) {
+      if (e.input == SceneInput::image)
+        throw InputError(path, 0, std::string(e.what()) +
+                                      (e.problem == SceneProblem::no_usable_colour
+                                           ? " (every kept pixel has b = 0 after the black level)"
+                                           : ""));
+      throw select_input_error(e, canonical, nullptr, nullptr);
+    }
+    Json record;
+    record["file"] = path;
+    record["width"] = image.width;
+    record["height"] = image.height;
+    record["bits"] = image.bits;
+    record["pixels"] = {{"total", colours.counts.pixels},     {"masked", colours.counts.masked},
+                        {"saturated", colours.counts.saturated}, {"kept", colours.counts.kept},
+                        {"colours", colours.counts.colours}};
+    Json estimates = Json::object();
+    text << path << ": " << image.width << "x" << image.height << " (" << image.bits
+         << "-bit), " << colours.counts.masked << " pixels masked, " << colours.counts.saturated
+         << " saturated, " << colours.counts.kept << " kept, " << colours.counts.colours
+         << " distinct colours\n  feasible set: " << to_string(result.feasible.kind) << ", "
+         << result.feasible.vertices.size() << " vertices\n";
+    for (int k = 0; k < 3; ++k) {
+      const std::optional<Selection>& sel = rule(result.selections, k);
+      if (!sel || !sel->estimate.valid) continue;
+      const std::array<double, 3> e = light_of(sel->estimate.map, prepared.options.canonical_illuminant);
+      estimates[kRules[k]] = {{"map", sel->estimate.map}, {"light", e}};
+      text << "  " << kRules[k] << "  light (" << fixed(e[0], 6) << ", " << fixed(e[1], 6) << ", "
+           << fixed(e[2], 6) << ")";
+      if (result.truth) {
+        const std::optional<TruthErrors>& t =
+            k == 0 ? result.truth->max_area : k == 1 ? result.truth->mean_2d : result.truth->mean_3d;
+        if (t && t->illuminant_error_deg)
+          text << "  recovery error " << fixed(*t->illuminant_error_deg, 3) << " deg";
+      }
+      text << "\n";
+      if (!o.corrected_dir.empty()) {
+        const std::string stem = std::filesystem::path(path).stem().string();
+        outputs.emplace_back(std::filesystem::path(o.corrected_dir) / (stem + "_" + kRules[k] + ".png"),
+                             encode_png16(corrected(image, rules, rules.saturation.value_or(65536),
+                                                    sel->estimate.map)));
+      }
+    }
+    if (result.feasible.kind == ConvexKind::empty) text << "  no estimate: " << result.empty_reason << "\n";
+    record["estimates"] = std::move(estimates);
+    Json scene = scene_json(prepared, result, false);
+    for (auto& [key, value] : scene.items()) record[key] = std::move(value);
+    images.push_back(std::move(record));
+  }
+  for (const auto& [file, bytes] : outputs) PendingFile(file).commit(bytes);
+  if (o.json) {
+    document["canonical_gamut"] = {{"colours", prepared.colours},
+                                   {"vertices", prepared.gamut.vertices.size()}};
+    document["images"] = std::move(images);
+    finish_document(document);
+    write_stdout(document.dump(2) + "\n");
+  } else {
+    write_stdout(text.str());
+  }
+  return 0;
+}
+
+}  // namespace gmcc::cli

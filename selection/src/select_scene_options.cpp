@@ -1,0 +1,26 @@
+#include <gmcc/selection/select_scene_options.h>
+
+namespace gmcc {
+
+std::string to_string(RecoveryPolicy policy) {
+  switch (policy) {
+    case RecoveryPolicy::grow_canonical: return "grow-canonical";
+    case RecoveryPolicy::min_violation: return "min-violation";
+    case RecoveryPolicy::none: break;
+  }
+  return "none";
+}
+
+RecoveryPolicy recovery_policy_from_string(const std::string& name) {
+  for (RecoveryPolicy p : {RecoveryPolicy::none, RecoveryPolicy::grow_canonical, RecoveryPolicy::min_violation})
+    if (to_string(p) == name) return p;
+  throw std::invalid_argument("unknown recovery policy '" + name +
+                              "' (expected none, grow-canonical or min-violation)");
+}
+
+const Rational& max_scene_coordinate() {
+  static const Rational limit = parse_rational("1e150");
+  return limit;
+}
+
+}  // namespace gmcc

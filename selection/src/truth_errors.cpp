@@ -1,0 +1,24 @@
+#include <gmcc/selection/angular_error.h>
+#include <gmcc/selection/truth_errors.h>
+
+#include <stdexcept>
+
+namespace gmcc {
+
+std::optional<TruthErrors> truth_errors(const Selection& s, const Point2& truth, const Colour& c) {
+  if (sgn(truth.x) <= 0 || sgn(truth.y) <= 0 || sgn(c.r) <= 0 || sgn(c.g) <= 0 || sgn(c.b) <= 0)
+    throw std::invalid_argument("truth_errors: the true map and c must be > 0");
+  const MapEstimate& e = s.estimate;
+  if (!e.valid) return std::nullopt;
+  const Point2 m = e.exact ? *e.exact
+                           : Point2{rational_from_double(e.map[0]), rational_from_double(e.map[1])};
+  TruthErrors t;
+  t.map_error_deg = map_angular_error_deg(m, truth);
+  if (sgn(m.x) > 0 && sgn(m.y) > 0) {
+    t.illuminant_error_deg = illuminant_angular_error_deg(m, truth, c);
+    t.reproduction_error_deg = reproduction_angular_error_deg(m, truth);
+  }
+  return t;
+}
+
+}  // namespace gmcc

@@ -1,0 +1,130 @@
+#!/usr/bin/env python3
+"""`gmcc estimate` on images the project renders itself (tests/support/make_mondrian_images.cpp):
+the shipped sample's 8 Munsell chips under D75 (narrow-band sensors) as a 16-bit Mondrian above a
+black level of 256, with saturated pixels, written as PNG and TIFF.
+
+What is checked, each by a route independent of the image code where one exists:
+- the PNG and the TIFF give the same answer;
+- pixel counts: total = masked + saturated + kept, an exclusion polygon over the left half masks
+  exactly 60 x 90 pixels, and the saturated ones are between 1 and the 20 drawn;
+- the estimate agrees with `gmcc select` on the exact colours of the chips shown: the
+  image's quantisation to 16 bits moves the maps by little, and the recovery errors against the
+  true light D75 differ by little;
+- bad files and options exit 2 naming the file, with no corrected image written.
+
+    test_estimate.py GMCC_BINARY MAKE_MONDRIAN_IMAGES
+"""
+
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cli_harness import Runner, expect  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+DATA = os.path.join(ROOT, "data")
+CANONICAL = os.path.join(DATA, "samples", "canonical_munsell_D55.csv")
+# The lights at the narrow-band sensors' wavelengths 610, 540, 450 nm (data/cie_illuminants_*).
+D55 = "95.14,102.102,97.993"
+D75 = "86.14,106.289,133.01"
+RULES = ("max_area", "mean_2d", "mean_3d")
+
+
+def main():
+    binary, maker = sys.argv[1], sys.argv[2]
+    with tempfile.TemporaryDirectory() as tmp:
+        subprocess.run([maker, DATA, tmp], check=True, timeout=120)
+        png, tif = os.path.join(tmp, "mondrian.png"), os.path.join(tmp, "mondrian.tif")
+        r = Runner(binary, tmp, prefix=["estimate"])
+        base = ["--canonical", CANONICAL, "--black-level", "256", "--canonical-illuminant", D55]
+
+        def estimate(*args):
+            rc, out, err = r.run(*base, *args, "--json")
+            expect(rc == 0, f"exit {rc}: {err}")
+            return json.loads(out)
+
+        def png_equals_tiff():
+            a, b = estimate(png), estimate(tif)
+            ia, ib = a["images"][0], b["images"][0]
+            ia.pop("file"), ib.pop("file")
+            expect(ia == ib, "PNG and TIFF differ")
+            expect(ia["width"] == 120 and ia["height"] == 90 and ia["bits"] == 16, ia)
+
+        def pixel_counts():
+            p = estimate(png)["images"][0]["pixels"]
+            expect(p["total"] == 120 * 90, p)
+            expect(p["masked"] + p["saturated"] + p["kept"] == p["total"], p)
+            expect(p["masked"] == 0 and 1 <= p["saturated"] <= 20, p)
+            with open(os.path.join(tmp, "shown.csv")) as f:
+                chips = len(f.readlines())
+            expect(p["colours"] == chips, f"one colour per chip shown ({chips}): {p}")
+            q = estimate(png, "--exclude-polygon", "0,0,60,0,60,90,0,90")["images"][0]["pixels"]
+            expect(q["masked"] == 60 * 90, q)
+            n = estimate(png, "--saturation", "none")["images"][0]["pixels"]
+            expect(n["saturated"] == 0 and n["colours"] == p["colours"] + 1, (n, p))
+
+        def agrees_with_select_on_exact_colours():
+            img = estimate(png, "--truth", D75)["images"][0]
+            shown = os.path.join(tmp, "shown.csv")  # the chips the cells show, exactly
+            p = subprocess.run([binary, "select", "--canonical", CANONICAL, "--image", shown,
+                                "--canonical-illuminant", D55, "--truth", D75, "--json"],
+                               capture_output=True, text=True, timeout=120)
+            expect(p.returncode == 0, p.stderr)
+            exact = json.loads(p.stdout)
+            for rule in RULES:
+                m_img = img["estimates"][rule]["map"]
+                m_exact = exact["selections"][rule]["map"]
+                for a, b in zip(m_img, m_exact):
+                    expect(abs(a - b) <= 5e-4 * b, f"{rule}: map {m_img} vs exact {m_exact}")
+                e_img = img["truth"]["errors"][rule]["illuminant_error_deg"]
+                e_exact = exact["truth"]["errors"][rule]["illuminant_error_deg"]
+                expect(abs(e_img - e_exact) <= 0.01, f"{rule}: recovery error {e_img} vs {e_exact}")
+                light = img["estimates"][rule]["light"]
+                expect(abs(sum(x * x for x in light) - 1) < 1e-12, f"unit light {light}")
+
+        def corrected_images():
+            out = os.path.join(tmp, "corrected")
+            rc, _, err = r.run(*base, "--corrected", out, png)
+            expect(rc == 0, err)
+            names = sorted(os.listdir(out))
+            expect(names == [f"mondrian_{k}.png" for k in sorted(RULES)], names)
+            for n in names:
+                with open(os.path.join(out, n), "rb") as f:
+                    head = f.read(32)
+                expect(head[:8] == b"\x89PNG\r\n\x1a\n" and head[24] == 16, f"{n}: 16-bit PNG")
+
+        def bad_inputs():
+            not_image = r.file("1,2,3\n")
+            rc, out, err = r.run(*base, not_image)
+            expect(rc == 2 and out == "" and not_image in err and "not a PNG or TIFF" in err, err)
+            with open(png, "rb") as f:
+                data = f.read()
+            cut = os.path.join(tmp, "cut.png")
+            with open(cut, "wb") as f:
+                f.write(data[: len(data) // 2])
+            out_dir = os.path.join(tmp, "never")
+            rc, out, err = r.run(*base, "--corrected", out_dir, png, cut)
+            expect(rc == 2 and "cut.png" in err, err)
+            expect(not os.path.exists(out_dir) or os.listdir(out_dir) == [],
+                   "no corrected image when an image fails")
+            rc, _, err = r.run(*base, "--mask", tif, "--exclude-polygon", "1,2,3", png)
+            expect(rc == 2 and "--exclude-polygon" in err, err)
+            rc, _, err = r.run(*base, "--truth", D75, png, tif)
+            expect(rc == 2 and "--truth" in err, err)
+            rc, _, err = r.run(*base, "--bin", "0", png)
+            expect(rc == 2 and "--bin" in err, err)
+
+        r.check("png_equals_tiff", png_equals_tiff)
+        r.check("pixel_counts", pixel_counts)
+        r.check("agrees_with_select_on_exact_colours", agrees_with_select_on_exact_colours)
+        r.check("corrected_images", corrected_images)
+        r.check("bad_inputs", bad_inputs)
+        print(f"{r.passed} passed, {r.failed} failed")
+        return 1 if r.failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
