@@ -47,19 +47,36 @@ inline void check_canonical(const ConvexSet2& s, const char* what) {
 }
 
 // p ∈ S by the definition of each kind: for a polygon, p on or left of every counter-clockwise
-// edge, by rational orientation tests. Written here rather than taken from gmcc::contains, so that
+// edge, by exact orientation tests. Written here rather than taken from gmcc::contains, so that
 // the brute force below is independent of the library (whose integer-scaled test costs
-// O(|S| · size of the vertices' common denominator), much more on many-vertex sets).
+// O(|S| · size of the vertices' common denominator), much more on many-vertex sets). p is
+// written once over one denominator, p = (X, Y)/D, and each edge's line through v_i, v_j as
+// integers A, B, K (a positive multiple of dx = x_j − x_i, dy = y_j − y_i and dx·y_i − dy·x_i),
+// so that orientation(v_i, v_j, p)·D·L = A·Y − B·X − K·D in ℤ: a point of 10^5 digits (a 2-D
+// mean) against a 920-vertex F costs products, not 920 rational orientations (7 s before).
 inline bool inside(const ConvexSet2& s, const Point2& p) {
   const auto& v = s.vertices;
   switch (s.kind) {
     case ConvexKind::empty: return false;
     case ConvexKind::point: return p == v[0];
     case ConvexKind::segment: return sgn(gmcc::orientation(v[0], v[1], p)) == 0 && !(p < v[0]) && !(v[1] < p);
-    case ConvexKind::polygon:
-      for (std::size_t i = 0; i < v.size(); ++i)
-        if (sgn(gmcc::orientation(v[i], v[(i + 1) % v.size()], p)) < 0) return false;
+    case ConvexKind::polygon: {
+      mpz_class D;
+      mpz_lcm(D.get_mpz_t(), p.x.get_den_mpz_t(), p.y.get_den_mpz_t());
+      const mpz_class X = p.x.get_num() * (D / p.x.get_den()), Y = p.y.get_num() * (D / p.y.get_den());
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        const Point2& a = v[i];
+        const Point2& b = v[(i + 1) % v.size()];
+        const Rational dx = b.x - a.x, dy = b.y - a.y, k = dx * a.y - dy * a.x;
+        mpz_class L;
+        mpz_lcm(L.get_mpz_t(), dx.get_den_mpz_t(), dy.get_den_mpz_t());
+        mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), k.get_den_mpz_t());
+        const mpz_class A = dx.get_num() * (L / dx.get_den()), B = dy.get_num() * (L / dy.get_den()),
+                        K = k.get_num() * (L / k.get_den());
+        if (sgn(mpz_class(A * Y - B * X - K * D)) < 0) return false;
+      }
       return true;
+    }
   }
   return false;
 }

@@ -2,10 +2,12 @@
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/worst_case_illuminant.h>
 
+#include "internal/interval.h"
 #include "internal/worst_case_illuminant_route.h"
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -58,6 +60,27 @@ Poly derivative(const Poly& p) {
   for (std::size_t i = 1; i < p.size(); ++i) d.push_back(p[i] * static_cast<unsigned long>(i));
   trim(d);
   return d;
+}
+
+// True when p ≠ 0 certainly has no root in the open interval (0, 1): the coefficients of
+// (1 + u)^d · p(1/(1 + u)), d = deg p, have no sign variation. t = 1/(1 + u) maps u ∈ (0, ∞) onto
+// t ∈ (0, 1), and by Descartes' rule of signs a polynomial has at most as many positive roots
+// (with multiplicity) as sign variations in its coefficients (Basu, Pollack & Roy, "Algorithms in
+// Real Algebraic Geometry", Thm 2.33). A Taylor shift of degree ≤ 4: additions only, O(d²) of
+// them, against the Sturm sequence's multiplications of ever longer numbers.
+bool no_root_in_open_unit_interval(const Poly& p) {
+  Poly r(p.rbegin(), p.rend());  // t^d · p(1/t)
+  const std::size_t d = r.size() - 1;
+  for (std::size_t i = 0; i < d; ++i)  // r(x) → r(x + 1)
+    for (std::size_t j = d; j-- > i;) r[j] += r[j + 1];
+  int last = 0;
+  for (const mpz_class& c : r) {
+    const int sc = sgn(c);
+    if (sc == 0) continue;
+    if (last != 0 && sc != last) return false;
+    last = sc;
+  }
+  return true;
 }
 
 // The rationals xs times the lcm of their denominators: integers in the same proportions
@@ -243,7 +266,8 @@ bool no_stationary_point(const std::array<Enclosure, 3>& e, const std::array<Enc
 // the edge's bounding box, enclosed, starts above it. Then no point of the edge can be the worst
 // case (which the exact route takes only where the closeness is strictly below every vertex's),
 // and its quartic need not be solved. On a round F only the edges near the worst direction are
-// left (a 1942-vertex F: 77 s to 0.1 s; issue 13's fuzz finding).
+// left (issue 13's 876/414 fuzz finding: 40 s to 4 s). Where the vertices' closenesses agree
+// beyond a double's precision it decides nothing: the sin² filter below takes over.
 bool edge_cannot_be_worst(const std::array<Enclosure, 3>& e, const std::array<Enclosure, 3>& c,
                           const Enclosure& px, const Enclosure& py, const Enclosure& qx,
                           const Enclosure& qy, double least_upper) {
@@ -275,10 +299,108 @@ bool edge_skippable(const std::array<Enclosure, 3>& e, const std::array<Enclosur
          edge_skippable(e, c, px, py, dx, dy, mid, t1, least_upper, depth - 1);
 }
 
+// The second filter, on what the first leaves (issue 13: a feasible set of 1942 vertices within
+// 2^-53 of one another, where no double enclosure decides anything). It works on
+// s(x) = |e × w|² / |w|², w = c ⊘ (x, 1), instead of the closeness: by Lagrange's identity
+// (e·w)² + |e × w|² = |e|²|w|², so closeness = |e|² − s and the least closeness is the greatest s,
+// with the same ties. Written in δ = x − m (exact) the cross product has no cancellation:
+//   e × w = (c2·c3·δ2 / (m2·x2), −c1·c3·δ1 / (m1·x1), c1·c2·(m2·δ1 − m1·δ2) / (m1·m2·x1·x2)),
+// so s is enclosed to a relative width of a few units of the precision however close the angles
+// are to one another, and over an edge (its bounding box in x and in δ) to within a first-order
+// term in the edge's length. MPFI at 128 bits, doubling while it decides more (at most 8192).
+// A vertex whose s is certainly below some vertex's, and an edge whose s is certainly below it
+// everywhere, cannot hold the worst case (which the exact route takes at the first candidate of
+// least closeness, and at an edge's point only where strictly below every vertex's): they are
+// dropped. The order of the rest is kept.
+using internal::Interval;
+
+class SineFilter {
+ public:
+  SineFilter(const std::vector<Point2>& vs, const Point2& m, const Colour& c) : vs_(vs), m_(m), c_(c) {}
+
+  // Returns the last precision used.
+  unsigned refine(std::vector<std::size_t>& candidates, std::vector<std::size_t>& edges) {
+    const std::size_t n = vs_.size();
+    std::vector<std::size_t> needed = candidates;
+    for (std::size_t i : edges) needed.insert(needed.end(), {i, (i + 1) % n});
+    std::sort(needed.begin(), needed.end());
+    needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
+    std::vector<std::array<Rational, 2>> delta;  // δ = x − m of needed[k], exact
+    for (std::size_t i : needed) delta.push_back({Rational(vs_[i].x - m_.x), Rational(vs_[i].y - m_.y)});
+    for (mpfr_prec_t bits = 128;; bits *= 2) {
+      set_constants(bits);
+      // Vertex i as the point box (x1, x2, δ1, δ2), enclosed afresh (only what is left is kept).
+      auto point = [&](std::size_t i) {
+        const std::size_t k = static_cast<std::size_t>(std::lower_bound(needed.begin(), needed.end(), i) - needed.begin());
+        return std::array<Interval, 4>{Interval(vs_[i].x, bits), Interval(vs_[i].y, bits), Interval(delta[k][0], bits),
+                                       Interval(delta[k][1], bits)};
+      };
+      std::vector<Interval> at_vertex;  // s at candidates[k]
+      for (std::size_t i : candidates) at_vertex.push_back(sine(point(i)));
+      // The greatest lower end among the candidates: some vertex has s at least this.
+      std::size_t best = 0;
+      for (std::size_t k = 1; k < at_vertex.size(); ++k)
+        if (mpfr_cmp(&at_vertex[k].get()->left, &at_vertex[best].get()->left) > 0) best = k;
+      mpfr_srcptr floor = &at_vertex[best].get()->left;
+      const std::size_t before = candidates.size() + edges.size();
+      bool precise = true;  // every candidate's s enclosed to a relative 2^-(bits/2)
+      std::vector<std::size_t> kept;
+      for (std::size_t k = 0; k < candidates.size(); ++k) {
+        if (mpfr_cmp(&at_vertex[k].get()->right, floor) < 0) continue;
+        kept.push_back(candidates[k]);
+        precise = precise && tight(at_vertex[k], static_cast<int>(bits / 2));
+      }
+      candidates = std::move(kept);
+      kept.clear();
+      std::optional<std::pair<std::size_t, std::array<Interval, 4>>> last;  // the last edge's end
+      for (std::size_t i : edges) {
+        std::array<Interval, 4> box = last && last->first == i ? last->second : point(i);
+        const std::size_t j = (i + 1) % n;
+        last.emplace(j, point(j));
+        for (int c = 0; c < 4; ++c) mpfi_union(box[c].get(), box[c].get(), last->second[c].get());
+        if (mpfr_cmp(&sine(box).get()->right, floor) >= 0) kept.push_back(i);
+      }
+      edges = std::move(kept);
+      const std::size_t after = candidates.size() + edges.size();
+      // Enough: one candidate left; or nothing decided at a precision that was not the limit
+      // (the boxes are); or the cap.
+      if (after <= 1 || (after == before && precise) || bits >= 8192) return static_cast<unsigned>(bits);
+    }
+  }
+
+ private:
+  void set_constants(mpfr_prec_t bits) {
+    c1_.emplace(c_.r, bits), c2_.emplace(c_.g, bits), c3_.emplace(c_.b, bits);
+    m1_.emplace(m_.x, bits), m2_.emplace(m_.y, bits);
+    c2c3_.emplace(*c2_ * *c3_), c1c3_.emplace(*c1_ * *c3_), c1c2_.emplace(*c1_ * *c2_), c3c3_.emplace(sqr(*c3_));
+  }
+
+  // s over the box x ∈ b[0] × b[1], δ ∈ b[2] × b[3] (a point's or an edge's).
+  Interval sine(const std::array<Interval, 4>& b) const {
+    const Interval& x1 = b[0];
+    const Interval& x2 = b[1];
+    const Interval& d1 = b[2];
+    const Interval& d2 = b[3];
+    const Interval mx1 = *m1_ * x1, mx2 = *m2_ * x2;
+    const Interval u = *c2c3_ * d2 / mx2, v = *c1c3_ * d1 / mx1;
+    const Interval w = *c1c2_ * (*m2_ * d1 - *m1_ * d2) / (mx1 * mx2);
+    const Interval cross = sqr(u) + sqr(v) + sqr(w);
+    return cross / (sqr(*c1_ / x1) + sqr(*c2_ / x2) + *c3c3_);
+  }
+
+  const std::vector<Point2>& vs_;
+  const Point2& m_;
+  const Colour& c_;
+  std::optional<Interval> c1_, c2_, c3_, m1_, m2_, c2c3_, c1c3_, c1c2_, c3c3_;
+};
+
 }  // namespace
 
 IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const Point2& m, const Colour& c,
-                                                    bool filtered) {
+                                                    IlluminantRoute route, IlluminantRouteWork* work) {
+  IlluminantRouteWork tally;
+  const bool filtered = route != IlluminantRoute::exact;
+  const bool certified = route == IlluminantRoute::certified;
   if (F.kind == ConvexKind::empty)
     throw std::invalid_argument("worst_case_illuminant: empty feasible set");
   for (const Rational* x : {&m.x, &m.y, &c.r, &c.g, &c.b})
@@ -319,6 +441,23 @@ IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const P
   std::vector<std::size_t> candidates;
   for (std::size_t i = 0; i < vs.size(); ++i)
     if (!(lower[i] > least_upper)) candidates.push_back(i);
+  // A segment has one edge, a polygon n, a point none; those the double filters leave.
+  const std::size_t n_edges =
+      F.kind == ConvexKind::polygon ? vs.size() : F.kind == ConvexKind::segment ? 1 : 0;
+  std::vector<std::size_t> edges;
+  for (std::size_t i = 0; i < n_edges; ++i) {
+    const std::size_t j = (i + 1) % vs.size();
+    if (filtered && (edge_cannot_be_worst(ee, ce, ve[i][0], ve[i][1], ve[j][0], ve[j][1], least_upper) ||
+                     no_stationary_point(ee, ce, ve[i][0], ve[i][1], ve[j][0], ve[j][1]) ||
+                     edge_skippable(ee, ce, ve[i][0], ve[i][1], ve[j][0] - ve[i][0], ve[j][1] - ve[i][1],
+                                    0, 1, least_upper, 8)))
+      continue;
+    edges.push_back(i);
+  }
+  if (certified && candidates.size() + edges.size() > 1)
+    tally.sine_bits = SineFilter(vs, m, c).refine(candidates, edges);
+  tally.exact_vertices = candidates.size();
+  tally.exact_edges = edges.size();
 
   IlluminantWorstCase worst;
   worst.location = vs[candidates.front()];
@@ -333,18 +472,9 @@ IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const P
   };
   for (std::size_t i : candidates) consider(vs[i], true);
 
-  // A segment has one edge, a polygon n, a point none.
-  const std::size_t edges =
-      F.kind == ConvexKind::polygon ? vs.size() : F.kind == ConvexKind::segment ? 1 : 0;
-  for (std::size_t i = 0; i < edges; ++i) {
-    const std::size_t j = (i + 1) % vs.size();
-    if (filtered && (edge_cannot_be_worst(ee, ce, ve[i][0], ve[i][1], ve[j][0], ve[j][1], least_upper) ||
-                     no_stationary_point(ee, ce, ve[i][0], ve[i][1], ve[j][0], ve[j][1]) ||
-                     edge_skippable(ee, ce, ve[i][0], ve[i][1], ve[j][0] - ve[i][0], ve[j][1] - ve[i][1],
-                                    0, 1, least_upper, 8)))
-      continue;
+  for (std::size_t i : edges) {
     const Point2& p = vs[i];
-    const Point2& q = vs[j];
+    const Point2& q = vs[(i + 1) % vs.size()];
     const Rational da = q.x - p.x, db = q.y - p.y;
     // v(t) = a·b · (c ⊘ (a, b, 1)) = (c1·b, c2·a, c3·a·b) with a = p.x + t·da, b = p.y + t·db,
     // scaled by a positive integer to integer coefficients (the angle's stationary points are
@@ -368,17 +498,22 @@ IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const P
     if (stationary.size() > 5)
       throw std::logic_error("worst_case_illuminant: edge polynomial is not a quartic");
     if (stationary.empty()) continue;  // constant angle along the edge: its ends suffice
+    // No stationary point inside the edge: roots_in_unit_interval would find at most t = 1,
+    // the vertex q, which is no new candidate.
+    if (certified && no_root_in_open_unit_interval(stationary)) continue;
+    ++tally.sturm_edges;
     for (const Rational& t : roots_in_unit_interval(stationary)) {
       if (t == 1) continue;  // the vertex q, already a candidate
       consider({Rational(p.x + t * da), Rational(p.y + t * db)}, false);
     }
   }
   worst.angle_deg = illuminant_angular_error_deg(m, worst.location, c);
+  if (work) *work = tally;
   return worst;
 }
 
 IlluminantWorstCase worst_case_illuminant(const ConvexSet2& F, const Point2& m, const Colour& c) {
-  return internal::worst_case_illuminant(F, m, c, true);
+  return internal::worst_case_illuminant(F, m, c, internal::IlluminantRoute::certified);
 }
 
 double worst_case_illuminant_deg(const ConvexSet2& F, const Point2& m, const Colour& c) {

@@ -24,8 +24,8 @@ struct Tally {
 };
 
 void compare(const ConvexSet2& F, const Point2& m, const Colour& c, Tally& t) {
-  const IlluminantWorstCase fast = internal::worst_case_illuminant(F, m, c, true);
-  const IlluminantWorstCase slow = internal::worst_case_illuminant(F, m, c, false);
+  const IlluminantWorstCase fast = internal::worst_case_illuminant(F, m, c, internal::IlluminantRoute::certified);
+  const IlluminantWorstCase slow = internal::worst_case_illuminant(F, m, c, internal::IlluminantRoute::exact);
   BOOST_TEST(fast.angle_deg == slow.angle_deg);
   BOOST_TEST(fast.location == slow.location);
   BOOST_TEST(fast.at_vertex == slow.at_vertex);

@@ -1,7 +1,11 @@
 #include "../test_support.h"
 
 #include <gmcc/selection/angular_error.h>
+#include <gmcc/selection/max_area.h>
+#include <gmcc/selection/mean_2d.h>
 #include <gmcc/selection/worst_case_illuminant.h>
+
+#include "internal/worst_case_illuminant_route.h"
 
 #include <boost/test/unit_test.hpp>
 
@@ -107,6 +111,56 @@ ConvexSet2 counter_example_polygon() {
 }
 const Point2 counter_example_map{parse_rational("0.9098"), parse_rational("1.0807")};
 const Colour white{1, 1, 1};
+
+// The routes of worst_case_illuminant (internal/worst_case_illuminant_route.h) on one input: the
+// exact route (every vertex and edge in exact arithmetic, the definition), the double-filtered
+// route it had before the sin² filter and the Descartes test (issue 13), and the library's.
+struct RouteTally {
+  int cases = 0, at_edge = 0, tiny = 0;
+  std::size_t sturm_before = 0, sturm_after = 0;  // Sturm sequences: double-filtered, certified
+  std::size_t exact_vertices_before = 0, exact_vertices_after = 0;
+};
+
+void routes_agree(const ConvexSet2& F, const Point2& m, const Colour& c, RouteTally& t, bool tiny = false) {
+  using internal::IlluminantRoute;
+  internal::IlluminantRouteWork exact_work, before, after;
+  const IlluminantWorstCase exact = internal::worst_case_illuminant(F, m, c, IlluminantRoute::exact, &exact_work);
+  const IlluminantWorstCase filtered = internal::worst_case_illuminant(F, m, c, IlluminantRoute::double_filtered, &before);
+  const IlluminantWorstCase certified = internal::worst_case_illuminant(F, m, c, IlluminantRoute::certified, &after);
+  BOOST_TEST_CONTEXT("F " << F << " m " << m << " c " << c.r << "," << c.g << "," << c.b) {
+    for (const IlluminantWorstCase* w : {&filtered, &certified}) {
+      BOOST_TEST(w->angle_deg == exact.angle_deg);
+      BOOST_TEST(w->location == exact.location);
+      BOOST_TEST(w->at_vertex == exact.at_vertex);
+    }
+    BOOST_TEST(certified.angle_deg == gmcc::worst_case_illuminant(F, m, c).angle_deg);  // the public route
+    // The exact route does all the work; the filters only take work away.
+    BOOST_TEST(exact_work.exact_vertices == F.vertices.size());
+    BOOST_TEST(after.exact_vertices <= before.exact_vertices);
+    BOOST_TEST(after.sturm_edges <= before.sturm_edges);
+  }
+  ++t.cases;
+  t.at_edge += !exact.at_vertex;
+  t.tiny += tiny;
+  if (tiny) {
+    t.sturm_before += before.sturm_edges, t.sturm_after += after.sturm_edges;
+    t.exact_vertices_before += before.exact_vertices, t.exact_vertices_after += after.exact_vertices;
+  }
+}
+
+// n rational points of the circle of radius r about (x0, y0) (t = tan of half the angle), so
+// every one is a hull vertex: issue 13's 1942-vertex finding is such a circle of radius 2^-54
+// (scaled and expanded), where the vertices' closenesses differ beyond any double.
+ConvexSet2 tiny_circle(int n, const Rational& r, const Point2& centre) {
+  std::vector<Point2> pts;
+  for (int i = 0; i < n; ++i) {
+    const Rational t(2 * (i / 2) - n / 2, n / 2 + 1), den = 1 + t * t;
+    Rational ux = (1 - t * t) / den, uy = 2 * t / den;
+    if (i % 2) ux = -ux;
+    pts.push_back({Rational(centre.x + r * ux), Rational(centre.y + r * uy)});
+  }
+  return convex_hull(pts);
+}
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(worst_case_illuminant)
@@ -270,6 +324,98 @@ BOOST_AUTO_TEST_CASE(degenerate_sets) {
   BOOST_CHECK_THROW(gmcc::worst_case_illuminant(pt, m, Colour{1, 0, 1}), std::invalid_argument);
   const ConvexSet2 touching{ConvexKind::segment, {{0, 1}, {1, 1}}};
   BOOST_CHECK_THROW(gmcc::worst_case_illuminant(touching, m, c), std::invalid_argument);
+}
+
+// The library's route (double filters, the sin² filter at increasing precision, Descartes' test
+// before Sturm) and the double-filtered route it replaced give the exact route's answer bit for
+// bit — angle, location, at_vertex — on seeded random polygons, segments and points, on the
+// counter-example (a maximum inside an edge), and on tiny circles of 24–400 vertices (radius 2^-20
+// to 2^-70, the shape of issue 13's slow finding) with maps inside them (max-area, the 2-D mean,
+// a vertex), near them and far away. There the double filters decide nothing and the new ones
+// nearly everything, which the work counts show.
+BOOST_AUTO_TEST_CASE(routes_agree_bit_for_bit) {
+  Rng rng(13131942);
+  RouteTally t;
+  auto light = [&rng](int i) {
+    return i % 3 == 0 ? white
+                      : Colour{test::random_rational(rng, 1, 20, 7), test::random_rational(rng, 1, 20, 7),
+                               test::random_rational(rng, 1, 20, 7)};
+  };
+  // Random sets of every kind (grids of few points give segments and points) and maps inside,
+  // on and outside them.
+  for (int trial = 0; trial < 150; ++trial) {
+    const ConvexSet2 F = convex_hull(test::random_points(rng, 1 + trial % 10, 1, 5, trial % 3 ? 7 : 1));
+    std::vector<Point2> maps{F.vertices.front(), *mean_2d(F).exact, test::random_points(rng, 1, 1, 6, 13)[0]};
+    for (const Point2& m : maps) routes_agree(F, m, light(trial), t);
+  }
+  // Coordinates p/q with p and q drawn independently (spans of two orders of magnitude, where the
+  // reciprocal bends edges the most) and maps pulled towards a vertex: maxima inside edges.
+  for (int trial = 0; trial < 150; ++trial) {
+    std::vector<Point2> pts;
+    for (int i = 0; i < 5 + trial % 8; ++i)
+      pts.push_back({test::random_rational(rng, 1, 30, 10), test::random_rational(rng, 1, 30, 10)});
+    const ConvexSet2 F = convex_hull(pts);
+    const Point2& v = F.vertices[trial % F.vertices.size()];
+    const Point2 g = *mean_2d(F).exact;
+    const Rational w = test::random_rational(rng, 1, 9, 10) / 10;  // m = v + w·(g − v)
+    routes_agree(F, {Rational(v.x + w * (g.x - v.x)), Rational(v.y + w * (g.y - v.y))}, light(trial), t);
+  }
+  routes_agree(counter_example_polygon(), counter_example_map, white, t);
+  BOOST_TEST(!gmcc::worst_case_illuminant(counter_example_polygon(), counter_example_map, white).at_vertex);
+  // Tiny circles, and segments and points as small.
+  const int radius_bits[] = {20, 40, 54, 70};
+  for (int trial = 0; trial < 12; ++trial) {
+    const int n = trial < 10 ? 24 + 24 * trial : 400;
+    const Rational r = Rational(1) >> radius_bits[trial % 4];
+    const Point2 centre = test::random_points(rng, 1, 1, 4, 16)[0];
+    const ConvexSet2 F = tiny_circle(n, r, centre);
+    BOOST_TEST_REQUIRE(F.kind == ConvexKind::polygon);
+    BOOST_TEST_REQUIRE(F.vertices.size() == static_cast<std::size_t>(n));
+    const Point2 offset{Rational(centre.x + 3 * r), Rational(centre.y - 2 * r)};  // near F, outside
+    std::vector<Point2> maps{*max_area(F).exact, *mean_2d(F).exact, F.vertices[trial % n], offset};
+    if (trial % 3 == 0) maps.push_back(test::random_points(rng, 1, 1, 6, 13)[0]);  // far away
+    for (const Point2& m : maps) routes_agree(F, m, light(trial), t, true);
+    const Point2& a = F.vertices[0];
+    const Point2& b = F.vertices[n / 3];
+    const ConvexSet2 seg = convex_hull({a, b}), pt = convex_hull({b});
+    BOOST_TEST_REQUIRE(seg.kind == ConvexKind::segment);
+    BOOST_TEST_REQUIRE(pt.kind == ConvexKind::point);
+    for (const Point2& m : {a, offset, Point2{Rational((a.x + 2 * b.x) / 3), Rational((a.y + 2 * b.y) / 3)}}) {
+      routes_agree(seg, m, light(trial), t);
+      routes_agree(pt, m, light(trial), t);
+    }
+  }
+  BOOST_TEST(t.cases > 500);
+  BOOST_TEST(t.at_edge > 10);  // maxima inside edges: the exact work that remains still runs
+  BOOST_TEST(t.tiny == 52);
+  // On the tiny circles the double filters leave nearly every vertex and edge to exact work; the
+  // new filters leave less than a twentieth of it.
+  BOOST_TEST_MESSAGE(t.cases << " cases, " << t.at_edge << " maxima inside edges; tiny circles: exact vertices " << t.exact_vertices_before << " -> " << t.exact_vertices_after
+                                                     << ", Sturm edges " << t.sturm_before << " -> " << t.sturm_after);
+  BOOST_TEST(t.sturm_after * 20 < t.sturm_before);
+  BOOST_TEST(t.exact_vertices_after * 20 < t.exact_vertices_before);
+}
+
+// Issue 13's fuzz finding (fuzz/corpus/hard_geometry/finding_slow_illuminant_worst_case_1942_vertices):
+// on a circle of radius 2^-54 with 1942 vertices no double enclosure decides between two
+// vertices, and the route before the sin² filter did exact work on all 1942 vertices and all 1942
+// edges (a minute a rule on that finding's 12,721-bit vertices). Now only the few near the worst
+// direction remain: counted, not timed. The answer is still at least every vertex's angle.
+BOOST_AUTO_TEST_CASE(tiny_circle_of_1942_vertices_leaves_little_exact_work) {
+  const ConvexSet2 F = tiny_circle(1942, Rational(1) >> 54, {2, 2});
+  BOOST_TEST_REQUIRE(F.vertices.size() == 1942u);
+  const Colour c{2, 1, Rational(3, 7)};  // fuzz_hard_geometry's light
+  for (const Point2& m : {*max_area(F).exact, *mean_2d(F).exact, F.vertices[100]}) {
+    internal::IlluminantRouteWork work;
+    const IlluminantWorstCase w = internal::worst_case_illuminant(F, m, c, internal::IlluminantRoute::certified, &work);
+    BOOST_TEST_MESSAGE("exact vertices " << work.exact_vertices << ", edges " << work.exact_edges << ", Sturm "
+                                         << work.sturm_edges << ", sin² filter at " << work.sine_bits << " bits");
+    BOOST_TEST(work.exact_vertices <= 4u);
+    BOOST_TEST(work.exact_edges <= 100u);
+    BOOST_TEST(work.sturm_edges <= 4u);
+    BOOST_TEST(w.angle_deg >= vertex_max(F, m, c));
+    BOOST_TEST(w.angle_deg == gmcc::worst_case_illuminant_deg(F, m, c));
+  }
 }
 
 BOOST_AUTO_TEST_CASE(reproduction_error_known_values) {
