@@ -11,63 +11,12 @@
 #include <set>
 
 #include "output_files.h"
+#include "truth_file.h"
 #include "provenance.h"
 #include "write_stdout.h"
 
 namespace gmcc::cli {
 namespace {
-
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string_view::npos) return {};
-  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
-}
-
-// The truth file: a header `image,r,g,b`, then one line per image, its name (as given on the
-// command line, or its file name) and its light, channels > 0, read exactly.
-std::map<std::string, Colour> read_truths(const std::string& path) {
-  const std::string text =
-      read_text_file(path, {std::size_t(64) << 20, "truth file", "text lines image,r,g,b"});
-  std::map<std::string, Colour> truths;
-  std::string_view rest(text);
-  bool header = false;
-  for (std::size_t number = 1; !rest.empty(); ++number) {
-    const auto end = rest.find('\n');
-    const std::string_view line = trim(rest.substr(0, end));
-    rest = end == std::string_view::npos ? std::string_view() : rest.substr(end + 1);
-    if (line.empty() || line.front() == '#') continue;
-    std::vector<std::string_view> f;
-    for (std::size_t start = 0;;) {
-      const auto comma = line.find(',', start);
-      f.push_back(trim(line.substr(start, comma - start)));
-      if (comma == std::string_view::npos) break;
-      start = comma + 1;
-    }
-    if (!header) {
-      if (f != std::vector<std::string_view>{"image", "r", "g", "b"})
-        throw InputError(path, number, "expected the header image,r,g,b");
-      header = true;
-      continue;
-    }
-    if (f.size() != 4)
-      throw InputError(path, number, "expected 4 values image,r,g,b, found " + std::to_string(f.size()));
-    Rational c[3];
-    static const char* names[] = {"r", "g", "b"};
-    for (int k = 0; k < 3; ++k) {
-      try {
-        c[k] = parse_rational(f[1 + k]);
-      } catch (const std::invalid_argument& e) {
-        throw InputError(path, number, std::string(names[k]) + ": " + e.what());
-      }
-      if (sgn(c[k]) <= 0)
-        throw InputError(path, number, std::string(names[k]) + " must be > 0 (a light's response)");
-    }
-    if (!truths.emplace(std::string(f[0]), Colour{c[0], c[1], c[2]}).second)
-      throw InputError(path, number, "image " + quoted_text(f[0]) + " listed twice");
-  }
-  if (truths.empty()) throw InputError(path, 0, "no lights (expected lines image,r,g,b)");
-  return truths;
-}
 
 std::string exact(const Rational& q) { return to_string(q); }
 
@@ -101,12 +50,7 @@ int run_canonical(const CanonicalOptions& o) {
   std::set<std::array<Rational, 3>> colours;  // otherwise: canonical colours, distinct
   std::uint64_t pixels = 0;
   for (const std::string& path : o.images) {
-    auto t = truths.find(path);
-    if (t == truths.end()) t = truths.find(std::filesystem::path(path).filename().string());
-    if (t == truths.end())
-      throw InputError(o.truths_path, 0,
-                       "no light for image " + path + " (nor for its file name)");
-    const Colour& e = t->second;
+    const Colour& e = light_of_image(truths, path, o.truths_path);
     const ImageColours c = image_colours_of(path, settings);
     pixels += c.counts.kept;
     for (const Colour& p : c.colours) {

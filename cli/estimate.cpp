@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <sstream>
 
@@ -18,6 +19,7 @@
 #include "json_output.h"
 #include "output_files.h"
 #include "select.h"
+#include "truth_file.h"
 #include "write_stdout.h"
 
 namespace gmcc::cli {
@@ -40,7 +42,8 @@ Colour light(const std::string& option, const std::string& text) {
 struct Settings {
   SelectSceneOptions scene;
   PixelSettings pixels;
-  std::optional<Colour> truth;
+  std::optional<Colour> truth;                 // --truth: the one image's light
+  std::map<std::string, Colour> truths;        // --truths: each image's light
 };
 
 Settings settings_of(const EstimateOptions& o) {
@@ -52,6 +55,11 @@ Settings settings_of(const EstimateOptions& o) {
       throw InputError("--truth", 0, "applies to one image; this run has " +
                                          std::to_string(o.images.size()));
     s.truth = light("--truth", o.truth);
+  }
+  if (!o.truths_path.empty()) {
+    if (!o.truth.empty())
+      throw InputError("--truths", 0, "give --truth (one image) or --truths (a file), not both");
+    s.truths = read_truths(o.truths_path);
   }
   try {
     s.scene.expansion.policy = expansion_policy_from_string(o.expand_policy);
@@ -127,6 +135,9 @@ CLI::App* add_estimate_command(CLI::App& app, EstimateOptions& o) {
       ->required();
   cmd->add_option("images", o.images, "image files (PNG or TIFF, linear RGB)")->required();
   add_pixel_options(*cmd, o.pixels);
+  cmd->add_option("--truths", o.truths_path,
+                  "CSV with header image,r,g,b: each image's true light (image as given on the "
+                  "command line, or its file name), for each rule's errors");
   cmd->add_option("--truth", o.truth,
                   "r,g,b of the true light (one image): each rule's errors against it")
       ->type_name("R,G,B");
@@ -175,7 +186,10 @@ int run_estimate(const EstimateOptions& o) {
     const ImageColours colours = image_colours_of(path, s.pixels, &image, &rules);
     SceneResult result;
     try {
-      result = select_scene(prepared, colours.colours, s.truth);
+      const std::optional<Colour> truth =
+          s.truths.empty() ? s.truth
+                           : std::optional<Colour>(light_of_image(s.truths, path, o.truths_path));
+      result = select_scene(prepared, colours.colours, truth);
     } catch (const SceneInputError& e) {
       if (e.input == SceneInput::image)
         throw InputError(path, 0, std::string(e.what()) +

@@ -17,6 +17,7 @@ struct EstimateOptions {
   std::vector<std::string> images;
   PixelOptions pixels;
   std::string truth;                          // r,g,b of the true light (one image)
+  std::string truths_path;                    // CSV image,r,g,b: each image's true light
   std::string canonical_illuminant = "1,1,1";
   std::string expand_policy = "none";
   std::string expand_factor = "0";

@@ -133,6 +133,23 @@ def main():
             rc, _, err = r.run("--from-images", "--truths", truths, tif, prefix=["canonical"])
             expect(rc == 2 and "no light for image" in err, err)
 
+        def truths_file():
+            # --truths gives each image its light; the same errors as --truth for one image.
+            truths = os.path.join(tmp, "truths2.csv")
+            with open(truths, "w") as f:
+                f.write("image,r,g,b\n# the same light for both files\n")
+                f.write(f"mondrian.png,{D75}\n{tif},{D75}\n")
+            both = estimate("--truths", truths, png, tif)["images"]
+            one = estimate("--truth", D75, png)["images"][0]
+            expect(len(both) == 2 and all(x["truth"] == one["truth"] for x in both),
+                   "--truths gives each image the errors --truth gives")
+            rc, _, err = r.run(*base, "--truths", truths, "--truth", D75, png)
+            expect(rc == 2 and "--truths" in err, err)
+            with open(truths, "w") as f:
+                f.write(f"image,r,g,b\nother.png,{D75}\n")
+            rc, _, err = r.run(*base, "--truths", truths, png)
+            expect(rc == 2 and "no light for image" in err and truths in err, err)
+
         def corrected_images():
             out = os.path.join(tmp, "corrected")
             rc, _, err = r.run(*base, "--corrected", out, png)
@@ -162,6 +179,13 @@ def main():
             expect(rc == 2 and "--exclude-polygon" in err, err)
             rc, _, err = r.run(*base, "--truth", D75, png, tif)
             expect(rc == 2 and "--truth" in err, err)
+            # A mask of another size: the 6x4 noise-free Mondrian made by the test tool.
+            small_dir = os.path.join(tmp, "small")
+            os.makedirs(small_dir)
+            subprocess.run([maker, DATA, small_dir, "6", "4"], check=True, timeout=60)
+            small = os.path.join(small_dir, "mondrian.png")
+            rc, out, err = r.run(*base, "--mask", small, png)
+            expect(rc == 2 and out == "" and "the mask is 6x4" in err and png in err, err)
             rc, _, err = r.run(*base, "--bin", "0", png)
             expect(rc == 2 and "--bin" in err, err)
 
@@ -170,6 +194,7 @@ def main():
         r.check("agrees_with_select_on_exact_colours", agrees_with_select_on_exact_colours)
         r.check("hull_equals_distinct", hull_equals_distinct)
         r.check("learned_canonical", learned_canonical)
+        r.check("truths_file", truths_file)
         r.check("corrected_images", corrected_images)
         r.check("bad_inputs", bad_inputs)
         print(f"{r.passed} passed, {r.failed} failed")
