@@ -95,23 +95,33 @@ std::string experiment_csv(const ExperimentResult& r, const std::string& provena
          "mean_reproduction_error_deg,max_error_deg,empty_scenes,truth_in_feasible_set";
   for (const std::string& column : experiment_csv_added_columns()) out << ',' << column;
   out << '\n';
-  for (const ExperimentCell& c : r.cells)
-    for (std::size_t k = 0; k < c.rules.size(); ++k) {
-      const RuleStats& s = c.rules[k];
-      out << c.light << ',' << c.surfaces << ',' << r.rules[k] << ','
-          << num(s.error.mean) << ',' << num(s.worst_case.mean) << ','
-          << c.scenes - c.empty << ',' << num(s.error.median) << ','
-          << num(s.worst_case.median) << ',' << num(s.illuminant.mean) << ','
-          << num(s.illuminant.median) << ',' << num(s.reproduction.mean) << ','
-          << num(s.error.max) << ',' << c.empty << ',' << s.truth_in_feasible_set;
-      for (const Quantity& q : quantities)
-        for (const Statistic& st : statistics)
-          if (!original_column(std::string(st.name) + "_" + q.name + "_deg")) {
-            const double x = s.*q.member.*st.member;
-            out << ',' << (std::isnan(x) ? std::string() : num(x));  // undefined (se of one value): empty
-          }
-      out << ',' << s.illuminant.n << '\n';
-    }
+  // A baseline (no feasible set: no worst case, no truth-in-F) leaves those columns empty.
+  auto row = [&](const ExperimentCell& c, const std::string& rule, const RuleStats& s, std::uint64_t scenes,
+                 bool baseline) {
+    auto worst = [&](double x) { return baseline ? std::string() : num(x); };
+    out << c.light << ',' << c.surfaces << ',' << rule << ','
+        << num(s.error.mean) << ',' << worst(s.worst_case.mean) << ','
+        << scenes << ',' << num(s.error.median) << ','
+        << worst(s.worst_case.median) << ',' << num(s.illuminant.mean) << ','
+        << num(s.illuminant.median) << ',' << num(s.reproduction.mean) << ','
+        << num(s.error.max) << ',' << c.empty << ',' << (baseline ? std::string() : std::to_string(s.truth_in_feasible_set));
+    for (const Quantity& q : quantities)
+      for (const Statistic& st : statistics)
+        if (!original_column(std::string(st.name) + "_" + q.name + "_deg")) {
+          const double x = s.*q.member.*st.member;
+          const bool undefined = std::isnan(x) || (baseline && q.member == &RuleStats::worst_case);
+          out << ',' << (undefined ? std::string() : num(x));  // undefined (se of one value): empty
+        }
+    out << ',' << s.illuminant.n << '\n';
+  };
+  for (const ExperimentCell& c : r.cells) {
+    for (std::size_t k = 0; k < c.rules.size(); ++k) row(c, r.rules[k], c.rules[k], c.scenes - c.empty, false);
+    // Baselines over the rules' scenes, then over every scene of the cell (rule name + "_all").
+    for (std::size_t b = 0; b < c.baselines.size() && b < r.baselines.size(); ++b)
+      row(c, r.baselines[b], c.baselines[b], c.scenes - c.empty, true);
+    for (std::size_t b = 0; b < c.baselines_all.size() && b < r.baselines.size(); ++b)
+      row(c, r.baselines[b] + "_all", c.baselines_all[b], c.scenes, true);
+  }
   return out.str();
 }
 
@@ -131,6 +141,13 @@ std::string experiment_setup_json(const ExperimentResult& r) {
          ",\"canonical_gamut\":" + json_set(r.canonical_gamut) +
          ",\"constraint\":" + (c.constraint ? json_set(*c.constraint) : std::string("null")) +
          ",\"surface_indices\":\"0-based\"";
+  if (!r.baselines.empty()) {
+    out += ",\"baselines\":[";
+    for (std::size_t i = 0; i < r.baselines.size(); ++i) out += (i ? "," : "") + json_string(r.baselines[i]);
+    out += "]";
+  }
+  if (!r.canonical_gamuts.empty())  // one per light's set; canonical_gamut is the first
+    out += ",\"canonical_gamuts\":" + std::to_string(r.canonical_gamuts.size());
   if (c.shard_count > 1)
     out += ",\"shard\":" + json_string(std::to_string(c.shard_index) + "/" + std::to_string(c.shard_count));
   return out + "}";
@@ -143,8 +160,24 @@ std::string experiment_scenes_jsonl(const ExperimentResult& r, const std::string
     out += "{\"light\":" + json_string(r.lights.at(s.light)) + ",\"light_index\":" + std::to_string(s.light) +
            ",\"surfaces\":" + std::to_string(s.surfaces) + ",\"scene\":" + std::to_string(s.scene) + ",\"drawn\":[";
     for (std::size_t i = 0; i < s.drawn.size(); ++i) out += (i ? "," : "") + std::to_string(s.drawn[i]);
-    out += "],\"feasible_set\":{\"kind\":" + json_string(to_string(s.kind)) + ",\"area\":" + json_number(s.area) +
-           "},\"rules\":";
+    out += "],\"feasible_set\":{\"kind\":" + json_string(to_string(s.kind)) + ",\"area\":" + json_number(s.area) + "}";
+    if (!s.baselines.empty()) {  // only with baselines (gehler-shi): estimates scored in every scene
+      out += ",\"baselines\":{";
+      for (std::size_t b = 0; b < s.baselines.size(); ++b) {
+        const RuleRecord& x = s.baselines[b];
+        out += (b ? "," : "") + json_string(r.baselines.at(b)) + ":";
+        if (!x.scored) {
+          out += "null";
+          continue;
+        }
+        out += "{\"map\":[" + json_number(x.map[0]) + "," + json_number(x.map[1]) + "],\"error_deg\":" +
+               json_number(x.error_deg) + ",\"illuminant_error_deg\":" +
+               (x.positive_map ? json_number(x.illuminant_error_deg) : "null") + ",\"reproduction_error_deg\":" +
+               (x.positive_map ? json_number(x.reproduction_error_deg) : "null") + "}";
+      }
+      out += "}";
+    }
+    out += ",\"rules\":";
     if (s.rules.empty()) {
       out += "null}\n";
       continue;
@@ -188,7 +221,27 @@ std::string experiment_json(const ExperimentResult& r, const std::string& proven
       }
       out += "}";
     }
-    out += "}}";
+    out += "}";
+    // Baselines (gehler-shi): over the rules' scenes, and over every scene ("_all").
+    for (int all = 0; all < 2 && !r.baselines.empty(); ++all) {
+      out += all ? ",\"baselines_all\":{" : ",\"baselines\":{";
+      const std::vector<RuleStats>& stats = all ? c.baselines_all : c.baselines;
+      for (std::size_t b = 0; b < stats.size() && b < r.baselines.size(); ++b) {
+        out += (b ? "," : "") + json_string(r.baselines[b]) + ":{";
+        bool first = true;
+        for (const Quantity& q : quantities) {
+          if (q.member == &RuleStats::worst_case) continue;
+          const ErrorStatistics& e = stats[b].*q.member;
+          out += (first ? "\"" : ",\"") + std::string(q.name) + "_deg\":{\"n\":" + std::to_string(e.n);
+          first = false;
+          for (const Statistic& st : statistics) out += ",\"" + std::string(st.name) + "\":" + json_number(e.*st.member);
+          out += "}";
+        }
+        out += "}";
+      }
+      out += "}";
+    }
+    out += "}";
   }
   return out + "\n]}\n";
 }
