@@ -402,6 +402,9 @@ CLI::App* add_reproduce_command(CLI::App& app, ReproduceOptions& o) {
   gs->add_option("--threads", o.threads, "worker threads (0: all cores); results do not depend on it")
       ->capture_default_str();
   gs->add_option("--data", o.data_dir, "folder of the data files (default: the shipped data/)");
+  gs->add_option("--mean3d", o.mean3d_method, "route to the 3-D mean")
+      ->check(CLI::IsMember({"analytic", "quadrature", "monte-carlo"}))
+      ->capture_default_str();
   gs->add_option("--protocol", o.protocol,
                  "leave-one-out (each image's canonical gamut: every other same-camera image) or paper "
                  "(one whitish daylight chart; yellowish and bluish test groups)")

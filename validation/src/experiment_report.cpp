@@ -140,7 +140,7 @@ std::string experiment_setup_json(const ExperimentResult& r) {
          ",\"mean3d\":" + json_string(to_string(c.mean3d.method)) +
          ",\"canonical_gamut\":" + json_set(r.canonical_gamut) +
          ",\"constraint\":" + (c.constraint ? json_set(*c.constraint) : std::string("null")) +
-         ",\"surface_indices\":\"0-based\"";
+         ",\"surface_indices\":" + json_string(r.surface_indices);
   if (!r.baselines.empty()) {
     out += ",\"baselines\":[";
     for (std::size_t i = 0; i < r.baselines.size(); ++i) out += (i ? "," : "") + json_string(r.baselines[i]);

@@ -329,6 +329,7 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
   result.config.progress = nullptr;
   result.rules.assign(experiment_rules.begin(), experiment_rules.end());
   if (config.crule) result.rules.insert(result.rules.end(), experiment_rules_3d.begin(), experiment_rules_3d.end());
+  result.surface_indices = setup.surface_indices;
   if (setup.baselines) result.baselines.assign(experiment_baselines.begin(), experiment_baselines.end());
   if (setup.canonical_chromaticity_sets.empty()) {
     result.canonical_gamut =

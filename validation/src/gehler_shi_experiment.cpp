@@ -55,6 +55,7 @@ GehlerShiSetup gehler_shi_setup(const ChartDataset& data, const GehlerShiOptions
   setup.canonical_light = {1, 1, 1};
   setup.skip_short_lights = true;
   setup.baselines = true;
+  setup.surface_indices = "chart patch numbers 1-24";
   for (const std::string& camera : o.cameras) {
     GehlerShiCamera info;
     info.camera = camera;

@@ -57,6 +57,9 @@ struct ExperimentSetup {
   /// maximum), each an illuminant estimate e turned into the map m = (c_r·e_b/(e_r·c_b),
   /// c_g·e_b/(e_g·c_b)) for the canonical light c.
   bool baselines = false;
+  /// What SceneRecord::drawn holds, for the records' setup line ("0-based" surface indices, or
+  /// e.g. "chart patch numbers 1-24" with TestLight::surface_ids).
+  std::string surface_indices = "0-based";
 };
 
 /// How to run it.
@@ -154,6 +157,7 @@ struct ExperimentResult {
   ConvexSet2 canonical_gamut;
   std::vector<std::string> rules;     ///< experiment_rules, then experiment_rules_3d with crule
   std::vector<std::string> baselines; ///< experiment_baselines when the setup asks for them
+  std::string surface_indices = "0-based";  ///< ExperimentSetup::surface_indices
   /// With canonical_chromaticity_sets: every set's gamut (canonical_gamut is then the first).
   std::vector<ConvexSet2> canonical_gamuts;
   /// Lights (or their groups, TestLight::group, in order of first appearance) in setup order,
