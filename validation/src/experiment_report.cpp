@@ -316,11 +316,17 @@ std::string experiment_plot_data(const ExperimentResult& r) {
     if (c.light != light) {
       if (!light.empty()) out << "\n\n";
       light = c.light;
-      out << "# " << light << ": surfaces, mean error (max_area mean_2d mean_3d), mean worst case (same)\n";
+      out << "# " << light << ": surfaces, mean error (max_area mean_2d mean_3d), mean worst case (same)"
+          << (r.baselines.empty() ? "" : ", mean recovery error (same, then grey_world max_rgb on the same scenes)")
+          << "\n";
     }
     out << c.surfaces;
     for (const auto& s : c.rules) out << ' ' << num(s.error.mean);
     for (const auto& s : c.rules) out << ' ' << num(s.worst_case.mean);
+    if (!r.baselines.empty()) {
+      for (const auto& s : c.rules) out << ' ' << num(s.illuminant.mean);
+      for (const auto& s : c.baselines) out << ' ' << num(s.illuminant.mean);
+    }
     out << '\n';
   }
   return out.str();
@@ -331,6 +337,7 @@ std::string experiment_plot_script(const ExperimentResult& r, const std::string&
   for (const ExperimentCell& c : r.cells)
     if (lights.empty() || lights.back() != c.light) lights.push_back(c.light);
   const std::size_t rows = lights.size();
+  const std::size_t columns = r.baselines.empty() ? 2 : 3;  // with baselines: recovery error too
   std::ostringstream g;
   g << "# gmcc reproduce " << r.name << ": laid out like Finlayson & Hordley (1999) " << r.figure << "\n"
     << "if (!exists('png_file')) png_file = '" << stem << ".png'\n"
@@ -344,9 +351,11 @@ std::string experiment_plot_script(const ExperimentResult& r, const std::string&
     << "set style line 4 lc rgb '#9467bd' lw 2 pt 11 dt 2\n"
     << "set style line 5 lc rgb '#8c564b' lw 2 pt 13 dt 2\n"
     << "do for [term = 1:2] {\n"
-    << "  if (term == 1) { set terminal pngcairo size 1000," << 260 * rows << " font ',9'; set output png_file }\n"
-    << "  if (term == 2) { set terminal svg size 1000," << 260 * rows << " font 'sans,9'; set output svg_file }\n"
-    << "  set multiplot layout " << rows << ",2\n";
+    << "  if (term == 1) { set terminal pngcairo size " << 500 * columns << "," << 260 * rows
+    << " font ',9'; set output png_file }\n"
+    << "  if (term == 2) { set terminal svg size " << 500 * columns << "," << 260 * rows
+    << " font 'sans,9'; set output svg_file }\n"
+    << "  set multiplot layout " << rows << "," << columns << "\n";
   const std::size_t R = r.rules.size();
   const char* titles[] = {"max-area", "2-D mean", "3-D mean", "CRULE max-volume", "CRULE centroid"};
   for (std::size_t i = 0; i < rows; ++i)
@@ -357,6 +366,14 @@ std::string experiment_plot_script(const ExperimentResult& r, const std::string&
         g << (k ? ", '' " : ("'" + stem + ".dat' ")) << "index " << i << " using 1:"
           << 2 + panel * R + k << " with linespoints ls " << k + 1 << " title '" << titles[k] << "'";
       g << "\n";
+      if (panel == 1 && columns == 3) {  // recovery error of the rules and the baselines
+        g << "  set ylabel '" << lights[i] << ": mean recovery error (deg)'\n  plot ";
+        const char* baseline_titles[] = {"grey world", "max-RGB"};
+        for (std::size_t k = 0; k < R + r.baselines.size(); ++k)
+          g << (k ? ", '' " : ("'" + stem + ".dat' ")) << "index " << i << " using 1:" << 2 + 2 * R + k
+            << " with linespoints ls " << k + 1 << " title '" << (k < R ? titles[k] : baseline_titles[k - R]) << "'";
+        g << "\n";
+      }
     }
   g << "  unset multiplot\n  set output\n}\n";
   return g.str();
