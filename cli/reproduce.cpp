@@ -347,7 +347,9 @@ int gehler_shi(ReproduceOptions o) {
   } catch (const std::invalid_argument& e) {
     throw InputError(patches, 0, e.what());
   }
-  ExperimentOutputs outputs({o.csv_path, o.json_path, o.scenes_out_path, o.plot_dir}, setup.setup.name);
+  // The figure's files: gehler-shi.* (leave-one-out) or gehler-shi-paper.*.
+  const std::string stem = setup.setup.name + (options.protocol == GehlerShiProtocol::paper ? "-paper" : "");
+  ExperimentOutputs outputs({o.csv_path, o.json_path, o.scenes_out_path, o.plot_dir}, stem);
   set_activity("running the gehler-shi experiment");
   ExperimentResult result;
   try {
@@ -357,7 +359,7 @@ int gehler_shi(ReproduceOptions o) {
   }
   outputs.write(result, provenance_json().dump(), false);
   write_stdout(gehler_shi_table(result, setup));
-  return o.plot_dir.empty() ? 0 : draw_with_gnuplot(o.plot_dir, setup.setup.name, "gmcc reproduce");
+  return o.plot_dir.empty() ? 0 : draw_with_gnuplot(o.plot_dir, stem, "gmcc reproduce");
 }
 
 }  // namespace
@@ -425,7 +427,9 @@ CLI::App* add_reproduce_command(CLI::App& app, ReproduceOptions& o) {
   gs->add_option("--scenes-out", o.scenes_out_path,
                  "write one JSON Lines record per scene (patch numbers drawn, F, every rule's and "
                  "baseline's map and errors)");
-  gs->add_option("--plot", o.plot_dir, "write gehler-shi.dat/.gp to this folder and draw .png/.svg with gnuplot");
+  gs->add_option("--plot", o.plot_dir,
+                 "write gehler-shi.dat/.gp (paper protocol: gehler-shi-paper.*) to this folder and draw "
+                 ".png/.svg with gnuplot");
   return cmd;
 }
 
