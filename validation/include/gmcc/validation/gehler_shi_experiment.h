@@ -3,7 +3,7 @@
 /// The real-camera test of Finlayson & Hordley (1999) §4 (their Fig. 5) on the measured chart
 /// colours of the Gehler–Shi set (gehler_shi.h): an experiment setup for run_gamut_experiment in
 /// which every image is a test light with its own true map, drawn from its own usable patches
-/// (docs/reproduction.md "Real camera data (Gehler–Shi)").
+/// (docs/reproduction.md "Real camera data (Gehler-Shi)").
 
 #include <gmcc/geometry/rational.h>
 #include <gmcc/validation/gamut_experiment.h>
