@@ -337,6 +337,8 @@ int gehler_shi(ReproduceOptions o) {
     }
   }
   if (options.dark >= options.clip) throw InputError("--dark", 0, "must be below --clip");
+  for (const std::string& k : o.exclude_patches)
+    options.exclude_patches.push_back(static_cast<std::uint32_t>(integer_option("--exclude-patches", k, 1, 24)));
   const std::string patches = data_file(o, "gehler_shi_568_colorchecker_patch_rgb_rec2018.csv");
   const std::string truth = data_file(o, "gehler_shi_568_groundtruth.csv");
   set_activity("reading " + patches + " and " + truth);
@@ -417,6 +419,10 @@ CLI::App* add_reproduce_command(CLI::App& app, ReproduceOptions& o) {
       ->capture_default_str();
   gs->add_option("--dark", o.dark, "drop patches with a channel <= this (near-black)")->capture_default_str();
   gs->add_option("--clip", o.clip, "drop patches with a channel >= this (clipped)")->capture_default_str();
+  gs->add_option("--exclude-patches", o.exclude_patches,
+                 "leave these patch numbers (1-24) out of every image, e.g. 19,20,21,22,23,24 (the "
+                 "achromatic row, on which the ground truth was measured)")
+      ->delimiter(',');
   gs->add_option("--expand", o.expand_factor, "expand the canonical gamut by this factor (0.1 = 10%)")
       ->capture_default_str();
   gs->add_option("--expand-policy", o.expand_policy, "none | centroid-clip | multiplicative")

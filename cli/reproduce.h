@@ -36,6 +36,7 @@ struct ReproduceOptions {
   std::string protocol = "leave-one-out";
   std::vector<std::string> cameras{"Canon1D", "Canon5D"};
   std::string dark = "0.002", clip = "0.95";
+  std::vector<std::string> exclude_patches;  // patch numbers 1-24
 };
 
 /// Where an experiment's reports go (each optional; the table always goes to stdout).

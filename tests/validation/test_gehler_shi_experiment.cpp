@@ -158,6 +158,22 @@ BOOST_AUTO_TEST_CASE(cells_are_the_statistics_of_their_groups_scenes) {
   }
 }
 
+BOOST_AUTO_TEST_CASE(excluded_patches_are_left_out_everywhere) {
+  const std::vector<Colour> canonical{{Rational(1, 2), Rational(1, 2), Rational(1, 2)},
+                                      {Rational(9, 10), Rational(3, 10), Rational(1, 5)},
+                                      {Rational(1, 5), Rational(4, 5), Rational(3, 10)}};
+  GehlerShiOptions o;
+  o.cameras = {"Canon1D"};
+  o.exclude_patches = {19, 20, 21, 22, 23, 24};
+  const GehlerShiSetup s = gehler_shi_setup(synthetic_charts(canonical, 3), o);
+  BOOST_TEST(s.cameras[0].excluded_patches == 3u * 6u);
+  BOOST_TEST(s.cameras[0].usable_patches == 3u * 18u);
+  for (const TestLight& l : s.setup.lights)
+    for (std::uint32_t id : l.surface_ids) BOOST_TEST(id <= 18u);
+  o.exclude_patches = {25};
+  BOOST_CHECK_THROW(gehler_shi_setup(synthetic_charts(canonical, 3), o), std::invalid_argument);
+}
+
 BOOST_AUTO_TEST_CASE(unknown_camera_is_refused) {
   GehlerShiOptions o;
   o.cameras = {"Canon1D"};

@@ -56,6 +56,9 @@ GehlerShiSetup gehler_shi_setup(const ChartDataset& data, const GehlerShiOptions
   setup.skip_short_lights = true;
   setup.baselines = true;
   setup.surface_indices = "chart patch numbers 1-24";
+  for (std::uint32_t k : o.exclude_patches)
+    if (k < 1 || k > chart_patches)
+      throw std::invalid_argument("patch " + std::to_string(k) + " does not exist (patches are 1-24)");
   for (const std::string& camera : o.cameras) {
     GehlerShiCamera info;
     info.camera = camera;
@@ -68,6 +71,10 @@ GehlerShiSetup gehler_shi_setup(const ChartDataset& data, const GehlerShiOptions
       for (std::size_t k = 0; k < chart_patches; ++k) {
         if (!im.patches[k]) {
           ++info.missing_patches;
+          continue;
+        }
+        if (std::find(o.exclude_patches.begin(), o.exclude_patches.end(), k + 1) != o.exclude_patches.end()) {
+          ++info.excluded_patches;
           continue;
         }
         const Colour& c = *im.patches[k];

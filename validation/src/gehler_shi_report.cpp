@@ -14,12 +14,11 @@ std::string gehler_shi_table(const ExperimentResult& r, const GehlerShiSetup& se
   if (r.config.expansion.policy != ExpansionPolicy::none) out << " by " << to_string(r.config.expansion.factor);
   out << "\n";
   for (const GehlerShiCamera& c : setup.cameras) {
-    std::snprintf(line, sizeof line,
-                  "  %s: %zu images, %zu usable patches, %zu dropped (near-black or clipped), %zu missing; "
-                  "canonical gamut %zu vertices",
-                  c.camera.c_str(), c.images, c.usable_patches, c.dropped_patches, c.missing_patches,
-                  c.hull_vertices);
+    std::snprintf(line, sizeof line, "  %s: %zu images, %zu usable patches, %zu dropped (near-black or clipped), %zu missing",
+                  c.camera.c_str(), c.images, c.usable_patches, c.dropped_patches, c.missing_patches);
     out << line;
+    if (c.excluded_patches) out << ", " << c.excluded_patches << " left out by --exclude-patches";
+    out << "; canonical gamut " << c.hull_vertices << " vertices";
     if (c.canonical_images.empty()) {
       out << " (all images), recomputed without each of the " << c.recomputed_hulls
           << " images with a patch at a vertex\n";

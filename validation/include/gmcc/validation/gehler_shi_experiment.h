@@ -10,6 +10,7 @@
 #include <gmcc/validation/gehler_shi.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,9 @@ struct GehlerShiOptions {
   /// A patch is usable when every channel c has dark < c < clip (near-black and clipped
   /// patches dropped, and counted).
   Rational dark{1, 500}, clip{19, 20};
+  /// Patch numbers (1–24) left out of every image, canonical gamuts and scenes alike (e.g. the
+  /// achromatic row 19–24, on which the ground truth was measured).
+  std::vector<std::uint32_t> exclude_patches;
 };
 
 /// What the setup is made of, per camera, for the report.
@@ -43,6 +47,7 @@ struct GehlerShiCamera {
   std::size_t usable_patches = 0;    ///< over its images
   std::size_t dropped_patches = 0;   ///< measured but near-black or clipped
   std::size_t missing_patches = 0;   ///< no measurement in the data
+  std::size_t excluded_patches = 0;  ///< measured but left out by GehlerShiOptions::exclude_patches
   std::size_t hull_vertices = 0;     ///< of the camera's canonical gamut (leave-one-out: of all images)
   /// leave-one-out: the images with a patch at a vertex of the all-images hull, whose own
   /// gamut was computed without them (every other image uses the all-images hull).
@@ -64,7 +69,8 @@ struct GehlerShiSetup {
 /// canonical chart is the union of the 3 daylight images whose τ is nearest the daylight median
 /// (the lower median; ties by file order); yellowish: τ < −1/2; bluish: τ > that median (bluer
 /// than the canonical chart's light); the canonical images and the rest are not tested.
-/// \throws std::invalid_argument for an unknown camera or one with no usable patches.
+/// \throws std::invalid_argument for an unknown camera or one with no usable patches, or an
+///         excluded patch number outside 1–24.
 GehlerShiSetup gehler_shi_setup(const ChartDataset& data, const GehlerShiOptions& options);
 
 }  // namespace gmcc
