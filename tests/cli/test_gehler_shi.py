@@ -64,6 +64,8 @@ with tempfile.TemporaryDirectory() as tmp:
     rec = outs["1"][2].decode().splitlines()
     check('"surface_indices":"chart patch numbers 1-24"' in rec[1], "records say what drawn holds")
     check('"baselines":{"grey_world"' in rec[2], "a scene record has its baselines")
+    m = subprocess.run([gmcc, "merge", os.path.join(tmp, "t1.jsonl")], capture_output=True, text=True)
+    check(m.returncode == 2 and "cannot be merged" in m.stderr and m.stdout == "", f"merge refuses: {m.stderr}")
 
     r = run(*small, "--protocol", "paper", "--cameras", "Canon5D", "--threads", "2")
     check(r.returncode == 0 and "Canon5D yellowish" in r.stdout and "Canon5D bluish" in r.stdout
