@@ -367,7 +367,7 @@ std::string experiment_plot_script(const ExperimentResult& r, const std::string&
           << 2 + panel * R + k << " with linespoints ls " << k + 1 << " title '" << titles[k] << "'";
       g << "\n";
       if (panel == 1 && columns == 3) {  // recovery error of the rules and the baselines
-        g << "  set ylabel '" << lights[i] << ": mean recovery error (deg)'\n  plot ";
+        g << "  set ylabel '" << lights[i] << ": mean recovery (deg)'\n  plot ";
         const char* baseline_titles[] = {"grey world", "max-RGB"};
         for (std::size_t k = 0; k < R + r.baselines.size(); ++k)
           g << (k ? ", '' " : ("'" + stem + ".dat' ")) << "index " << i << " using 1:" << 2 + 2 * R + k
