@@ -20,13 +20,13 @@ do for [term = 1:2] {
   plot 'gehler-shi.dat' index 0 using 1:2 with linespoints ls 1 title 'max-area', '' index 0 using 1:3 with linespoints ls 2 title '2-D mean', '' index 0 using 1:4 with linespoints ls 3 title '3-D mean'
   set ylabel 'Canon1D: mean worst case (deg)'
   plot 'gehler-shi.dat' index 0 using 1:5 with linespoints ls 1 title 'max-area', '' index 0 using 1:6 with linespoints ls 2 title '2-D mean', '' index 0 using 1:7 with linespoints ls 3 title '3-D mean'
-  set ylabel 'Canon1D: mean recovery error (deg)'
+  set ylabel 'Canon1D: mean recovery (deg)'
   plot 'gehler-shi.dat' index 0 using 1:8 with linespoints ls 1 title 'max-area', '' index 0 using 1:9 with linespoints ls 2 title '2-D mean', '' index 0 using 1:10 with linespoints ls 3 title '3-D mean', '' index 0 using 1:11 with linespoints ls 4 title 'grey world', '' index 0 using 1:12 with linespoints ls 5 title 'max-RGB'
   set ylabel 'Canon5D: mean error (deg)'
   plot 'gehler-shi.dat' index 1 using 1:2 with linespoints ls 1 title 'max-area', '' index 1 using 1:3 with linespoints ls 2 title '2-D mean', '' index 1 using 1:4 with linespoints ls 3 title '3-D mean'
   set ylabel 'Canon5D: mean worst case (deg)'
   plot 'gehler-shi.dat' index 1 using 1:5 with linespoints ls 1 title 'max-area', '' index 1 using 1:6 with linespoints ls 2 title '2-D mean', '' index 1 using 1:7 with linespoints ls 3 title '3-D mean'
-  set ylabel 'Canon5D: mean recovery error (deg)'
+  set ylabel 'Canon5D: mean recovery (deg)'
   plot 'gehler-shi.dat' index 1 using 1:8 with linespoints ls 1 title 'max-area', '' index 1 using 1:9 with linespoints ls 2 title '2-D mean', '' index 1 using 1:10 with linespoints ls 3 title '3-D mean', '' index 1 using 1:11 with linespoints ls 4 title 'grey world', '' index 1 using 1:12 with linespoints ls 5 title 'max-RGB'
   unset multiplot
   set output
