@@ -74,6 +74,9 @@ ExperimentResult result_of(const json& h, const Place& at) {
     bad(at, "not a gmcc reproduce --scenes-out file (format gmcc-reproduce, version 1)");
   ExperimentResult r;
   r.name = get<std::string>(h, "experiment", at);
+  if (h.contains("baselines"))  // gehler-shi: its cells are light groups, which merge does not rebuild
+    bad(at, "records of reproduce " + r.name + " (light groups, baselines) cannot be merged; "
+            "its own --csv and --json hold the whole run");
   r.figure = get<std::string>(h, "figure", at);
   r.lights = get<std::vector<std::string>>(h, "lights", at);
   r.rules = get<std::vector<std::string>>(h, "rules", at);

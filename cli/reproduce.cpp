@@ -10,13 +10,18 @@
 #include <gmcc/validation/camera_experiment.h>
 #include <gmcc/validation/colour_csv.h>
 #include <gmcc/validation/experiment_report.h>
+#include <gmcc/validation/gehler_shi.h>
+#include <gmcc/validation/gehler_shi_experiment.h>
+#include <gmcc/validation/gehler_shi_report.h>
 #include <gmcc/validation/synthetic_experiment.h>
 
 #include <unistd.h>
 
 #include <cstdio>
 #include <iostream>
+#include <algorithm>
 #include <optional>
+#include <tuple>
 
 #ifndef GMCC_DATA_DIR
 #define GMCC_DATA_DIR "data"
@@ -161,7 +166,7 @@ ExperimentOutputs::ExperimentOutputs(const ReportPaths& paths, const std::string
   }
 }
 
-int ExperimentOutputs::write(const ExperimentResult& result, const std::string& provenance) {
+int ExperimentOutputs::write(const ExperimentResult& result, const std::string& provenance, bool table) {
   set_activity("writing the reports");
   if (scenes_) scenes_->commit(experiment_scenes_jsonl(result, provenance));
   if (csv_) csv_->commit(experiment_csv(result, provenance));
@@ -176,6 +181,7 @@ int ExperimentOutputs::write(const ExperimentResult& result, const std::string& 
                  " scenes written to " + paths_.scenes_out + " (gmcc merge combines the shards)\n");
     return 0;
   }
+  if (!table) return 0;
   write_stdout(experiment_table(result));
   return paths_.plot_dir.empty() ? 0 : draw_with_gnuplot(paths_.plot_dir, stem_, "gmcc reproduce");
 }
@@ -306,6 +312,58 @@ int expansion_table(const ReproduceOptions& o) {
   return 0;
 }
 
+// The real-camera test on the Gehler–Shi charts: one run over both cameras (their images are
+// the lights, grouped by camera, or camera and light group), the table of gehler_shi_report.h.
+int gehler_shi(ReproduceOptions o) {
+  o.scenes = o.gehler_scenes;
+  if (!o.shard.empty())
+    throw InputError("--shard", 0, "not for gehler-shi: gmcc merge does not know its light groups");
+  ExperimentConfig config = config_from(o);
+  GehlerShiOptions options;
+  options.protocol = gehler_shi_protocol_from_string(o.protocol);  // checked by CLI11 already
+  options.cameras.clear();
+  for (const std::string& camera : o.cameras) {
+    if (camera != "Canon1D" && camera != "Canon5D")
+      throw InputError("--cameras", 0, "unknown camera " + quoted_text(camera) + " (Canon1D, Canon5D)");
+    if (std::find(options.cameras.begin(), options.cameras.end(), camera) == options.cameras.end())
+      options.cameras.push_back(camera);
+  }
+  for (const auto& [text, option, bound] : {std::tuple{&o.dark, "--dark", &options.dark}, {&o.clip, "--clip", &options.clip}}) {
+    try {
+      *bound = parse_rational(*text);
+      if (sgn(*bound) < 0) throw std::invalid_argument("must be >= 0");
+    } catch (const std::invalid_argument& e) {
+      throw InputError(option, 0, e.what());
+    }
+  }
+  if (options.dark >= options.clip) throw InputError("--dark", 0, "must be below --clip");
+  for (const std::string& k : o.exclude_patches)
+    options.exclude_patches.push_back(static_cast<std::uint32_t>(integer_option("--exclude-patches", k, 1, 24)));
+  const std::string patches = data_file(o, "gehler_shi_568_colorchecker_patch_rgb_rec2018.csv");
+  const std::string truth = data_file(o, "gehler_shi_568_groundtruth.csv");
+  set_activity("reading " + patches + " and " + truth);
+  const ChartDataset data = read_gehler_shi(patches, truth);
+  GehlerShiSetup setup;
+  try {
+    setup = gehler_shi_setup(data, options);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(patches, 0, e.what());
+  }
+  // The figure's files: gehler-shi.* (leave-one-out) or gehler-shi-paper.*.
+  const std::string stem = setup.setup.name + (options.protocol == GehlerShiProtocol::paper ? "-paper" : "");
+  ExperimentOutputs outputs({o.csv_path, o.json_path, o.scenes_out_path, o.plot_dir}, stem);
+  set_activity("running the gehler-shi experiment");
+  ExperimentResult result;
+  try {
+    result = run_gamut_experiment(setup.setup, config);
+  } catch (const std::invalid_argument& e) {
+    throw InputError("--surfaces", 0, e.what());
+  }
+  outputs.write(result, provenance_json().dump(), false);
+  write_stdout(gehler_shi_table(result, setup));
+  return o.plot_dir.empty() ? 0 : draw_with_gnuplot(o.plot_dir, stem, "gmcc reproduce");
+}
+
 }  // namespace
 
 CLI::App* add_reproduce_command(CLI::App& app, ReproduceOptions& o) {
@@ -338,6 +396,46 @@ CLI::App* add_reproduce_command(CLI::App& app, ReproduceOptions& o) {
   exp->add_option("--scenes-out", o.scenes_out_path,
                   "write the three runs' per-scene records (JSON Lines), each run a setup line "
                   "followed by its scenes");
+  CLI::App* gs = cmd->add_subcommand(
+      "gehler-shi", "Fig. 5 on measured chart colours: the 568 Gehler-Shi images' ColorChecker patches and "
+                    "ground-truth lights, per camera, leave-one-out or the paper's protocol");
+  gs->add_option("--scenes", o.gehler_scenes, "scenes per image and patch count")->capture_default_str();
+  gs->add_option("--seed", o.seed, "seed of the scene generators (mt19937_64)")->capture_default_str();
+  gs->add_option("--surfaces", o.max_surfaces, "largest number of patches per scene (1 to it)")
+      ->capture_default_str();
+  gs->add_option("--threads", o.threads, "worker threads (0: all cores); results do not depend on it")
+      ->capture_default_str();
+  gs->add_option("--data", o.data_dir, "folder of the data files (default: the shipped data/)");
+  gs->add_option("--mean3d", o.mean3d_method, "route to the 3-D mean")
+      ->check(CLI::IsMember({"analytic", "quadrature", "monte-carlo"}))
+      ->capture_default_str();
+  gs->add_option("--protocol", o.protocol,
+                 "leave-one-out (each image's canonical gamut: every other same-camera image) or paper "
+                 "(one whitish daylight chart; yellowish and bluish test groups)")
+      ->check(CLI::IsMember({"leave-one-out", "paper"}))
+      ->capture_default_str();
+  gs->add_option("--cameras", o.cameras, "the cameras, each its own rows: Canon1D, Canon5D")
+      ->delimiter(',')
+      ->capture_default_str();
+  gs->add_option("--dark", o.dark, "drop patches with a channel <= this (near-black)")->capture_default_str();
+  gs->add_option("--clip", o.clip, "drop patches with a channel >= this (clipped)")->capture_default_str();
+  gs->add_option("--exclude-patches", o.exclude_patches,
+                 "leave these patch numbers (1-24) out of every image, e.g. 19,20,21,22,23,24 (the "
+                 "achromatic row, on which the ground truth was measured)")
+      ->delimiter(',');
+  gs->add_option("--expand", o.expand_factor, "expand the canonical gamut by this factor (0.1 = 10%)")
+      ->capture_default_str();
+  gs->add_option("--expand-policy", o.expand_policy, "none | centroid-clip | multiplicative")
+      ->check(CLI::IsMember({"none", "centroid-clip", "multiplicative"}))
+      ->capture_default_str();
+  gs->add_option("--csv", o.csv_path, "write one row per (group, patches, rule or baseline) to this CSV file");
+  gs->add_option("--json", o.json_path, "write every cell's statistics as one JSON document to this file");
+  gs->add_option("--scenes-out", o.scenes_out_path,
+                 "write one JSON Lines record per scene (patch numbers drawn, F, every rule's and "
+                 "baseline's map and errors)");
+  gs->add_option("--plot", o.plot_dir,
+                 "write gehler-shi.dat/.gp (paper protocol: gehler-shi-paper.*) to this folder and draw "
+                 ".png/.svg with gnuplot");
   return cmd;
 }
 
@@ -345,6 +443,7 @@ int run_reproduce(const CLI::App& reproduce, const ReproduceOptions& o) {
   if (reproduce.got_subcommand("synthetic")) return report(synthetic(o), config_from(o), o);
   if (reproduce.got_subcommand("camera")) return report(camera(o), config_from(o), o);
   if (reproduce.got_subcommand("expansion")) return expansion_table(o);
+  if (reproduce.got_subcommand("gehler-shi")) return gehler_shi(o);
   return 2;
 }
 

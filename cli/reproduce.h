@@ -1,7 +1,7 @@
 #pragma once
 // `gmcc reproduce`: the experiments of Finlayson & Hordley (1999) §4 from spectral data
 // (docs/reproduction.md): `synthetic` (Fig. 3), `camera` (a Fig. 5 analogue), `expansion`
-// (the canonical-gamut expansion sensitivity table).
+// (the canonical-gamut expansion sensitivity table), `gehler-shi` (Fig. 5 on measured charts).
 
 #include "output_files.h"
 
@@ -31,6 +31,12 @@ struct ReproduceOptions {
   std::string illuminants_path;  // plausible lights for the illumination constraint
   bool crule = false;            // also 3-D CRULE
   std::string shading = "0";     // intensity variation: image colours scaled by U[shading, 1]
+  // gehler-shi
+  std::string gehler_scenes = "5";  // its own default --scenes: 568 images, not 4 lights
+  std::string protocol = "leave-one-out";
+  std::vector<std::string> cameras{"Canon1D", "Canon5D"};
+  std::string dark = "0.002", clip = "0.95";
+  std::vector<std::string> exclude_patches;  // patch numbers 1-24
 };
 
 /// Where an experiment's reports go (each optional; the table always goes to stdout).
@@ -45,8 +51,8 @@ class ExperimentOutputs {
   ExperimentOutputs(const ReportPaths& paths, const std::string& stem);
   /// Write every requested file and the table (stdout), then draw with gnuplot if --plot.
   /// `provenance` (a JSON object, docs/cli.md "Provenance") heads the CSV, JSON and records.
-  /// Returns the exit status.
-  int write(const ExperimentResult& result, const std::string& provenance);
+  /// Returns the exit status. `table`: false leaves the table (and the figure) to the caller.
+  int write(const ExperimentResult& result, const std::string& provenance, bool table = true);
 
  private:
   ReportPaths paths_;
@@ -54,7 +60,7 @@ class ExperimentOutputs {
   std::optional<PendingFile> csv_, json_, scenes_, dat_, gp_;
 };
 
-/// Register `reproduce` with its subcommands `synthetic`, `camera`, `expansion`.
+/// Register `reproduce` with its subcommands `synthetic`, `camera`, `expansion`, `gehler-shi`.
 CLI::App* add_reproduce_command(CLI::App& app, ReproduceOptions& options);
 
 /// Run whichever subcommand was given. Returns the exit status.

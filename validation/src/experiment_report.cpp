@@ -95,23 +95,33 @@ std::string experiment_csv(const ExperimentResult& r, const std::string& provena
          "mean_reproduction_error_deg,max_error_deg,empty_scenes,truth_in_feasible_set";
   for (const std::string& column : experiment_csv_added_columns()) out << ',' << column;
   out << '\n';
-  for (const ExperimentCell& c : r.cells)
-    for (std::size_t k = 0; k < c.rules.size(); ++k) {
-      const RuleStats& s = c.rules[k];
-      out << c.light << ',' << c.surfaces << ',' << r.rules[k] << ','
-          << num(s.error.mean) << ',' << num(s.worst_case.mean) << ','
-          << c.scenes - c.empty << ',' << num(s.error.median) << ','
-          << num(s.worst_case.median) << ',' << num(s.illuminant.mean) << ','
-          << num(s.illuminant.median) << ',' << num(s.reproduction.mean) << ','
-          << num(s.error.max) << ',' << c.empty << ',' << s.truth_in_feasible_set;
-      for (const Quantity& q : quantities)
-        for (const Statistic& st : statistics)
-          if (!original_column(std::string(st.name) + "_" + q.name + "_deg")) {
-            const double x = s.*q.member.*st.member;
-            out << ',' << (std::isnan(x) ? std::string() : num(x));  // undefined (se of one value): empty
-          }
-      out << ',' << s.illuminant.n << '\n';
-    }
+  // A baseline (no feasible set: no worst case, no truth-in-F) leaves those columns empty.
+  auto row = [&](const ExperimentCell& c, const std::string& rule, const RuleStats& s, std::uint64_t scenes,
+                 bool baseline) {
+    auto worst = [&](double x) { return baseline ? std::string() : num(x); };
+    out << c.light << ',' << c.surfaces << ',' << rule << ','
+        << num(s.error.mean) << ',' << worst(s.worst_case.mean) << ','
+        << scenes << ',' << num(s.error.median) << ','
+        << worst(s.worst_case.median) << ',' << num(s.illuminant.mean) << ','
+        << num(s.illuminant.median) << ',' << num(s.reproduction.mean) << ','
+        << num(s.error.max) << ',' << c.empty << ',' << (baseline ? std::string() : std::to_string(s.truth_in_feasible_set));
+    for (const Quantity& q : quantities)
+      for (const Statistic& st : statistics)
+        if (!original_column(std::string(st.name) + "_" + q.name + "_deg")) {
+          const double x = s.*q.member.*st.member;
+          const bool undefined = std::isnan(x) || (baseline && q.member == &RuleStats::worst_case);
+          out << ',' << (undefined ? std::string() : num(x));  // undefined (se of one value): empty
+        }
+    out << ',' << s.illuminant.n << '\n';
+  };
+  for (const ExperimentCell& c : r.cells) {
+    for (std::size_t k = 0; k < c.rules.size(); ++k) row(c, r.rules[k], c.rules[k], c.scenes - c.empty, false);
+    // Baselines over the rules' scenes, then over every scene of the cell (rule name + "_all").
+    for (std::size_t b = 0; b < c.baselines.size() && b < r.baselines.size(); ++b)
+      row(c, r.baselines[b], c.baselines[b], c.scenes - c.empty, true);
+    for (std::size_t b = 0; b < c.baselines_all.size() && b < r.baselines.size(); ++b)
+      row(c, r.baselines[b] + "_all", c.baselines_all[b], c.scenes, true);
+  }
   return out.str();
 }
 
@@ -130,7 +140,14 @@ std::string experiment_setup_json(const ExperimentResult& r) {
          ",\"mean3d\":" + json_string(to_string(c.mean3d.method)) +
          ",\"canonical_gamut\":" + json_set(r.canonical_gamut) +
          ",\"constraint\":" + (c.constraint ? json_set(*c.constraint) : std::string("null")) +
-         ",\"surface_indices\":\"0-based\"";
+         ",\"surface_indices\":" + json_string(r.surface_indices);
+  if (!r.baselines.empty()) {
+    out += ",\"baselines\":[";
+    for (std::size_t i = 0; i < r.baselines.size(); ++i) out += (i ? "," : "") + json_string(r.baselines[i]);
+    out += "]";
+  }
+  if (!r.canonical_gamuts.empty())  // one per light's set; canonical_gamut is the first
+    out += ",\"canonical_gamuts\":" + std::to_string(r.canonical_gamuts.size());
   if (c.shard_count > 1)
     out += ",\"shard\":" + json_string(std::to_string(c.shard_index) + "/" + std::to_string(c.shard_count));
   return out + "}";
@@ -143,8 +160,24 @@ std::string experiment_scenes_jsonl(const ExperimentResult& r, const std::string
     out += "{\"light\":" + json_string(r.lights.at(s.light)) + ",\"light_index\":" + std::to_string(s.light) +
            ",\"surfaces\":" + std::to_string(s.surfaces) + ",\"scene\":" + std::to_string(s.scene) + ",\"drawn\":[";
     for (std::size_t i = 0; i < s.drawn.size(); ++i) out += (i ? "," : "") + std::to_string(s.drawn[i]);
-    out += "],\"feasible_set\":{\"kind\":" + json_string(to_string(s.kind)) + ",\"area\":" + json_number(s.area) +
-           "},\"rules\":";
+    out += "],\"feasible_set\":{\"kind\":" + json_string(to_string(s.kind)) + ",\"area\":" + json_number(s.area) + "}";
+    if (!s.baselines.empty()) {  // only with baselines (gehler-shi): estimates scored in every scene
+      out += ",\"baselines\":{";
+      for (std::size_t b = 0; b < s.baselines.size(); ++b) {
+        const RuleRecord& x = s.baselines[b];
+        out += (b ? "," : "") + json_string(r.baselines.at(b)) + ":";
+        if (!x.scored) {
+          out += "null";
+          continue;
+        }
+        out += "{\"map\":[" + json_number(x.map[0]) + "," + json_number(x.map[1]) + "],\"error_deg\":" +
+               json_number(x.error_deg) + ",\"illuminant_error_deg\":" +
+               (x.positive_map ? json_number(x.illuminant_error_deg) : "null") + ",\"reproduction_error_deg\":" +
+               (x.positive_map ? json_number(x.reproduction_error_deg) : "null") + "}";
+      }
+      out += "}";
+    }
+    out += ",\"rules\":";
     if (s.rules.empty()) {
       out += "null}\n";
       continue;
@@ -188,7 +221,27 @@ std::string experiment_json(const ExperimentResult& r, const std::string& proven
       }
       out += "}";
     }
-    out += "}}";
+    out += "}";
+    // Baselines (gehler-shi): over the rules' scenes, and over every scene ("_all").
+    for (int all = 0; all < 2 && !r.baselines.empty(); ++all) {
+      out += all ? ",\"baselines_all\":{" : ",\"baselines\":{";
+      const std::vector<RuleStats>& stats = all ? c.baselines_all : c.baselines;
+      for (std::size_t b = 0; b < stats.size() && b < r.baselines.size(); ++b) {
+        out += (b ? "," : "") + json_string(r.baselines[b]) + ":{";
+        bool first = true;
+        for (const Quantity& q : quantities) {
+          if (q.member == &RuleStats::worst_case) continue;
+          const ErrorStatistics& e = stats[b].*q.member;
+          out += (first ? "\"" : ",\"") + std::string(q.name) + "_deg\":{\"n\":" + std::to_string(e.n);
+          first = false;
+          for (const Statistic& st : statistics) out += ",\"" + std::string(st.name) + "\":" + json_number(e.*st.member);
+          out += "}";
+        }
+        out += "}";
+      }
+      out += "}";
+    }
+    out += "}";
   }
   return out + "\n]}\n";
 }
@@ -263,11 +316,17 @@ std::string experiment_plot_data(const ExperimentResult& r) {
     if (c.light != light) {
       if (!light.empty()) out << "\n\n";
       light = c.light;
-      out << "# " << light << ": surfaces, mean error (max_area mean_2d mean_3d), mean worst case (same)\n";
+      out << "# " << light << ": surfaces, mean error (max_area mean_2d mean_3d), mean worst case (same)"
+          << (r.baselines.empty() ? "" : ", mean recovery error (same, then grey_world max_rgb on the same scenes)")
+          << "\n";
     }
     out << c.surfaces;
     for (const auto& s : c.rules) out << ' ' << num(s.error.mean);
     for (const auto& s : c.rules) out << ' ' << num(s.worst_case.mean);
+    if (!r.baselines.empty()) {
+      for (const auto& s : c.rules) out << ' ' << num(s.illuminant.mean);
+      for (const auto& s : c.baselines) out << ' ' << num(s.illuminant.mean);
+    }
     out << '\n';
   }
   return out.str();
@@ -278,6 +337,7 @@ std::string experiment_plot_script(const ExperimentResult& r, const std::string&
   for (const ExperimentCell& c : r.cells)
     if (lights.empty() || lights.back() != c.light) lights.push_back(c.light);
   const std::size_t rows = lights.size();
+  const std::size_t columns = r.baselines.empty() ? 2 : 3;  // with baselines: recovery error too
   std::ostringstream g;
   g << "# gmcc reproduce " << r.name << ": laid out like Finlayson & Hordley (1999) " << r.figure << "\n"
     << "if (!exists('png_file')) png_file = '" << stem << ".png'\n"
@@ -291,9 +351,11 @@ std::string experiment_plot_script(const ExperimentResult& r, const std::string&
     << "set style line 4 lc rgb '#9467bd' lw 2 pt 11 dt 2\n"
     << "set style line 5 lc rgb '#8c564b' lw 2 pt 13 dt 2\n"
     << "do for [term = 1:2] {\n"
-    << "  if (term == 1) { set terminal pngcairo size 1000," << 260 * rows << " font ',9'; set output png_file }\n"
-    << "  if (term == 2) { set terminal svg size 1000," << 260 * rows << " font 'sans,9'; set output svg_file }\n"
-    << "  set multiplot layout " << rows << ",2\n";
+    << "  if (term == 1) { set terminal pngcairo size " << 500 * columns << "," << 260 * rows
+    << " font ',9'; set output png_file }\n"
+    << "  if (term == 2) { set terminal svg size " << 500 * columns << "," << 260 * rows
+    << " font 'sans,9'; set output svg_file }\n"
+    << "  set multiplot layout " << rows << "," << columns << "\n";
   const std::size_t R = r.rules.size();
   const char* titles[] = {"max-area", "2-D mean", "3-D mean", "CRULE max-volume", "CRULE centroid"};
   for (std::size_t i = 0; i < rows; ++i)
@@ -304,6 +366,14 @@ std::string experiment_plot_script(const ExperimentResult& r, const std::string&
         g << (k ? ", '' " : ("'" + stem + ".dat' ")) << "index " << i << " using 1:"
           << 2 + panel * R + k << " with linespoints ls " << k + 1 << " title '" << titles[k] << "'";
       g << "\n";
+      if (panel == 1 && columns == 3) {  // recovery error of the rules and the baselines
+        g << "  set ylabel '" << lights[i] << ": mean recovery (deg)'\n  plot ";
+        const char* baseline_titles[] = {"grey world", "max-RGB"};
+        for (std::size_t k = 0; k < R + r.baselines.size(); ++k)
+          g << (k ? ", '' " : ("'" + stem + ".dat' ")) << "index " << i << " using 1:" << 2 + 2 * R + k
+            << " with linespoints ls " << k + 1 << " title '" << (k < R ? titles[k] : baseline_titles[k - R]) << "'";
+        g << "\n";
+      }
     }
   g << "  unset multiplot\n  set output\n}\n";
   return g.str();

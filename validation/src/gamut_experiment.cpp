@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <deque>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -74,6 +75,23 @@ Point2 exact_map(const MapEstimate& e) {
 
 double to_double(const Rational& q) { return to_double_nearest(q); }
 
+// A baseline's illuminant estimate e scored like a rule's map: m = (c_r·e_b/(e_r·c_b),
+// c_g·e_b/(e_g·c_b)), the map that takes e to the canonical light c. Unscored unless e > 0.
+RuleRecord score_estimate(const Colour& e, const Point2& truth, const Colour& c) {
+  RuleRecord x;
+  if (sgn(e.r) <= 0 || sgn(e.g) <= 0 || sgn(e.b) <= 0 || sgn(c.b) <= 0) return x;
+  const Point2 m{Rational(c.r * e.b / (e.r * c.b)), Rational(c.g * e.b / (e.g * c.b))};
+  x.scored = true;
+  x.map = {to_double(m.x), to_double(m.y)};
+  x.error_deg = map_angular_error_deg(m, truth);
+  x.positive_map = sgn(m.x) > 0 && sgn(m.y) > 0;
+  if (x.positive_map) {
+    x.illuminant_error_deg = illuminant_angular_error_deg(m, truth, c);
+    x.reproduction_error_deg = reproduction_angular_error_deg(m, truth);
+  }
+  return x;
+}
+
 // Scenes s_begin <= s < s_end of cell (light_index, n), each with its own generator.
 std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const ExperimentConfig& config,
                                   const CanonicalConstraints& gamut, const std::vector<Point2>& chromaticities,
@@ -82,6 +100,10 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
   const TestLight& light = setup.lights[light_index];
   const std::size_t R = config.crule ? 5 : 3;
   std::vector<SceneRecord> records;
+  if (static_cast<std::size_t>(n) > light.surfaces.size()) {  // setup.skip_short_lights: no scenes
+    done += s_end - s_begin;
+    return records;
+  }
   records.reserve(static_cast<std::size_t>(s_end - s_begin));
   std::vector<std::size_t> pool(light.surfaces.size());
   SelectionOptions selection;
@@ -102,7 +124,12 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
     for (int i = 0; i < n; ++i)
       std::swap(pool[static_cast<std::size_t>(i)],
                 pool[static_cast<std::size_t>(i) + below(g, pool.size() - static_cast<std::size_t>(i))]);
-    if (config.keep_scenes) rec.drawn.assign(pool.begin(), pool.begin() + n);  // only records need it
+    if (config.keep_scenes)  // only records need it
+      for (int i = 0; i < n; ++i) {
+        const std::size_t surface = pool[static_cast<std::size_t>(i)];
+        rec.drawn.push_back(light.surface_ids.empty() ? static_cast<std::uint32_t>(surface)
+                                                      : light.surface_ids.at(surface));
+      }
     // The scene's chromaticities by address: the light's precomputed ones, or this scene's own.
     std::vector<const Point2*> image;
     std::vector<Point2> own;
@@ -126,6 +153,21 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
       }
       if (sgn(c.b) > 0) own.push_back(perspective_chromaticity(c)), image.push_back(&own.back());
       image_colours.push_back(std::move(c));
+    }
+    if (setup.baselines) {  // on the scene's colours as the rules see them (noise, shading)
+      Colour sum{0, 0, 0}, max{0, 0, 0};
+      for (int i = 0; i < n; ++i) {
+        const Colour& c = image_colours.size() == static_cast<std::size_t>(n)
+                              ? image_colours[static_cast<std::size_t>(i)]
+                              : light.surfaces[pool[static_cast<std::size_t>(i)]];
+        sum.r += c.r, sum.g += c.g, sum.b += c.b;
+        if (c.r > max.r) max.r = c.r;
+        if (c.g > max.g) max.g = c.g;
+        if (c.b > max.b) max.b = c.b;
+      }
+      // Grey world's mean is the sum / n: the same direction, hence the same map.
+      rec.baselines = {score_estimate(sum, light.true_map, setup.canonical_light),
+                       score_estimate(max, light.true_map, setup.canonical_light)};
     }
     if (image.empty()) continue;
     const FeasiblePolygon P = feasible_polygon(gamut, image);
@@ -204,15 +246,31 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
 }  // namespace
 
 ExperimentCell summarise_cell(const std::string& light, int n, std::vector<const SceneRecord*> scenes,
-                              std::size_t R) {
-  std::sort(scenes.begin(), scenes.end(), [](const SceneRecord* a, const SceneRecord* b) { return a->scene < b->scene; });
+                              std::size_t R, std::size_t B) {
+  std::sort(scenes.begin(), scenes.end(), [](const SceneRecord* a, const SceneRecord* b) {
+    return a->light != b->light ? a->light < b->light : a->scene < b->scene;
+  });
   ExperimentCell cell;
   cell.light = light;
   cell.surfaces = n;
   cell.rules.resize(R);
   std::vector<std::vector<double>> error(R), worst(R), illuminant(R), reproduction(R);
+  // Baselines: [0, B) over the answered scenes, [B, 2B) over all.
+  std::vector<std::vector<double>> b_error(2 * B), b_illuminant(2 * B), b_reproduction(2 * B);
   for (const SceneRecord* rec : scenes) {
     ++cell.scenes;
+    for (std::size_t b = 0; b < B && b < rec->baselines.size(); ++b) {
+      const RuleRecord& x = rec->baselines[b];
+      if (!x.scored) continue;
+      for (std::size_t slot : {b + B, rec->rules.empty() ? 2 * B : b}) {
+        if (slot >= 2 * B) continue;
+        b_error[slot].push_back(x.error_deg);
+        if (x.positive_map) {
+          b_illuminant[slot].push_back(x.illuminant_error_deg);
+          b_reproduction[slot].push_back(x.reproduction_error_deg);
+        }
+      }
+    }
     if (rec->rules.empty()) {
       ++cell.empty;
       continue;
@@ -236,16 +294,31 @@ ExperimentCell summarise_cell(const std::string& light, int n, std::vector<const
     st.illuminant = error_statistics(std::move(illuminant[r]));
     st.reproduction = error_statistics(std::move(reproduction[r]));
   }
+  cell.baselines.resize(B);
+  cell.baselines_all.resize(B);
+  for (std::size_t slot = 0; slot < 2 * B; ++slot) {
+    RuleStats& st = slot < B ? cell.baselines[slot] : cell.baselines_all[slot - B];
+    st.error = error_statistics(std::move(b_error[slot]));
+    st.illuminant = error_statistics(std::move(b_illuminant[slot]));
+    st.reproduction = error_statistics(std::move(b_reproduction[slot]));
+  }
   return cell;
 }
 
 ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const ExperimentConfig& config) {
   if (config.min_surfaces < 1 || config.max_surfaces < config.min_surfaces)
     throw std::invalid_argument("surface counts must satisfy 1 <= min <= max");
-  for (const TestLight& l : setup.lights)
-    if (static_cast<std::size_t>(config.max_surfaces) > l.surfaces.size())
+  for (const TestLight& l : setup.lights) {
+    if (!setup.skip_short_lights && static_cast<std::size_t>(config.max_surfaces) > l.surfaces.size())
       throw std::invalid_argument("light " + l.name + " has only " +
                                   std::to_string(l.surfaces.size()) + " surfaces");
+    if (!setup.canonical_chromaticity_sets.empty() && l.canonical >= setup.canonical_chromaticity_sets.size())
+      throw std::invalid_argument("light " + l.name + " names a canonical set that is not there");
+    if (!l.surface_ids.empty() && l.surface_ids.size() != l.surfaces.size())
+      throw std::invalid_argument("light " + l.name + " has not one surface id per surface");
+  }
+  if (!setup.canonical_chromaticity_sets.empty() && config.crule)
+    throw std::invalid_argument("3-D CRULE needs one set of canonical surfaces, not a canonical set per light");
   if (config.shard_count < 1 || config.shard_index < 1 || config.shard_index > config.shard_count)
     throw std::invalid_argument("a shard K/N needs 1 <= K <= N");
   ExperimentResult result;
@@ -256,9 +329,29 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
   result.config.progress = nullptr;
   result.rules.assign(experiment_rules.begin(), experiment_rules.end());
   if (config.crule) result.rules.insert(result.rules.end(), experiment_rules_3d.begin(), experiment_rules_3d.end());
-  result.canonical_gamut =
-      canonical_gamut(perspective_chromaticities(setup.canonical_surfaces, NonPositiveBluePolicy::drop).points,
-                      config.expansion);
+  result.surface_indices = setup.surface_indices;
+  if (setup.baselines) result.baselines.assign(experiment_baselines.begin(), experiment_baselines.end());
+  if (setup.canonical_chromaticity_sets.empty()) {
+    result.canonical_gamut =
+        canonical_gamut(perspective_chromaticities(setup.canonical_surfaces, NonPositiveBluePolicy::drop).points,
+                        config.expansion);
+  } else {
+    for (const std::vector<Point2>& set : setup.canonical_chromaticity_sets)
+      result.canonical_gamuts.push_back(canonical_gamut(set, config.expansion));
+    result.canonical_gamut = result.canonical_gamuts.front();
+  }
+  // The cells' rows: each light's group (its own name when it has none), in order of first
+  // appearance; light ℓ's scenes go to row group_of[ℓ].
+  std::vector<std::string> groups;
+  std::vector<std::size_t> group_of;
+  bool grouped = false;
+  for (const TestLight& l : setup.lights) {
+    const std::string& g = l.group.empty() ? l.name : l.group;
+    grouped = grouped || !l.group.empty();
+    const auto at = std::find(groups.begin(), groups.end(), g);
+    group_of.push_back(static_cast<std::size_t>(at - groups.begin()));
+    if (at == groups.end()) groups.push_back(g);
+  }
 
   struct Job {
     std::size_t light;
@@ -281,10 +374,14 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
   };
   std::vector<std::vector<SceneRecord>> records(jobs.size());
 
-  // G_c (and Finlayson's constraint C, when given) prepared once for every scene.
-  const CanonicalConstraints gamut = config.constraint
-                                         ? CanonicalConstraints(result.canonical_gamut, *config.constraint)
-                                         : CanonicalConstraints(result.canonical_gamut);
+  // G_c (and Finlayson's constraint C, when given) prepared once for every scene: one per
+  // canonical set.
+  std::deque<CanonicalConstraints> gamuts;
+  for (const ConvexSet2& g : result.canonical_gamuts.empty() ? std::vector<ConvexSet2>{result.canonical_gamut}
+                                                              : result.canonical_gamuts) {
+    if (config.constraint) gamuts.emplace_back(g, *config.constraint);
+    else gamuts.emplace_back(g);
+  }
   // Without noise a scene's colours are the light's surfaces as given: their chromaticities are
   // computed once per light (b <= 0 left as a placeholder; scenes skip those surfaces).
   // Lights are shared out among the threads (each light's list is written by one thread only).
@@ -314,12 +411,14 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
     for (std::size_t j; (j = next++) < jobs.size();) {
       try {
         const auto [s_begin, s_end] = scene_range(j);
-        records[j] = run_cell(setup, config, gamut, chromaticities[jobs[j].light], jobs[j].light, jobs[j].n,
-                              s_begin, s_end, done);
+        const std::size_t l = jobs[j].light;
+        records[j] = run_cell(setup, config, gamuts[setup.canonical_chromaticity_sets.empty() ? 0 : setup.lights[l].canonical],
+                              chromaticities[l], l, jobs[j].n, s_begin, s_end, done);
+        if (grouped) continue;  // summarised per group below, once every light's scenes are in
         std::vector<const SceneRecord*> scenes;
         for (const SceneRecord& rec : records[j]) scenes.push_back(&rec);
         result.cells[j] = summarise_cell(setup.lights[jobs[j].light].name, jobs[j].n, std::move(scenes),
-                                         result.rules.size());
+                                         result.rules.size(), result.baselines.size());
         if (!config.keep_scenes) std::vector<SceneRecord>().swap(records[j]);
       } catch (...) {
         std::lock_guard<std::mutex> lock(failure_mutex);
@@ -351,6 +450,19 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
   }
   for (std::thread& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
+  if (grouped) {
+    const std::size_t counts = static_cast<std::size_t>(config.max_surfaces - config.min_surfaces + 1);
+    result.cells.clear();
+    for (std::size_t g = 0; g < groups.size(); ++g)
+      for (std::size_t k = 0; k < counts; ++k) {
+        std::vector<const SceneRecord*> scenes;
+        for (std::size_t j = 0; j < jobs.size(); ++j)
+          if (group_of[jobs[j].light] == g && static_cast<std::size_t>(jobs[j].n - config.min_surfaces) == k)
+            for (const SceneRecord& rec : records[j]) scenes.push_back(&rec);
+        result.cells.push_back(summarise_cell(groups[g], config.min_surfaces + static_cast<int>(k), std::move(scenes),
+                                              result.rules.size(), result.baselines.size()));
+      }
+  }
   if (config.keep_scenes)
     for (std::vector<SceneRecord>& cell : records)
       for (SceneRecord& rec : cell) result.scenes.push_back(std::move(rec));

@@ -19,6 +19,9 @@ namespace gmcc {
 /// mean_reproduction_error_deg,max_error_deg,empty_scenes,truth_in_feasible_set, then the
 /// columns of experiment_csv_added_columns (docs/cli.md lists them all).
 /// `scenes` counts the scenes that had a feasible map (those averaged); `empty_scenes` the others.
+/// With baselines (ExperimentResult::baselines), each cell's rules are followed by a row per
+/// baseline over the same scenes, then one per baseline named `<baseline>_all` over every scene
+/// (`scenes` = all of them); their worst-case and truth_in_feasible_set fields are empty.
 /// \param provenance a JSON object (docs/cli.md "Provenance") written first as the comment line
 ///        `# gmcc-provenance: …`; none when empty.
 std::string experiment_csv(const ExperimentResult& result, const std::string& provenance = {});

@@ -27,6 +27,15 @@ struct TestLight {
   std::vector<Colour> surfaces;  ///< surfaces[i]: surface i under this light
   Point2 true_map;
   Point3 true_diagonal_map;      ///< d with d ⊙ p = p_canonical (its perspective is true_map)
+  /// With ExperimentSetup::canonical_chromaticity_sets: the set whose hull is this light's
+  /// canonical gamut (each test image its own, as in a leave-one-out protocol).
+  std::size_t canonical = 0;
+  /// The cell this light's scenes are summarised in, with other lights of the same group (e.g.
+  /// every image of one camera); empty: the light's own name, one cell row per light.
+  std::string group;
+  /// The ids recorded in SceneRecord::drawn for surfaces[i] (e.g. chart patch numbers); empty:
+  /// the indices i themselves.
+  std::vector<std::uint32_t> surface_ids;
 };
 
 /// What an experiment is made of (built by synthetic_setup or camera_setup).
@@ -36,6 +45,21 @@ struct ExperimentSetup {
   std::vector<Colour> canonical_surfaces;  ///< the canonical gamut's colours
   Colour canonical_light;                  ///< the canonical light as the sensors see it
   std::vector<TestLight> lights;
+  /// When not empty: canonical gamut k is the hull of canonical_chromaticity_sets[k] (exact
+  /// perspective chromaticities), and light ℓ's scenes use set lights[ℓ].canonical; the
+  /// canonical surfaces are then not used for the 2-D gamut (and CRULE is not available).
+  std::vector<std::vector<Point2>> canonical_chromaticity_sets;
+  /// A light with fewer surfaces than a cell's count n draws no scenes in that cell (real
+  /// images with few usable patches) instead of the run being refused.
+  bool skip_short_lights = false;
+  /// Also score the reference baselines of experiment_baselines in every scene, the empty ones
+  /// included: grey world (the mean of the scene's colours) and max-RGB (their per-channel
+  /// maximum), each an illuminant estimate e turned into the map m = (c_r·e_b/(e_r·c_b),
+  /// c_g·e_b/(e_g·c_b)) for the canonical light c.
+  bool baselines = false;
+  /// What SceneRecord::drawn holds, for the records' setup line ("0-based" surface indices, or
+  /// e.g. "chart patch numbers 1-24" with TestLight::surface_ids).
+  std::string surface_indices = "0-based";
 };
 
 /// How to run it.
@@ -76,6 +100,8 @@ struct ExperimentConfig {
 /// The 2-D rules in report order, then (with ExperimentConfig::crule) the 3-D ones.
 inline const std::array<const char*, 3> experiment_rules{"max_area", "mean_2d", "mean_3d"};
 inline const std::array<const char*, 2> experiment_rules_3d{"crule_max_volume", "crule_centroid"};
+/// The reference baselines (ExperimentSetup::baselines), in report order.
+inline const std::array<const char*, 2> experiment_baselines{"grey_world", "max_rgb"};
 
 /// Statistics of one rule over the scenes of a cell that had a feasible map (error_statistics.h).
 struct RuleStats {
@@ -106,6 +132,9 @@ struct SceneRecord {
   ConvexKind kind = ConvexKind::empty;  ///< of F (F ∩ C with an illumination constraint)
   double area = 0;           ///< F's area as a double (0 unless a polygon)
   std::vector<RuleRecord> rules;  ///< in ExperimentResult::rules order; empty when F is empty
+  /// With ExperimentSetup::baselines: in experiment_baselines order, in every scene (worst case
+  /// and truth_in_feasible_set not meaningful: 0 and false).
+  std::vector<RuleRecord> baselines;
 };
 
 /// One (light, surface count) cell.
@@ -115,6 +144,9 @@ struct ExperimentCell {
   std::uint64_t scenes = 0;        ///< drawn
   std::uint64_t empty = 0;         ///< of those, with an empty feasible set (no map)
   std::vector<RuleStats> rules;  ///< in ExperimentResult::rules order, over the non-empty scenes
+  /// With baselines: in ExperimentResult::baselines order, over the same non-empty scenes as
+  /// the rules (comparable with them) and over every scene of the cell.
+  std::vector<RuleStats> baselines, baselines_all;
 };
 
 struct ExperimentResult {
@@ -124,16 +156,23 @@ struct ExperimentResult {
   ExperimentConfig config;
   ConvexSet2 canonical_gamut;
   std::vector<std::string> rules;     ///< experiment_rules, then experiment_rules_3d with crule
-  std::vector<ExperimentCell> cells;  ///< lights in setup order, then surfaces ascending
+  std::vector<std::string> baselines; ///< experiment_baselines when the setup asks for them
+  std::string surface_indices = "0-based";  ///< ExperimentSetup::surface_indices
+  /// With canonical_chromaticity_sets: every set's gamut (canonical_gamut is then the first).
+  std::vector<ConvexSet2> canonical_gamuts;
+  /// Lights (or their groups, TestLight::group, in order of first appearance) in setup order,
+  /// then surfaces ascending.
+  std::vector<ExperimentCell> cells;
   /// With ExperimentConfig::keep_scenes: every scene run, in canonical order (light, n, s).
   std::vector<SceneRecord> scenes;
 };
 
 /// The cell of `light` and `n` summarised from its scenes' records (any order of scenes is
-/// taken in ascending scene index): the one aggregation used by run_gamut_experiment and by a
-/// merge of shards. \param rules the number of rules each non-empty record carries.
+/// taken in ascending (light index, scene index)): the one aggregation used by
+/// run_gamut_experiment and by a merge of shards. \param rules the number of rules each
+/// non-empty record carries; \param baselines the number of baselines every record carries.
 ExperimentCell summarise_cell(const std::string& light, int n, std::vector<const SceneRecord*> scenes,
-                              std::size_t rules);
+                              std::size_t rules, std::size_t baselines = 0);
 
 /// Run the experiment. Scene (light ℓ, count n, index s) draws n distinct surfaces uniformly with
 /// its own generator, std::mt19937_64 seeded by std::seed_seq of the six 32-bit words
