@@ -148,3 +148,66 @@ ChromaticityHull chromaticity_hull(const std::vector<std::array<double, 3>>& col
 }
 
 }  // namespace gmcc
+
+namespace gmcc {
+
+ChromaticityHull chromaticity_hull_of_pixels(const std::vector<std::array<std::uint16_t, 3>>& colours) {
+  using C = std::array<std::uint16_t, 3>;
+  ChromaticityHull out;
+  std::vector<C> p;
+  p.reserve(colours.size());
+  for (const C& c : colours) {
+    if (c[2] == 0) ++out.dropped;
+    else p.push_back(c);
+  }
+  // (r1/b1, g1/b1) < (r2/b2, g2/b2) lexicographically, by cross-multiplication (below 2^32).
+  auto less = [](const C& a, const C& b) {
+    const std::uint64_t xa = std::uint64_t(a[0]) * b[2], xb = std::uint64_t(b[0]) * a[2];
+    if (xa != xb) return xa < xb;
+    return std::uint64_t(a[1]) * b[2] < std::uint64_t(b[1]) * a[2];
+  };
+  auto same = [](const C& a, const C& b) {
+    return std::uint64_t(a[0]) * b[2] == std::uint64_t(b[0]) * a[2] &&
+           std::uint64_t(a[1]) * b[2] == std::uint64_t(b[1]) * a[2];
+  };
+  // sign of det[(r,g,b)_a; _o... ]: the orientation of the chromaticities of o, a, b (b's > 0).
+  auto orient = [](const C& o, const C& a, const C& b) {
+    const std::int64_t r0 = o[0], g0 = o[1], b0 = o[2], r1 = a[0], g1 = a[1], b1 = a[2],
+                       r2 = b[0], g2 = b[1], b2 = b[2];
+    const std::int64_t det = r0 * (g1 * b2 - g2 * b1) - g0 * (r1 * b2 - r2 * b1) +
+                             b0 * (r1 * g2 - r2 * g1);
+    return (det > 0) - (det < 0);
+  };
+  std::sort(p.begin(), p.end(), less);
+  p.erase(std::unique(p.begin(), p.end(), same), p.end());
+  std::vector<C> hull;
+  if (p.size() <= 2) {
+    hull = p;
+  } else {
+    hull.resize(2 * p.size());
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {  // lower chain, left to right
+      while (k >= 2 && orient(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+      hull[k++] = p[i];
+    }
+    for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {  // upper chain, back
+      while (k >= lower && orient(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+      hull[k++] = p[i];
+    }
+    hull.resize(k - 1);  // the last point repeats the first
+  }
+  out.hull.kind = hull.empty()        ? ConvexKind::empty
+                  : hull.size() == 1 ? ConvexKind::point
+                  : hull.size() == 2 ? ConvexKind::segment
+                                     : ConvexKind::polygon;
+  for (const C& c : hull) {
+    Point2 v{Rational(static_cast<unsigned long>(c[0]), static_cast<unsigned long>(c[2])),
+             Rational(static_cast<unsigned long>(c[1]), static_cast<unsigned long>(c[2]))};
+    v.x.canonicalize();
+    v.y.canonicalize();
+    out.hull.vertices.push_back(std::move(v));
+  }
+  return out;
+}
+
+}  // namespace gmcc

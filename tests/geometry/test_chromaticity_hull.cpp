@@ -6,6 +6,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <random>
 
 using namespace gmcc;
 using gmcc::test::Rng;
@@ -55,6 +56,41 @@ BOOST_AUTO_TEST_CASE(ulp_level_degeneracies_are_decided_exactly) {
   BOOST_TEST(chromaticity_hull({}).hull.kind == ConvexKind::empty);
   BOOST_CHECK_THROW(chromaticity_hull({{1, -1, 1}}), std::invalid_argument);
   BOOST_CHECK_THROW(chromaticity_hull({{1, NAN, 1}}), std::invalid_argument);
+}
+
+// The integer route (image pixels) against the reference: small channel ranges give many equal
+// chromaticities, ties in x and collinear triples; wide ones the general case; b = 0 is dropped.
+BOOST_AUTO_TEST_CASE(integer_colours_agree_with_the_reference) {
+  std::mt19937_64 gen(1123);
+  for (int trial = 0; trial < 400; ++trial) {
+    const unsigned range = trial % 4 == 0 ? 4 : trial % 4 == 1 ? 20 : trial % 4 == 2 ? 300 : 65535;
+    std::uniform_int_distribution<unsigned> channel(0, range);
+    const std::size_t n = 1 + static_cast<std::size_t>(trial % 50) * 7;
+    std::vector<std::array<std::uint16_t, 3>> ints;
+    std::vector<std::array<double, 3>> doubles;
+    std::size_t zero_blue = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      std::array<std::uint16_t, 3> c{std::uint16_t(channel(gen)), std::uint16_t(channel(gen)),
+                                     std::uint16_t(channel(gen))};
+      zero_blue += c[2] == 0;
+      ints.push_back(c);
+      doubles.push_back({double(c[0]), double(c[1]), double(c[2])});
+    }
+    const ChromaticityHull h = chromaticity_hull_of_pixels(ints);
+    BOOST_TEST(h.dropped == zero_blue);
+    const ConvexSet2 want = reference(doubles);
+    BOOST_TEST_REQUIRE((h.hull.kind == want.kind), "trial " << trial);
+    BOOST_TEST_REQUIRE((h.hull.vertices == want.vertices), "trial " << trial);
+  }
+  // Extremes: channels at 65535 and 1 (the largest determinants), and all on one line.
+  const ChromaticityHull extreme =
+      chromaticity_hull_of_pixels(std::vector<std::array<std::uint16_t, 3>>{
+          {65535, 1, 1}, {1, 65535, 1}, {1, 1, 65535}, {65535, 65535, 1}});
+  BOOST_TEST((extreme.hull.vertices ==
+              reference({{65535, 1, 1}, {1, 65535, 1}, {1, 1, 65535}, {65535, 65535, 1}}).vertices));
+  const ChromaticityHull line = chromaticity_hull_of_pixels(
+      std::vector<std::array<std::uint16_t, 3>>{{1, 1, 1}, {2, 2, 1}, {3, 3, 1}, {6, 6, 2}});
+  BOOST_TEST((line.hull.kind == ConvexKind::segment));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -141,13 +141,13 @@ ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
                                           static_cast<std::uint32_t>(key & 0xffff)};
     };
     if (rules.colour_set == ColourSet::hull) {
-      std::vector<std::array<double, 3>> colours;  // integers below 2^16: exact in double
+      std::vector<std::array<std::uint16_t, 3>> colours;
       colours.reserve(keys.size());
       for (std::uint64_t key : keys) {
         const auto c = channels(key);
-        colours.push_back({double(c[0]), double(c[1]), double(c[2])});
+        colours.push_back({std::uint16_t(c[0]), std::uint16_t(c[1]), std::uint16_t(c[2])});
       }
-      const ChromaticityHull hull = chromaticity_hull(colours);
+      const ChromaticityHull hull = chromaticity_hull_of_pixels(colours);
       out.counts.no_chromaticity = hull.dropped;
       for (const Point2& p : hull.hull.vertices) out.colours.push_back({p.x, p.y, Rational(1)});
       out.counts.hull_vertices = out.colours.size();

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace gmcc {
@@ -30,5 +31,13 @@ struct ChromaticityHull {
 /// survivors.
 /// \throws std::invalid_argument for a non-finite or negative channel.
 ChromaticityHull chromaticity_hull(const std::vector<std::array<double, 3>>& colours);
+
+/// chromaticity_hull for colours with integer channels below 2^16 (an image's pixels), in machine
+/// integers: x-order is r1·b2 vs r2·b1 in 64 bits, orientation the 3×3 determinant of the raw
+/// channels, whose six products of three 16-bit numbers are below 2^48, so the determinant is
+/// exact in a signed 64-bit integer (|det| < 2^51). No floating point, no filter, no GMP: as
+/// exact as chromaticity_hull and much faster on the many ties and collinear triples of integer
+/// data. Andrew's monotone chain; O(n log n).
+ChromaticityHull chromaticity_hull_of_pixels(const std::vector<std::array<std::uint16_t, 3>>& colours);
 
 }  // namespace gmcc
