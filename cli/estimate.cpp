@@ -25,20 +25,6 @@
 namespace gmcc::cli {
 namespace {
 
-// One r,g,b with channels > 0 (--truth, --canonical-illuminant).
-Colour light(const std::string& option, const std::string& text) {
-  ColourTable t;
-  try {
-    t = parse_colour_csv(text, option);
-  } catch (const InputError&) {
-    throw InputError(option, 0, quoted_text(text) + " is not a light r,g,b");
-  }
-  if (t.colours.size() != 1) throw InputError(option, 0, "expected one r,g,b");
-  for (const Rational* x : {&t.colours[0].r, &t.colours[0].g, &t.colours[0].b})
-    if (sgn(*x) <= 0) throw InputError(option, 0, "every channel must be > 0");
-  return t.colours[0];
-}
-
 struct Settings {
   SelectSceneOptions scene;
   PixelSettings pixels;
@@ -49,12 +35,12 @@ struct Settings {
 Settings settings_of(const EstimateOptions& o) {
   Settings s;
   s.pixels = pixel_settings(o.pixels);
-  s.scene.canonical_illuminant = light("--canonical-illuminant", o.canonical_illuminant);
+  s.scene.canonical_illuminant = light_option("--canonical-illuminant", o.canonical_illuminant);
   if (!o.truth.empty()) {
     if (o.images.size() != 1)
       throw InputError("--truth", 0, "applies to one image; this run has " +
                                          std::to_string(o.images.size()));
-    s.truth = light("--truth", o.truth);
+    s.truth = light_option("--truth", o.truth);
   }
   if (!o.truths_path.empty()) {
     if (!o.truth.empty())

@@ -20,25 +20,6 @@ bool given(const SelectOptions& o, const std::string& name, const std::string& v
   return o.command ? o.command->count(name) > 0 : value != default_value;
 }
 
-// One r,g,b with channels > 0, for --canonical-illuminant and --truth.
-Colour light_option(const std::string& name, const std::string& text) {
-  try {
-    const ColourTable c = parse_colour_csv(text, name);
-    if (c.colours.size() != 1) throw InputError(name, 0, "expected one r,g,b");
-    const Colour& l = c.colours[0];
-    for (const Rational* x : {&l.r, &l.g, &l.b})
-      if (sgn(*x) <= 0) throw InputError(name, 0, "every channel must be > 0");
-    return l;
-  } catch (const InputError& e) {
-    // Keep the reader's reason (a digit limit, a malformed number, a channel <= 0), without its
-    // "NAME:1:" prefix.
-    std::string why = e.what();
-    const std::string prefix = e.file() + (e.line() ? ":" + std::to_string(e.line()) : "") + ": ";
-    if (why.compare(0, prefix.size(), prefix) == 0) why.erase(0, prefix.size());
-    throw InputError(name, 0, quoted_text(text) + " is not a light r,g,b with channels > 0: " + why);
-  }
-}
-
 // Options that cannot apply in this run are refused, each with the reason (docs/cli.md).
 void reject_inapplicable(const SelectOptions& o) {
   auto is_given = [&o](const std::string& name, const std::string& value, const std::string& d) {
@@ -104,6 +85,24 @@ void reject_inapplicable(const SelectOptions& o) {
 }
 
 }  // namespace
+
+Colour light_option(const std::string& name, const std::string& text) {
+  try {
+    const ColourTable c = parse_colour_csv(text, name);
+    if (c.colours.size() != 1) throw InputError(name, 0, "expected one r,g,b");
+    const Colour& l = c.colours[0];
+    for (const Rational* x : {&l.r, &l.g, &l.b})
+      if (sgn(*x) <= 0) throw InputError(name, 0, "every channel must be > 0");
+    return l;
+  } catch (const InputError& e) {
+    // Keep the reader's reason (a digit limit, a malformed number, a channel <= 0), without its
+    // "NAME:1:" prefix.
+    std::string why = e.what();
+    const std::string prefix = e.file() + (e.line() ? ":" + std::to_string(e.line()) : "") + ": ";
+    if (why.compare(0, prefix.size(), prefix) == 0) why.erase(0, prefix.size());
+    throw InputError(name, 0, quoted_text(text) + " is not a light r,g,b with channels > 0: " + why);
+  }
+}
 
 CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
   CLI::App* cmd = app.add_subcommand(

@@ -40,6 +40,10 @@ struct SelectOptions {
   const CLI::App* command = nullptr;
 };
 
+/// One light r,g,b given as an option's text (--canonical-illuminant, --truth), read exactly,
+/// every channel > 0. \throws InputError naming the option and quoting the text.
+Colour light_option(const std::string& name, const std::string& text);
+
 /// Register the subcommand and its options on `app`; returns the subcommand.
 CLI::App* add_select_command(CLI::App& app, SelectOptions& options);
 
