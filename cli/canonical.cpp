@@ -4,6 +4,7 @@
 #include <gmcc/geometry/rational.h>
 #include <gmcc/validation/input_error.h>
 #include <gmcc/validation/colour_csv.h>
+#include <gmcc/validation/image_lights.h>
 #include <gmcc/validation/text_file.h>
 
 #include <filesystem>
@@ -11,7 +12,6 @@
 #include <set>
 
 #include "output_files.h"
-#include "truth_file.h"
 #include "provenance.h"
 #include "write_stdout.h"
 
@@ -42,7 +42,7 @@ CLI::App* add_canonical_command(CLI::App& app, CanonicalOptions& o) {
 
 int run_canonical(const CanonicalOptions& o) {
   const PixelSettings settings = pixel_settings(o.pixels);
-  const std::map<std::string, Colour> truths = read_truths(o.truths_path);
+  const std::map<std::string, Colour> truths = read_image_lights(o.truths_path);
   std::optional<PendingFile> out;
   if (!o.out_path.empty()) out.emplace(o.out_path);
   const bool hull = settings.rules.colour_set == ColourSet::hull && settings.rules.bin == 1;

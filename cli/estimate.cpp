@@ -6,7 +6,7 @@
 #include <gmcc/selection/select_scene.h>
 #include <gmcc/validation/colour_csv.h>
 #include <gmcc/validation/image_file.h>
-#include <gmcc/validation/image_pixels.h>
+#include <gmcc/validation/image_lights.h>
 
 #include <cmath>
 #include <cstdio>
@@ -15,11 +15,9 @@
 #include <optional>
 #include <sstream>
 
-#include "integer_option.h"
 #include "json_output.h"
 #include "output_files.h"
 #include "select.h"
-#include "truth_file.h"
 #include "write_stdout.h"
 
 namespace gmcc::cli {
@@ -45,7 +43,7 @@ Settings settings_of(const EstimateOptions& o) {
   if (!o.truths_path.empty()) {
     if (!o.truth.empty())
       throw InputError("--truths", 0, "give --truth (one image) or --truths (a file), not both");
-    s.truths = read_truths(o.truths_path);
+    s.truths = read_image_lights(o.truths_path);
   }
   try {
     s.scene.expansion.policy = expansion_policy_from_string(o.expand_policy);
@@ -116,7 +114,6 @@ CLI::App* add_estimate_command(CLI::App& app, EstimateOptions& o) {
       "Estimate the light of linear camera images (8/16-bit PNG or TIFF) by gamut mapping: "
       "pixels to colours by explicit pre-processing (docs/conventions.md §8), then the feasible "
       "set and the three selection rules against one canonical gamut.");
-  o.command = cmd;
   cmd->add_option("--canonical", o.canonical_path, "canonical colours, one r,g,b per line")
       ->required();
   cmd->add_option("images", o.images, "image files (PNG or TIFF, linear RGB)")->required();

@@ -25,7 +25,6 @@ struct EstimateOptions {
   std::string illuminant_worst_case = "on";
   bool json = false;
   std::string corrected_dir;
-  const CLI::App* command = nullptr;
 };
 
 /// Register the subcommand and its options on `app`; returns the subcommand.

@@ -1,16 +1,11 @@
 #include <gmcc/validation/colour_csv.h>
 #include <gmcc/validation/text_file.h>
 
+#include "csv_fields.h"
+
 
 namespace gmcc {
 namespace {
-
-std::string_view trim(std::string_view s) {
-  const char* blanks = " \t\r\v\f";
-  const auto first = s.find_first_not_of(blanks);
-  if (first == std::string_view::npos) return {};
-  return s.substr(first, s.find_last_not_of(blanks) - first + 1);
-}
 
 bool is_header(std::string_view line) {
   std::string compact;
@@ -46,7 +41,7 @@ ColourTable parse_colour_csv(const std::string& text, const std::string& file) {
                        "line of " + std::to_string(raw.size()) + " bytes, longer than the " +
                            std::to_string(max_colour_line_bytes) +
                            "-byte limit: expected text lines r,g,b");
-    const std::string_view line = trim(raw);
+    const std::string_view line = internal::trim(raw);
     if (line.empty() || line.front() == '#') {
       if (rest.empty()) break;
       continue;
@@ -56,13 +51,7 @@ ColourTable parse_colour_csv(const std::string& text, const std::string& file) {
       continue;
     }
     first_content = false;
-    std::vector<std::string_view> fields;
-    for (std::size_t start = 0;;) {
-      const auto comma = line.find(',', start);
-      fields.push_back(trim(line.substr(start, comma - start)));
-      if (comma == std::string_view::npos) break;
-      start = comma + 1;
-    }
+    const std::vector<std::string_view> fields = internal::split_fields(line);
     if (fields.size() != 3)
       throw InputError(file, number,
                        "expected 3 comma-separated values r,g,b, found " +

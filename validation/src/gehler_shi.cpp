@@ -1,6 +1,8 @@
 #include <gmcc/validation/gehler_shi.h>
 #include <gmcc/validation/text_file.h>
 
+#include "csv_fields.h"
+
 #include <cctype>
 #include <map>
 #include <string_view>
@@ -10,13 +12,6 @@ namespace {
 
 // The data files are a few MB; a much larger file is not this data.
 constexpr std::size_t max_chart_file_bytes = std::size_t(64) << 20;
-
-std::string_view trim(std::string_view s) {
-  const char* blanks = " \t\r";
-  const auto first = s.find_first_not_of(blanks);
-  if (first == std::string_view::npos) return {};
-  return s.substr(first, s.find_last_not_of(blanks) - first + 1);
-}
 
 // The file's non-blank lines, each with its 1-based number, split at commas.
 struct Row {
@@ -28,17 +23,10 @@ std::vector<Row> rows_of(std::string_view text) {
   std::vector<Row> rows;
   for (std::size_t number = 1; !text.empty(); ++number) {
     const auto end = text.find('\n');
-    const std::string_view line = trim(text.substr(0, end));
+    const std::string_view line = internal::trim(text.substr(0, end));
     text = end == std::string_view::npos ? std::string_view() : text.substr(end + 1);
     if (line.empty()) continue;
-    Row row{number, {}};
-    for (std::size_t start = 0;;) {
-      const auto comma = line.find(',', start);
-      row.fields.push_back(trim(line.substr(start, comma - start)));
-      if (comma == std::string_view::npos) break;
-      start = comma + 1;
-    }
-    rows.push_back(std::move(row));
+    rows.push_back({number, internal::split_fields(line)});
   }
   return rows;
 }

@@ -5,7 +5,7 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -165,11 +165,7 @@ ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
     return out;
   }
   {
-    std::map<std::array<Rational, 3>, bool,
-             bool (*)(const std::array<Rational, 3>&, const std::array<Rational, 3>&)>
-        distinct([](const std::array<Rational, 3>& p, const std::array<Rational, 3>& q) {
-          return std::lexicographical_compare(p.begin(), p.end(), q.begin(), q.end());
-        });
+    std::set<std::array<Rational, 3>> distinct;  // ordered: increasing (r, g, b)
     for (const Block& block : blocks) {
       if (block.n == 0) continue;
       std::array<Rational, 3> mean;
@@ -178,9 +174,9 @@ ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
                            mpz_class(static_cast<unsigned long>(block.n)));
         mean[c].canonicalize();
       }
-      distinct.emplace(mean, true);
+      distinct.insert(std::move(mean));
     }
-    for (const auto& [mean, unused] : distinct) out.colours.push_back({mean[0], mean[1], mean[2]});
+    for (const auto& mean : distinct) out.colours.push_back({mean[0], mean[1], mean[2]});
   }
   out.counts.colours = out.colours.size();
   return out;
