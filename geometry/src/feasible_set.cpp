@@ -2,6 +2,9 @@
 #include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/geometry/feasible_set.h>
 
+#include <gmcc/numerics/platform.h>
+#include <gmcc/numerics/top_bits.h>
+
 #include "internal/feasible_polygon_route.h"
 #include "internal/half_plane.h"
 
@@ -90,23 +93,6 @@ HomogeneousPoint homogeneous(const Point2& p) {
   return h;
 }
 
-// An integer's top 64 bits: |z| ≈ mant·2^shift with mant an integer below 2^64 (exact in
-// extended precision); exact below 2^64, otherwise truncated (relative error below 2^-63).
-struct TopBits {
-  long double mant;
-  long shift;
-};
-TopBits top64(mpz_srcptr z) {
-  const std::size_t n = mpz_size(z);
-  if (n == 0) return {0.0L, 0};
-  const mp_limb_t hi = mpz_getlimbn(z, static_cast<mp_size_t>(n - 1));
-  if (n == 1) return {static_cast<long double>(hi), 0};
-  const mp_limb_t lo = mpz_getlimbn(z, static_cast<mp_size_t>(n - 2));
-  const int lz = __builtin_clzll(static_cast<unsigned long long>(hi));
-  const mp_limb_t top = lz ? (hi << lz) | (lo >> (64 - lz)) : hi;
-  return {static_cast<long double>(top), 64 * static_cast<long>(n - 2) + (64 - lz)};
-}
-
 // 2^e, exactly, for |e| < 1000 (built from its bits: cheaper than ldexp).
 double pow2(long e) {
   const std::uint64_t bits = static_cast<std::uint64_t>(e + 1023) << 52;
@@ -125,8 +111,8 @@ long double scale(long double x, long e) {
 // An integer in extended precision (relative error below 2^-63), or nothing beyond 2^16000.
 std::optional<long double> top_bits(mpz_srcptr z) {
   if (mpz_size(z) > 250) return std::nullopt;
-  const TopBits t = top64(z);
-  const long double v = scale(t.mant, t.shift);
+  const numerics::TopBits t = numerics::top_bits(z);
+  const long double v = scale(static_cast<long double>(t.mantissa), t.shift);
   return mpz_sgn(z) < 0 ? -v : v;
 }
 
@@ -134,22 +120,17 @@ std::optional<long double> top_bits(mpz_srcptr z) {
 // rounded division (2^-64): relative error below 2^-61.6. Nothing beyond 2^±16000.
 std::optional<long double> top_bits(const Rational& q) {
   if (mpz_size(q.get_num_mpz_t()) > 250 || mpz_size(q.get_den_mpz_t()) > 250) return std::nullopt;
-  const TopBits n = top64(q.get_num_mpz_t()), d = top64(q.get_den_mpz_t());
-  const long double v = scale(n.mant / d.mant, n.shift - d.shift);
+  const numerics::TopBits n = numerics::top_bits(q.get_num_mpz_t()), d = numerics::top_bits(q.get_den_mpz_t());
+  const long double v =
+      scale(static_cast<long double>(n.mantissa) / static_cast<long double>(d.mantissa), n.shift - d.shift);
   return sgn(q) < 0 ? -v : v;
 }
 
-// Extended-precision arithmetic has the 64-bit significand this analysis assumes (x86's x87),
-// and GMP's limbs the 64 bits top64 reads; at run time, the x87 must also be set to its full
-// precision (some systems or libraries set it to 53 bits).
-constexpr bool long_lines_compiled = std::numeric_limits<long double>::digits == 64 && GMP_NUMB_BITS == 64 &&
-                                     GMP_NAIL_BITS == 0;
-bool full_extended_precision() {
-  volatile long double one = 1, tiny = 0x1p-63L;
-  return one + tiny != one;
-}
-// Checked where it is used: the x87 precision control is per thread and can be changed at run time.
-bool long_lines_available() { return long_lines_compiled && full_extended_precision(); }
+// Extended-precision values are computed where the platform has the 64-bit significand this
+// analysis assumes; the enclosures built from them are used only where the thread's x87 is at its
+// full precision, checked where they are used (numerics/platform.h).
+constexpr bool long_lines_compiled = numerics::extended_precision_compiled;
+bool long_lines_available() { return numerics::extended_precision_active(); }
 
 // A rational as a double within a relative 2u (u = 2^-53) of it, or nothing when it is outside
 // [2^-140, 2^140] (checked from its size). From the extended-precision quotient (2^-61.6) rounded

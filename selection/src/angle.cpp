@@ -1,3 +1,5 @@
+#include <gmcc/numerics/constants.h>
+
 #include "internal/angle.h"
 
 #include "internal/ld_interval.h"
@@ -10,9 +12,9 @@
 namespace gmcc::internal {
 namespace {
 
-// 180/π as an enclosure (π to 21 digits brackets the x87 value of the constant).
-const LDInterval degrees_per_radian = LDInterval{180.0L, 180.0L} /
-    LDInterval{3.14159265358979323846L - 0x1p-62L, 3.14159265358979323846L + 0x1p-62L};
+// 180/π as an enclosure (the nearest long double to π is within half an ulp, 2^-63, of it).
+const LDInterval degrees_per_radian =
+    LDInterval{180.0L, 180.0L} / LDInterval{numerics::pi - 0x1p-62L, numerics::pi + 0x1p-62L};
 
 double angle_mpfr(const std::array<Rational, 3>& u_exact, const std::array<Rational, 3>& v_exact) {
   constexpr mpfr_prec_t bits = 160;
@@ -101,7 +103,7 @@ LDInterval angle_deg_enclosure(const std::array<LDInterval, 3>& u, const std::ar
 
 double angle_deg(const std::array<Rational, 3>& u_exact, const std::array<Rational, 3>& v_exact) {
   if (u_exact == v_exact) return 0;  // what the MPFR route returns for them, exactly
-  if (fast_path_available) {
+  if (fast_path_available()) {
     std::array<LDInterval, 3> u, v;
     for (int k = 0; k < 3; ++k) u[k] = enclose_ld(u_exact[k]), v[k] = enclose_ld(v_exact[k]);
     const LDInterval d = dot(u, v);

@@ -121,20 +121,15 @@ bool tight(const Interval& x, int bits) {
 
 #include "internal/ld_interval.h"
 
+#include <gmcc/numerics/top_bits.h>
+
 namespace gmcc::internal {
 namespace {
 // |z| ≈ t·2^e with t < 2^64 holding the top 64 bits (truncated), as an exact long double.
 long double top_bits(mpz_srcptr z, long& e) {
-  const std::size_t n = mpz_size(z);
-  e = 0;
-  if (n == 0) return 0;
-  const mp_limb_t high = mpz_getlimbn(z, static_cast<mp_size_t>(n - 1));
-  if (n == 1) return static_cast<long double>(high);
-  const int shift = __builtin_clzll(high);
-  const mp_limb_t next = mpz_getlimbn(z, static_cast<mp_size_t>(n - 2));
-  const unsigned long long top = shift ? (high << shift) | (next >> (64 - shift)) : high;
-  e = static_cast<long>(n - 1) * 64 - shift;
-  return static_cast<long double>(top);
+  const numerics::TopBits t = numerics::top_bits(z);
+  e = t.shift;
+  return static_cast<long double>(t.mantissa);
 }
 }  // namespace
 

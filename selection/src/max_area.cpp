@@ -67,7 +67,7 @@ std::optional<Point2> max_area_filtered(const ConvexSet2& F) {
 
 Point2 max_area_point(const ConvexSet2& F) {
   if (F.kind == ConvexKind::empty) throw std::invalid_argument("max_area: empty feasible set");
-  if (internal::fast_path_available)
+  if (internal::fast_path_available())
     if (auto p = max_area_filtered(F)) return std::move(*p);
   const auto& v = F.vertices;
   Point2 best = v[0];

@@ -1,5 +1,7 @@
 #include <gmcc/selection/mean_3d_quadrature.h>
 
+#include <gmcc/numerics/constants.h>
+
 #include "internal/interval.h"
 
 #include <algorithm>
@@ -27,7 +29,7 @@ constexpr std::uint64_t node_budget = std::uint64_t(1) << 26;
 void gauss_legendre_01(unsigned n, std::vector<long double>& x, std::vector<long double>& w) {
   x.assign(n, 0);
   w.assign(n, 0);
-  const long double pi = 3.141592653589793238462643383279502884L;
+  using numerics::pi;
   for (unsigned i = 0; i < n; ++i) {
     long double z = std::cos(pi * (i + 0.75L) / (n + 0.5L)), derivative = 1;
     for (int iteration = 0; iteration < 100; ++iteration) {

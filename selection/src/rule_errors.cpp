@@ -1,5 +1,7 @@
 #include <gmcc/selection/rule_errors.h>
 
+#include <gmcc/numerics/constants.h>
+
 #include "internal/closed_form.h"
 #include "internal/ld_interval.h"
 
@@ -32,7 +34,7 @@ LongEnclosure enclose<LongEnclosure>(const Rational& q) {
 // platform we know); the nearest 180/π and the product by it add two roundings. The pads below
 // cover these.
 template <class T>
-constexpr T degrees_per_radian = T(180) / T(3.14159265358979323846264338327950288L);
+constexpr T degrees_per_radian = T(180) / T(numerics::pi);
 
 // ∠(u, v) = atan2(|u×v|, u·v) in degrees, from s = |u×v| ∈ [s_lo, s_hi] and d = u·v ∈ d. One
 // atan2 at the box's centre; over the box |∂θ/∂s| = |d|/(s² + d²) <= max|d|/R² and
@@ -201,7 +203,7 @@ std::optional<std::array<RuleErrors, 3>> rule_errors(const FeasiblePolygon& F, c
   if (auto out = stage<Enclosure>(F.vertices(), F.edges(), truth, canonical_illuminant)) return out;
   // Thin sets (F ∩ C along the daylight locus, small cones): the same in extended precision,
   // from vertex enclosures about 2^11 times tighter.
-  if (internal::fast_path_available && !F.extended_vertices().empty())
+  if (internal::fast_path_available() && !F.extended_vertices().empty())
     return stage<LongEnclosure>(F.extended_vertices(), F.edges(), truth, canonical_illuminant);
   return std::nullopt;
 }

@@ -8,6 +8,9 @@
 #include <gmcc/selection/rule_errors.h>
 #include <gmcc/selection/select_maps.h>
 
+#include <gmcc/numerics/constants.h>
+#include <gmcc/numerics/wide_multiply.h>
+
 #include "lazy_mt19937_64.h"
 #include "seed_sequence.h"
 
@@ -20,6 +23,7 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <limits>
 #include <mutex>
 #include <thread>
 
@@ -49,16 +53,12 @@ std::vector<std::thread> start_threads(std::size_t count, const F& f) {
 using Generator = internal::LazyMt19937_64;
 
 std::uint64_t below(Generator& g, std::uint64_t n) {
-  unsigned __int128 m = static_cast<unsigned __int128>(g()) * n;
-  auto low = static_cast<std::uint64_t>(m);
-  if (low < n) {
+  numerics::WideProduct m = numerics::multiply_wide(g(), n);
+  if (m.low < n) {
     const std::uint64_t threshold = (0 - n) % n;
-    while (low < threshold) {
-      m = static_cast<unsigned __int128>(g()) * n;
-      low = static_cast<std::uint64_t>(m);
-    }
+    while (m.low < threshold) m = numerics::multiply_wide(g(), n);
   }
-  return static_cast<std::uint64_t>(m >> 64);
+  return m.high;
 }
 
 double uniform01(Generator& g) { return static_cast<double>(g() >> 11) * 0x1p-53; }
@@ -66,7 +66,7 @@ double uniform01(Generator& g) { return static_cast<double>(g() >> 11) * 0x1p-53
 // Standard normal by Box–Muller (one of the pair), from the scene's own generator.
 double normal(Generator& g) {
   const double u = 1 - uniform01(g), v = uniform01(g);  // u in (0, 1]
-  return std::sqrt(-2 * std::log(u)) * std::cos(2 * M_PI * v);
+  return std::sqrt(-2 * std::log(u)) * std::cos(2 * static_cast<double>(numerics::pi) * v);
 }
 
 Point2 exact_map(const MapEstimate& e) {
@@ -362,14 +362,16 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
     for (int n = config.min_surfaces; n <= config.max_surfaces; ++n) jobs.push_back({l, n});
   result.cells.resize(jobs.size());
   // The shard's scenes: global indices [first, last) of the canonical order (light, n, s).
-  const unsigned __int128 T = static_cast<unsigned __int128>(config.scenes) * jobs.size();
-  const auto first = static_cast<std::uint64_t>(T * (config.shard_index - 1) / config.shard_count);
-  const auto last = static_cast<std::uint64_t>(T * config.shard_index / config.shard_count);
+  // T = scenes·jobs (and so base = scenes·j) fits in 64 bits, checked; T·K may not, so the share
+  // ⌊T·K/N⌋ is divided from its 128-bit product.
+  if (!jobs.empty() && config.scenes > std::numeric_limits<std::uint64_t>::max() / jobs.size())
+    throw std::invalid_argument("more scenes than 2^64 in all");
+  const std::uint64_t T = config.scenes * jobs.size();
+  const std::uint64_t first = numerics::divide_wide(numerics::multiply_wide(T, config.shard_index - 1), config.shard_count);
+  const std::uint64_t last = numerics::divide_wide(numerics::multiply_wide(T, config.shard_index), config.shard_count);
   auto scene_range = [&](std::size_t j) {
-    const unsigned __int128 base = static_cast<unsigned __int128>(config.scenes) * j;
-    auto clamp = [&](std::uint64_t g) {
-      return static_cast<std::uint64_t>(g <= base ? 0 : std::min<unsigned __int128>(g - base, config.scenes));
-    };
+    const std::uint64_t base = config.scenes * j;
+    auto clamp = [&](std::uint64_t g) { return g <= base ? 0 : std::min<std::uint64_t>(g - base, config.scenes); };
     return std::pair{clamp(first), clamp(last)};
   };
   std::vector<std::vector<SceneRecord>> records(jobs.size());

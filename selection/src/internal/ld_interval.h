@@ -8,6 +8,7 @@
 // ends are pushed by 2^-61 (4 such ulps). Internal to gmcc::selection.
 
 #include <gmcc/geometry/rational.h>
+#include <gmcc/numerics/platform.h>
 
 #include <algorithm>
 #include <cmath>
@@ -66,10 +67,11 @@ inline LDInterval atan2(LDInterval y, LDInterval x) {
   return LDInterval::around(lo, hi, LDInterval::push_transcendental);
 }
 
-/// The fast path's error analysis is for x87 extended precision (64-bit significand) and 64-bit
-/// GMP limbs; elsewhere (e.g. aarch64's 113-bit long double) it is skipped and MPFI is used.
-inline constexpr bool fast_path_available =
-    std::numeric_limits<long double>::digits == 64 && sizeof(mp_limb_t) == 8;
+/// The fast path's error analysis is for x87 extended precision (64-bit significand) at full
+/// precision control, and 64-bit GMP limbs; elsewhere (e.g. aarch64's 113-bit long double, or a
+/// thread whose x87 is set to 53 bits) it is skipped and MPFI is used. Asked at each use: the
+/// precision control is per thread and can change at run time (numerics/platform.h).
+inline bool fast_path_available() { return numerics::extended_precision_active(); }
 
 /// An enclosure of an exact rational, from the top 64 bits of numerator and denominator
 /// (each truncated: relative error < 2^-63; exact when they fit in 64 bits) and one division:
