@@ -6,6 +6,7 @@
 #include "fuzz_support.h"
 
 #include <gmcc/geometry/convex_set.h>
+#include <gmcc/numerics/platform.h>
 #include <gmcc/geometry/enclosure.h>
 #include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/geometry/rational.h>
@@ -146,9 +147,9 @@ inline bool in_long_enclosure(const Rational& x, const gmcc::LongEnclosure& e) {
   return abs(Rational(x - exact_long(e.mid))) <= exact_long(e.rad);
 }
 
-// Extended precision is there (x87, 64-bit GMP limbs): extended_vertices() is then never empty
-// for an enclosed P.
-inline constexpr bool extended_expected = std::numeric_limits<long double>::digits == 64 && GMP_NUMB_BITS == 64;
+// Extended precision is there (x87, 64-bit GMP limbs, full precision control; numerics/platform.h):
+// extended_vertices() is then never empty for an enclosed P.
+inline bool extended_expected() { return gmcc::numerics::extended_precision_active(); }
 
 // The certified vertices and edges of an enclosed P against F's exact vertices: some rotation r
 // puts F's vertex i in enclosure (i + r) mod n and in extended enclosure (i + r) mod n, and makes
@@ -158,7 +159,7 @@ inline void check_enclosed(const gmcc::FeasiblePolygon& P, const ConvexSet2& F) 
   const auto& ev = P.vertices();
   const auto& el = P.edges();
   const auto& xv = P.extended_vertices();
-  FUZZ_CHECK(xv.size() == ev.size() || (!extended_expected && xv.empty()),
+  FUZZ_CHECK(xv.size() == ev.size() || (!extended_expected() && xv.empty()),
              "enclosed: " + std::to_string(xv.size()) + " extended enclosures for " + std::to_string(ev.size()) +
                  " vertices");
   const auto& v = F.vertices;

@@ -4,6 +4,7 @@
 
 #include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/selection/angular_error.h>
+#include <gmcc/numerics/platform.h>
 #include <gmcc/selection/rule_errors.h>
 #include <gmcc/selection/select_maps.h>
 
@@ -73,7 +74,12 @@ BOOST_AUTO_TEST_CASE(agrees_with_the_exact_route_within_its_accuracy) {
   // Thin cones (F small against |(m, 1)|: maps up to 300 here) defeat the double stage in about
   // 10% of these scenes (the closed form cancels 2·log2(1/width) bits, docs/derivations.md §1.6);
   // the extended-precision stage answers all but a few of those.
-  BOOST_TEST(answered >= scenes * 97 / 100, answered << " of " << scenes);
+  // Without that stage (numerics/platform.h: no x87, or the portable build) the double stage
+  // alone answers about 60% (228 of 369 in the portable build).
+  if (gmcc::numerics::extended_precision_compiled)
+    BOOST_TEST(answered >= scenes * 97 / 100, answered << " of " << scenes);
+  else
+    BOOST_TEST(answered >= scenes / 2, answered << " of " << scenes);
   BOOST_TEST(scenes >= 200);
 }
 
