@@ -1,7 +1,9 @@
 #pragma once
 // The feasible set by exact clipping with every predicate in GMP integers and no filter: the
 // implementation gmcc shipped before its filtered predicates (git 706ae94), kept as the reference
-// the filtered one must equal exactly (tests/geometry/test_feasible_set.cpp).
+// the filtered one must equal exactly (tests/geometry/test_feasible_set.cpp). Its constraints are
+// derived here from orientation and dot products and integerised without reduction, not taken from
+// the library's half_planes and integer_line, so that a bug there cannot hide in both.
 
 #include <gmcc/geometry/convex_hull.h>
 #include <gmcc/geometry/feasible_set.h>
@@ -11,46 +13,8 @@
 
 namespace gmcc::test::reference {
 
-struct HalfPlane {
-  Rational a, b, c;
-};
-
-inline std::vector<HalfPlane> half_planes(const ConvexSet2& set) {
-  std::vector<HalfPlane> out;
-  const auto& v = set.vertices;
-  auto both_ways = [&out](const Rational& a, const Rational& b, const Rational& c) {
-    out.push_back({a, b, c});
-    out.push_back({Rational(-a), Rational(-b), Rational(-c)});
-  };
-  switch (set.kind) {
-    case ConvexKind::empty: break;
-    case ConvexKind::point:
-      both_ways(1, 0, v[0].x);
-      both_ways(0, 1, v[0].y);
-      break;
-    case ConvexKind::segment: {
-      const Rational dx = v[1].x - v[0].x, dy = v[1].y - v[0].y;
-      both_ways(dy, Rational(-dx), Rational(dy * v[0].x - dx * v[0].y));  // the supporting line
-      out.push_back({dx, dy, Rational(dx * v[1].x + dy * v[1].y)});       // not beyond v[1]
-      out.push_back({Rational(-dx), Rational(-dy), Rational(-(dx * v[0].x + dy * v[0].y))});
-      break;
-    }
-    case ConvexKind::polygon:
-      for (std::size_t i = 0; i < v.size(); ++i) {
-        const Point2& p = v[i];
-        const Point2& q = v[(i + 1) % v.size()];
-        const Rational a = q.y - p.y, b = p.x - q.x;  // outward normal of a CCW edge
-        out.push_back({a, b, Rational(a * p.x + b * p.y)});
-      }
-      break;
-  }
-  return out;
-}
-
-
-
 // Exact clipping in homogeneous integer coordinates. A line (a, b, c) means a·x + b·y <= c with
-// coprime integer coefficients; a vertex is (X, Y, W), W > 0, the point (X/W, Y/W). Every new
+// integer coefficients; a vertex is (X, Y, W), W > 0, the point (X/W, Y/W). Every new
 // vertex is the intersection of two *input* lines (the edge's and the clip line), so coordinate
 // sizes stay bounded by the inputs' instead of growing clip after clip, and side tests are
 // integer arithmetic with no gcd (docs/derivations.md §4.3: keep constructions shallow).
@@ -62,33 +26,53 @@ struct Vertex {
   std::size_t out;  // index of the line carrying the edge from this vertex to the next
 };
 
-inline Line integer_line(const HalfPlane& h) {
-  mpz_class l;
-  mpz_lcm(l.get_mpz_t(), h.a.get_den_mpz_t(), h.b.get_den_mpz_t());
-  mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), h.c.get_den_mpz_t());
-  Line line{h.a.get_num() * (l / h.a.get_den()), h.b.get_num() * (l / h.b.get_den()),
-            h.c.get_num() * (l / h.c.get_den())};
-  mpz_class g;
-  mpz_gcd(g.get_mpz_t(), line.a.get_mpz_t(), line.b.get_mpz_t());
-  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), line.c.get_mpz_t());
-  if (g > 1) line.a /= g, line.b /= g, line.c /= g;
-  return line;
+// The constraint f(m) = alpha·m1 + beta·m2 + gamma >= 0 as an integer line a·x + b·y <= c:
+// multiplied by the product of the three denominators (no lcm, no gcd: the library reduces its
+// lines, this oracle does not), then negated into the <= form.
+inline Line line_from_form(const Rational& alpha, const Rational& beta, const Rational& gamma) {
+  const mpz_class d = alpha.get_den() * beta.get_den() * gamma.get_den();
+  return {-(alpha.get_num() * (d / alpha.get_den())), -(beta.get_num() * (d / beta.get_den())),
+          gamma.get_num() * (d / gamma.get_den())};
 }
 
-// x = (X/W, Y/W) with W the lcm of the denominators: integers, no gcd per operation after.
-struct HomogeneousPoint {
-  mpz_class x, y, w;
-};
-inline HomogeneousPoint homogeneous(const Point2& p) {
-  HomogeneousPoint h;
-  mpz_lcm(h.w.get_mpz_t(), p.x.get_den_mpz_t(), p.y.get_den_mpz_t());
-  h.x = p.x.get_num() * (h.w / p.x.get_den());
-  h.y = p.y.get_num() * (h.w / p.y.get_den());
-  return h;
+// The affine forms whose non-negativity at p = (m1·q1, m2·q2) says p ∈ G_c, derived from
+// orientation and dot products (not from the library's half_planes): a CCW polygon's interior is
+// left of every edge, orient(v_i, v_i+1, p) >= 0; a segment [a, b] is orient(a, b, p) = 0 with
+// (p − a)·(b − a) >= 0 and (p − b)·(a − b) >= 0; a point g is p − g = 0. Each form is written as
+// (alpha, beta, gamma) in m for the given q.
+inline std::vector<Line> constraints_for(const ConvexSet2& g, const Point2& q) {
+  std::vector<Line> out;
+  auto orient_form = [&](const Point2& a, const Point2& b, int sign) {
+    // (b.x − a.x)(p.y − a.y) − (b.y − a.y)(p.x − a.x) with p = (m1·q.x, m2·q.y).
+    const Rational dx = b.x - a.x, dy = b.y - a.y;
+    out.push_back(line_from_form(Rational(-sign * dy * q.x), Rational(sign * dx * q.y),
+                                 Rational(sign * (dy * a.x - dx * a.y))));
+  };
+  auto dot_form = [&](const Point2& a, const Point2& b) {  // (p − a)·(b − a) >= 0
+    const Rational dx = b.x - a.x, dy = b.y - a.y;
+    out.push_back(line_from_form(Rational(dx * q.x), Rational(dy * q.y), Rational(-(dx * a.x + dy * a.y))));
+  };
+  const auto& v = g.vertices;
+  switch (g.kind) {
+    case ConvexKind::empty: break;
+    case ConvexKind::point:
+      out.push_back(line_from_form(q.x, 0, Rational(-v[0].x)));   // m1·q1 − g.x >= 0
+      out.push_back(line_from_form(Rational(-q.x), 0, v[0].x));   // g.x − m1·q1 >= 0
+      out.push_back(line_from_form(0, q.y, Rational(-v[0].y)));
+      out.push_back(line_from_form(0, Rational(-q.y), v[0].y));
+      break;
+    case ConvexKind::segment:
+      orient_form(v[0], v[1], 1);
+      orient_form(v[0], v[1], -1);
+      dot_form(v[0], v[1]);
+      dot_form(v[1], v[0]);
+      break;
+    case ConvexKind::polygon:
+      for (std::size_t i = 0; i < v.size(); ++i) orient_form(v[i], v[(i + 1) % v.size()], 1);
+      break;
+  }
+  return out;
 }
-
-// m ⊙ q ∈ {a·x + b·y <= c}  ⟺  (a·X)·m1 + (b·Y)·m2 <= c·W for q = (X/W, Y/W), W > 0.
-inline Line scaled_line(const Line& g, const HomogeneousPoint& q) { return {g.a * q.x, g.b * q.y, g.c * q.w}; }
 
 // The sign of a·x + b·y − c at v (W > 0).
 inline int side(const Line& h, const Vertex& v) { return sgn(h.a * v.x + h.b * v.y - h.c * v.w); }
@@ -188,21 +172,16 @@ inline ConvexSet2 feasible_set_reference(const ConvexSet2& canonical, const std:
   // coordinate of a point of G_c, so 0 <= m1·Q1 <= X (likewise m2). Clip it to F.
   const Rational x_max = max_of(canonical.vertices, &Point2::x) / q1;
   const Rational y_max = max_of(canonical.vertices, &Point2::y) / q2;
-  std::vector<Line> lines{integer_line({0, -1, 0}), integer_line({1, 0, x_max}),
-                          integer_line({0, 1, y_max}), integer_line({-1, 0, 0})};
+  std::vector<Line> lines{line_from_form(0, 1, 0), line_from_form(-1, 0, x_max), line_from_form(0, -1, y_max),
+                          line_from_form(1, 0, 0)};  // m2 >= 0, m1 <= x_max, m2 <= y_max, m1 >= 0
   std::vector<Vertex> cycle{meet(lines[3], lines[0], 0), meet(lines[0], lines[1], 1),
                             meet(lines[1], lines[2], 2), meet(lines[2], lines[3], 3)};
-
-  std::vector<Line> gamut;
-  for (const HalfPlane& h : half_planes(canonical)) gamut.push_back(integer_line(h));
-  for (const Point2& q : qs) {
-    const HomogeneousPoint hq = homogeneous(q);
-    for (const Line& g : gamut) {
-      lines.push_back(scaled_line(g, hq));
+  for (const Point2& q : qs)
+    for (Line& l : constraints_for(canonical, q)) {
+      lines.push_back(std::move(l));
       cycle = clip(cycle, lines, lines.size() - 1);
       if (cycle.empty()) return {};
     }
-  }
   return canonical_convex_set(to_points(reduced(std::move(cycle))));
 }
 
