@@ -1,6 +1,6 @@
-// The library's 3-D CGAL translation unit (docs/derivations.md §4.4, §4.5): exact LP (CGAL QP
-// solver), exact 3-D hulls and half-space intersection. Heavy includes stay here, behind plain
-// interfaces.
+// The library's 3-D CGAL translation unit (docs/derivations.md §4.4, §4.5): exact 3-D hulls and
+// half-space intersection for Forsyth's CRULE feasible set. Heavy includes stay here, behind plain
+// interfaces; the exact LP it solves is linear_program.cpp.
 #include <gmcc/geometry/convex_hull.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
@@ -11,133 +11,16 @@
 
 #include <CGAL/Convex_hull_3/dual/halfspace_intersection_3.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Gmpz.h>
 #include <CGAL/Polyhedron_3.h>
-#include <CGAL/QP_functions.h>
-#include <CGAL/QP_models.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <type_traits>
 
-namespace gmcc {
-namespace internal {
-namespace {
-mpz_class to_mpz(const CGAL::Gmpz& z) { return mpz_class(z.mpz()); }
-CGAL::Gmpz to_gmpz(const mpz_class& z) { return CGAL::Gmpz(z.get_mpz_t()); }
-
-// The integer row k·(a, b) for k the lcm of the denominators: same half-space, integer data.
-std::vector<mpz_class> integer_row(const std::vector<Rational>& a, const Rational* b) {
-  mpz_class l = 1;
-  for (const Rational& x : a) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x.get_den_mpz_t());
-  if (b) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), b->get_den_mpz_t());
-  std::vector<mpz_class> out;
-  for (const Rational& x : a) out.push_back(mpz_class(x.get_num() * (l / x.get_den())));
-  if (b) out.push_back(mpz_class(b->get_num() * (l / b->get_den())));
-  return out;
-}
-}  // namespace
-
-namespace {
-// One exact simplex run (Bland's rule) on the rows `take` of `lp`; the certificate is indexed like
-// `take`.
-LpSolution solve_rows(const LinearProgram& lp, const std::vector<std::size_t>& take) {
-  using Program = CGAL::Quadratic_program<CGAL::Gmpz>;
-  const int n = static_cast<int>(lp.variables);
-  Program qp(CGAL::SMALLER, false, 0, false, 0);  // rows <=, variables free
-  for (std::size_t t = 0; t < take.size(); ++t) {
-    const std::vector<mpz_class> r = integer_row(lp.rows[take[t]], &lp.rhs[take[t]]);
-    for (int j = 0; j < n; ++j)
-      if (sgn(r[j]) != 0) qp.set_a(j, static_cast<int>(t), to_gmpz(r[j]));
-    qp.set_b(static_cast<int>(t), to_gmpz(r[n]));
-  }
-  // A positive multiple of c has the same minimisers; the value is recomputed exactly below.
-  const std::vector<mpz_class> c = integer_row(lp.objective, nullptr);
-  for (int j = 0; j < n; ++j)
-    if (sgn(c[j]) != 0) qp.set_c(j, to_gmpz(c[j]));
-  // Make every variable known to the program even when no row or objective term mentions it.
-  for (int j = 0; j < n; ++j) qp.set_l(j, false, 0), qp.set_u(j, false, 0);
-
-  CGAL::Quadratic_program_options options;
-  options.set_pricing_strategy(CGAL::QP_BLAND);  // no cycling: a finite number of pivots
-  const CGAL::Quadratic_program_solution<CGAL::Gmpz> s =
-      CGAL::solve_linear_program(qp, CGAL::Gmpz(), options);
-  LpSolution out;
-  if (s.is_infeasible()) return out;
-  if (s.is_unbounded()) {
-    out.status = LpStatus::unbounded;
-    return out;
-  }
-  out.status = LpStatus::optimal;
-  auto v = s.variable_values_begin();
-  for (int j = 0; j < n; ++j, ++v) {
-    Rational x(to_mpz(v->numerator()), to_mpz(v->denominator()));
-    x.canonicalize();
-    out.x.push_back(x);
-  }
-  out.value = 0;
-  for (int j = 0; j < n; ++j) out.value += lp.objective[j] * out.x[j];
-  for (auto it = s.optimality_certificate_numerators_begin();
-       it != s.optimality_certificate_numerators_end(); ++it)
-    out.tight_in_every_optimum.push_back(CGAL::sign(*it) != CGAL::ZERO);
-  out.tight_in_every_optimum.resize(take.size(), false);
-  return out;
-}
-}  // namespace
-
-LpSolution solve_linear_program(const LinearProgram& lp) {
-  if (lp.objective.size() != lp.variables || lp.rows.size() != lp.rhs.size())
-    throw std::invalid_argument("solve_linear_program: inconsistent sizes");
-  for (const std::vector<Rational>& r : lp.rows)
-    if (r.size() != lp.variables) throw std::invalid_argument("solve_linear_program: row of the wrong length");
-  auto every_row = [&lp] {
-    std::vector<std::size_t> all(lp.rows.size());
-    for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-    LpSolution s = solve_rows(lp, all);
-    s.rows_taken = std::move(all);
-    return s;
-  };
-  if (lp.initial.empty()) return every_row();
-
-  std::vector<bool> taken(lp.rows.size(), false);
-  std::vector<std::size_t> take;
-  for (std::size_t i : lp.initial) {
-    if (i >= lp.rows.size()) throw std::invalid_argument("solve_linear_program: initial row out of range");
-    if (!taken[i]) taken[i] = true, take.push_back(i);
-  }
-  constexpr std::size_t per_round = 64;
-  for (;;) {
-    LpSolution s = solve_rows(lp, take);
-    // Infeasible on a subset: infeasible. Unbounded on a subset says nothing: every row at once.
-    if (s.status == LpStatus::infeasible) return s;
-    if (s.status == LpStatus::unbounded) return every_row();
-    std::vector<std::pair<Rational, std::size_t>> violated;
-    for (std::size_t i = 0; i < lp.rows.size(); ++i) {
-      if (taken[i]) continue;
-      Rational excess = -lp.rhs[i];
-      for (std::size_t j = 0; j < lp.variables; ++j)
-        if (sgn(lp.rows[i][j]) != 0) excess += lp.rows[i][j] * s.x[j];
-      if (sgn(excess) > 0) violated.emplace_back(std::move(excess), i);
-    }
-    if (violated.empty()) {  // optimal for every row; rows never taken have zero multipliers
-      std::vector<bool> tight(lp.rows.size(), false);
-      for (std::size_t t = 0; t < take.size(); ++t) tight[take[t]] = s.tight_in_every_optimum[t];
-      s.tight_in_every_optimum = std::move(tight);
-      s.rows_taken = std::move(take);
-      return s;
-    }
-    const std::size_t k = std::min(per_round, violated.size());
-    std::partial_sort(violated.begin(), violated.begin() + static_cast<std::ptrdiff_t>(k), violated.end(),
-                      [](const auto& a, const auto& b) { return a.first > b.first || (a.first == b.first && a.second < b.second); });
-    for (std::size_t t = 0; t < k; ++t) taken[violated[t].second] = true, take.push_back(violated[t].second);
-  }
-}
-
-}  // namespace internal
-}  // namespace gmcc
 
 // ---- Forsyth's CRULE feasible set in 3-D ----------------------------------------------------
 
@@ -322,13 +205,16 @@ bool independent_of(const std::vector<Point3>& basis, const Point3& a) {
 }
 }  // namespace
 
-ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical_colours,
-                           const std::vector<Colour>& image_colours, CanonicalBlack black) {
-  std::vector<Point3> canonical = colours_to_points(canonical_colours, "canonical");
-  if (black == CanonicalBlack::include) canonical.push_back({0, 0, 0});
-  canonical = sorted_unique(canonical);
-  const std::vector<Point3> image = extreme_points(sorted_unique(colours_to_points(image_colours, "image")));
+namespace {
 
+// The CRULE program's rows: d ⊙ p ∈ {a·x <= b} ⟺ (a ⊙ p)·d <= b for each canonical facet and
+// image hull vertex p, plus the implied box 0 <= d_k <= X_k/P_k (`box_max`); nothing when a row
+// with a zero normal fails (0 <= b), i.e. no map at all.
+struct Rows {
+  std::vector<HalfSpace> rows;
+  Point3 box_max;
+};
+std::optional<Rows> crule_rows(const std::vector<Point3>& canonical, const std::vector<Point3>& image) {
   Point3 X{0, 0, 0}, P{0, 0, 0};
   for (const Point3& c : canonical)
     for (int k = 0; k < 3; ++k) coord(X, k) = std::max(coord(X, k), coord(c, k));
@@ -339,26 +225,36 @@ ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical_colours,
       throw UnboundedFeasibleSet(std::string("every image colour has ") + "rgb"[k] +
                                  " = 0: that map component is unconstrained and the feasible "
                                  "set is unbounded");
-
-  // d ⊙ p ∈ {a·x <= b}  ⟺  (a ⊙ p)·d <= b; plus the implied box 0 <= d_k <= X_k/P_k.
-  std::vector<HalfSpace> rows;
+  Rows out;
   for (const HalfSpace& h : hull_half_spaces(canonical))
     for (const Point3& p : image) {
       const Point3 a = internal::hadamard(h.a, p);
-      if (!is_zero(a)) rows.push_back(normalised(a, h.b));
-      else if (sgn(h.b) < 0) return {};  // 0 <= b fails: no map at all
+      if (!is_zero(a)) out.rows.push_back(normalised(a, h.b));
+      else if (sgn(h.b) < 0) return std::nullopt;
     }
   for (int k = 0; k < 3; ++k) {
-    rows.push_back(normalised(internal::scale(axis(k), -1), 0));
-    rows.push_back(normalised(axis(k), Rational(coord(X, k) / coord(P, k))));
+    coord(out.box_max, k) = coord(X, k) / coord(P, k);
+    out.rows.push_back(normalised(internal::scale(axis(k), -1), 0));
+    out.rows.push_back(normalised(axis(k), coord(out.box_max, k)));
   }
-  dedupe(rows);
+  dedupe(out.rows);
+  return out;
+}
 
-  // Max-slack LP; rows found tight on all of F3 become equalities until the slack is > 0.
-  std::vector<bool> equality(rows.size(), false);
-  std::vector<bool> warm(rows.size(), false);  // rows an earlier round's constraint generation took
-  std::vector<Point3> basis;                   // a basis of the equalities' normals
+// F3's affine hull: which rows hold with equality on all of F3, a basis of their normals (its
+// size is their rank, 3 − dim F3), and a point of F3 strictly inside every other row.
+struct AffineHull {
+  std::vector<bool> equality;
+  std::vector<Point3> basis;
   Point3 inner;
+};
+
+// The max-slack LP: maximise s subject to a·d + s <= b on the inequalities (s <= 1); rows found
+// tight on all of F3 become equalities until the slack is > 0 (docs/math.md §1b "The exact LP").
+// Nothing when F3 is empty.
+std::optional<AffineHull> affine_hull(const std::vector<HalfSpace>& rows) {
+  AffineHull f{std::vector<bool>(rows.size(), false), {}, {}};
+  std::vector<bool> warm(rows.size(), false);  // rows an earlier round's constraint generation took
   for (;;) {
     internal::LinearProgram lp;
     lp.variables = 4;
@@ -366,7 +262,7 @@ ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical_colours,
     std::vector<std::size_t> source;  // LP row → constraint row, for the inequalities
     for (std::size_t i = 0; i < rows.size(); ++i) {
       const HalfSpace& h = rows[i];
-      if (equality[i]) {
+      if (f.equality[i]) {
         lp.rows.push_back({h.a.x, h.a.y, h.a.z, 0}), lp.rhs.push_back(h.b);
         lp.rows.push_back({Rational(-h.a.x), Rational(-h.a.y), Rational(-h.a.z), 0});
         lp.rhs.push_back(Rational(-h.b));
@@ -385,16 +281,16 @@ ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical_colours,
     lp.rows.push_back({0, 0, 0, 1}), lp.rhs.push_back(1);
     source.push_back(rows.size());
     const internal::LpSolution s = internal::solve_linear_program(lp);
-    if (s.status == internal::LpStatus::infeasible) return {};
+    if (s.status == internal::LpStatus::infeasible) return std::nullopt;
     if (s.status != internal::LpStatus::optimal)
       throw std::logic_error("feasible_set_3d: the slack LP is unbounded: a bug");
     const Rational& slack = s.x[3];
-    if (sgn(slack) < 0) return {};
-    inner = {s.x[0], s.x[1], s.x[2]};
-    if (sgn(slack) > 0) break;
+    if (sgn(slack) < 0) return std::nullopt;
+    f.inner = {s.x[0], s.x[1], s.x[2]};
+    if (sgn(slack) > 0) return f;  // `basis` spans the equalities' normals (the last round added none)
     bool grew = false;
     for (std::size_t r = 0; r < source.size(); ++r)
-      if (source[r] < rows.size() && s.tight_in_every_optimum[r]) equality[source[r]] = true, grew = true;
+      if (source[r] < rows.size() && s.tight_in_every_optimum[r]) f.equality[source[r]] = true, grew = true;
     if (!grew) throw std::logic_error("feasible_set_3d: no implicit equality found: a bug");
     for (std::size_t r : s.rows_taken)
       if (source[r] < rows.size()) warm[source[r]] = true;
@@ -402,78 +298,95 @@ ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical_colours,
     // equality at `inner` (a point of F3) holds with equality on all of F3 (a = Σλ_i·a_i gives
     // a·y = Σλ_i·b_i = a·inner = b on the equalities' flat): so when F3 is a point, every row
     // through it at once instead of a few per round (docs/math.md §1b "The exact LP").
-    basis.clear();
-    for (std::size_t i = 0; i < rows.size() && basis.size() < 3; ++i)
-      if (equality[i] && independent_of(basis, rows[i].a)) basis.push_back(rows[i].a);
+    f.basis.clear();
+    for (std::size_t i = 0; i < rows.size() && f.basis.size() < 3; ++i)
+      if (f.equality[i] && independent_of(f.basis, rows[i].a)) f.basis.push_back(rows[i].a);
     for (std::size_t i = 0; i < rows.size(); ++i)
-      if (!equality[i] && dot(rows[i].a, inner) == rows[i].b && !independent_of(basis, rows[i].a))
-        equality[i] = true;
+      if (!f.equality[i] && dot(rows[i].a, f.inner) == rows[i].b && !independent_of(f.basis, rows[i].a))
+        f.equality[i] = true;
   }
-  // `basis` spans the equalities' normals: the rows just added lie in its span, and the round that
-  // ends the loop adds none. Its size is their rank.
+}
 
-  if (basis.size() == 3) return canonical_convex_set_3(ConvexKind3::point, {inner}, {});
-  if (basis.size() == 2) {
-    const Point3 u = cross(basis[0], basis[1]);
-    std::optional<Rational> lo, hi;
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      if (equality[i]) continue;
-      const Rational au = dot(rows[i].a, u);
-      if (sgn(au) == 0) continue;
-      const Rational t = (rows[i].b - dot(rows[i].a, inner)) / au;  // a·(inner + t·u) <= b
-      if (sgn(au) > 0) hi = hi ? std::min(*hi, t) : t;
-      else lo = lo ? std::max(*lo, t) : t;
-    }
-    if (!lo || !hi) throw std::logic_error("feasible_set_3d: unbounded segment: a bug");
-    return canonical_convex_set_3(
-        ConvexKind3::segment,
-        {internal::add(inner, internal::scale(u, *lo)), internal::add(inner, internal::scale(u, *hi))}, {});
+// F3 on a line (rank 2): inner + t·u over the interval the other rows leave.
+ConvexSet3 segment_of(const std::vector<HalfSpace>& rows, const AffineHull& f) {
+  const Point3 u = cross(f.basis[0], f.basis[1]);
+  std::optional<Rational> lo, hi;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (f.equality[i]) continue;
+    const Rational au = dot(rows[i].a, u);
+    if (sgn(au) == 0) continue;
+    const Rational t = (rows[i].b - dot(rows[i].a, f.inner)) / au;  // a·(inner + t·u) <= b
+    if (sgn(au) > 0) hi = hi ? std::min(*hi, t) : t;
+    else lo = lo ? std::max(*lo, t) : t;
   }
-  if (basis.size() == 1) {
-    // In the plane n·d = c, write d_k through the other two coordinates and clip in 2-D.
-    const Point3 n = basis[0];
-    const Rational c = dot(n, inner);
-    const int k = internal::largest_coordinate(n), i = k == 0 ? 1 : 0, j = k == 2 ? 1 : 2;
-    const Rational& nk = coord(n, k);
-    std::vector<Point2> cycle{{0, 0},
-                              {Rational(coord(X, i) / coord(P, i)), 0},
-                              {Rational(coord(X, i) / coord(P, i)), Rational(coord(X, j) / coord(P, j))},
-                              {0, Rational(coord(X, j) / coord(P, j))}};
-    for (std::size_t r = 0; r < rows.size() && !cycle.empty(); ++r) {
-      if (equality[r]) continue;
-      const Point3& a = rows[r].a;
-      const Rational f = coord(a, k) / nk;
-      cycle = internal::clip(cycle, {Rational(coord(a, i) - f * coord(n, i)),
-                                     Rational(coord(a, j) - f * coord(n, j)),
-                                     Rational(rows[r].b - f * c)});
-    }
-    const ConvexSet2 flat = canonical_convex_set(std::move(cycle));
-    if (flat.kind != ConvexKind::polygon)
-      throw std::logic_error("feasible_set_3d: a positive-slack plane section is not a polygon: a bug");
-    std::vector<Point3> v;
-    std::vector<std::size_t> face;
-    for (const Point2& p : flat.vertices) {
-      Point3 q{0, 0, 0};
-      coord(q, i) = p.x, coord(q, j) = p.y;
-      coord(q, k) = (c - coord(n, i) * p.x - coord(n, j) * p.y) / nk;
-      face.push_back(v.size());
-      v.push_back(q);
-    }
-    return canonical_convex_set_3(ConvexKind3::polygon, std::move(v), {face});
-  }
+  if (!lo || !hi) throw std::logic_error("feasible_set_3d: unbounded segment: a bug");
+  return canonical_convex_set_3(
+      ConvexKind3::segment,
+      {internal::add(f.inner, internal::scale(u, *lo)), internal::add(f.inner, internal::scale(u, *hi))}, {});
+}
 
-  // Full-dimensional: CGAL's dual half-space intersection around the strictly interior point.
+// F3 in a plane n·d = c (rank 1): d_k written through the other two coordinates and the box
+// clipped by every other row in 2-D.
+ConvexSet3 polygon_of(const std::vector<HalfSpace>& rows, const AffineHull& f, const Point3& box_max) {
+  const Point3 n = f.basis[0];
+  const Rational c = dot(n, f.inner);
+  const int k = internal::largest_coordinate(n), i = k == 0 ? 1 : 0, j = k == 2 ? 1 : 2;
+  const Rational& nk = coord(n, k);
+  std::vector<Point2> cycle{{0, 0}, {coord(box_max, i), 0}, {coord(box_max, i), coord(box_max, j)}, {0, coord(box_max, j)}};
+  for (std::size_t r = 0; r < rows.size() && !cycle.empty(); ++r) {
+    if (f.equality[r]) continue;
+    const Point3& a = rows[r].a;
+    const Rational g = coord(a, k) / nk;
+    cycle = internal::clip(cycle, {Rational(coord(a, i) - g * coord(n, i)), Rational(coord(a, j) - g * coord(n, j)),
+                                   Rational(rows[r].b - g * c)});
+  }
+  const ConvexSet2 flat = canonical_convex_set(std::move(cycle));
+  if (flat.kind != ConvexKind::polygon)
+    throw std::logic_error("feasible_set_3d: a positive-slack plane section is not a polygon: a bug");
+  std::vector<Point3> v;
+  std::vector<std::size_t> face;
+  for (const Point2& p : flat.vertices) {
+    Point3 q{0, 0, 0};
+    coord(q, i) = p.x, coord(q, j) = p.y;
+    coord(q, k) = (c - coord(n, i) * p.x - coord(n, j) * p.y) / nk;
+    face.push_back(v.size());
+    v.push_back(q);
+  }
+  return canonical_convex_set_3(ConvexKind3::polygon, std::move(v), {face});
+}
+
+// Full-dimensional F3: CGAL's dual half-space intersection around a strictly interior point.
+ConvexSet3 polytope_of(const std::vector<HalfSpace>& rows, const Point3& inner) {
   std::vector<Kernel::Plane_3> planes;
   for (const HalfSpace& h : rows)
     planes.emplace_back(Kernel::FT(h.a.x), Kernel::FT(h.a.y), Kernel::FT(h.a.z), Kernel::FT(-h.b));
   CGAL::Surface_mesh<KPoint3> mesh;
-  CGAL::halfspace_intersection_3(planes.begin(), planes.end(), mesh,
-                                 boost::optional<KPoint3>(kernel_point(inner)));
+  CGAL::halfspace_intersection_3(planes.begin(), planes.end(), mesh, boost::optional<KPoint3>(kernel_point(inner)));
   std::vector<Point3> v;
   for (const auto& vi : mesh.vertices()) v.push_back(exact_point(mesh.point(vi)));
   v = sorted_unique(std::move(v));
   std::vector<std::vector<std::size_t>> f = facets(v, rows);
   return canonical_convex_set_3(ConvexKind3::polytope, std::move(v), std::move(f));
+}
+
+}  // namespace
+
+ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical_colours,
+                           const std::vector<Colour>& image_colours, CanonicalBlack black) {
+  std::vector<Point3> canonical = colours_to_points(canonical_colours, "canonical");
+  if (black == CanonicalBlack::include) canonical.push_back({0, 0, 0});
+  canonical = sorted_unique(canonical);
+  const std::vector<Point3> image = extreme_points(sorted_unique(colours_to_points(image_colours, "image")));
+  const std::optional<Rows> rows = crule_rows(canonical, image);
+  if (!rows) return {};
+  const std::optional<AffineHull> f = affine_hull(rows->rows);
+  if (!f) return {};
+  switch (f->basis.size()) {
+    case 3: return canonical_convex_set_3(ConvexKind3::point, {f->inner}, {});
+    case 2: return segment_of(rows->rows, *f);
+    case 1: return polygon_of(rows->rows, *f, rows->box_max);
+    default: return polytope_of(rows->rows, f->inner);
+  }
 }
 
 }  // namespace gmcc

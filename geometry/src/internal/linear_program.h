@@ -1,7 +1,7 @@
 #pragma once
 // An exact linear program over the rationals: CGAL's QP solver (Fischer & Gärtner's exact
 // simplex; <CGAL/QP_functions.h>) on integer-scaled rows, behind a plain interface. Internal to
-// gmcc::geometry; implemented in feasible_set_3d.cpp, the library's 3-D CGAL translation unit.
+// gmcc::geometry; implemented in linear_program.cpp.
 
 #include <gmcc/geometry/rational.h>
 
