@@ -1,9 +1,7 @@
 #pragma once
 // `gmcc accuracy`: how accurate is each route to the 3-D mean (Finlayson & Hordley 1999 §3.2)?
-// The study behind docs/accuracy.md: on a fixed 7-gon of width w = 10 … 1e-12 around the map
-// (1.1, 0.7), the error of the double closed form (docs/accuracy.md "Reading"), the certified closed form,
-// Duffy–Gauss–Legendre quadrature and Monte Carlo (docs/math.md §2) against a 4096-bit
-// certified enclosure.
+// The options and the files; the study itself, its table, CSV and plot are in
+// gmcc/validation/accuracy_study.h (docs/accuracy.md).
 
 #include <CLI/CLI.hpp>
 
