@@ -4,6 +4,7 @@
 #include <gmcc/geometry/convex_hull.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
+#include <gmcc/numerics/internal_check.h>
 
 #include "internal/half_plane.h"
 #include "internal/linear_program.h"
@@ -282,8 +283,7 @@ std::optional<AffineHull> affine_hull(const std::vector<HalfSpace>& rows) {
     source.push_back(rows.size());
     const internal::LpSolution s = internal::solve_linear_program(lp);
     if (s.status == internal::LpStatus::infeasible) return std::nullopt;
-    if (s.status != internal::LpStatus::optimal)
-      throw std::logic_error("feasible_set_3d: the slack LP is unbounded: a bug");
+    GMCC_CHECK(s.status == internal::LpStatus::optimal, "feasible_set_3d: the slack LP (s <= 1) is bounded");
     const Rational& slack = s.x[3];
     if (sgn(slack) < 0) return std::nullopt;
     f.inner = {s.x[0], s.x[1], s.x[2]};
@@ -291,7 +291,7 @@ std::optional<AffineHull> affine_hull(const std::vector<HalfSpace>& rows) {
     bool grew = false;
     for (std::size_t r = 0; r < source.size(); ++r)
       if (source[r] < rows.size() && s.tight_in_every_optimum[r]) f.equality[source[r]] = true, grew = true;
-    if (!grew) throw std::logic_error("feasible_set_3d: no implicit equality found: a bug");
+    GMCC_CHECK(grew, "feasible_set_3d: a zero optimal slack shows an implicit equality");
     for (std::size_t r : s.rows_taken)
       if (source[r] < rows.size()) warm[source[r]] = true;
     // Every row whose normal is in the span of the equalities' normals and that holds with
@@ -319,7 +319,7 @@ ConvexSet3 segment_of(const std::vector<HalfSpace>& rows, const AffineHull& f) {
     if (sgn(au) > 0) hi = hi ? std::min(*hi, t) : t;
     else lo = lo ? std::max(*lo, t) : t;
   }
-  if (!lo || !hi) throw std::logic_error("feasible_set_3d: unbounded segment: a bug");
+  GMCC_CHECK(lo && hi, "feasible_set_3d: the box bounds a segment F3");
   return canonical_convex_set_3(
       ConvexKind3::segment,
       {internal::add(f.inner, internal::scale(u, *lo)), internal::add(f.inner, internal::scale(u, *hi))}, {});
@@ -341,8 +341,7 @@ ConvexSet3 polygon_of(const std::vector<HalfSpace>& rows, const AffineHull& f, c
                                    Rational(rows[r].b - g * c)});
   }
   const ConvexSet2 flat = canonical_convex_set(std::move(cycle));
-  if (flat.kind != ConvexKind::polygon)
-    throw std::logic_error("feasible_set_3d: a positive-slack plane section is not a polygon: a bug");
+  GMCC_CHECK(flat.kind == ConvexKind::polygon, "feasible_set_3d: a positive-slack plane section is a polygon");
   std::vector<Point3> v;
   std::vector<std::size_t> face;
   for (const Point2& p : flat.vertices) {

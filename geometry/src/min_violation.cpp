@@ -1,6 +1,7 @@
 #include <gmcc/geometry/convex_hull.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/min_violation.h>
+#include <gmcc/numerics/internal_check.h>
 
 #include "internal/half_plane.h"
 #include "internal/linear_program.h"
@@ -80,8 +81,8 @@ MinViolation min_violation(const ConvexSet2& canonical, const std::vector<Point2
   for (const HalfPlane& h : hard) lp.rows.push_back({h.a, h.b, 0}), lp.rhs.push_back(h.c);
   for (std::size_t r = qs.size() * planes.size(); r < lp.rows.size(); ++r) lp.initial.push_back(r);
   const internal::LpSolution s = internal::solve_linear_program(lp);
-  if (s.status != internal::LpStatus::optimal)  // t is bounded below by the box half-planes
-    throw std::logic_error("min_violation: the linear program is not optimal: a bug");
+  // t is bounded below by the box half-planes.
+  GMCC_CHECK(s.status == internal::LpStatus::optimal, "min_violation: the linear program has an optimum");
 
   MinViolation out;
   out.violation = s.value;
@@ -96,12 +97,11 @@ MinViolation min_violation(const ConvexSet2& canonical, const std::vector<Point2
   for (const Point2& q : qs)
     for (const HalfPlane& h : planes) {
       cycle = internal::clip(cycle, {Rational(h.a * q.x), Rational(h.b * q.y), Rational(h.c + t * l1(h))});
-      if (cycle.empty()) throw std::logic_error("min_violation: no minimiser at t*: a bug");
+      GMCC_CHECK(!cycle.empty(), "min_violation: the optimal t* has a minimiser");
     }
   for (const HalfPlane& h : hard) cycle = internal::clip(cycle, h);
   out.feasible = canonical_convex_set(std::move(cycle));
-  if (out.feasible.kind == ConvexKind::empty)
-    throw std::logic_error("min_violation: no minimiser at t*: a bug");
+  GMCC_CHECK(out.feasible.kind != ConvexKind::empty, "min_violation: the optimal t* has a minimiser");
 
   // The offset gamut G ⊕ t*·[−1, 1]², clipped from its own bounding box.
   const Rational r = abs(t);

@@ -1,4 +1,5 @@
 #include <gmcc/selection/max_volume.h>
+#include <gmcc/numerics/internal_check.h>
 
 #include "internal/interval.h"
 
@@ -134,7 +135,7 @@ MapEstimate3 max_volume(const ConvexSet3& F) {
 
   // Irrational candidates: drop those outside (0, 1), then separate the winner.
   for (mpfr_prec_t bits = 128; !irrational.empty(); bits *= 2) {
-    if (bits > (1 << 16)) throw std::logic_error("max_volume: candidates not separated: a bug");
+    GMCC_CHECK(bits <= (1 << 16), "max_volume: distinct candidates separate below 2^16 bits");
     std::vector<EdgeRoot> inside;
     bool unsure = false;
     for (const EdgeRoot& e : irrational) {

@@ -1,6 +1,7 @@
 #include <gmcc/geometry/enclosure.h>
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/worst_case_illuminant.h>
+#include <gmcc/numerics/internal_check.h>
 
 #include "internal/interval.h"
 #include "internal/worst_case_illuminant_route.h"
@@ -495,8 +496,7 @@ IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const P
     // d/dt (e·v)/|v| = [(e·v′)|v|² − (e·v)(v·v′)] / |v|³. The product is degree 5 term by term;
     // the t⁵ terms cancel (both are 2·e3·c3³·(Δa·Δb)³), which we check rather than assume.
     const Poly stationary = sub(mul(e_dv, v_v), mul(e_v, v_dv));
-    if (stationary.size() > 5)
-      throw std::logic_error("worst_case_illuminant: edge polynomial is not a quartic");
+    GMCC_CHECK(stationary.size() <= 5, "worst_case_illuminant: the edge polynomial is a quartic");
     if (stationary.empty()) continue;  // constant angle along the edge: its ends suffice
     // No stationary point inside the edge: roots_in_unit_interval would find at most t = 1,
     // the vertex q, which is no new candidate.

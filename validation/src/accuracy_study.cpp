@@ -6,6 +6,7 @@
 #include <gmcc/selection/mean_3d_double.h>
 #include <gmcc/selection/mean_3d_monte_carlo.h>
 #include <gmcc/selection/mean_3d_quadrature.h>
+#include <gmcc/numerics/internal_check.h>
 
 #include <algorithm>
 #include <cmath>
@@ -47,7 +48,7 @@ ConvexSet2 accuracy_test_polygon(const Rational& w) {
     points.push_back({std::max<Rational>(cx + w * parse_rational(o[0]), clip),
                       std::max<Rational>(cy + w * parse_rational(o[1]), clip)});
   ConvexSet2 F = convex_hull(points);
-  if (F.kind != ConvexKind::polygon) throw std::logic_error("accuracy: test polygon degenerate");
+  GMCC_CHECK(F.kind == ConvexKind::polygon, "accuracy: the test polygon is a polygon");
   return F;
 }
 

@@ -52,7 +52,7 @@ const std::vector<std::string>& accuracy_widths();
 
 /// The test polygon P(w): the hull of (11/10, 7/10) + w·o_i over a fixed, strictly convex,
 /// counter-clockwise 7-gon o_i of height 1 with no symmetry, each coordinate clipped to >= 1/100
-/// (only w = 10 is clipped). \throws std::logic_error if it is not a polygon (never, for w > 0).
+/// (only w = 10 is clipped). \throws InternalError if it is not a polygon (never, for w > 0).
 ConvexSet2 accuracy_test_polygon(const Rational& w);
 
 /// Every route at width `width` (text as in accuracy_widths()). Cost: dominated by the
