@@ -1,43 +1,61 @@
 #include <gmcc/selection/map_estimate.h>
+#include <gmcc/selection/map_estimate_3.h>
+
+#include "internal/rounded_component.h"
 
 #include <mpfr.h>
 
 #include <algorithm>
 
 namespace gmcc {
+namespace internal {
 namespace {
-// A double >= |x| (x exact): the rounding error of a rational map, as a bound.
-double upper_double(const Rational& x) {
+// q rounded to a double in the direction `rounding`.
+double rounded(const Rational& q, mpfr_rnd_t rounding) {
   mpfr_t v;
   mpfr_init2(v, 53);
-  mpfr_set_q(v, Rational(abs(x)).get_mpq_t(), MPFR_RNDU);
-  const double d = mpfr_get_d(v, MPFR_RNDU);
+  mpfr_set_q(v, q.get_mpq_t(), rounding);
+  const double d = mpfr_get_d(v, rounding);
   mpfr_clear(v);
   return d;
 }
 }  // namespace
+
+RoundedComponent rounded_component(const Rational& q) {
+  const double nearest = to_double_nearest(q);
+  return {nearest, rounded(Rational(abs(Rational(rational_from_double(nearest) - q))), MPFR_RNDU),
+          rounded(q, MPFR_RNDD), rounded(q, MPFR_RNDU)};
+}
+}  // namespace internal
 
 MapEstimate exact_map_estimate(std::string rule, const Point2& exact) {
   MapEstimate e;
   e.rule = std::move(rule);
   e.method = "exact";
   e.exact = exact;
-  e.map = to_double_nearest(exact);
-  e.error_bounds = {upper_double(rational_from_double(e.map[0]) - exact.x),
-                    upper_double(rational_from_double(e.map[1]) - exact.y)};
-  e.error_bound = std::max(e.error_bounds[0], e.error_bounds[1]);
-  e.correctly_rounded = {true, true};  // to_double_nearest rounds the exact value once
-  // The enclosure of an exact value is [value rounded down, value rounded up].
   e.enclosure.emplace();
   for (int k = 0; k < 2; ++k) {
-    mpfr_t v;
-    mpfr_init2(v, 53);
-    const Rational& q = k == 0 ? exact.x : exact.y;
-    mpfr_set_q(v, q.get_mpq_t(), MPFR_RNDD);
-    (*e.enclosure)[k][0] = mpfr_get_d(v, MPFR_RNDD);
-    mpfr_set_q(v, q.get_mpq_t(), MPFR_RNDU);
-    (*e.enclosure)[k][1] = mpfr_get_d(v, MPFR_RNDU);
-    mpfr_clear(v);
+    const internal::RoundedComponent c = internal::rounded_component(k == 0 ? exact.x : exact.y);
+    e.map[k] = c.nearest;
+    e.error_bounds[k] = c.error_bound;
+    (*e.enclosure)[k] = {c.lo, c.hi};  // the enclosure of an exact value
+  }
+  e.error_bound = std::max(e.error_bounds[0], e.error_bounds[1]);
+  e.correctly_rounded = {true, true};  // nearest rounds the exact value once
+  return e;
+}
+
+MapEstimate3 exact_map_estimate_3(std::string rule, const Point3& exact) {
+  MapEstimate3 e;
+  e.rule = std::move(rule);
+  e.method = "exact";
+  e.exact = exact;
+  const Rational* c[3] = {&exact.x, &exact.y, &exact.z};
+  for (int k = 0; k < 3; ++k) {
+    const internal::RoundedComponent r = internal::rounded_component(*c[k]);
+    e.map[k] = r.nearest;
+    e.enclosure[k] = {r.lo, r.hi};
+    e.error_bound = std::max(e.error_bound, r.error_bound);
   }
   return e;
 }

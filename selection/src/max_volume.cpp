@@ -62,23 +62,6 @@ int compare_with(const Interval& x, const Rational& q) {  // −1: x < q surely,
 }
 }  // namespace
 
-MapEstimate3 exact_map_estimate_3(std::string rule, const Point3& exact) {
-  MapEstimate3 e;
-  e.rule = std::move(rule);
-  e.method = "exact";
-  e.exact = exact;
-  const Rational* c[3] = {&exact.x, &exact.y, &exact.z};
-  for (int k = 0; k < 3; ++k) {
-    e.map[k] = to_double_nearest(*c[k]);
-    const Rational err = abs(Rational(rational_from_double(e.map[k]) - *c[k]));
-    Interval x(*c[k], 53);
-    const auto [lo, hi] = internal::outward_doubles(x);
-    e.enclosure[k] = {lo, hi};
-    e.error_bound = std::max(e.error_bound, internal::outward_doubles(Interval(err, 53)).second);
-  }
-  return e;
-}
-
 MapEstimate3 max_volume(const ConvexSet3& F) {
   if (F.kind == ConvexKind3::empty) throw std::invalid_argument("max_volume: empty feasible set");
   const auto& v = F.vertices;
