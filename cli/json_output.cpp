@@ -68,11 +68,6 @@ Json selection_json(const Selection& s) {
   return j;
 }
 
-std::string fmt(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.10g", x);
-  return buf;
-}
 
 Json constraint_json(const ConstraintReport& c) {
   Json j = convex_set_json(c.maps);
@@ -160,6 +155,12 @@ std::string shortest(double x) {
 }
 
 }  // namespace
+
+std::string fmt(double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", x);
+  return buf;
+}
 
 Json scene_json(const PreparedCanonical& c, const SceneResult& r, bool canonical_members) {
   Json j;

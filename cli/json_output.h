@@ -29,6 +29,9 @@ std::string json_lines_preamble();
 
 /// One JSON object, pretty-printed, ending in a newline.
 std::string select_json(const PreparedCanonical& canonical, const SceneResult& result);
+/// x in the text summaries: 10 significant digits (%.10g).
+std::string fmt(double x);
+
 /// A short readable summary.
 std::string select_text(const PreparedCanonical& canonical, const SceneResult& result);
 

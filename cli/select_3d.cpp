@@ -40,11 +40,6 @@ Json selection_json(const Selection3& s) {
   return j;
 }
 
-std::string fmt(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.10g", x);
-  return buf;
-}
 }  // namespace
 
 int run_select_3d(const SelectOptions& o) {
