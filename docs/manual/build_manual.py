@@ -40,7 +40,7 @@ HEADING = re.compile(r"^(#{1,6})\s+(.*?)\s*#*\s*$")
 # Link text and code spans may wrap onto the next line of their paragraph, never past it.
 LINK = re.compile(r"(!?)\[((?:[^\]\n]|\\\]|\n(?!\s*\n))*)\]\(([^)\s]+)\)")
 CODE_SPAN = re.compile(r"(`+)((?:[^`\n]|\n(?!\s*\n))+?)\1")
-# `docs/math.md §1a, §1b and §3` and `docs/cli.md "Provenance"` (tests/docs/check_citations.py)
+# `docs/math.md §1b, §2 and §3` and `docs/cli.md "Provenance"` (tests/docs/check_citations.py)
 SECTION_CITE = re.compile(r"(?<![\w/\[])((?:docs/)?([\w-]+)\.md)((?:\s*(?:,|and|or|/)?\s*§\s?[0-9][\w.′]*)+)")
 SECTION_NUMBER = re.compile(r"§\s?([0-9][\w.′]*?)(?=[.]?(?:[^\w.′]|$))")
 HEADING_CITE = re.compile(r"(?<![\w/\[])((?:docs/)?([\w-]+)\.md),?(\s+)\"([^\"\n]*)\"")
