@@ -61,9 +61,23 @@ def leading_comment(lines):
     return min(n, len(lines))
 
 
+def table_row(line):
+    """A table row's code span that holds GitHub's escaped pipe `\\|` split around it, the pipe
+    outside the code (`a`\\|`b`): Doxygen would show the backslash inside a code span, and an
+    HTML <code> would have its `--` turned into a dash."""
+    def span(m):
+        if "\\|" not in m.group(2):
+            return m.group(0)
+        return "\\|".join("`%s`" % p if p else "" for p in m.group(2).split("\\|"))
+    return CODE_SPAN.sub(span, line)
+
+
 def header_link(base, text):
     """A link to a public header's API page (Doxygen resolves a file name)."""
     return "[%s](@ref %s)" % (text, base)
+
+
+ABBREVIATION = re.compile(r"(?<![\w.])(e\.g|i\.e|eqs?|Eqs?|Figs?|cf|vs|al|resp|approx|ca)\.(?= )")
 
 
 def github_anchor(text):
@@ -342,6 +356,8 @@ class Manual:
                     result.append("")
                     result.append("[TOC]")
                 continue
+            if line.lstrip().startswith("|"):
+                line = table_row(line)
             if "<!-- gmcc:build-info -->" in line:
                 line = line.replace("<!-- gmcc:build-info -->", build_info)
             block.append(line)
@@ -392,7 +408,13 @@ def filter_header(manual, path):
     for line in lines:
         m = re.match(r"^(\s*///<?)(.*)$", line)
         if m:
-            line = m.group(1) + manual.cite_links(m.group(2), True)
+            text = manual.cite_links(m.group(2), True)
+            # JAVADOC_AUTOBRIEF ends the brief at the first full stop and space: not at an
+            # abbreviation ("eqs. 7–9", "e.g. the", "et al. 2002"), which gets Doxygen's `.\ `.
+            parts = re.split(r"(`[^`]*`)", text)
+            text = "".join(p if p.startswith("`") else ABBREVIATION.sub(r"\1.\\", p)
+                           for p in parts)
+            line = m.group(1) + text
         out.append(line)
     sys.stdout.write("\n".join(out))
 

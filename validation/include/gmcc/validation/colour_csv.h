@@ -22,7 +22,7 @@ inline constexpr std::size_t max_colours = 1000000;
 
 /// The colours of a file, with the line each came from.
 struct ColourTable {
-  std::string file;  ///< the file's name as given (used in messages and provenance)
+  std::string file;  ///< the file's name as given, for messages
   std::vector<Colour> colours;  ///< the colours in file order, exact
   std::vector<std::size_t> lines;  ///< 1-based source line of each colour
 };

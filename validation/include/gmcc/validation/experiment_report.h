@@ -42,7 +42,8 @@ std::string experiment_setup_json(const ExperimentResult& result);
 /// Per-scene records (ExperimentResult::scenes) as JSON Lines: the setup object, then one object
 /// per scene in canonical order (docs/reproduction.md "Per-scene records"). Numbers are the
 /// shortest decimal that reads back as the same double, so a merge reproduces every statistic.
-/// \param result the experiment's result; its `scenes` must have been kept.
+/// \param result the experiment's result; its `scenes` (kept with ExperimentConfig::keep_scenes)
+///        are written one per line.
 /// \param provenance a JSON object written first as the line `{"provenance": …}`; none when empty.
 std::string experiment_scenes_jsonl(const ExperimentResult& result, const std::string& provenance = {});
 

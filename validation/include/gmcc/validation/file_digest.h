@@ -13,7 +13,7 @@ namespace gmcc {
 
 /// One input file as read: the path as given, its size in bytes and its SHA-256.
 struct FileDigest {
-  std::string path;         ///< the path as given on the command line (not made absolute)
+  std::string path;         ///< the path as the caller gave it (not made absolute)
   std::uint64_t bytes = 0;  ///< the size of what was read, in bytes
   std::string sha256;  ///< 64 lower-case hexadecimal digits
 };

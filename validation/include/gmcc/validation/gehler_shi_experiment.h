@@ -37,7 +37,7 @@ struct GehlerShiOptions {
   GehlerShiProtocol protocol = GehlerShiProtocol::leave_one_out;  ///< leave-one-out or the paper's
   std::vector<std::string> cameras{"Canon1D", "Canon5D"};  ///< in report order
   /// A patch is usable when every channel c has dark < c < clip (near-black and clipped
-  /// patches dropped, and counted). Channels are the data's normalised values in [0, 1].
+  /// patches dropped, and counted).
   ///@{
   Rational dark{1, 500}, clip{19, 20};
   ///@}
