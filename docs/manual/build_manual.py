@@ -19,8 +19,15 @@ originals alone:
   - `docs/<page>.md §n` and `docs/<page>.md "heading"` citations in the text, and public header
     names in code spans, become links too. The same filter (--filter FILE) runs on the headers
     (Doxygen's INPUT_FILTER), so an API page's `docs/math.md §2` is a link into the manual.
+  - `\\word` and `@word` in prose are escaped (GitHub shows them as text, Doxygen would read
+    commands); a table's code span with an escaped pipe is split around it; headings never skip
+    a level; a comment before a page's title goes;
   - the version and git commit of the checkout are written into the front page's
-    `<!-- gmcc:build-info -->` line, as `gmcc cite` prints them (cmake/build_info.cmake's rule).
+    `<!-- gmcc:build-info -->` line, as `gmcc cite` prints them (cmake/build_info.cmake's rule),
+    and `<!-- gmcc:all-pages -->` becomes a list of every page of docs/ (a page added later,
+    e.g. docs/python.md, is in the manual without an edit here).
+In the headers (the filter) an abbreviation's full stop (`eqs. 7`, `e.g. the`) is written
+`.\\ ` so that it does not end the brief description (JAVADOC_AUTOBRIEF).
 """
 
 import argparse
@@ -59,6 +66,12 @@ def leading_comment(lines):
         else:
             break
     return min(n, len(lines))
+
+
+def escape_commands(text):
+    """Prose as GitHub shows it: `\\word` and `@word` are Doxygen commands, not text."""
+    text = re.sub(r"\\(?=[A-Za-z])", r"\\\\", text)
+    return re.sub(r"@(?=[A-Za-z])", r"\\@", text)
 
 
 def table_row(line):
@@ -311,11 +324,24 @@ class Manual:
         parts = []
         pos = 0
         for m in LINK.finditer(text):
-            parts.append(self.cite_links(text[pos:m.start()], False))
+            parts.append(self.cite_links(escape_commands(text[pos:m.start()]), False))
             parts.append(self.rewrite_link(m, rel_dir, page))
             pos = m.end()
-        parts.append(self.cite_links(text[pos:], False))
+        parts.append(self.cite_links(escape_commands(text[pos:]), False))
         return "".join(parts)
+
+    def all_pages(self):
+        """Every page of docs/ (whatever docs/*.md holds when the manual is built), linked."""
+        items = []
+        for rel, page in self.pages.items():
+            if page.label == "index":
+                continue
+            for i, line, fenced in outside_fences(page.lines):
+                m = HEADING.match(line)
+                if not fenced and m:
+                    items.append("[%s](@ref %s)" % (m.group(2).replace("`", ""), page.label))
+                    break
+        return "Every page of `docs/` in this manual: " + "; ".join(items) + "."
 
     def write_page(self, rel, page, out_dir, build_info):
         rel_dir = os.path.dirname(rel)
@@ -363,8 +389,9 @@ class Manual:
             block.append(line)
         flush()
         name = os.path.basename(rel) if rel_dir == "docs" else "mainpage.md"
+        text = "\n".join(result).replace("<!-- gmcc:all-pages -->", self.all_pages())
         with open(os.path.join(out_dir, name), "w", encoding="utf-8") as f:
-            f.write("\n".join(result))
+            f.write(text)
 
     def rewrite_line(self, line, rel_dir, page):
         # Links whose text is a code span: rewrite the whole link first, then the rest.
