@@ -9,7 +9,9 @@
 
 namespace gmcc {
 
-/// What an exact convex set turned out to be. Degenerate kinds are results, not errors.
+/// What an exact convex set turned out to be. Degenerate kinds are results, not errors:
+/// `polygon` (2-dimensional, >= 3 vertices), `segment` (1-dimensional, 2 vertices), `point`
+/// (1 vertex), `empty` (no vertex; e.g. no map fits every image chromaticity).
 enum class ConvexKind { polygon, segment, point, empty };
 
 /// `polygon`, `segment`, `point` or `empty`.

@@ -31,7 +31,8 @@ inline bool operator<(const Point3& a, const Point3& b) {
   return a.z < b.z;
 }
 
-/// What an exact 3-D convex set turned out to be; degenerate kinds are results, not errors.
+/// What an exact 3-D convex set turned out to be; degenerate kinds are results, not errors:
+/// `polytope` (3-dimensional), `polygon` (2), `segment` (1), `point` (0), `empty`.
 enum class ConvexKind3 { polytope, polygon, segment, point, empty };
 
 /// `polytope`, `polygon`, `segment`, `point` or `empty`.
