@@ -21,7 +21,8 @@ originals alone:
     (Doxygen's INPUT_FILTER), so an API page's `docs/math.md §2` is a link into the manual.
   - `\\word` and `@word` in prose are escaped (GitHub shows them as text, Doxygen would read
     commands); a table's code span with an escaped pipe is split around it; headings never skip
-    a level; a comment before a page's title goes;
+    a level and lose their backticks (Doxygen would print `<tt>`); a comment before a page's
+    title goes;
   - the version and git commit of the checkout are written into the front page's
     `<!-- gmcc:build-info -->` line, as `gmcc cite` prints them (cmake/build_info.cmake's rule),
     and `<!-- gmcc:all-pages -->` becomes a list of every page of docs/ (a page added later,
@@ -365,6 +366,8 @@ class Manual:
                 m = HEADING.match(line)
                 level, text = m.group(1), m.group(2)
                 text = re.sub(r"\[([^\]]*)\]\([^)]*\)", r"\1", text)  # no links in headings
+                # Doxygen 1.9.4 prints a code span in a section title as a literal "<tt>…</tt>".
+                text = text.replace("`", "")
                 if page.label == "index":   # the front page: Doxygen's main page, no label
                     result.append("%s %s" % (level, text))
                     continue
@@ -373,7 +376,6 @@ class Manual:
                 level = "#" * min(len(level), depth + 1)
                 depth = len(level)
                 if page.heading_labels[i] == page.label:
-                    text = text.replace("`", "")   # a page title is plain text in the tree
                     # A comment before the title (accuracy.md's "generated" note) would
                     # hide the title from Doxygen: it goes, as it is not shown anyway.
                     del result[:leading_comment(result)]

@@ -15,10 +15,11 @@ off:
   - no dead internal link: every href and src that is not an external URL names a file of the
     manual, and an anchor `#a` names an id or name in that file;
   - nothing is loaded from outside the manual: no <img>, <script> or stylesheet from a URL;
+  - no markup shows as text (`<tt>`, `@ref`, a `{#label}`);
   - a screenshot, SCREENSHOTS/manual-<page>.png (1280×1400), is written and is a PNG of that
     size that is not blank (a rendered page compresses to more than a blank one).
-Then every HTML file of the manual is read (without the browser) for dead internal links and
-missing images, so no page of the manual links nowhere.
+Then every HTML file of the manual is read (without the browser) for dead internal links,
+missing images and markup shown as text, so no page of the manual links nowhere.
 
 --self-test builds a scratch manual with a missing image, an image file the browser cannot
 decode, a dead link, a dead anchor and an external image, and fails unless each is reported
@@ -64,6 +65,8 @@ window.addEventListener('load', function () {
 });
 </script>
 """
+# Markup a reader must never see as text: Doxygen's escaped tags, unresolved commands, labels.
+LEFTOVERS = ["<tt>", "</tt>", "@ref ", "\\ref ", "{#docs_", "<!-- gmcc:"]
 EXTERNAL = re.compile(r"^[a-zA-Z][a-zA-Z0-9+.-]*:")
 
 
@@ -191,7 +194,13 @@ class Checker:
                 path = os.path.join(root, name)
                 with open(path, encoding="utf-8", errors="replace") as f:
                     elements = parse(f.read())
-                self.check_refs(os.path.relpath(path, self.html), path, elements, False)
+                where = os.path.relpath(path, self.html)
+                self.check_refs(where, path, elements, False)
+                if not name.endswith("_source.html"):   # a header's verbatim text may hold them
+                    body = " ".join(" ".join(elements.text).split())
+                    for leftover in LEFTOVERS:
+                        if leftover in body:
+                            self.problem(where, "shows markup as text: %r" % leftover)
                 count += 1
         return count
 
@@ -240,6 +249,9 @@ def check_page(checker, chromium, name, title_part, body_part, screenshots):
     for part in body_part:
         if part not in body:
             checker.problem(name, "the rendered page does not show %r" % part)
+    for leftover in LEFTOVERS:
+        if leftover in body:
+            checker.problem(name, "the rendered page shows markup as text: %r" % leftover)
     # The probe's page is the scratch copy, beside the real one: links resolve the same.
     checker.check_refs(name + " (in Chromium)", path, dom, True)
     if screenshots:
@@ -287,7 +299,7 @@ def self_test(chromium):
                     '</body></html>')
         with open(os.path.join(d, "index.html"), "w") as f:
             f.write('<html><head><title>gmcc self test</title></head><body>'
-                    '<p>A map of the library</p>'
+                    '<p>A map of the library</p><p>see &lt;tt&gt;x&lt;/tt&gt;</p>'
                     '<img src="good.png"><img src="missing.png"><img src="broken.png">'
                     '<img src="https://example.invalid/x.png">'
                     '<a href="other.html#here">ok</a><a href="nowhere.html">dead</a>'
@@ -297,7 +309,7 @@ def self_test(chromium):
         checker, _ = check(d, chromium, None, [("index.html", "gmcc", ["A map of the library"])])
         expected = ["broken.png> did not load in the browser", "no such file missing.png",
                     "x.png> loads from outside the manual", "no such file nowhere.html",
-                    "no anchor #gone"]
+                    "no anchor #gone", "shows markup as text: '<tt>'"]
         text = "\n".join(checker.problems)
         failed = [e for e in expected if e not in text]
         wrong = [p for p in checker.problems
