@@ -50,6 +50,7 @@ PAGES = [
 CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
                   "--no-first-run", "--disable-background-networking",
                   "--disable-component-update", "--disable-sync", "--hide-scrollbars",
+                  "--disable-dev-shm-usage", "--disable-extensions",
                   "--virtual-time-budget=10000"]
 # Added at the end of a scratch copy of a page: once everything has loaded, record in the DOM
 # what the browser made of each image.
@@ -210,6 +211,8 @@ def chromium_run(chromium, args, timeout=180):
     try:
         return subprocess.run([chromium] + CHROMIUM_FLAGS + ["--user-data-dir=" + profile] + args,
                               capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return subprocess.CompletedProcess(args, -1, "", "chromium ran over %d s" % timeout)
     finally:
         shutil.rmtree(profile, ignore_errors=True)
 
