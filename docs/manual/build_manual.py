@@ -25,7 +25,9 @@ originals alone:
     title goes;
   - the version and git commit of the checkout are written into the front page's
     `<!-- gmcc:build-info -->` line, as `gmcc cite` prints them (cmake/build_info.cmake's rule),
-    and `<!-- gmcc:all-pages -->` becomes a list of every page of docs/ (a page added later,
+    the BibTeX between `<!-- gmcc:cite-begin -->` and `<!-- gmcc:cite-end -->` becomes what
+    `gmcc cite` prints for that version and commit (--gmcc PATH checks that it does), and
+    `<!-- gmcc:all-pages -->` becomes a list of every page of docs/ (a page added later,
     e.g. docs/python.md, is in the manual without an edit here).
 In the headers (the filter) an abbreviation's full stop (`eqs. 7`, `e.g. the`) is written
 `.\\ ` so that it does not end the brief description (JAVADOC_AUTOBRIEF).
@@ -392,6 +394,8 @@ class Manual:
         flush()
         name = os.path.basename(rel) if rel_dir == "docs" else "mainpage.md"
         text = "\n".join(result).replace("<!-- gmcc:all-pages -->", self.all_pages())
+        text = re.sub(r"<!-- gmcc:cite-begin -->.*?<!-- gmcc:cite-end -->",
+                      lambda m: "```bibtex\n" + self.cite + "```", text, flags=re.S)
         with open(os.path.join(out_dir, name), "w", encoding="utf-8") as f:
             f.write(text)
 
@@ -408,6 +412,40 @@ class Manual:
             pos = m.end()
         out.append(self.rewrite_prose(line[pos:], rel_dir, page))
         return "".join(out)
+
+
+def bibtex_of_this_build(version, commit, date):
+    """What `gmcc cite` prints for a binary of this version and commit (cli/provenance.cpp,
+    bibtex_of_this_build); --gmcc checks the two agree."""
+    year = date[:4] if len(date) >= 4 and date != "unknown" else ""
+    b = ("@article{Finlayson1999Selection,\n"
+         "  author  = {Graham D. Finlayson and Steven D. Hordley},\n"
+         "  title   = {Selection for gamut mapping colour constancy},\n"
+         "  journal = {Image and Vision Computing},\n"
+         "  volume  = {17}, number = {8}, pages = {597--604}, year = {1999},\n"
+         "  doi     = {10.1016/S0262-8856(98)00179-6}\n"
+         "}\n"
+         "@software{gmcc,\n"
+         "  title   = {gmcc: gamut-mapping colour constancy with exact geometry},\n"
+         "  author  = {{The gmcc developers}},\n"
+         "  version = {" + version + "},\n"
+         "  note    = {git commit " + commit + "},\n")
+    if year:
+        b += "  year    = {" + year + "},\n  date    = {" + date + "},\n"
+    return b + "}\n"
+
+
+def check_cite(gmcc):
+    """bibtex_of_this_build against `gmcc cite`, for the binary's own version and commit."""
+    line = subprocess.run([gmcc, "--version"], capture_output=True, text=True).stdout.strip()
+    m = re.match(r"^gmcc (\S+) \(commit (\S+), (\S+)\)$", line)
+    if not m:
+        return "`gmcc --version` printed %r" % line
+    cite = subprocess.run([gmcc, "cite"], capture_output=True, text=True).stdout
+    mine = bibtex_of_this_build(m.group(1), m.group(2), m.group(3))
+    if cite != mine:
+        return "the front page's citation differs from `gmcc cite`:\n%s\n---\n%s" % (mine, cite)
+    return None
 
 
 def git_commit(source):
@@ -455,6 +493,7 @@ def main(argv):
     ap.add_argument("--version", default="unknown")
     ap.add_argument("--doxygen", default="doxygen")
     ap.add_argument("--filter", help="act as Doxygen's INPUT_FILTER for this header")
+    ap.add_argument("--gmcc", help="check the front page's citation against `GMCC cite`")
     args = ap.parse_args(argv)
     source = os.path.abspath(args.source)
     manual = Manual(source)
@@ -470,6 +509,12 @@ def main(argv):
     shutil.rmtree(os.path.join(out, "html"), ignore_errors=True)
     os.makedirs(pages_dir)
     commit, date = git_commit(source)
+    manual.cite = bibtex_of_this_build(args.version, commit, date)
+    if args.gmcc:
+        problem = check_cite(args.gmcc)
+        if problem:
+            print("build_manual.py: %s" % problem, file=sys.stderr)
+            return 1
     build_info = ("This manual documents **gmcc %s**, built from git commit `%s` (%s)."
                   % (args.version, commit, date))
     try:

@@ -42,7 +42,7 @@ import urllib.parse
 PAGES = [
     # (file, expected in <title>, expected in the body text)
     ("index.html", "gmcc", ["A map of the library", "This manual documents gmcc ",
-                            "How to cite this version"]),
+                            "How to cite this version", "@software{gmcc,"]),
     ("feasible__set_8h.html", "feasible_set.h", ["File Reference", "Function Documentation",
                                                  "feasible_set()"]),
     ("docs_reproduction.html", "Reproducing", ["Synthetic experiment", "Sharding"]),
