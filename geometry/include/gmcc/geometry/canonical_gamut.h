@@ -29,8 +29,8 @@ ExpansionPolicy expansion_policy_from_string(const std::string& name);
 
 /// The expansion to apply: policy and factor F (0.1 means 10%).
 struct Expansion {
-  ExpansionPolicy policy = ExpansionPolicy::none;
-  Rational factor = 0;
+  ExpansionPolicy policy = ExpansionPolicy::none;  ///< how to expand; `none` leaves G_c as it is
+  Rational factor = 0;  ///< F >= 0, exact: 0.1 enlarges by 10%; 0 with every policy but `none` is a no-op
 };
 
 /// G_c: the exact hull of `chromaticities`, expanded by `expansion`.

@@ -24,7 +24,7 @@ struct NonPositiveBlue {
 
 /// The chromaticities of the colours that have one, in input order, and how many were dropped.
 struct Chromaticities {
-  std::vector<Point2> points;
+  std::vector<Point2> points;  ///< q = (r/b, g/b) of each colour with b > 0, exact, in input order
   std::vector<std::size_t> source_index;  ///< for each point, the index of its colour
   std::size_t dropped = 0;                ///< colours with b <= 0 skipped under `drop`
 };

@@ -9,7 +9,9 @@
 
 namespace gmcc {
 
-/// What an exact convex set turned out to be. Degenerate kinds are results, not errors.
+/// What an exact convex set turned out to be. Degenerate kinds are results, not errors:
+/// `polygon` (2-dimensional, >= 3 vertices), `segment` (1-dimensional, 2 vertices), `point`
+/// (1 vertex), `empty` (no vertex; e.g. no map fits every image chromaticity).
 enum class ConvexKind { polygon, segment, point, empty };
 
 /// `polygon`, `segment`, `point` or `empty`.
@@ -22,10 +24,11 @@ std::string to_string(ConvexKind kind);
 /// - point: 1 vertex; empty: none.
 /// Two ConvexSet2 describe the same set iff they compare equal.
 struct ConvexSet2 {
-  ConvexKind kind = ConvexKind::empty;
-  std::vector<Point2> vertices;
+  ConvexKind kind = ConvexKind::empty;  ///< polygon, segment, point or empty; fixes vertices.size()
+  std::vector<Point2> vertices;  ///< the extreme points in the canonical order above
 };
 
+/// The same set: equal kinds and vertex lists (canonical form makes this set equality).
 inline bool operator==(const ConvexSet2& a, const ConvexSet2& b) {
   return a.kind == b.kind && a.vertices == b.vertices;
 }

@@ -13,11 +13,16 @@ namespace gmcc {
 
 /// An exact point of space: a colour or a diagonal map (d1, d2, d3).
 struct Point3 {
+  /// coordinates: (r, g, b) of a colour, or (d1, d2, d3) of a map
+  ///@{
   Rational x, y, z;
+  ///@}
 };
+/// Exact equality of all three coordinates.
 inline bool operator==(const Point3& a, const Point3& b) {
   return a.x == b.x && a.y == b.y && a.z == b.z;
 }
+/// Not operator==.
 inline bool operator!=(const Point3& a, const Point3& b) { return !(a == b); }
 /// Lexicographic order (x, y, z).
 inline bool operator<(const Point3& a, const Point3& b) {
@@ -26,7 +31,8 @@ inline bool operator<(const Point3& a, const Point3& b) {
   return a.z < b.z;
 }
 
-/// What an exact 3-D convex set turned out to be; degenerate kinds are results, not errors.
+/// What an exact 3-D convex set turned out to be; degenerate kinds are results, not errors:
+/// `polytope` (3-dimensional), `polygon` (2), `segment` (1), `point` (0), `empty`.
 enum class ConvexKind3 { polytope, polygon, segment, point, empty };
 
 /// `polytope`, `polygon`, `segment`, `point` or `empty`.
@@ -41,10 +47,11 @@ std::string to_string(ConvexKind3 kind);
 /// - segment: 2 vertices; point: 1; empty: none (no faces for these).
 /// Two ConvexSet3 describe the same set iff they compare equal.
 struct ConvexSet3 {
-  ConvexKind3 kind = ConvexKind3::empty;
-  std::vector<Point3> vertices;
-  std::vector<std::vector<std::size_t>> faces;
+  ConvexKind3 kind = ConvexKind3::empty;  ///< its dimension: polytope (3) down to empty
+  std::vector<Point3> vertices;  ///< extreme points, sorted lexicographically
+  std::vector<std::vector<std::size_t>> faces;  ///< facet cycles of indices into vertices, as above
 };
+/// The same set: equal kinds, vertices and faces (canonical form makes this set equality).
 inline bool operator==(const ConvexSet3& a, const ConvexSet3& b) {
   return a.kind == b.kind && a.vertices == b.vertices && a.faces == b.faces;
 }

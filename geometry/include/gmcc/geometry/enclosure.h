@@ -25,10 +25,14 @@ namespace gmcc {
 /// significand is available and in use; see the feasible-polygon code for that check).
 template <class T>
 struct BasicEnclosure {
+  /// midpoint, and radius >= 0: the real number lies in [mid − rad, mid + rad]
+  ///@{
   T mid = 0, rad = 0;
+  ///@}
 
   /// The unit roundoff of T (2^-53 for double, 2^-64 for x87 long double).
   static constexpr T u = std::numeric_limits<T>::epsilon() / 2;
+  /// The radius of an enclosure that decides nothing (+inf): its sign is never certain.
   static constexpr T unbounded = std::numeric_limits<T>::infinity();
   /// A computed radius, made an upper bound for what its rounded evaluation lost.
   static T round_up(T r) { return r * (1 + 16 * u) + std::numeric_limits<T>::min(); }
@@ -47,24 +51,30 @@ struct BasicEnclosure {
   /// Certain lower and upper ends: mid ∓ rad rounds by at most u·(|mid| + rad), and so does the
   /// correction's own subtraction.
   T lo() const { return (mid - rad) - round_up(2 * u * (std::fabs(mid) + rad)); }
+  /// The certain upper end (see lo()).
   T hi() const { return (mid + rad) + round_up(2 * u * (std::fabs(mid) + rad)); }
   /// A finite midpoint and a finite, non-negative radius (false for anything NaN touched).
   bool finite() const { return std::isfinite(mid) && rad >= 0 && rad < unbounded; }
+  /// Certainly > 0: the whole enclosure lies right of zero (lo() > 0).
   bool positive() const { return lo() > 0; }
+  /// Certainly < 0: the whole enclosure lies left of zero (hi() < 0).
   bool negative() const { return hi() < 0; }
   /// Neither positive nor negative for certain.
   bool uncertain_sign() const { return !positive() && !negative(); }
 
+  /// −x: exact (the midpoint's sign flips, the radius stays).
   friend BasicEnclosure operator-(const BasicEnclosure& a) { return {-a.mid, a.rad}; }
+  /// x + y: radii add, plus the midpoint sum's rounding u·|m| (Rump 1999 §2).
   friend BasicEnclosure operator+(const BasicEnclosure& a, const BasicEnclosure& b) {
     const T m = a.mid + b.mid;
     return {m, round_up(a.rad + b.rad + u * std::fabs(m))};
   }
+  /// x − y: radii add, plus the midpoint difference's rounding u·|m|.
   friend BasicEnclosure operator-(const BasicEnclosure& a, const BasicEnclosure& b) {
     const T m = a.mid - b.mid;
     return {m, round_up(a.rad + b.rad + u * std::fabs(m))};
   }
-  // |xy − ab| <= |a|·rb + |b|·ra + ra·rb for x ∈ a ± ra, y ∈ b ± rb.
+  /// x·y: |xy − ab| <= |a|·rb + |b|·ra + ra·rb for x ∈ a ± ra, y ∈ b ± rb, plus the rounding.
   friend BasicEnclosure operator*(const BasicEnclosure& a, const BasicEnclosure& b) {
     const T m = a.mid * b.mid;
     return {m, round_up(std::fabs(a.mid) * b.rad + std::fabs(b.mid) * a.rad + a.rad * b.rad + u * std::fabs(m))};

@@ -20,17 +20,26 @@ namespace gmcc {
 
 /// A vertex of F as certified enclosures of its two coordinates.
 struct EnclosedVertex {
+  /// the vertex's coordinates m1 = d1/d3 and m2 = d2/d3, each mid ± rad
+  ///@{
   Enclosure x, y;
+  ///@}
 };
 /// The same in x87 extended precision, within a relative 2^-61 of the coordinate.
 struct LongEnclosedVertex {
+  /// the vertex's coordinates m1, m2, each mid ± rad in long double
+  ///@{
   LongEnclosure x, y;
+  ///@}
 };
 
 /// An approximate line a·x + b·y <= c: each coefficient within a relative 6·2^-53 of the same
 /// positive multiple of the exact line (so the signs of a, b and c are exact).
 struct ApproximateLine {
+  /// the coefficients of a·x + b·y <= c (x = m1, y = m2), rounded as above
+  ///@{
   double a, b, c;
+  ///@}
 };
 
 /// F as a clipped cycle of input lines; default-constructed, the empty set. Its exact form and

@@ -35,6 +35,7 @@ enum class CanonicalBlack {
 /// the constraint planes), a polygon by exact 2-D clipping in its plane, a segment by an exact
 /// interval on its line, or the LP point itself.
 /// \param canonical non-empty, channels >= 0. \param image non-empty, channels >= 0.
+/// \param black whether the black colour (0, 0, 0) joins the canonical colours' hull (CanonicalBlack).
 /// \throws std::invalid_argument on empty or negative input; UnboundedFeasibleSet (from
 ///         feasible_set.h) when every image colour has some channel 0 (that d_k is free).
 /// Complexity: hulls O(n log n); one LP per detected equality set (at most 4) over

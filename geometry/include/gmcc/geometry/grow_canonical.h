@@ -25,8 +25,8 @@ struct GrownFeasibleSet {
   /// F at `factor` is non-empty and F at `empty_below` is empty, so the least factor with a
   /// non-empty F lies in (empty_below, factor]; factor − empty_below <= precision. When F is
   /// already non-empty at `start`, factor = start and empty_below is unset.
-  Rational factor;
-  std::optional<Rational> empty_below;
+  Rational factor;  ///< the least factor found: F is non-empty here (the bracket's upper end)
+  std::optional<Rational> empty_below;  ///< the bracket's lower end, where F is still empty
   ConvexSet2 canonical;  ///< the gamut at `factor` (multiplicative expansion)
   ConvexSet2 feasible;   ///< F at `factor`, intersected with the constraint when one is given
 };
@@ -42,6 +42,7 @@ struct GrownFeasibleSet {
 /// \param canonical_chromaticities the measured canonical chromaticities (non-empty).
 /// \param image image chromaticities (as feasible_set).
 /// \param constraint optional set F is intersected with (e.g. illumination_constraint).
+/// \param options where the search starts, when bisection stops and where it gives up.
 /// \throws as feasible_set; std::invalid_argument for precision <= 0 or start < 0.
 /// Complexity O(log2(max_factor/precision)) feasible sets.
 GrownFeasibleSet grow_canonical_until_feasible(const std::vector<Point2>& canonical_chromaticities,

@@ -16,6 +16,7 @@ namespace gmcc {
 /// Thrown by illumination_constraint for an illuminant with a channel <= 0 (c ⊘ e undefined).
 struct NonPositiveIlluminant : std::invalid_argument {
   std::size_t index;  ///< position of the offending illuminant in the input
+  /// The illuminant at position `i` has a channel <= 0; `what` is the message.
   NonPositiveIlluminant(std::size_t i, const char* what) : std::invalid_argument(what), index(i) {}
 };
 

@@ -11,11 +11,13 @@ namespace gmcc {
 
 /// An exact point of the plane. Used for chromaticities and for perspective maps.
 struct Point2 {
-  Rational x;
-  Rational y;
+  Rational x;  ///< first coordinate: r/b of a chromaticity, or d1/d3 of a map
+  Rational y;  ///< second coordinate: g/b of a chromaticity, or d2/d3 of a map
 };
 
+/// Exact equality of both coordinates.
 inline bool operator==(const Point2& a, const Point2& b) { return a.x == b.x && a.y == b.y; }
+/// Not operator==.
 inline bool operator!=(const Point2& a, const Point2& b) { return !(a == b); }
 /// Lexicographic order (x, then y): used to give results a canonical starting vertex.
 inline bool operator<(const Point2& a, const Point2& b) {

@@ -34,11 +34,11 @@ inline constexpr std::size_t max_number_digits = 100;
 /// \throws std::invalid_argument with a message a person can act on (NaN, infinity, `p/0`,
 ///         malformed text, more than max_number_digits digits, exponent beyond
 ///         max_decimal_exponent). Messages quote at most the first 40 characters of the text,
-///         with bytes outside printable ASCII written as \xNN.
+///         with bytes outside printable ASCII written as \\xNN.
 Rational parse_rational(std::string_view text);
 
 /// `text` as messages quote it: in single quotes, at most its first 40 characters, bytes outside
-/// printable ASCII as \xNN, and the full length when cut, so that binary garbage or a
+/// printable ASCII as \\xNN, and the full length when cut, so that binary garbage or a
 /// megabyte-long field gives a one-line message.
 std::string quoted_text(std::string_view text);
 

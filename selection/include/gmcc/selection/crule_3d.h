@@ -25,15 +25,18 @@ double worst_case_map_deg_3d(const ConvexSet3& F3, const Point3& m);
 
 /// One 3-D rule's answer and its worst case within F3.
 struct Selection3 {
-  MapEstimate3 estimate;
+  MapEstimate3 estimate;  ///< the selected map d = (d1, d2, d3), exact or certified
   std::optional<double> worst_case_deg;  ///< absent when the map or F3 is only {0}
 };
 
 /// CRULE in 3-D: F3 and its selections (absent when F3 is empty).
 struct Crule3d {
-  ConvexSet3 feasible;
-  Rational volume;
+  ConvexSet3 feasible;  ///< F3, exactly (feasible_set_3d)
+  Rational volume;      ///< F3's exact volume (0 unless F3 is a polytope)
+  /// CRULE-MV (argmax d1·d2·d3, max_volume.h) and CRULE-AVE (F3's centroid); absent when F3 is empty.
+  ///@{
   std::optional<Selection3> max_volume, centroid;
+  ///@}
 };
 
 /// feasible_set_3d(canonical, image, black), then max_volume and the exact centroid, each with

@@ -38,6 +38,8 @@ struct MapEstimate {
   /// cone, or on a set with no volume; the closed form at a forced precision too low to bound
   /// it); `note` says why and `map` is not meaningful.
   bool valid = true;
+  /// Why the map is not valid, or a caveat on a valid one (e.g. not proven correctly rounded);
+  /// empty otherwise.
   std::string note;
   unsigned quadrature_order = 0;  ///< quadrature: Gauss–Legendre points per direction
   std::uint64_t samples = 0;      ///< monte-carlo: points drawn in the unit cube

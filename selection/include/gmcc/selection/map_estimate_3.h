@@ -22,11 +22,17 @@ struct MapEstimate3 {
   /// When the map is irrational: it is from + t·(to − from) on an edge of F3, with t the root
   /// (−b + sign·√(b² − 4ac)) / (2a) of a·t² + b·t + c, all exact.
   struct EdgeRoot {
+    /// the edge's ends (vertices of F3), exact
+    ///@{
     Point3 from, to;
+    ///@}
+    /// the quadratic's coefficients, exact
+    ///@{
     Rational a, b, c;
-    int sign = 1;
+    ///@}
+    int sign = 1;      ///< +1 or −1: which root of the quadratic is t
   };
-  std::optional<EdgeRoot> edge_root;
+  std::optional<EdgeRoot> edge_root;  ///< the exact description of an irrational map; absent when `exact` is set
 };
 
 /// A MapEstimate3 for an exact rational map: rounded to nearest, with its rounding bound.

@@ -26,7 +26,7 @@ Mean3dMethod mean3d_method_from_string(const std::string& name);
 
 /// Which route, and its parameters (each used only by its route).
 struct Mean3dOptions {
-  Mean3dMethod method = Mean3dMethod::analytic;
+  Mean3dMethod method = Mean3dMethod::analytic;  ///< the route: closed form, quadrature or Monte Carlo
   unsigned precision_bits = 0;     ///< analytic: forced precision (0: automatic)
   unsigned order = 12;             ///< quadrature: Gauss–Legendre points per direction
   std::uint64_t samples = 1000000; ///< monte-carlo: points drawn in the unit cube

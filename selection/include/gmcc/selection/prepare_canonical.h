@@ -17,7 +17,7 @@ namespace gmcc {
 /// The canonical side. Immutable once made: one object may serve many select_scene calls, also
 /// from several threads.
 struct PreparedCanonical {
-  SelectSceneOptions options;
+  SelectSceneOptions options;  ///< the options it was prepared with; select_scene uses the same
   std::vector<Point2> chromaticities;  ///< the measured canonical chromaticities
   std::size_t colours = 0;             ///< canonical colours given
   std::size_t dropped = 0;             ///< of those, with b <= 0 (dropped)

@@ -14,7 +14,7 @@ namespace gmcc {
 
 /// One rule's answer and the largest map-space error it can make within F.
 struct Selection {
-  MapEstimate estimate;
+  MapEstimate estimate;  ///< the rule's map (d1/d3, d2/d3): exact, certified or sampled
   /// worst_case_map_deg(F, estimate), at the estimate's double map when it is not rational;
   /// absent when the estimate is not valid (Monte Carlo with too few samples).
   std::optional<double> worst_case_deg;
@@ -26,7 +26,10 @@ struct Selection {
 
 /// max_area, mean_2d and mean_3d of F; all absent when F is empty.
 struct Selections {
+  /// Max-area (max_area.h), the 2-D mean (mean_2d.h) and the 3-D mean (mean_3d.h), §3 of the paper.
+  ///@{
   std::optional<Selection> max_area, mean_2d, mean_3d;
+  ///@}
 };
 
 /// What to compute besides the three maps and their map-space worst cases.

@@ -23,7 +23,7 @@ namespace gmcc {
 
 /// Finlayson's illumination constraint, when SelectSceneOptions::illuminants is given.
 struct ConstraintReport {
-  std::size_t illuminants = 0;
+  std::size_t illuminants = 0;  ///< how many plausible lights were given
   ConvexSet2 maps;           ///< C: hull of the lights' perspective maps
   ConvexSet2 unconstrained;  ///< F before F ∩ C
 };
@@ -31,9 +31,9 @@ struct ConstraintReport {
 /// What the recovery policy did. `applied` is false when F was not empty or the policy could
 /// not help.
 struct RecoveryReport {
-  RecoveryPolicy policy = RecoveryPolicy::none;
+  RecoveryPolicy policy = RecoveryPolicy::none;  ///< the policy asked for (SelectSceneOptions::on_empty)
   std::string reason;  ///< why F was empty
-  bool applied = false;
+  bool applied = false;  ///< true when the policy ran and recovered a non-empty F
   std::optional<GrownFeasibleSet> grown;      ///< grow-canonical
   Rational precision;                         ///< grow-canonical: bisection precision
   std::optional<MinViolation> min_violation;  ///< min-violation
@@ -45,18 +45,24 @@ struct TruthReport {
   Point2 map;           ///< its perspective map: illuminant_map(light, c), c ⊘ light in perspective
   bool in_feasible_set = false;  ///< map ∈ F (after the constraint and any recovery), exactly
   /// Per rule (absent when the rule gave no map), in the order max_area, mean_2d, mean_3d.
+  /// truth_errors of each rule's Selection
+  ///@{
   std::optional<TruthErrors> max_area, mean_2d, mean_3d;
+  ///@}
 };
 
 /// Everything select_scene found; the canonical side is in the PreparedCanonical it was given.
 struct SceneResult {
+  /// Image colours given, and of those how many had b <= 0 and were dropped (NonPositiveBluePolicy::drop).
+  ///@{
   std::size_t image_colours = 0, image_dropped = 0;
+  ///@}
   ConvexSet2 feasible;       ///< F (∩ C), replaced by what a recovery policy recovered
   std::string empty_reason;  ///< why `feasible` is empty (set only then)
-  std::optional<ConstraintReport> constraint;
+  std::optional<ConstraintReport> constraint;  ///< present when illuminants were given
   std::optional<RecoveryReport> recovery;  ///< present when the policy is not none
-  Selections selections;
-  std::optional<TruthReport> truth;
+  Selections selections;  ///< the three rules on `feasible` (select_maps); all absent when it is empty
+  std::optional<TruthReport> truth;  ///< present when select_scene was given the true light
 };
 
 /// Largest canonical gamut (vertices) min-violation accepts: its minimisers are clipped in

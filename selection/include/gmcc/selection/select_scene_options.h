@@ -36,7 +36,7 @@ struct SelectSceneOptions {
   Colour canonical_illuminant{1, 1, 1};   ///< c: maps of lights, illuminant-space errors
   /// Plausible lights (Finlayson's illumination constraint): F becomes F ∩ conv{c ⊘ e_j}.
   std::optional<std::vector<Colour>> illuminants;
-  RecoveryPolicy on_empty = RecoveryPolicy::none;
+  RecoveryPolicy on_empty = RecoveryPolicy::none;  ///< what to do when F is empty (docs/math.md §1)
   Mean3dOptions mean3d;  ///< the 3-D mean's route
   /// Each rule's illuminant-space worst case (worst_case_illuminant.h). Exact edge quartics where
   /// double filters cannot decide: on 11-colour scenes of the shipped sample about a third of a
@@ -68,9 +68,10 @@ enum class SceneProblem {
 /// Input the pipeline cannot use. what() is the problem in words; `index`, when the problem is
 /// one colour, its position in that input (0-based).
 struct SceneInputError : std::invalid_argument {
-  SceneInput input;
-  SceneProblem problem;
-  std::optional<std::size_t> index;
+  SceneInput input;      ///< which input the problem is in
+  SceneProblem problem;  ///< what kind of problem, for a caller that maps it to its own message
+  std::optional<std::size_t> index;  ///< the offending colour's 0-based position, when it is one colour
+  /// The error `what` in `in`, of kind `p`, at colour `i` if any.
   SceneInputError(SceneInput in, SceneProblem p, std::optional<std::size_t> i, const std::string& what)
       : std::invalid_argument(what), input(in), problem(p), index(i) {}
 };

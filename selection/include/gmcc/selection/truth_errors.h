@@ -18,7 +18,10 @@ struct TruthErrors {
   /// illuminant_angular_error_deg (recovery error; Hordley & Finlayson 2006) and
   /// reproduction_angular_error_deg (Finlayson & Zakizadeh 2014): absent when a component of
   /// the selected map is <= 0 (it implies no light).
+  /// degrees, in [0, 90]
+  ///@{
   std::optional<double> illuminant_error_deg, reproduction_error_deg;
+  ///@}
 };
 
 /// The errors of one selection against the true perspective map `truth` (components > 0), for

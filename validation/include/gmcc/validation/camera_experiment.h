@@ -18,6 +18,11 @@ namespace gmcc {
 /// broad-band sensors the diagonal model is only approximate, so scenes may have an empty
 /// feasible set or one that misses the true map; the experiment counts both.
 /// \param sensors a table with columns R, G, B; reflectances and lights on the same grid.
+/// \param canonical_reflectances the surfaces whose colours under the canonical light make G_c.
+/// \param scene_reflectances the surfaces scenes are drawn from (one column each).
+/// \param lights the lights' spectral power distributions, one column per light.
+/// \param canonical_light the column of `lights` that is the canonical light.
+/// \param test_lights the columns of `lights` scenes are rendered under, in report order.
 ExperimentSetup camera_setup(const SpectralTable& sensors, const SpectralTable& canonical_reflectances,
                              const SpectralTable& scene_reflectances, const SpectralTable& lights,
                              const std::string& canonical_light,

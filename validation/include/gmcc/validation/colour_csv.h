@@ -22,8 +22,8 @@ inline constexpr std::size_t max_colours = 1000000;
 
 /// The colours of a file, with the line each came from.
 struct ColourTable {
-  std::string file;
-  std::vector<Colour> colours;
+  std::string file;  ///< the file's name as given, for messages
+  std::vector<Colour> colours;  ///< the colours in file order, exact
   std::vector<std::size_t> lines;  ///< 1-based source line of each colour
 };
 
@@ -31,6 +31,7 @@ struct ColourTable {
 /// `r,g,b`; blank lines and lines whose first non-blank character is `#` are ignored; CRLF
 /// line ends, a UTF-8 byte-order mark and spaces or tabs around numbers are accepted. Numbers
 /// are decimals or `p/q`, read exactly (parse_rational). Channels must be finite and >= 0.
+/// \param text  the file's content (UTF-8 or ASCII).
 /// \param file  the name used in messages.
 /// \throws InputError naming the file and line: malformed or non-finite numbers (including
 ///         numbers longer than max_number_digits), negative channels, a wrong number of

@@ -13,7 +13,7 @@ namespace gmcc {
 /// Statistics of n values. With n = 0 every statistic is 0 (the count says there was nothing);
 /// with n = 1 the standard error is NaN (a spread needs two values).
 struct ErrorStatistics {
-  std::uint64_t n = 0;
+  std::uint64_t n = 0;        ///< how many values (scenes) the statistics are over
   double mean = 0;            ///< Σx / n, summed in the order given
   double standard_error = 0;  ///< s / √n, s² = Σ(x − mean)² / (n − 1) (two passes, same order)
   double median = 0;          ///< sorted_quantile(0.5)
@@ -21,7 +21,7 @@ struct ErrorStatistics {
   double best25 = 0;          ///< mean of the ⌈n/4⌉ smallest values
   double worst25 = 0;         ///< mean of the ⌈n/4⌉ largest values
   double p95 = 0;             ///< sorted_quantile(0.95)
-  double max = 0;
+  double max = 0;            ///< the largest value
 };
 
 /// The p-quantile of values sorted ascending (n ≥ 1, 0 ≤ p ≤ 1): linear interpolation between

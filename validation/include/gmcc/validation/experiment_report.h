@@ -22,6 +22,7 @@ namespace gmcc {
 /// With baselines (ExperimentResult::baselines), each cell's rules are followed by a row per
 /// baseline over the same scenes, then one per baseline named `<baseline>_all` over every scene
 /// (`scenes` = all of them); their worst-case and truth_in_feasible_set fields are empty.
+/// \param result the experiment's result (run_gamut_experiment, or merged shards).
 /// \param provenance a JSON object (docs/cli.md "Provenance") written first as the comment line
 ///        `# gmcc-provenance: …`; none when empty.
 std::string experiment_csv(const ExperimentResult& result, const std::string& provenance = {});
@@ -41,11 +42,14 @@ std::string experiment_setup_json(const ExperimentResult& result);
 /// Per-scene records (ExperimentResult::scenes) as JSON Lines: the setup object, then one object
 /// per scene in canonical order (docs/reproduction.md "Per-scene records"). Numbers are the
 /// shortest decimal that reads back as the same double, so a merge reproduces every statistic.
+/// \param result the experiment's result; its `scenes` (kept with ExperimentConfig::keep_scenes)
+///        are written one per line.
 /// \param provenance a JSON object written first as the line `{"provenance": …}`; none when empty.
 std::string experiment_scenes_jsonl(const ExperimentResult& result, const std::string& provenance = {});
 
 /// The aggregates as one JSON document: `setup`, then `cells`, each with every rule's
 /// statistics of the four quantities (numbers as in experiment_scenes_jsonl, NaN as null).
+/// \param result the experiment's result.
 /// \param provenance a JSON object, the document's first member `provenance`; none when empty.
 std::string experiment_json(const ExperimentResult& result, const std::string& provenance = {});
 
@@ -57,6 +61,9 @@ std::string experiment_table(const ExperimentResult& result);
 /// gnuplot data (one block per light) and a script that reads it from `stem`.dat and writes
 /// the PNG and SVG named by the variables png_file and svg_file.
 std::string experiment_plot_data(const ExperimentResult& result);
+/// The gnuplot script of experiment_plot_data: a row of panels per light laid out like the paper's
+/// figure (mean error and mean worst case against the number of surfaces, one line per rule).
+/// \param result the experiment's result. \param stem the data file's name without `.dat`.
 std::string experiment_plot_script(const ExperimentResult& result, const std::string& stem);
 
 }  // namespace gmcc

@@ -13,8 +13,8 @@ namespace gmcc {
 
 /// One input file as read: the path as given, its size in bytes and its SHA-256.
 struct FileDigest {
-  std::string path;
-  std::uint64_t bytes = 0;
+  std::string path;         ///< the path as the caller gave it (not made absolute)
+  std::uint64_t bytes = 0;  ///< the size of what was read, in bytes
   std::string sha256;  ///< 64 lower-case hexadecimal digits
 };
 

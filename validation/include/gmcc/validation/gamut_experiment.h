@@ -23,9 +23,9 @@ namespace gmcc {
 /// A test light: every surface's colour under it, and the true perspective map that takes its
 /// colours to the canonical ones (exact where the diagonal model holds exactly).
 struct TestLight {
-  std::string name;
+  std::string name;  ///< as in the reports (e.g. `D75`, or an image's name)
   std::vector<Colour> surfaces;  ///< surfaces[i]: surface i under this light
-  Point2 true_map;
+  Point2 true_map;  ///< (d1/d3, d2/d3) of true_diagonal_map, exact: what errors are measured against
   Point3 true_diagonal_map;      ///< d with d ⊙ p = p_canonical (its perspective is true_map)
   /// With ExperimentSetup::canonical_chromaticity_sets: the set whose hull is this light's
   /// canonical gamut (each test image its own, as in a leave-one-out protocol).
@@ -40,11 +40,11 @@ struct TestLight {
 
 /// What an experiment is made of (built by synthetic_setup or camera_setup).
 struct ExperimentSetup {
-  std::string name;
+  std::string name;  ///< the experiment's name in reports (`synthetic`, `camera`, …)
   std::string figure;                      ///< the paper's figure it reproduces, for the reports
   std::vector<Colour> canonical_surfaces;  ///< the canonical gamut's colours
   Colour canonical_light;                  ///< the canonical light as the sensors see it
-  std::vector<TestLight> lights;
+  std::vector<TestLight> lights;  ///< the test lights, in report order
   /// When not empty: canonical gamut k is the hull of canonical_chromaticity_sets[k] (exact
   /// perspective chromaticities), and light ℓ's scenes use set lights[ℓ].canonical; the
   /// canonical surfaces are then not used for the 2-D gamut (and CRULE is not available).
@@ -64,9 +64,12 @@ struct ExperimentSetup {
 
 /// How to run it.
 struct ExperimentConfig {
+  /// The surface counts n run, min_surfaces..max_surfaces inclusive (the paper: 1 to 11).
+  ///@{
   int min_surfaces = 1, max_surfaces = 11;
+  ///@}
   std::uint64_t scenes = 500;  ///< per light and surface count
-  std::uint64_t seed = 1;
+  std::uint64_t seed = 1;  ///< the run's seed: scene (light, n, s) draws from a generator seeded by (seed, light, n, s)
   Expansion expansion;         ///< of the canonical gamut (default none)
   double noise = 0;            ///< relative Gaussian sensor noise σ on image colours (0: none)
   Mean3dOptions mean3d;        ///< the 3-D mean's route (default: certified closed form)
@@ -90,7 +93,9 @@ struct ExperimentConfig {
   /// canonical order (light, then surface count, then scene index) numbered g = 0, 1, …, T − 1,
   /// part K holds ⌊(K−1)·T/N⌋ ≤ g < ⌊K·T/N⌋ (docs/reproduction.md "Sharding"). A scene's
   /// result never depends on the sharding. The cells then summarise only the part's scenes.
+  ///@{
   std::uint64_t shard_index = 1, shard_count = 1;
+  ///@}
   /// Keep every scene's record in ExperimentResult::scenes (for --scenes-out and merging).
   bool keep_scenes = false;
   /// Called now and then from the calling thread with (scenes done, scenes in all).
@@ -99,6 +104,7 @@ struct ExperimentConfig {
 
 /// The 2-D rules in report order, then (with ExperimentConfig::crule) the 3-D ones.
 inline const std::array<const char*, 3> experiment_rules{"max_area", "mean_2d", "mean_3d"};
+/// CRULE's 3-D rules (crule_3d.h), after experiment_rules when ExperimentConfig::crule is set.
 inline const std::array<const char*, 2> experiment_rules_3d{"crule_max_volume", "crule_centroid"};
 /// The reference baselines (ExperimentSetup::baselines), in report order.
 inline const std::array<const char*, 2> experiment_baselines{"grey_world", "max_rgb"};
@@ -117,9 +123,15 @@ struct RuleStats {
 struct RuleRecord {
   bool scored = false;                ///< the rule gave a map; the members below are then set
   std::array<double, 2> map{};        ///< the perspective map (CRULE: (d1/d3, d2/d3)), as doubles
+  /// Map-space angular error against the true map, and the worst case over F, degrees.
+  ///@{
   double error_deg = 0, worst_case_deg = 0;
+  ///@}
   bool positive_map = false;          ///< both components > 0: the next two are then set
+  /// Illuminant-space (recovery) and reproduction angular errors, degrees.
+  ///@{
   double illuminant_error_deg = 0, reproduction_error_deg = 0;
+  ///@}
   bool truth_in_feasible_set = false; ///< CRULE: the true diagonal map in the 3-D feasible set
 };
 
@@ -139,22 +151,26 @@ struct SceneRecord {
 
 /// One (light, surface count) cell.
 struct ExperimentCell {
-  std::string light;
-  int surfaces = 0;
+  std::string light;  ///< the light's name (or its group's, TestLight::group)
+  int surfaces = 0;   ///< n, the number of distinct surfaces per scene
   std::uint64_t scenes = 0;        ///< drawn
   std::uint64_t empty = 0;         ///< of those, with an empty feasible set (no map)
   std::vector<RuleStats> rules;  ///< in ExperimentResult::rules order, over the non-empty scenes
   /// With baselines: in ExperimentResult::baselines order, over the same non-empty scenes as
   /// the rules (comparable with them) and over every scene of the cell.
+  ///@{
   std::vector<RuleStats> baselines, baselines_all;
+  ///@}
 };
 
+/// What run_gamut_experiment returns (and a merge of shards rebuilds): the setup's description,
+/// the configuration, and the aggregates per cell, with every scene's record when kept.
 struct ExperimentResult {
-  std::string name;
+  std::string name;  ///< ExperimentSetup::name
   std::string figure;                 ///< ExperimentSetup::figure
   std::vector<std::string> lights;    ///< the test lights' names, in setup order
-  ExperimentConfig config;
-  ConvexSet2 canonical_gamut;
+  ExperimentConfig config;  ///< the configuration it ran with (seed, counts, shard, …)
+  ConvexSet2 canonical_gamut;  ///< G_c, exactly (after any expansion)
   std::vector<std::string> rules;     ///< experiment_rules, then experiment_rules_3d with crule
   std::vector<std::string> baselines; ///< experiment_baselines when the setup asks for them
   std::string surface_indices = "0-based";  ///< ExperimentSetup::surface_indices
@@ -169,7 +185,9 @@ struct ExperimentResult {
 
 /// The cell of `light` and `n` summarised from its scenes' records (any order of scenes is
 /// taken in ascending (light index, scene index)): the one aggregation used by
-/// run_gamut_experiment and by a merge of shards. \param rules the number of rules each
+/// run_gamut_experiment and by a merge of shards. \param light the cell's light (or group) name;
+/// \param n its surface count; \param scenes the records of its scenes (not owned);
+/// \param rules the number of rules each
 /// non-empty record carries; \param baselines the number of baselines every record carries.
 ExperimentCell summarise_cell(const std::string& light, int n, std::vector<const SceneRecord*> scenes,
                               std::size_t rules, std::size_t baselines = 0);

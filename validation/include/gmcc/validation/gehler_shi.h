@@ -36,7 +36,7 @@ struct ChartImage {
 
 /// The whole set, in the order of the ground-truth file.
 struct ChartDataset {
-  std::vector<ChartImage> images;
+  std::vector<ChartImage> images;  ///< one per image, in the ground-truth file's order
   std::size_t missing_patches = 0;  ///< patches with no colour, over every image
 };
 

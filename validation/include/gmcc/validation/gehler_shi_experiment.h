@@ -16,6 +16,8 @@
 
 namespace gmcc {
 
+/// How the Gehler–Shi test is run: which canonical gamut each image is tested against
+/// (`gmcc reproduce gehler-shi --protocol`; docs/reproduction.md "Real camera data (Gehler-Shi)").
 enum class GehlerShiProtocol {
   /// Image i's canonical gamut: the hull of every other same-camera image's usable patches, each
   /// divided componentwise by its own ground truth (canonical light white (1, 1, 1)).
@@ -27,14 +29,18 @@ enum class GehlerShiProtocol {
 
 /// `leave-one-out`, `paper`; and back (\throws std::invalid_argument naming the valid ones).
 std::string to_string(GehlerShiProtocol protocol);
+/// Inverse of to_string(GehlerShiProtocol). \throws std::invalid_argument naming the valid ones.
 GehlerShiProtocol gehler_shi_protocol_from_string(const std::string& name);
 
+/// The options of the Gehler–Shi experiment (`gmcc reproduce gehler-shi`).
 struct GehlerShiOptions {
-  GehlerShiProtocol protocol = GehlerShiProtocol::leave_one_out;
+  GehlerShiProtocol protocol = GehlerShiProtocol::leave_one_out;  ///< leave-one-out or the paper's
   std::vector<std::string> cameras{"Canon1D", "Canon5D"};  ///< in report order
   /// A patch is usable when every channel c has dark < c < clip (near-black and clipped
   /// patches dropped, and counted).
+  ///@{
   Rational dark{1, 500}, clip{19, 20};
+  ///@}
   /// Patch numbers (1–24) left out of every image, canonical gamuts and scenes alike (e.g. the
   /// achromatic row 19–24, on which the ground truth was measured).
   std::vector<std::uint32_t> exclude_patches;
@@ -42,7 +48,7 @@ struct GehlerShiOptions {
 
 /// What the setup is made of, per camera, for the report.
 struct GehlerShiCamera {
-  std::string camera;
+  std::string camera;  ///< its name in the data (`Canon1D`, `Canon5D`)
   std::size_t images = 0;            ///< of this camera in the data
   std::size_t usable_patches = 0;    ///< over its images
   std::size_t dropped_patches = 0;   ///< measured but near-black or clipped
@@ -53,12 +59,16 @@ struct GehlerShiCamera {
   /// gamut was computed without them (every other image uses the all-images hull).
   std::size_t recomputed_hulls = 0;
   std::vector<std::string> canonical_images;  ///< paper: the canonical chart's images
-  std::size_t yellowish = 0, bluish = 0, untested = 0;  ///< paper: test images per group, and the rest
+  /// paper: test images per group, and the rest
+  ///@{
+  std::size_t yellowish = 0, bluish = 0, untested = 0;
+  ///@}
 };
 
+/// The experiment made from the data (gehler_shi_setup), and what it used per camera.
 struct GehlerShiSetup {
   ExperimentSetup setup;  ///< lights = test images (group: camera, or camera and light group)
-  std::vector<GehlerShiCamera> cameras;
+  std::vector<GehlerShiCamera> cameras;  ///< in GehlerShiOptions::cameras order
 };
 
 /// The setup of `protocol` for `cameras`. Each test image is a TestLight with its usable patches

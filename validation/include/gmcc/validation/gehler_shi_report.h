@@ -12,6 +12,8 @@
 
 namespace gmcc {
 
+/// The table described above, for the result of run_gamut_experiment on `setup`.
+/// \param result the experiment's result. \param setup what gehler_shi_setup made (its per-camera counts).
 std::string gehler_shi_table(const ExperimentResult& result, const GehlerShiSetup& setup);
 
 }  // namespace gmcc

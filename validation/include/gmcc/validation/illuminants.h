@@ -15,7 +15,7 @@ Rational cie_daylight_cct(const Rational& nominal_kelvin);
 /// CIE daylight at correlated colour temperature T (4000 K ≤ T ≤ 25000 K) on the basis table's
 /// wavelengths: S = S0 + M1·S1 + M2·S2 with the CIE chromaticity polynomial x_D(T), y_D(x_D) and
 /// M1, M2 rounded to three decimals as CIE 15 prescribes (CIE 15:2004 eqs. 3.3–3.6). Every step
-/// is rational, so the result is exact. \param basis the S0, S1, S2 table.
+/// is rational, so the result is exact. \param cct_kelvin T, exact, in kelvin. \param basis the S0, S1, S2 table.
 /// \throws std::domain_error outside 4000–25000 K.
 Spectrum cie_daylight(const Rational& cct_kelvin, const SpectralTable& basis);
 

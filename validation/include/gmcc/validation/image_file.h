@@ -18,15 +18,20 @@ namespace gmcc {
 /// Largest image file accepted, in bytes, and most pixels (a clear error before
 /// memory runs out: 2^28 pixels of 3 16-bit samples take 1.5 GiB).
 inline constexpr std::size_t max_image_file_bytes = std::size_t(1) << 30;
+/// Most pixels (width × height) an image may have: 2^28.
 inline constexpr std::size_t max_image_pixels = std::size_t(1) << 28;
 
 /// An RGB image: samples row by row from the top, r, g, b per pixel, as stored
 /// in the file.
 struct RgbImage {
+  /// Size in pixels.
+  ///@{
   std::size_t width = 0, height = 0;
+  ///@}
   int bits = 16;                       ///< 8 or 16: the file's sample depth (values < 2^bits)
   std::vector<std::uint16_t> samples;  ///< width · height · 3
 
+  /// The sample of channel 0 (r), 1 (g) or 2 (b) at column x, row y (0 = top). No bounds check. O(1).
   std::uint16_t at(std::size_t x, std::size_t y, int channel) const {
     return samples[(y * width + x) * 3 + static_cast<std::size_t>(channel)];
   }
@@ -35,7 +40,7 @@ struct RgbImage {
 /// Decode a PNG or TIFF held in `bytes` (recognised by its signature, not its
 /// name). Accepted: PNG colour type RGB or RGBA, TIFF photometric RGB with 3 or
 /// 4 samples per pixel (unsigned integers, interleaved, strips or tiles), 8 or
-/// 16 bits; an alpha channel is ignored. \param file  the name used in
+/// 16 bits; an alpha channel is ignored. \param bytes the whole file's content. \param file  the name used in
 /// messages. \throws InputError naming the file: not a PNG or TIFF, truncated
 /// or corrupt, grey or palette,
 ///         another channel count or bit depth, floating-point samples, more

@@ -33,6 +33,7 @@ enum class ColourSet {
              ///< chromaticities (x, y) = (r/b, g/b), counter-clockwise (b = 0 has none)
 };
 
+/// Which pixels become colours, and how (docs/conventions.md §8; `gmcc estimate`'s options).
 struct PixelRules {
   std::uint32_t black_level = 0;            ///< subtracted from every channel
   std::optional<std::uint32_t> saturation;  ///< drop pixels with a raw channel >= this
@@ -59,9 +60,10 @@ struct PixelCounts {
   std::uint64_t no_chromaticity = 0;  ///< ColourSet::hull: distinct colours with b = 0
 };
 
+/// What image_colours returns: the colours for the geometry and how each pixel was accounted for.
 struct ImageColours {
   std::vector<Colour> colours;  ///< distinct, in order of first appearance (row-major)
-  PixelCounts counts;
+  PixelCounts counts;  ///< what happened to the pixels
 };
 
 /// Apply the rules to `image`.

@@ -14,10 +14,17 @@
 
 namespace gmcc {
 
+/// What render_mondrian draws.
 struct MondrianSpec {
+  /// Image size in pixels.
+  ///@{
   std::size_t width = 320, height = 240;
+  ///@}
+  /// The grid of rectangles (cell sides differ by ≤ 1 pixel).
+  ///@{
   std::size_t columns = 8,
-              rows = 6;           ///< the grid of rectangles (cell sides differ by ≤ 1 pixel)
+              rows = 6;
+  ///@}
   std::uint64_t seed = 1;         ///< which surface each cell shows, and the saturated pixels
   std::uint32_t black_level = 0;  ///< added to every sample
   /// The brightest channel of the brightest surface shown is `peak` above the
@@ -31,6 +38,7 @@ struct MondrianSpec {
   std::uint32_t noise = 0;
 };
 
+/// A drawn Mondrian: the image, and the surface behind each cell (the truth to test against).
 struct Mondrian {
   RgbImage image;                     ///< 16-bit
   std::vector<std::size_t> surfaces;  ///< the surface shown in each cell, row-major

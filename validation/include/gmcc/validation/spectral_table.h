@@ -17,9 +17,9 @@ inline constexpr std::size_t max_spectral_file_bytes = std::size_t(256) << 20;
 
 /// One sampled spectrum: values at strictly increasing wavelengths (nm), exact.
 struct Spectrum {
-  std::string name;
-  std::vector<Rational> wavelengths;
-  std::vector<Rational> values;
+  std::string name;  ///< its column's header
+  std::vector<Rational> wavelengths;  ///< in nm, strictly increasing
+  std::vector<Rational> values;  ///< values[i] at wavelengths[i] (reflectance, relative power or sensitivity)
 
   /// The value at a sampled wavelength. \throws std::out_of_range if λ is not sampled.
   const Rational& at(const Rational& wavelength) const;
@@ -27,8 +27,8 @@ struct Spectrum {
 
 /// A spectral CSV: header `wavelength_nm,NAME,…`, one row per wavelength (strictly increasing).
 struct SpectralTable {
-  std::string file;
-  std::vector<Rational> wavelengths;
+  std::string file;  ///< the file's name as given
+  std::vector<Rational> wavelengths;  ///< the first column, nm, strictly increasing; shared by every spectrum
   std::vector<Spectrum> spectra;  ///< in column order
 
   /// The spectrum named `name`. \throws InputError naming the file if there is none.
@@ -36,7 +36,7 @@ struct SpectralTable {
 };
 
 /// Parse spectral CSV text exactly (decimals as rationals). `file` names it in messages.
-/// \throws InputError (file:line) on a bad header, ragged rows, malformed numbers, or
+/// \throws InputError (%file:line) on a bad header, ragged rows, malformed numbers, or
 ///         wavelengths that do not strictly increase.
 SpectralTable parse_spectral_csv(const std::string& text, const std::string& file);
 

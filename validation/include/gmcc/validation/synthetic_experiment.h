@@ -19,7 +19,9 @@ inline const std::array<Rational, 3> narrow_band_wavelengths{Rational(610), Rati
 /// The Planckian temperatures `named_light` accepts, in kelvin: lights from a candle flame
 /// (~1850 K) to the bluest sky (~27000 K) with room; outside, the exact spectrum is either no
 /// light at all in the visible range or needs unbounded memory (issue 13).
+///@{
 inline constexpr long kPlanckMinKelvin = 1000, kPlanckMaxKelvin = 100000;
+///@}
 
 /// A light named as in the paper's figure: `D<k>` is CIE daylight of nominal temperature k×100 K
 /// at its CIE-rule correlated colour temperature (D55 → 5503 K, D75 → 7504 K, D100 → 10006 K);
@@ -35,6 +37,9 @@ Spectrum named_light(const std::string& name, const SpectralTable& daylight_basi
 /// d_k = E_canonical(λ_k) / E_test(λ_k) → (d1/d3, d2/d3). The diagonal model holds exactly, so
 /// the true map lies in every scene's feasible set.
 /// \param munsell reflectances sampled at 610, 540 and 450 nm (munsell_matt_1269_joensuu_5nm).
+/// \param daylight_basis the CIE S0, S1, S2 table, for named_light.
+/// \param canonical_light the canonical light's name (named_light; the paper: D55).
+/// \param test_lights the test lights' names, in report order (the paper: D75, D100, P2856, P15000).
 ExperimentSetup synthetic_setup(const SpectralTable& munsell, const SpectralTable& daylight_basis,
                                 const std::string& canonical_light,
                                 const std::vector<std::string>& test_lights);
