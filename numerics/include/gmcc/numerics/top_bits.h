@@ -15,8 +15,8 @@ namespace gmcc::numerics {
 /// Exact (shift = 0) when |z| < 2^64; otherwise mantissa >= 2^63, so the relative error of
 /// mantissa·2^shift is below 2^-63.
 struct TopBits {
-  std::uint64_t mantissa = 0;
-  long shift = 0;
+  std::uint64_t mantissa = 0;  ///< the leading 64 bits of |z| (all of |z| below 2^64)
+  long shift = 0;              ///< the power of two they stand for: max(0, bits(|z|) − 64)
 };
 
 /// The leading 64 bits of |z| (TopBits). O(1): at most three limbs are read.

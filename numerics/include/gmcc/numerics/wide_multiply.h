@@ -12,7 +12,8 @@ namespace gmcc::numerics {
 
 /// a·b = high·2^64 + low, exactly.
 struct WideProduct {
-  std::uint64_t high, low;
+  std::uint64_t high;  ///< the upper 64 bits
+  std::uint64_t low;   ///< the lower 64 bits
 };
 
 /// a·b as WideProduct by schoolbook multiplication on 32-bit halves (a = a1·2^32 + a0, likewise

@@ -29,9 +29,10 @@ struct AccuracyMeasurement {
   std::string route;      ///< reference, double, analytic, quadrature, monte-carlo
   std::string parameter;  ///< bits, order or samples; empty for the double closed form
   bool valid = true;      ///< false: Monte Carlo with too few samples in the cone
-  /// max_k |m_k − m*_k| against the rounded reference m*, the exact difference of doubles
-  /// rounded once, and the same relative to max_k |m*_k|.
-  double error_abs = 0, error_rel = 0;
+  /// max_k |m_k − m*_k| against the rounded reference m*: the exact difference of doubles,
+  /// rounded once.
+  double error_abs = 0;
+  double error_rel = 0;  ///< error_abs / max_k |m*_k|
   std::optional<double> bound;  ///< the route's own error statement, where it has one
   std::string extra;            ///< key=value;… (the CSV's `extra` column)
   unsigned precision_bits = 0;  ///< analytic: working precision
@@ -44,7 +45,7 @@ struct AccuracyWidth {
   std::string width;  ///< as in accuracy_widths(): the exact value, read by parse_rational
   std::size_t vertices = 0;  ///< of P(w)
   MapEstimate reference;     ///< mean_3d_analytic at 4096 bits
-  std::vector<AccuracyMeasurement> rows;
+  std::vector<AccuracyMeasurement> rows;  ///< the reference, then every route (CSV order)
 };
 
 /// The widths w of the study, as text ("10", "1", "1e-1", … "1e-12"), widest first.
