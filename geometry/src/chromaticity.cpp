@@ -12,7 +12,7 @@ Chromaticities perspective_chromaticities(const std::vector<Colour>& colours,
   out.points.reserve(colours.size());
   for (std::size_t i = 0; i < colours.size(); ++i) {
     if (sgn(colours[i].b) <= 0) {
-      if (policy == NonPositiveBluePolicy::reject) throw NonPositiveBlue{i};
+      if (policy == NonPositiveBluePolicy::reject) throw NonPositiveBlue(i);
       ++out.dropped;
       continue;
     }

@@ -25,7 +25,7 @@ using internal::integer_line;
 using internal::long_lines_available;
 using internal::Vertex;
 
-struct FeasiblePolygon::State {
+struct internal::FeasiblePolygonState {
   std::vector<Point2> owned;        // the image hull's vertices, when the caller's may not outlive F
   std::optional<Clipper> clipper;   // absent when F is empty before clipping ends
   std::vector<Vertex> cycle;        // reduced; strictly convex when enclosed
@@ -37,8 +37,8 @@ struct FeasiblePolygon::State {
   std::optional<ConvexSet2> exact;
 };
 
-// Builds FeasiblePolygon (a friend of it and of CanonicalConstraints).
-struct FeasiblePolygonBuilder {
+// Builds FeasiblePolygon: the one friend of it and of CanonicalConstraints.
+struct internal::FeasiblePolygonAccess {
   static FeasiblePolygon build(const CanonicalConstraints& canonical, const std::vector<const Point2*>& image,
                               bool copy_image, bool linear = true);
 };
@@ -48,7 +48,7 @@ FeasiblePolygon internal::feasible_polygon(const CanonicalConstraints& canonical
   std::vector<const Point2*> pointers;
   pointers.reserve(image.size());
   for (const Point2& q : image) pointers.push_back(&q);
-  return FeasiblePolygonBuilder::build(canonical, pointers, true, route == Clipping::convex_pass);
+  return internal::FeasiblePolygonAccess::build(canonical, pointers, true, route == Clipping::convex_pass);
 }
 
 FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const std::vector<Point2>& image) {
@@ -56,7 +56,7 @@ FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const st
 }
 
 FeasiblePolygon feasible_polygon(const CanonicalConstraints& canonical, const std::vector<const Point2*>& image) {
-  return FeasiblePolygonBuilder::build(canonical, image, false);
+  return internal::FeasiblePolygonAccess::build(canonical, image, false);
 }
 
 namespace {
@@ -99,7 +99,7 @@ ImageHull checked_image_hull(const std::vector<const Point2*>& image, std::vecto
 // its vertices are the meets of consecutive scaled edges (a positive diagonal scaling keeps the
 // order counter-clockwise), which saves q's clips and any box; `first` is then q's index, else
 // the number of image vertices.
-std::vector<Vertex> starting_cycle(Clipper& c, const CanonicalConstraints::Impl& g, const ImageHull& h,
+std::vector<Vertex> starting_cycle(Clipper& c, const internal::CanonicalLines& g, const ImageHull& h,
                                    std::size_t& first) {
   const std::size_t k_count = h.vertices.size(), m = g.lines.size();
   first = k_count;
@@ -131,7 +131,7 @@ std::vector<Vertex> starting_cycle(Clipper& c, const CanonicalConstraints::Impl&
 // by the map constraint's; false when F is empty. While the cycle is strictly convex, each family
 // of lines is clipped by clip_convex (when `linear`); clip() takes the lines left once it
 // degenerates, or all of them on the route kept for comparison (internal/feasible_polygon_route.h).
-bool clip_every_family(Clipper& c, const CanonicalConstraints::Impl& g, std::size_t k_count, std::size_t first,
+bool clip_every_family(Clipper& c, const internal::CanonicalLines& g, std::size_t k_count, std::size_t first,
                        bool linear, std::vector<Vertex>& cycle) {
   std::vector<Vertex> next;
   std::vector<int> sides;
@@ -165,20 +165,20 @@ bool clip_every_family(Clipper& c, const CanonicalConstraints::Impl& g, std::siz
 
 }  // namespace
 
-FeasiblePolygon FeasiblePolygonBuilder::build(const CanonicalConstraints& canonical,
+FeasiblePolygon internal::FeasiblePolygonAccess::build(const CanonicalConstraints& canonical,
                                              const std::vector<const Point2*>& image, bool copy_image,
                                              bool linear) {
-  const CanonicalConstraints::Impl& g = *canonical.impl_;
+  const internal::CanonicalLines& g = *canonical.lines_;
   FeasiblePolygon result;
-  result.state_ = std::make_shared<FeasiblePolygon::State>();
-  FeasiblePolygon::State& st = *result.state_;
+  result.state_ = std::make_shared<internal::FeasiblePolygonState>();
+  internal::FeasiblePolygonState& st = *result.state_;
   const ImageHull hull = checked_image_hull(image, copy_image ? &st.owned : nullptr);
   if (g.extra_empty) {  // F ∩ ∅
     st.exact = ConvexSet2{};
     return result;
   }
   const std::size_t k_count = hull.vertices.size();
-  Clipper& c = st.clipper.emplace(canonical.impl_, hull.vertices, g.lines.size() * (k_count + 1) + 4 + g.extra_lines.size());
+  Clipper& c = st.clipper.emplace(canonical.lines_, hull.vertices, g.lines.size() * (k_count + 1) + 4 + g.extra_lines.size());
   std::size_t first = 0;
   std::vector<Vertex> cycle = starting_cycle(c, g, hull, first);
   if (!clip_every_family(c, g, k_count, first, linear, cycle)) {
@@ -207,9 +207,9 @@ FeasiblePolygon FeasiblePolygonBuilder::build(const CanonicalConstraints& canoni
 }
 
 // A default-constructed FeasiblePolygon is the empty set.
-FeasiblePolygon::State& FeasiblePolygon::state() const {
-  static State empty = [] {  // shared by every default object: nothing in it is ever built later
-    State e;
+internal::FeasiblePolygonState& FeasiblePolygon::state() const {
+  static internal::FeasiblePolygonState empty = [] {  // shared by every default object: nothing in it is ever built later
+    internal::FeasiblePolygonState e;
     e.exact = ConvexSet2{};
     e.long_vertices.emplace();
     return e;
@@ -222,7 +222,7 @@ bool FeasiblePolygon::enclosed() const { return !state().vertices.empty(); }
 const std::vector<EnclosedVertex>& FeasiblePolygon::vertices() const { return state().vertices; }
 const std::vector<ApproximateLine>& FeasiblePolygon::edges() const { return state().edges; }
 const std::vector<LongEnclosedVertex>& FeasiblePolygon::extended_vertices() const {
-  State& st = state();
+  internal::FeasiblePolygonState& st = state();
   if (!st.long_vertices) {
     st.long_vertices.emplace();
     if (long_lines_available() && !st.vertices.empty())
@@ -232,7 +232,7 @@ const std::vector<LongEnclosedVertex>& FeasiblePolygon::extended_vertices() cons
 }
 
 const ConvexSet2& FeasiblePolygon::exact() const {
-  State& st = state();
+  internal::FeasiblePolygonState& st = state();
   if (st.exact) return *st.exact;
   Clipper& c = *st.clipper;
   std::vector<Point2> points;
@@ -248,7 +248,7 @@ const ConvexSet2& FeasiblePolygon::exact() const {
 }
 
 bool FeasiblePolygon::contains(const Point2& m) const {
-  State& st = state();
+  internal::FeasiblePolygonState& st = state();
   if (st.kind == ConvexKind::empty) return false;
   if (!st.strictly_convex) return gmcc::contains(exact(), m);
   // F is the intersection of the half-planes carrying its edges.

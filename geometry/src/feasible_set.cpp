@@ -20,8 +20,8 @@ using internal::top_bits;
 CanonicalConstraints::CanonicalConstraints(const ConvexSet2& canonical) {
   if (canonical.kind == ConvexKind::empty)
     throw std::invalid_argument("feasible_set: the canonical gamut is empty");
-  auto impl = std::make_shared<Impl>();
-  Impl& g = *impl;
+  auto impl = std::make_shared<internal::CanonicalLines>();
+  internal::CanonicalLines& g = *impl;
   for (const internal::HalfPlane& h : internal::half_planes(canonical)) {
     g.lines.push_back(integer_line(h));
     ApproximateLine a{};
@@ -35,12 +35,12 @@ CanonicalConstraints::CanonicalConstraints(const ConvexSet2& canonical) {
   g.polygon = canonical.kind == ConvexKind::polygon;
   g.x_max = canonical.vertices.front().x, g.y_max = canonical.vertices.front().y;
   for (const Point2& p : canonical.vertices) g.x_max = std::max(g.x_max, p.x), g.y_max = std::max(g.y_max, p.y);
-  impl_ = std::move(impl);
+  lines_ = std::move(impl);
 }
 
 CanonicalConstraints::CanonicalConstraints(const ConvexSet2& canonical, const ConvexSet2& map_constraint)
     : CanonicalConstraints(canonical) {
-  auto impl = std::make_shared<Impl>(*impl_);
+  auto impl = std::make_shared<internal::CanonicalLines>(*lines_);
   impl->extra_empty = map_constraint.kind == ConvexKind::empty;
   for (const internal::HalfPlane& h : internal::half_planes(map_constraint)) {
     impl->extra_lines.push_back(integer_line(h));
@@ -49,7 +49,7 @@ CanonicalConstraints::CanonicalConstraints(const ConvexSet2& canonical, const Co
                            in_filter_range(a.a) && in_filter_range(a.b) && in_filter_range(a.c);
     impl->extra_approx.push_back(a);
   }
-  impl_ = std::move(impl);
+  lines_ = std::move(impl);
 }
 
 ConvexSet2 feasible_set(const CanonicalConstraints& canonical, const std::vector<Point2>& image) {

@@ -30,7 +30,7 @@ class Clipper {
     double lo[2], hi[2];  // certain bounds of its coordinates (infinite when unknown)
   };
 
-  Clipper(std::shared_ptr<const CanonicalConstraints::Impl> g, const std::vector<ImagePoint>& qs, std::size_t lines)
+  Clipper(std::shared_ptr<const internal::CanonicalLines> g, const std::vector<ImagePoint>& qs, std::size_t lines)
       : keep_(std::move(g)), g_(*keep_), hq_(qs.size()) {
     lines_.reserve(lines);
     filtered_ = g_.filtered;
@@ -314,8 +314,8 @@ class Clipper {
                          h.c * (p.a * q.b - q.a * p.b)));
   }
 
-  std::shared_ptr<const CanonicalConstraints::Impl> keep_;
-  const CanonicalConstraints::Impl& g_;
+  std::shared_ptr<const internal::CanonicalLines> keep_;
+  const internal::CanonicalLines& g_;
   std::vector<const Point2*> qs_;  // the image hull's vertices (owned by the caller or State)
   std::vector<std::optional<HomogeneousPoint>> hq_;
   std::vector<std::array<double, 2>> q_approx_;

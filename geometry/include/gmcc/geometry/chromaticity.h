@@ -7,6 +7,8 @@
 #include <gmcc/geometry/point.h>
 
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace gmcc {
@@ -17,9 +19,15 @@ enum class NonPositiveBluePolicy {
   reject,  ///< throw NonPositiveBlue naming the first offending colour
 };
 
-/// Thrown by perspective_chromaticities under NonPositiveBluePolicy::reject.
-struct NonPositiveBlue {
-  std::size_t index;  ///< position of the offending colour in the input
+/// Thrown by perspective_chromaticities under NonPositiveBluePolicy::reject: input the function
+/// cannot use (docs/conventions.md §9), so a std::invalid_argument.
+struct NonPositiveBlue : std::invalid_argument {
+  std::size_t index;  ///< position of the offending colour in the input (0-based)
+  /// what(): "colour <index> has b <= 0: it has no perspective chromaticity (r/b, g/b)".
+  explicit NonPositiveBlue(std::size_t i)
+      : std::invalid_argument("colour " + std::to_string(i) +
+                              " has b <= 0: it has no perspective chromaticity (r/b, g/b)"),
+        index(i) {}
 };
 
 /// The chromaticities of the colours that have one, in input order, and how many were dropped.

@@ -17,6 +17,9 @@
 #include <vector>
 
 namespace gmcc {
+namespace internal {
+struct FeasiblePolygonState;  // the clipped cycle and what is built from it (geometry's sources)
+}  // namespace internal
 
 /// A vertex of F as certified enclosures of its two coordinates.
 struct EnclosedVertex {
@@ -67,12 +70,10 @@ class FeasiblePolygon {
   /// filter cannot decide). Complexity O(|F|).
   bool contains(const Point2& m) const;
 
-  struct State;
-
  private:
-  State& state() const;
-  std::shared_ptr<State> state_;
-  friend struct FeasiblePolygonBuilder;
+  internal::FeasiblePolygonState& state() const;
+  std::shared_ptr<internal::FeasiblePolygonState> state_;
+  friend struct internal::FeasiblePolygonAccess;
 };
 
 /// F for a prepared canonical gamut and an image (Finlayson & Hordley 1999 §2, eqs. 7–9): the

@@ -13,7 +13,10 @@
 namespace gmcc {
 
 class FeasiblePolygon;
-struct FeasiblePolygonBuilder;
+namespace internal {
+struct CanonicalLines;         // the prepared lines (geometry's sources, not an interface)
+struct FeasiblePolygonAccess;  // how the clipping reaches them
+}  // namespace internal
 
 /// Thrown when the image leaves a map component unconstrained (every image chromaticity has
 /// r = 0, or every one has g = 0): F is then an unbounded set and no rule can select from it.
@@ -32,12 +35,10 @@ class CanonicalConstraints {
   /// Finlayson's illumination constraint, illumination_constraint.h): feasible_set and
   /// feasible_polygon then give F ∩ C, clipped in the same pass (equal to intersection(F, C)).
   CanonicalConstraints(const ConvexSet2& canonical, const ConvexSet2& map_constraint);
-  struct Impl;
 
  private:
-  std::shared_ptr<const Impl> impl_;
-  friend class FeasiblePolygon;
-  friend struct FeasiblePolygonBuilder;
+  std::shared_ptr<const internal::CanonicalLines> lines_;
+  friend struct internal::FeasiblePolygonAccess;
 };
 
 /// F, exactly, with its kind (polygon, segment, point or empty).
