@@ -1,4 +1,4 @@
-#include <gmcc/selection/angular_error.h>
+#include <gmcc/selection/score_rules.h>
 #include <gmcc/selection/truth_errors.h>
 
 #include <stdexcept>
@@ -12,12 +12,10 @@ std::optional<TruthErrors> truth_errors(const Selection& s, const Point2& truth,
   if (!e.valid) return std::nullopt;
   const Point2 m = e.exact ? *e.exact
                            : Point2{rational_from_double(e.map[0]), rational_from_double(e.map[1])};
+  const RuleErrors x = map_errors(m, truth, c);
   TruthErrors t;
-  t.map_error_deg = map_angular_error_deg(m, truth);
-  if (sgn(m.x) > 0 && sgn(m.y) > 0) {
-    t.illuminant_error_deg = illuminant_angular_error_deg(m, truth, c);
-    t.reproduction_error_deg = reproduction_angular_error_deg(m, truth);
-  }
+  t.map_error_deg = x.map_error_deg;
+  if (x.positive_map) t.illuminant_error_deg = x.illuminant_error_deg, t.reproduction_error_deg = x.reproduction_error_deg;
   return t;
 }
 

@@ -5,8 +5,7 @@
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/crule_3d.h>
-#include <gmcc/selection/rule_errors.h>
-#include <gmcc/selection/select_maps.h>
+#include <gmcc/selection/score_rules.h>
 
 #include <gmcc/numerics/constants.h>
 #include <gmcc/numerics/wide_multiply.h>
@@ -69,27 +68,26 @@ double normal(Generator& g) {
   return std::sqrt(-2 * std::log(u)) * std::cos(2 * static_cast<double>(numerics::pi) * v);
 }
 
-Point2 exact_map(const MapEstimate& e) {
-  return e.exact ? *e.exact : Point2{rational_from_double(e.map[0]), rational_from_double(e.map[1])};
+// A rule's errors as its record: `truth` says whether the true map lies in F (F3 for CRULE).
+RuleRecord record(const RuleErrors& e, bool truth) {
+  RuleRecord x;
+  x.scored = true;
+  x.map = e.map;
+  x.error_deg = e.map_error_deg;
+  x.worst_case_deg = e.worst_case_deg;
+  x.truth_in_feasible_set = truth;
+  x.positive_map = e.positive_map;
+  x.illuminant_error_deg = e.illuminant_error_deg;
+  x.reproduction_error_deg = e.reproduction_error_deg;
+  return x;
 }
-
-double to_double(const Rational& q) { return to_double_nearest(q); }
 
 // A baseline's illuminant estimate e scored like a rule's map: m = (c_r·e_b/(e_r·c_b),
 // c_g·e_b/(e_g·c_b)), the map that takes e to the canonical light c. Unscored unless e > 0.
 RuleRecord score_estimate(const Colour& e, const Point2& truth, const Colour& c) {
-  RuleRecord x;
-  if (sgn(e.r) <= 0 || sgn(e.g) <= 0 || sgn(e.b) <= 0 || sgn(c.b) <= 0) return x;
+  if (sgn(e.r) <= 0 || sgn(e.g) <= 0 || sgn(e.b) <= 0 || sgn(c.b) <= 0) return {};
   const Point2 m{Rational(c.r * e.b / (e.r * c.b)), Rational(c.g * e.b / (e.g * c.b))};
-  x.scored = true;
-  x.map = {to_double(m.x), to_double(m.y)};
-  x.error_deg = map_angular_error_deg(m, truth);
-  x.positive_map = sgn(m.x) > 0 && sgn(m.y) > 0;
-  if (x.positive_map) {
-    x.illuminant_error_deg = illuminant_angular_error_deg(m, truth, c);
-    x.reproduction_error_deg = reproduction_angular_error_deg(m, truth);
-  }
-  return x;
+  return record(map_errors(m, truth, c), false);
 }
 
 // Scenes s_begin <= s < s_end of cell (light_index, n), each with its own generator.
@@ -106,8 +104,9 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
   }
   records.reserve(static_cast<std::size_t>(s_end - s_begin));
   std::vector<std::size_t> pool(light.surfaces.size());
-  SelectionOptions selection;
-  selection.mean3d = config.mean3d;
+  ScoreOptions score_options;
+  score_options.mean3d = config.mean3d;
+  score_options.certified_route = config.certified_fast_route;
   for (std::uint64_t s = s_begin; s < s_end; ++s, ++done) {
     SceneRecord& rec = records.emplace_back();
     rec.light = light_index;
@@ -176,55 +175,11 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
     rec.rules.resize(R);
     // With Finlayson's constraint, `gamut` carries C too: P is F ∩ C.
     const bool truth_inside = P.contains(light.true_map);
-    auto score = [&](std::size_t r, const Point2& m, double worst_case, bool truth) {
-      RuleRecord& x = rec.rules[r];
-      x.scored = true;
-      x.map = {to_double(m.x), to_double(m.y)};
-      x.error_deg = map_angular_error_deg(m, light.true_map);
-      x.worst_case_deg = worst_case;
-      x.truth_in_feasible_set = truth;
-      x.positive_map = sgn(m.x) > 0 && sgn(m.y) > 0;
-      if (x.positive_map) {
-        x.illuminant_error_deg = illuminant_angular_error_deg(m, light.true_map, setup.canonical_light);
-        x.reproduction_error_deg = reproduction_angular_error_deg(m, light.true_map);
-      }
-    };
-    // The fast certified route (rule_errors.h) where it applies and can certify its angles;
-    // otherwise the exact maps and angles. Both agree within rule_errors_accuracy.
-    std::optional<std::array<RuleErrors, 3>> fast;
-    if (config.certified_fast_route && config.mean3d.method == Mean3dMethod::analytic && config.mean3d.precision_bits == 0)
-      fast = rule_errors(P, light.true_map, setup.canonical_light);
-    if (fast) {
-      // The area from the vertex enclosures' midpoints (shoelace): a description of F.
-      const std::vector<EnclosedVertex>& v = P.vertices();
-      double twice = 0;
-      for (std::size_t i = 0; i < v.size(); ++i) {
-        const EnclosedVertex &p = v[i], &q = v[(i + 1) % v.size()];
-        twice += static_cast<double>(p.x.mid) * static_cast<double>(q.y.mid) -
-                 static_cast<double>(q.x.mid) * static_cast<double>(p.y.mid);
-      }
-      rec.area = twice / 2;
-      for (std::size_t r = 0; r < 3; ++r) {
-        const RuleErrors& e = (*fast)[r];
-        RuleRecord& x = rec.rules[r];
-        x.scored = true;
-        x.map = e.map;
-        x.error_deg = e.map_error_deg;
-        x.worst_case_deg = e.worst_case_deg;
-        x.truth_in_feasible_set = truth_inside;
-        x.positive_map = e.positive_map;
-        x.illuminant_error_deg = e.illuminant_error_deg;
-        x.reproduction_error_deg = e.reproduction_error_deg;
-      }
-    } else {
-      rec.area = to_double(area(P.exact()));
-      const Selections sel = select_maps(P.exact(), selection);
-      const std::array<const std::optional<Selection>*, 3> rules{&sel.max_area, &sel.mean_2d, &sel.mean_3d};
-      for (std::size_t r = 0; r < 3; ++r) {
-        const Selection& x = **rules[r];
-        if (x.estimate.valid) score(r, exact_map(x.estimate), *x.worst_case_deg, truth_inside);
-      }
-    }
+    // The route (certified where it applies and can certify, else exact) is score_rules' choice.
+    const ScoredRules scored = score_rules(P, light.true_map, setup.canonical_light, score_options);
+    rec.area = scored.area;
+    for (std::size_t r = 0; r < 3; ++r)
+      if (scored.rules[r]) rec.rules[r] = record(*scored.rules[r], truth_inside);
     if (config.crule) {  // the same scene in 3-D; maps scored by their perspective (d1/d3, d2/d3)
       const Crule3d c3 = crule_3d(setup.canonical_surfaces, image_colours);
       const bool truth3_inside = contains(c3.feasible, light.true_diagonal_map);
@@ -236,7 +191,9 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
                                  : Point3{rational_from_double(e.map[0]), rational_from_double(e.map[1]),
                                           rational_from_double(e.map[2])};
         if (sgn(d.z) <= 0) continue;  // the zero map has no perspective
-        score(3 + r, {Rational(d.x / d.z), Rational(d.y / d.z)}, *(*rules3[r])->worst_case_deg, truth3_inside);
+        RuleErrors x = map_errors({Rational(d.x / d.z), Rational(d.y / d.z)}, light.true_map, setup.canonical_light);
+        x.worst_case_deg = *(*rules3[r])->worst_case_deg;
+        rec.rules[3 + r] = record(x, truth3_inside);
       }
     }
   }
