@@ -1,5 +1,7 @@
 #include "provenance.h"
 
+#include "citation_template.h"
+
 #include <gmcc/validation/build_info.h>
 #include <gmcc/validation/file_digest.h>
 
@@ -98,27 +100,16 @@ std::string version_line() {
 }
 
 std::string bibtex_of_this_build() {
+  // cli/citation.bib.in, the one text of the entries (docs/manual/build_manual.py reads it too),
+  // with this build's version, commit and, when the commit's date is known, its year and date.
   const std::string date(gmcc_commit_date());
-  const std::string year = date.size() >= 4 && date != "unknown" ? date.substr(0, 4) : "";
-  std::string b =
-      "@article{Finlayson1999Selection,\n"
-      "  author  = {Graham D. Finlayson and Steven D. Hordley},\n"
-      "  title   = {Selection for gamut mapping colour constancy},\n"
-      "  journal = {Image and Vision Computing},\n"
-      "  volume  = {17}, number = {8}, pages = {597--604}, year = {1999},\n"
-      "  doi     = {10.1016/S0262-8856(98)00179-6}\n"
-      "}\n"
-      "@software{gmcc,\n"
-      "  title   = {gmcc: gamut-mapping colour constancy with exact "
-      "geometry},\n"
-      "  author  = {{The gmcc developers}},\n"
-      "  version = {" +
-      std::string(gmcc_version()) +
-      "},\n"
-      "  note    = {git commit " +
-      std::string(gmcc_commit()) + "},\n";
-  if (!year.empty()) b += "  year    = {" + year + "},\n  date    = {" + date + "},\n";
-  b += "}\n";
+  const std::string dated = date.size() >= 4 && date != "unknown"
+                                ? "  year    = {" + date.substr(0, 4) + "},\n  date    = {" + date + "},\n"
+                                : "";
+  std::string b = citation_template;
+  const std::pair<std::string, std::string> fill[] = {
+      {"@VERSION@", std::string(gmcc_version())}, {"@COMMIT@", std::string(gmcc_commit())}, {"@DATED@", dated}};
+  for (const auto& [key, value] : fill) b.replace(b.find(key), key.size(), value);
   return b;
 }
 

@@ -415,24 +415,16 @@ class Manual:
 
 
 def bibtex_of_this_build(version, commit, date):
-    """What `gmcc cite` prints for a binary of this version and commit (cli/provenance.cpp,
-    bibtex_of_this_build); --gmcc checks the two agree."""
-    year = date[:4] if len(date) >= 4 and date != "unknown" else ""
-    b = ("@article{Finlayson1999Selection,\n"
-         "  author  = {Graham D. Finlayson and Steven D. Hordley},\n"
-         "  title   = {Selection for gamut mapping colour constancy},\n"
-         "  journal = {Image and Vision Computing},\n"
-         "  volume  = {17}, number = {8}, pages = {597--604}, year = {1999},\n"
-         "  doi     = {10.1016/S0262-8856(98)00179-6}\n"
-         "}\n"
-         "@software{gmcc,\n"
-         "  title   = {gmcc: gamut-mapping colour constancy with exact geometry},\n"
-         "  author  = {{The gmcc developers}},\n"
-         "  version = {" + version + "},\n"
-         "  note    = {git commit " + commit + "},\n")
-    if year:
-        b += "  year    = {" + year + "},\n  date    = {" + date + "},\n"
-    return b + "}\n"
+    """What `gmcc cite` prints for a binary of this version and commit: cli/citation.bib.in, the
+    one text of the entries, filled in as cli/provenance.cpp fills it; --gmcc checks the two agree."""
+    with open(os.path.join(HERE, "..", "..", "cli", "citation.bib.in"), encoding="utf-8") as f:
+        b = f.read()
+    dated = ""
+    if len(date) >= 4 and date != "unknown":
+        dated = "  year    = {" + date[:4] + "},\n  date    = {" + date + "},\n"
+    for key, value in (("@VERSION@", version), ("@COMMIT@", commit), ("@DATED@", dated)):
+        b = b.replace(key, value, 1)
+    return b
 
 
 def check_cite(gmcc):

@@ -95,19 +95,20 @@ inline std::vector<Vertex> clip(const std::vector<Vertex>& cycle, const std::vec
     all_inside = all_inside && s[i] <= 0;
   }
   if (all_inside) return cycle;
+  // Sutherland & Hodgman's own form (1974): each edge S → P in turn, a strict crossing of h
+  // between S and P first (leaving the half-plane, the boundary continues along h; entering, along
+  // the edge S → P), then P itself when inside. The same cycle as a walk from each vertex to the
+  // next, started one edge earlier.
   std::vector<Vertex> out;
   out.reserve(n + 1);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t j = (i + 1) % n;
-    const std::size_t edge = cycle[i].out;
-    if (s[i] <= 0) {
-      Vertex v = cycle[i];
-      // Leaving the half-plane from a point on its line: the boundary follows h from here.
-      if (s[i] == 0 && s[j] > 0) v.out = hi;
-      out.push_back(std::move(v));
-    }
-    if (s[i] * s[j] < 0)  // a strict crossing: exiting continues along h, entering along the edge
-      out.push_back(meet(lines[edge], h, s[i] < 0 ? hi : edge));
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vertex& S = cycle[(k + n - 1) % n];
+    const int sS = s[(k + n - 1) % n], sP = s[k], sNext = s[(k + 1) % n];
+    if ((sS < 0 && sP > 0) || (sS > 0 && sP < 0)) out.push_back(meet(lines[S.out], h, sS < 0 ? hi : S.out));
+    if (sP > 0) continue;
+    Vertex P = cycle[k];
+    if (sP == 0 && sNext > 0) P.out = hi;  // on h, and the boundary leaves along h
+    out.push_back(std::move(P));
   }
   return out;
 }
