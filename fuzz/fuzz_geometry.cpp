@@ -62,7 +62,6 @@ using gmcc::ConvexKind;
 using gmcc::ConvexSet2;
 using gmcc::Point2;
 using gmcc::Rational;
-using gmcc::fuzz::ByteReader;
 using namespace gmcc::fuzz;  // the shared checks (geometry_checks.h)
 
 // One non-negative coordinate; `pool` holds earlier ones, for duplicates and near-duplicates.

@@ -58,7 +58,6 @@ using gmcc::ConvexKind;
 using gmcc::ConvexSet2;
 using gmcc::Point2;
 using gmcc::Rational;
-using gmcc::fuzz::ByteReader;
 using namespace gmcc::fuzz;
 
 Rational two_to(int e) {

@@ -16,6 +16,20 @@ double angle_double(double a1, double b1, double a2, double b2) {  // acos form,
   return std::acos(dot / std::sqrt((a1 * a1 + b1 * b1 + 1) * (a2 * a2 + b2 * b2 + 1))) * 180 /
          3.14159265358979323846;
 }
+// The largest angle between the map md and `steps` + 1 evenly spaced points of each edge of F,
+// in doubles: a dense search of F's boundary, for checking the exact worst case.
+double dense_boundary_max(const ConvexSet2& F, const std::array<double, 2>& md, int steps) {
+  double dense = 0;
+  const auto& v = F.vertices;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const auto p = to_double_nearest(v[i]), q = to_double_nearest(v[(i + 1) % v.size()]);
+    for (int k = 0; k <= steps; ++k) {
+      const double t = static_cast<double>(k) / steps;
+      dense = std::max(dense, angle_double(md[0], md[1], p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])));
+    }
+  }
+  return dense;
+}
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(angular_errors)
@@ -52,16 +66,11 @@ BOOST_AUTO_TEST_CASE(vertex_maximum_equals_a_dense_boundary_search) {
     const Point2 m = centroid(F);
     const double w = worst_case_map_deg(F, m);
     const auto md = to_double_nearest(m);
-    double dense = 0, at_vertices = 0;
-    const auto& v = F.vertices;
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      const auto p = to_double_nearest(v[i]), q = to_double_nearest(v[(i + 1) % v.size()]);
+    const double dense = dense_boundary_max(F, md, 400);
+    double at_vertices = 0;
+    for (const Point2& vertex : F.vertices) {
+      const auto p = to_double_nearest(vertex);
       at_vertices = std::max(at_vertices, angle_double(md[0], md[1], p[0], p[1]));
-      for (int s = 0; s <= 400; ++s) {
-        const double t = s / 400.0;
-        dense = std::max(dense, angle_double(md[0], md[1], p[0] + t * (q[0] - p[0]),
-                                             p[1] + t * (q[1] - p[1])));
-      }
     }
     BOOST_TEST(w >= dense - 1e-9);
     BOOST_TEST(w == at_vertices, boost::test_tools::tolerance(1e-9));
@@ -91,18 +100,9 @@ BOOST_AUTO_TEST_CASE(maps_outside_the_quadrant) {
     if (F.kind != ConvexKind::polygon) continue;
     const Point2 mm{test::random_rational(rng, -40, 8, 4), test::random_rational(rng, -40, 8, 4)};
     const double wf = worst_case_map_deg(F, mm);
-    const auto md = to_double_nearest(mm);
-    double dense = 0, at_vertices = 0;
-    const auto& v = F.vertices;
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      const auto p = to_double_nearest(v[i]), q = to_double_nearest(v[(i + 1) % v.size()]);
-      at_vertices = std::max(at_vertices, map_angular_error_deg(mm, v[i]));
-      for (int s = 0; s <= 2000; ++s) {
-        const double t = s / 2000.0;
-        dense = std::max(dense, angle_double(md[0], md[1], p[0] + t * (q[0] - p[0]),
-                                             p[1] + t * (q[1] - p[1])));
-      }
-    }
+    const double dense = dense_boundary_max(F, to_double_nearest(mm), 2000);
+    double at_vertices = 0;
+    for (const Point2& vertex : F.vertices) at_vertices = std::max(at_vertices, map_angular_error_deg(mm, vertex));
     BOOST_TEST_CONTEXT("trial " << trial << " F " << F << " m " << mm) {
       BOOST_TEST(wf >= dense - 1e-9);
       BOOST_TEST(wf <= dense + 1e-4);  // the dense steps miss an interior maximum by O(h²)
