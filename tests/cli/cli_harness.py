@@ -45,6 +45,25 @@ class Runner:
             print(f"FAIL {name}: {e!r}")
 
 
+class Tally:
+    """Counts checks that report every failure and go on; `finish` prints the closing line
+    `N passed, M failed` that ctest's log shows and returns the exit status."""
+
+    def __init__(self):
+        self.passed = self.failed = 0
+
+    def check(self, ok, what):
+        if ok:
+            self.passed += 1
+        else:
+            self.failed += 1
+            print("FAIL:", what)
+
+    def finish(self):
+        print(f"{self.passed} passed, {self.failed} failed")
+        return 1 if self.failed else 0
+
+
 def expect(cond, what):
     if not cond:
         raise AssertionError(what)

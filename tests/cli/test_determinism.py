@@ -18,7 +18,10 @@ import json
 import os
 import subprocess
 import sys
+
 import tempfile
+
+from cli_harness import Tally
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SAMPLES = os.path.join(HERE, "..", "..", "data", "samples")
@@ -33,16 +36,10 @@ SURROUNDINGS = [
     {"LC_ALL": "de_DE.UTF-8", "LANG": "de_DE.UTF-8", "TZ": "Pacific/Chatham", "PADDING": "x" * 4096},
 ]
 
-passed = failed = 0
 
 
-def check(condition, what):
-    global passed, failed
-    if condition:
-        passed += 1
-    else:
-        failed += 1
-        print(f"FAIL: {what}")
+tally = Tally()
+check = tally.check
 
 
 def run(binary, args, surroundings, cwd):
@@ -81,8 +78,7 @@ def main():
         check(seven["selections"]["max_area"] == eight["selections"]["max_area"],
               "the seed changes nothing but Monte Carlo")
         twice(binary, ["accuracy", "--max-samples", "10000"], tmp)
-    print(f"{passed} passed, {failed} failed")
-    return 1 if failed else 0
+    return tally.finish()
 
 
 if __name__ == "__main__":

@@ -11,21 +11,18 @@ import os
 import shutil
 import subprocess
 import sys
+
 import tempfile
 
+from cli_harness import Tally
+
 gmcc, data = sys.argv[1], sys.argv[2]
-passed = failed = 0
 PATCHES = "gehler_shi_568_colorchecker_patch_rgb_rec2018.csv"
 TRUTH = "gehler_shi_568_groundtruth.csv"
 
 
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL:", what)
+tally = Tally()
+check = tally.check
 
 
 def run(*args):
@@ -98,5 +95,4 @@ with tempfile.TemporaryDirectory() as tmp:
         r = run(*small, *args)
         check(r.returncode == 2 and what in r.stderr, f"{args}: exit 2 naming {what}: {r.stderr}")
 
-print(f"{passed} passed, {failed} failed")
-sys.exit(1 if failed else 0)
+sys.exit(tally.finish())

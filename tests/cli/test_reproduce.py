@@ -11,17 +11,13 @@ import subprocess
 import sys
 import tempfile
 
+from cli_harness import Tally
+
 gmcc = sys.argv[1]
-passed = failed = 0
 
 
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL:", what)
+tally = Tally()
+check = tally.check
 
 
 def run(*args):
@@ -68,5 +64,4 @@ with tempfile.TemporaryDirectory() as tmp:
         check(r.returncode == 2 and r.stdout == "" and "gmcc: error:" in r.stderr, f"{why}: exit 2, message, no stdout")
     check(not os.path.exists(os.path.join(tmp, "no")), "nothing half-written")
 
-print(f"{passed} passed, {failed} failed")
-sys.exit(1 if failed else 0)
+sys.exit(tally.finish())
