@@ -26,6 +26,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "../tests/baseline/double_pipeline.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -47,27 +49,8 @@ using namespace gmcc;
 // ---------------------------------------------------------------- the plain-double pipeline
 using P = std::array<double, 2>;
 
-double cross(const P& o, const P& a, const P& b) {
-  return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
-}
-
-std::vector<P> hull(std::vector<P> p) {  // Andrew's monotone chain, CCW, collinear dropped
-  std::sort(p.begin(), p.end());
-  p.erase(std::unique(p.begin(), p.end()), p.end());
-  if (p.size() < 3) return p;
-  std::vector<P> h(2 * p.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
-    h[k++] = p[i];
-  }
-  for (std::size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
-    while (k >= t && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
-    h[k++] = p[i];
-  }
-  h.resize(k - 1);
-  return h;
-}
+using baseline::cross;
+using baseline::hull;  // Andrew's monotone chain, CCW, collinear dropped
 
 struct DLine {
   double a, b, c;  // a·x + b·y <= c

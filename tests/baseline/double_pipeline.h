@@ -3,7 +3,8 @@
 // chromaticities r/b in doubles, Andrew's monotone-chain hull, Sutherland–Hodgman clipping with
 // `a·x + b·y <= c` as the inside test, the kind read off the vertex count, max-area and the 2-D
 // mean by the textbook formulas. No epsilons and no special cases — it is the baseline that
-// docs/degenerate.md compares gmcc with, used only by tests. Not part of any library.
+// docs/degenerate.md compares gmcc with, used by tests, and the hull by the benchmarks' double
+// baselines. Not part of any library.
 
 #include <algorithm>
 #include <array>
@@ -18,8 +19,15 @@ struct P {
 };
 inline bool operator==(const P& a, const P& b) { return a.x == b.x && a.y == b.y; }
 
-inline double cross(const P& o, const P& a, const P& b) {
-  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+// Coordinates of a point given as P or as std::array<double, 2> (the benchmarks' points).
+inline double px(const P& p) { return p.x; }
+inline double py(const P& p) { return p.y; }
+inline double px(const std::array<double, 2>& p) { return p[0]; }
+inline double py(const std::array<double, 2>& p) { return p[1]; }
+
+template <class Pt>
+double cross(const Pt& o, const Pt& a, const Pt& b) {
+  return (px(a) - px(o)) * (py(b) - py(o)) - (py(a) - py(o)) * (px(b) - px(o));
 }
 
 /// Colours (r, g, b) to chromaticities (r/b, g/b): b = 0 gives inf or NaN, as plain code does.
@@ -30,11 +38,13 @@ inline std::vector<P> chromaticities(const std::vector<std::array<double, 3>>& r
 }
 
 /// Andrew's monotone chain, counter-clockwise, collinear points dropped (cross <= 0 pops).
-inline std::vector<P> hull(std::vector<P> p) {
-  std::sort(p.begin(), p.end(), [](const P& a, const P& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+template <class Pt>
+std::vector<Pt> hull(std::vector<Pt> p) {
+  std::sort(p.begin(), p.end(),
+            [](const Pt& a, const Pt& b) { return px(a) < px(b) || (px(a) == px(b) && py(a) < py(b)); });
   p.erase(std::unique(p.begin(), p.end()), p.end());
   if (p.size() < 3) return p;
-  std::vector<P> h(2 * p.size());
+  std::vector<Pt> h(2 * p.size());
   std::size_t k = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
