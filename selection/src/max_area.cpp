@@ -1,97 +1,145 @@
 #include <gmcc/selection/max_area.h>
 
 #include "internal/ld_interval.h"
+#include "internal/max_area_route.h"
 
 #include <optional>
 #include <stdexcept>
 #include <vector>
 
 namespace gmcc {
+namespace internal {
 namespace {
-using internal::LDInterval;
 
-// p − q enclosed from its exact value (integer cross-multiplication, no gcd).
-LDInterval enclose_difference(const Rational& p, const Rational& q) {
-  const mpz_class num = p.get_num() * q.get_den() - q.get_num() * p.get_den();
-  const mpz_class den = p.get_den() * q.get_den();
-  return internal::enclose_ld(num.get_mpz_t(), den.get_mpz_t());
-}
-
-bool positive(const LDInterval& x) { return x.lo > 0; }
-bool negative(const LDInterval& x) { return x.hi < 0; }
-
-// The filter: every candidate's m1·m2 enclosed in extended-precision intervals. When one
-// candidate's enclosure lies strictly above all others', it is the unique maximum and only it is
-// constructed exactly (the same formula as below, so the same rational). Nothing when any
-// decision is uncertain (near-ties, stationary points at an edge's end).
-std::optional<Point2> max_area_filtered(const ConvexSet2& F) {
+// The candidates for argmax m1·m2 over F (docs/derivations.md §2.3), one definition for every
+// number kind N: the vertices, and on each edge p → q of the north-east chain (Δa·Δb < 0) the
+// stationary point of the concave f(t) = (p1 + t·Δa)(p2 + t·Δb) when it lies inside the edge:
+// t* ∈ (0, 1) iff f′(0) = Δa·p2 + Δb·p1 > 0 > f′(1) = Δa·q2 + Δb·q1, where
+// f(t*) = p1·p2 − f′(0)²/(4·Δa·Δb). `Kind` gives N's values: x(i), y(i), dx(i, j), dy(i, j) (the
+// coordinate differences, from the exact values), constant(int), and sign(N) → std::optional<int> (nothing:
+// not decided in N; Rational always decides). Nothing when a sign is not decided.
+template <class N>
+struct Candidate {
+  N value;
+  std::size_t index;  // a vertex, or the edge from vertex index − n
+};
+template <class Kind>
+std::optional<std::vector<Candidate<typename Kind::Number>>> candidates(const ConvexSet2& F, const Kind& k) {
+  using N = typename Kind::Number;
   const auto& v = F.vertices;
   const std::size_t n = v.size();
-  std::vector<LDInterval> x(n), y(n);
-  for (std::size_t i = 0; i < n; ++i) x[i] = internal::enclose_ld(v[i].x), y[i] = internal::enclose_ld(v[i].y);
-  struct Candidate {
-    LDInterval value;
-    std::size_t index;  // a vertex, or the edge from vertex index − n
-  };
-  std::vector<Candidate> candidates;
-  candidates.reserve(2 * n);
-  for (std::size_t i = 0; i < n; ++i) candidates.push_back({x[i] * y[i], i});
+  std::vector<Candidate<N>> out;
+  out.reserve(2 * n);
+  for (std::size_t i = 0; i < n; ++i) out.push_back({k.x(i) * k.y(i), i});
+  // A segment has one edge; a polygon n edges (a segment's "second edge" is the same edge).
   const std::size_t edges = F.kind == ConvexKind::polygon ? n : n - 1;
   for (std::size_t i = 0; i < edges; ++i) {
     const std::size_t j = (i + 1) % n;
-    const int sa = cmp(v[j].x, v[i].x), sb = cmp(v[j].y, v[i].y);
-    if (sa * sb >= 0) continue;  // not on the north-east chain: the maximum is at an end
-    const LDInterval da = enclose_difference(v[j].x, v[i].x), db = enclose_difference(v[j].y, v[i].y);
-    // f(t) = (p1 + t·Δa)(p2 + t·Δb) is concave: t* ∈ (0, 1) iff f′(0) > 0 > f′(1).
-    const LDInterval d0 = da * y[i] + db * x[i], d1 = da * y[j] + db * x[j];
-    if (!(positive(d0) || negative(d0)) || !(positive(d1) || negative(d1))) return std::nullopt;
-    if (!(positive(d0) && negative(d1))) continue;
-    // f(t*) = f(0) − f′(0)² / (4·Δa·Δb)
-    const LDInterval four_dd = LDInterval{4, 4} * (da * db);
-    candidates.push_back({x[i] * y[i] - d0 * d0 / four_dd, n + i});
+    if (cmp(v[j].x, v[i].x) * cmp(v[j].y, v[i].y) >= 0) continue;  // the maximum is at an end
+    const N da = k.dx(i, j), db = k.dy(i, j);
+    const N d0 = da * k.y(i) + db * k.x(i), d1 = da * k.y(j) + db * k.x(j);
+    const std::optional<int> s0 = Kind::sign(d0), s1 = Kind::sign(d1);
+    if (!s0 || !s1) return std::nullopt;
+    if (!(*s0 > 0 && *s1 < 0)) continue;
+    out.push_back({N(k.x(i) * k.y(i) - d0 * d0 / (Kind::constant(4) * (da * db))), n + i});
   }
-  std::size_t best = 0;
-  for (std::size_t k = 1; k < candidates.size(); ++k)
-    if (candidates[k].value.lo > candidates[best].value.lo) best = k;
-  for (std::size_t k = 0; k < candidates.size(); ++k)
-    if (k != best && candidates[k].value.hi >= candidates[best].value.lo) return std::nullopt;
-  const std::size_t w = candidates[best].index;
-  if (w < n) return v[w];
-  const Point2& p = v[w - n];
-  const Point2& q = v[(w - n + 1) % n];
+  return out;
+}
+
+// The point a candidate stands for, exactly: vertex, or p + t*·(Δa, Δb) with t* = −f′(0)/(2·Δa·Δb).
+Point2 candidate_point(const ConvexSet2& F, std::size_t index) {
+  const auto& v = F.vertices;
+  const std::size_t n = v.size();
+  if (index < n) return v[index];
+  const Point2& p = v[index - n];
+  const Point2& q = v[(index - n + 1) % n];
   const Rational da = q.x - p.x, db = q.y - p.y;
   const Rational t = -(da * p.y + db * p.x) / (2 * da * db);
   return Point2{Rational(p.x + t * da), Rational(p.y + t * db)};
 }
+
+// F's coordinates in ℚ.
+struct ExactKind {
+  using Number = Rational;
+  const std::vector<Point2>& v;
+  const Rational& x(std::size_t i) const { return v[i].x; }
+  const Rational& y(std::size_t i) const { return v[i].y; }
+  Rational dx(std::size_t i, std::size_t j) const { return v[j].x - v[i].x; }
+  Rational dy(std::size_t i, std::size_t j) const { return v[j].y - v[i].y; }
+  static Rational constant(int c) { return c; }
+  static std::optional<int> sign(const Rational& q) { return sgn(q); }
+};
+
+// F's coordinates as x87 intervals, differences enclosed from their exact values (integer
+// cross-multiplication, no gcd): no cancellation on short edges.
+struct ExtendedKind {
+  using Number = LDInterval;
+  const std::vector<Point2>& v;
+  std::vector<LDInterval> xs, ys;
+  explicit ExtendedKind(const std::vector<Point2>& vertices) : v(vertices) {
+    for (const Point2& p : v) xs.push_back(enclose_ld(p.x)), ys.push_back(enclose_ld(p.y));
+  }
+  LDInterval x(std::size_t i) const { return xs[i]; }
+  LDInterval y(std::size_t i) const { return ys[i]; }
+  static LDInterval difference(const Rational& p, const Rational& q) {
+    const mpz_class num = p.get_num() * q.get_den() - q.get_num() * p.get_den();
+    const mpz_class den = p.get_den() * q.get_den();
+    return enclose_ld(num.get_mpz_t(), den.get_mpz_t());
+  }
+  LDInterval dx(std::size_t i, std::size_t j) const { return difference(v[j].x, v[i].x); }
+  LDInterval dy(std::size_t i, std::size_t j) const { return difference(v[j].y, v[i].y); }
+  static LDInterval constant(int c) { return {static_cast<long double>(c), static_cast<long double>(c)}; }
+  static std::optional<int> sign(const LDInterval& a) {
+    if (a.lo > 0) return 1;
+    if (a.hi < 0) return -1;
+    return std::nullopt;
+  }
+};
+
+StageCounts& counts() {
+  static StageCounts c;
+  return c;
+}
+
 }  // namespace
+
+std::optional<Point2> max_area_filtered(const ConvexSet2& F) {
+  const auto c = candidates(F, ExtendedKind(F.vertices));
+  if (!c) return std::nullopt;
+  // The unique maximum: one enclosure strictly above all others' (near-ties decline).
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < c->size(); ++k)
+    if ((*c)[k].value.lo > (*c)[best].value.lo) best = k;
+  for (std::size_t k = 0; k < c->size(); ++k)
+    if (k != best && (*c)[k].value.hi >= (*c)[best].value.lo) return std::nullopt;
+  return candidate_point(F, (*c)[best].index);
+}
+
+Point2 max_area_exact(const ConvexSet2& F) {
+  const auto c = *candidates(F, ExactKind{F.vertices});  // ℚ decides every sign
+  std::size_t best = 0;
+  Point2 best_point = candidate_point(F, c[0].index);
+  for (std::size_t k = 1; k < c.size(); ++k) {
+    const int order = cmp(c[k].value, c[best].value);
+    if (order < 0) continue;
+    Point2 p = candidate_point(F, c[k].index);
+    if (order > 0 || p < best_point) best = k, best_point = std::move(p);
+  }
+  return best_point;
+}
+
+const StageCounts& max_area_stage_counts() { return counts(); }
+
+}  // namespace internal
 
 Point2 max_area_point(const ConvexSet2& F) {
   if (F.kind == ConvexKind::empty) throw std::invalid_argument("max_area: empty feasible set");
-  if (internal::fast_path_available())
-    if (auto p = max_area_filtered(F)) return std::move(*p);
-  const auto& v = F.vertices;
-  Point2 best = v[0];
-  Rational best_value = best.x * best.y;
-  auto consider = [&](Point2 p) {
-    const Rational value = p.x * p.y;
-    if (value > best_value || (value == best_value && p < best)) {
-      best_value = value;
-      best = std::move(p);
-    }
-  };
-  for (const Point2& p : v) consider(p);
-  // A segment has one edge; a polygon n edges (a segment's "second edge" is the same edge).
-  const std::size_t edges = F.kind == ConvexKind::polygon ? v.size() : v.size() - 1;
-  for (std::size_t i = 0; i < edges; ++i) {
-    const Point2& p = v[i];
-    const Point2& q = v[(i + 1) % v.size()];
-    const Rational da = q.x - p.x, db = q.y - p.y;
-    const Rational dd = da * db;
-    if (sgn(dd) >= 0) continue;  // not on the north-east chain: the maximum is at an end
-    const Rational t = -(da * p.y + db * p.x) / (2 * dd);
-    if (sgn(t) > 0 && t < 1) consider({Rational(p.x + t * da), Rational(p.y + t * db)});
-  }
-  return best;
+  return internal::staged(
+      internal::counts(),
+      [&F]() -> std::optional<Point2> {
+        return internal::fast_path_available() ? internal::max_area_filtered(F) : std::nullopt;
+      },
+      [&F] { return internal::max_area_exact(F); });
 }
 
 MapEstimate max_area(const ConvexSet2& F) { return exact_map_estimate("max_area", max_area_point(F)); }

@@ -2,6 +2,9 @@
 
 #include <gmcc/selection/max_area.h>
 #include <gmcc/selection/mean_2d.h>
+#include <gmcc/numerics/platform.h>
+
+#include "internal/max_area_route.h"
 
 #include <boost/test/unit_test.hpp>
 
@@ -60,6 +63,46 @@ BOOST_AUTO_TEST_CASE(exact_candidate_beats_a_dense_exact_search_and_is_unique) {
     interior_optima += !at_vertex;
   }
   BOOST_TEST(interior_optima > 0);  // the edge stationary points are exercised
+}
+
+// The filtered stage (x87 intervals) and the exact stage are one candidate enumeration over two
+// number kinds: wherever the filter answers it must give the exact stage's point, on grids where
+// ties, repeated vertices and near-ties are common, and on segments and points.
+BOOST_AUTO_TEST_CASE(filtered_and_exact_stages_agree) {
+  Rng rng(3110);
+  int answered = 0, declined = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const ConvexSet2 F = convex_hull(test::random_points(rng, 1 + trial % 12, 1, 6, trial % 2 ? 7 : 1000003));
+    const Point2 exact = internal::max_area_exact(F);
+    BOOST_TEST(max_area_point(F) == exact);
+    if (const auto filtered = internal::max_area_filtered(F)) {
+      ++answered;
+      BOOST_TEST(*filtered == exact, "trial " << trial);
+    } else {
+      ++declined;
+    }
+  }
+  BOOST_TEST(answered > 300);  // the filter decides most sets
+  BOOST_TEST(declined > 0);    // and the grids' ties reach the exact stage
+}
+
+// The staged rule counts which stage answered: a generic polygon is the filter's (where the x87
+// path runs); an edge whose stationary point is exactly its end (f′ = 0 at (2, 2) on the edge to
+// (1, 3)) cannot be decided in intervals and goes to the exact stage.
+BOOST_AUTO_TEST_CASE(stage_counts_show_the_fallbacks) {
+  const internal::StageCounts& counts = internal::max_area_stage_counts();
+  const std::uint64_t filtered0 = counts[0], exact0 = counts[1];
+  const ConvexSet2 generic = convex_hull({{1, 3}, {3, 1}, {Rational(1, 2), Rational(1, 2)}, {3, 3}});
+  BOOST_TEST((max_area_point(generic) == Point2{3, 3}));
+  const ConvexSet2 at_end = convex_hull({{1, 3}, {2, 2}, {Rational(1, 2), Rational(1, 2)}});
+  BOOST_TEST((max_area_point(at_end) == Point2{2, 2}));
+  if (numerics::extended_precision_active()) {
+    BOOST_TEST(counts[0] == filtered0 + 1);
+    BOOST_TEST(counts[1] == exact0 + 1);
+  } else {  // the filter is not tried
+    BOOST_TEST(counts[0] == filtered0);
+    BOOST_TEST(counts[1] == exact0 + 2);
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
