@@ -9,6 +9,9 @@ namespace {
 
 const char* const channel_names[] = {"r", "g", "b"};
 
+// The largest int (numerator or denominator) accepted: 2^65536, about 19,700 digits.
+constexpr std::size_t max_integer_bits = 65536;
+
 py::object fraction_type() {
   static py::object* type = new py::object(py::module_::import("fractions").attr("Fraction"));
   return *type;
@@ -28,12 +31,17 @@ mpz_class int_from(py::handle x, const std::string& where) {
     else z = mpz_class(std::to_string(v));
     return z;
   }
-  const std::string text = py::str(x);
-  const std::size_t digits = text.size() - (text[0] == '-' ? 1 : 0);
-  if (digits > max_number_digits)
-    throw py::value_error(where + ": an integer of " + std::to_string(digits) + " digits: at most " +
-                          std::to_string(max_number_digits) + " digits are accepted");
-  return mpz_class(text, 10);
+  // Exact values gmcc itself returns (a 2-D mean of hundreds of digits) must come back in; the
+  // bound only keeps a run finite. Text has the command line's tighter limit (parse_rational).
+  const std::size_t bits = _PyLong_NumBits(x.ptr());
+  if (bits > max_integer_bits)
+    throw py::value_error(where + ": an integer of " + std::to_string(bits) + " bits: at most " +
+                          std::to_string(max_integer_bits) + " bits are accepted");
+  const std::string hex = py::str(py::reinterpret_borrow<py::object>(py::module_::import("builtins").attr("hex"))(x));
+  // hex() gives [-]0x…
+  const bool negative = hex[0] == '-';
+  mpz_class z(hex.substr(negative ? 3 : 2), 16);
+  return negative ? mpz_class(-z) : z;
 }
 
 Rational from_double(double v, const std::string& where) {
@@ -219,7 +227,8 @@ Colour light_from(py::handle x, const std::string& argument) {
   if (py::isinstance<py::array>(x) && py::reinterpret_borrow<py::array>(x).ndim() == 1)
     one = colours_from(py::module_::import("numpy").attr("reshape")(x, py::make_tuple(1, -1)), argument);
   else if (!is_text(x) && py::isinstance<py::sequence>(x) && py::len(x) == 3 &&
-           !py::isinstance<py::sequence>(py::reinterpret_borrow<py::sequence>(x)[0]))
+           [](py::handle first) { return is_text(first) || !py::isinstance<py::sequence>(first); }(
+               py::reinterpret_borrow<py::sequence>(x)[0]))
     one = colours_from(py::make_tuple(x), argument);
   else
     one = colours_from(x, argument);

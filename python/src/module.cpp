@@ -141,6 +141,8 @@ std::string shape_of(const py::array& a) {
   return s + (a.ndim() == 1 ? ",)" : ")");
 }
 
+PyImageColours run_pixel_rules(const RgbImage& img, std::vector<bool> keep, const PixelArgs& args);
+
 PyImageColours image_colours_of(py::handle image_obj, const PixelArgs& args) {
   py::module_ np = py::module_::import("numpy");
   if (!py::isinstance<py::array>(image_obj))
@@ -199,12 +201,17 @@ PyImageColours image_colours_of(py::handle image_obj, const PixelArgs& args) {
     return out;
   }
   // Integer samples: the library's 16-bit route (exact integer hull).
-  const py::array_t<std::int64_t, py::array::c_style> a = np.attr("ascontiguousarray")(image, "int64");
   RgbImage img;
   img.width = w;
   img.height = h;
   img.bits = 16;
   img.samples.resize(h * w * 3);
+  if (kind == 'u' && image.itemsize() <= 2) {  // uint8, uint16: every value fits
+    const py::array_t<std::uint16_t, py::array::c_style> a = np.attr("ascontiguousarray")(image, "uint16");
+    if (!img.samples.empty()) std::memcpy(img.samples.data(), a.data(), img.samples.size() * sizeof(std::uint16_t));
+    return run_pixel_rules(img, std::move(keep), args);
+  }
+  const py::array_t<std::int64_t, py::array::c_style> a = np.attr("ascontiguousarray")(image, "int64");
   const std::int64_t* p = a.data();
   for (std::size_t i = 0; i < h * w * 3; ++i) {
     if (p[i] < 0 || p[i] > 65535) {
@@ -215,6 +222,11 @@ PyImageColours image_colours_of(py::handle image_obj, const PixelArgs& args) {
     }
     img.samples[i] = static_cast<std::uint16_t>(p[i]);
   }
+  return run_pixel_rules(img, std::move(keep), args);
+}
+
+PyImageColours run_pixel_rules(const RgbImage& img, std::vector<bool> keep, const PixelArgs& args) {
+  PyImageColours out;
   PixelRules rules;
   rules.keep = std::move(keep);
   rules.colour_set = ColourSet::hull;
@@ -268,7 +280,7 @@ const ConvexSet2& nonempty(const ConvexSet2& F, const char* what) {
 py::dict records_columns(const ExperimentResult& r) {
   const std::size_t n = r.scenes.size();
   py::dict cols;
-  std::vector<std::string> light(n), kind(n);
+  std::vector<std::string> light(n), kind(n), drawn(n);
   std::vector<std::int64_t> surfaces(n), scene(n);
   std::vector<double> area(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -278,12 +290,14 @@ py::dict records_columns(const ExperimentResult& r) {
     surfaces[i] = s.surfaces;
     scene[i] = static_cast<std::int64_t>(s.scene);
     area[i] = s.area;
+    for (std::size_t k = 0; k < s.drawn.size(); ++k) drawn[i] += (k ? " " : "") + std::to_string(s.drawn[k]);
   }
   cols["light"] = light;
   cols["surfaces"] = py::array(py::cast(surfaces));
   cols["scene"] = py::array(py::cast(scene));
   cols["kind"] = kind;
   cols["area"] = py::array(py::cast(area));
+  cols["drawn"] = drawn;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t k = 0; k < r.rules.size(); ++k) {
     std::vector<double> mx(n, nan), my(n, nan), err(n, nan), wc(n, nan), il(n, nan), rep(n, nan);

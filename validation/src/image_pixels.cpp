@@ -26,6 +26,30 @@ long long rounded(const Rational& q, bool up) {
 long long floor_of(const Rational& q) { return rounded(q, false); }
 long long ceil_of(const Rational& q) { return rounded(q, true); }
 
+// Sort 48-bit keys ascending: least-significant-digit radix sort, three passes of 16 bits
+// (a megapixel image's keys in a few milliseconds, against tens for a comparison sort). Small
+// inputs take std::sort. The result is the same sorted sequence either way.
+void sort_keys(std::vector<std::uint64_t>& keys) {
+  if (keys.size() < 4096) {
+    std::sort(keys.begin(), keys.end());
+    return;
+  }
+  std::vector<std::uint64_t> buffer(keys.size());
+  std::vector<std::size_t> count(1 << 16);
+  for (int shift = 0; shift < 48; shift += 16) {
+    std::fill(count.begin(), count.end(), 0);
+    for (std::uint64_t k : keys) ++count[(k >> shift) & 0xffff];
+    std::size_t sum = 0;
+    for (std::size_t& c : count) {
+      const std::size_t n = c;
+      c = sum;
+      sum += n;
+    }
+    for (std::uint64_t k : keys) buffer[count[(k >> shift) & 0xffff]++] = k;
+    keys.swap(buffer);
+  }
+}
+
 }  // namespace
 
 std::vector<bool> polygon_cover(const std::vector<Point2>& polygon, std::size_t width,
@@ -133,7 +157,7 @@ ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
       }
     }
   if (b == 1) {
-    std::sort(keys.begin(), keys.end());
+    sort_keys(keys);
     keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
     out.counts.colours = keys.size();
     auto channels = [](std::uint64_t key) {
