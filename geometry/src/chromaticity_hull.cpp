@@ -203,6 +203,8 @@ ChromaticityHull chromaticity_hull_of_pixels(const std::vector<std::array<std::u
     if (corner.size() >= 3) {
       // orient(a, b, c) = det[a; b; c] = (a × b) · c: each edge's cross product once (entries
       // below 2^33), then three products below 2^49 per point; the same exact value.
+      // Fewer than eight distinct corners: the first edge fills the rest (a repeated test), so
+      // that every point takes the same eight branch-free tests.
       const std::size_t k = corner.size();
       std::array<std::array<std::int64_t, 3>, 8> normal;
       for (std::size_t e = 0; e < k; ++e) {
@@ -212,10 +214,12 @@ ChromaticityHull chromaticity_hull_of_pixels(const std::vector<std::array<std::u
                      std::int64_t(a[2]) * b[0] - std::int64_t(a[0]) * b[2],
                      std::int64_t(a[0]) * b[1] - std::int64_t(a[1]) * b[0]};
       }
-      auto inside = [&](const C& c) {
-        for (std::size_t e = 0; e < k; ++e)
-          if (normal[e][0] * c[0] + normal[e][1] * c[1] + normal[e][2] * c[2] <= 0) return false;
-        return true;
+      for (std::size_t e = k; e < 8; ++e) normal[e] = normal[0];
+      auto inside = [&normal](const C& c) {
+        bool in = true;
+        for (std::size_t e = 0; e < 8; ++e)
+          in &= normal[e][0] * c[0] + normal[e][1] * c[1] + normal[e][2] * c[2] > 0;
+        return in;
       };
       p.erase(std::remove_if(p.begin(), p.end(), inside), p.end());
     }

@@ -21,7 +21,9 @@
 
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 
@@ -478,6 +480,25 @@ PYBIND11_MODULE(_core, m) {
                               "scenes without an error first");
     return error_statistics(std::move(v));
   }, py::arg("values"));
+
+  // For bench/python_overhead.py only: the same scenes through select_scene in a C++ loop (the
+  // inputs converted first, outside the clock), seconds per call, to compare a call from Python
+  // with the C++ call in one run.
+  m.def(
+      "_time_select_scene",
+      [](const std::shared_ptr<PreparedCanonical>& canonical, py::list scenes, int repeats) {
+        std::vector<std::vector<Colour>> colours;
+        for (py::handle s : scenes) colours.push_back(colours_from(s, "scenes"));
+        py::gil_scoped_release nogil;
+        std::size_t sink = 0;
+        const auto start = std::chrono::steady_clock::now();
+        for (int k = 0; k < repeats; ++k)
+          for (const auto& c : colours) sink += select_scene(*canonical, c).feasible.vertices.size();
+        const std::chrono::duration<double> t = std::chrono::steady_clock::now() - start;
+        if (sink == std::size_t(-1)) std::abort();  // keeps the loop's results used
+        return t.count() / (double(repeats) * double(colours.size()));
+      },
+      py::arg("canonical"), py::arg("scenes"), py::arg("repeats"));
 
   m.def(
       "run_synthetic",

@@ -2,7 +2,7 @@
 """Run the ```python blocks of a Markdown page in order, in one namespace, as a reader pasting
 them would (docs/python.md's worked example). Exit status 1, naming the block, if one raises.
 
-    run_python_doc.py PAGE.md
+    run_python_doc.py docs/python.md   (any page with ```python blocks)
 """
 
 import re
