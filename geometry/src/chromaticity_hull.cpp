@@ -185,15 +185,25 @@ ChromaticityHull chromaticity_hull_of_pixels(const std::vector<std::array<std::u
   // cross-multiplication: |α·r + β·g| < 2^17 and b < 2^16, so the products fit in 64 bits.
   if (p.size() > 64) {
     static constexpr int dir[8][2] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
-    std::size_t best[8] = {0, 0, 0, 0, 0, 0, 0, 0};
-    for (std::size_t i = 1; i < p.size(); ++i)
+    // Per direction, the best point's rank as the fraction num/den (den = its b).
+    std::int64_t num[8], den[8];
+    std::size_t best[8];
+    for (int d = 0; d < 8; ++d) {
+      best[d] = 0;
+      num[d] = dir[d][0] * std::int64_t(p[0][0]) + dir[d][1] * std::int64_t(p[0][1]);
+      den[d] = p[0][2];
+    }
+    for (std::size_t i = 1; i < p.size(); ++i) {
+      const std::int64_t r = p[i][0], g = p[i][1], b = p[i][2];
       for (int d = 0; d < 8; ++d) {
-        const C& a = p[i];
-        const C& b = p[best[d]];
-        const std::int64_t fa = dir[d][0] * std::int64_t(a[0]) + dir[d][1] * std::int64_t(a[1]);
-        const std::int64_t fb = dir[d][0] * std::int64_t(b[0]) + dir[d][1] * std::int64_t(b[1]);
-        if (fa * std::int64_t(b[2]) > fb * std::int64_t(a[2])) best[d] = i;
+        const std::int64_t f = dir[d][0] * r + dir[d][1] * g;
+        if (f * den[d] > num[d] * b) {
+          best[d] = i;
+          num[d] = f;
+          den[d] = b;
+        }
       }
+    }
     std::vector<C> corner;
     for (int d = 0; d < 8; ++d) {
       const C& c = p[best[d]];
