@@ -48,7 +48,7 @@ __all__ = [
     "select_maps", "max_area", "mean_2d", "mean_3d", "worst_case_map_deg",
     "worst_case_illuminant_deg", "map_angular_error_deg", "illuminant_angular_error_deg",
     "reproduction_angular_error_deg", "illuminant_map", "illumination_constraint", "crule_3d",
-    "error_statistics", "summarise", "reproduce_synthetic", "data_dir",
+    "error_statistics", "summarise", "reproduce_synthetic", "reproduce_camera", "data_dir",
 ]
 
 _OPTIONS = ("expand", "expand_policy", "illuminants", "canonical_illuminant", "on_empty", "mean3d",
@@ -254,17 +254,37 @@ def data_dir() -> str:
 
 def reproduce_synthetic(*, lights=("D75", "D100", "P2856", "P15000"), canonical="D55",
                         min_surfaces=1, max_surfaces=11, scenes=500, seed=1, expand=0,
-                        expand_policy="none", threads=0, data=None, frame=None):
+                        expand_policy="none", crule=False, threads=0, data=None, frame=None):
     """The synthetic experiment of Finlayson & Hordley (1999) §4, Fig. 3 (synthetic_experiment.h,
-    gamut_experiment.h; ``gmcc reproduce synthetic``): narrow-band sensors, the 1269 Munsell chips,
-    canonical light ``canonical``, ``scenes`` seeded scenes per test light and surface count.
-    The same seed gives the same records, whatever ``threads``.
+    gamut_experiment.h; ``gmcc reproduce synthetic``): narrow-band sensors at 610, 540 and
+    450 nm, the 1269 Munsell chips, canonical light ``canonical``, ``scenes`` seeded scenes per
+    test light and surface count n = ``min_surfaces`` … ``max_surfaces``. ``expand`` /
+    ``expand_policy`` enlarge the canonical gamut; ``crule`` adds Forsyth's 3-D CRULE
+    (``crule_max_volume``, ``crule_centroid``; slow). The same seed gives the same records,
+    whatever ``threads``.
 
-    Returns one record per scene — light, surfaces, scene, kind, area and for each rule
-    (max_area, mean_2d, mean_3d) its map (``*_map_x``, ``*_map_y``), ``*_error_deg``,
-    ``*_worst_case_deg``, ``*_illuminant_error_deg``, ``*_reproduction_error_deg`` (NaN where the
-    rule gave no map) — as a pandas DataFrame when pandas is installed (``frame=None`` or True),
-    else (or with ``frame=False``) a numpy structured array."""
-    result = _core.run_synthetic(data or data_dir(), canonical, list(lights), min_surfaces,
-                                 max_surfaces, scenes, seed, expand, expand_policy, threads)
+    Returns one record per scene — light, surfaces, scene, kind, area, drawn (the surfaces'
+    0-based indices, space-separated) and for each rule (max_area, mean_2d, mean_3d) its map
+    (``*_map_x``, ``*_map_y``), ``*_error_deg``, ``*_worst_case_deg``,
+    ``*_illuminant_error_deg``, ``*_reproduction_error_deg`` (NaN where the rule gave no map) —
+    as a pandas DataFrame when pandas is installed (``frame=None`` or True), else (or with
+    ``frame=False``) a numpy structured array."""
+    result = _core.run_experiment("synthetic", data or data_dir(), canonical, list(lights), "sfu",
+                                  min_surfaces, max_surfaces, scenes, seed, expand, expand_policy,
+                                  crule, threads)
+    return _records_frame(result["columns"], frame)
+
+
+def reproduce_camera(*, lights=("syl-50MR16Q", "solux-4700+3202"), canonical="solux-4700",
+                     canonical_surfaces="sfu", min_surfaces=1, max_surfaces=11, scenes=500, seed=1,
+                     expand=0, expand_policy="none", crule=False, threads=0, data=None, frame=None):
+    """The camera analogue of Finlayson & Hordley (1999) §4, Fig. 5 (camera_experiment.h;
+    ``gmcc reproduce camera``): the SONY DXC-930's sensitivities, the canonical gamut of the SFU
+    reflectances (``canonical_surfaces="sfu"``) or the 24 Macbeth patches (``"macbeth"``) under
+    ``canonical``, scenes of Macbeth patches under each SFU lab light in ``lights``. The diagonal
+    model is only approximate here, so a feasible set may be empty (``kind`` "empty", NaN
+    errors). Records as reproduce_synthetic."""
+    result = _core.run_experiment("camera", data or data_dir(), canonical, list(lights),
+                                  canonical_surfaces, min_surfaces, max_surfaces, scenes, seed, expand,
+                                  expand_policy, crule, threads)
     return _records_frame(result["columns"], frame)

@@ -250,5 +250,9 @@ def summarise(records: Any, rule: str = ..., error: str = ...,
 def data_dir() -> str: ...
 def reproduce_synthetic(*, lights: Sequence[str] = ..., canonical: str = ..., min_surfaces: int = ...,
                         max_surfaces: int = ..., scenes: int = ..., seed: int = ..., expand: Number = ...,
-                        expand_policy: str = ..., threads: int = ..., data: Optional[str] = ...,
+                        expand_policy: str = ..., crule: bool = ..., threads: int = ..., data: Optional[str] = ...,
                         frame: Optional[bool] = ...) -> Any: ...
+def reproduce_camera(*, lights: Sequence[str] = ..., canonical: str = ..., canonical_surfaces: str = ...,
+                     min_surfaces: int = ..., max_surfaces: int = ..., scenes: int = ..., seed: int = ...,
+                     expand: Number = ..., expand_policy: str = ..., crule: bool = ..., threads: int = ...,
+                     data: Optional[str] = ..., frame: Optional[bool] = ...) -> Any: ...

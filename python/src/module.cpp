@@ -14,6 +14,7 @@
 #include <gmcc/selection/worst_case.h>
 #include <gmcc/selection/worst_case_illuminant.h>
 #include <gmcc/validation/build_info.h>
+#include <gmcc/validation/camera_experiment.h>
 #include <gmcc/validation/error_statistics.h>
 #include <gmcc/validation/gamut_experiment.h>
 #include <gmcc/validation/spectral_table.h>
@@ -501,16 +502,22 @@ PYBIND11_MODULE(_core, m) {
       py::arg("canonical"), py::arg("scenes"), py::arg("repeats"));
 
   m.def(
-      "run_synthetic",
-      [](const std::string& data_dir, const std::string& canonical, const std::vector<std::string>& lights,
-         int min_surfaces, int max_surfaces, std::uint64_t scenes, std::uint64_t seed, py::handle expand,
-         const std::string& expand_policy, unsigned threads) {
+      "run_experiment",
+      [](const std::string& experiment, const std::string& data_dir, const std::string& canonical,
+         const std::vector<std::string>& lights, const std::string& canonical_surfaces, int min_surfaces,
+         int max_surfaces, std::uint64_t scenes, std::uint64_t seed, py::handle expand,
+         const std::string& expand_policy, bool crule, unsigned threads) {
+        if (experiment != "synthetic" && experiment != "camera")
+          throw py::value_error("experiment: " + quoted_text(experiment) + " is not one of synthetic, camera");
+        if (canonical_surfaces != "sfu" && canonical_surfaces != "macbeth")
+          throw py::value_error("canonical_surfaces: " + quoted_text(canonical_surfaces) + " is not one of sfu, macbeth");
         ExperimentConfig config;
         config.min_surfaces = min_surfaces;
         config.max_surfaces = max_surfaces;
         config.scenes = scenes;
         config.seed = seed;
         config.threads = threads;
+        config.crule = crule;
         config.keep_scenes = true;
         try {
           config.expansion.policy = expansion_policy_from_string(expand_policy);
@@ -519,14 +526,26 @@ PYBIND11_MODULE(_core, m) {
         }
         config.expansion.factor = number_from(expand, "expand");
         if (sgn(config.expansion.factor) < 0) throw py::value_error("expand: must be >= 0");
-        if (min_surfaces < 1 || max_surfaces < min_surfaces || max_surfaces > 1269)
-          throw py::value_error("surfaces: need 1 <= min_surfaces <= max_surfaces <= 1269");
+        if (sgn(config.expansion.factor) > 0 && config.expansion.policy == ExpansionPolicy::none)
+          throw py::value_error("expand: needs expand_policy='centroid-clip' or 'multiplicative'");
+        if (min_surfaces < 1 || max_surfaces < min_surfaces)
+          throw py::value_error("surfaces: need 1 <= min_surfaces <= max_surfaces");
+        if (scenes < 1) throw py::value_error("scenes: must be >= 1");
         ExperimentResult r;
         try {
           py::gil_scoped_release nogil;
-          const SpectralTable munsell = read_spectral_csv(data_dir + "/munsell_matt_1269_joensuu_5nm.csv");
-          const SpectralTable basis = read_spectral_csv(data_dir + "/cie_daylight_basis_S0_S1_S2.csv");
-          const ExperimentSetup setup = synthetic_setup(munsell, basis, canonical, lights);
+          auto table = [&](const char* name) { return read_spectral_csv(data_dir + "/" + name); };
+          ExperimentSetup setup;
+          if (experiment == "synthetic") {
+            setup = synthetic_setup(table("munsell_matt_1269_joensuu_5nm.csv"),
+                                    table("cie_daylight_basis_S0_S1_S2.csv"), canonical, lights);
+          } else {
+            setup = camera_setup(table("camera_sony_dxc930_sfu_4nm.csv"),
+                                 table(canonical_surfaces == "macbeth" ? "sfu_macbeth_24_4nm.csv"
+                                                                       : "sfu_reflect_db_1995_4nm.csv"),
+                                 table("sfu_macbeth_24_4nm.csv"), table("sfu_lab_11_illuminants_4nm.csv"),
+                                 canonical, lights);
+          }
           r = run_gamut_experiment(setup, config);
         } catch (const std::invalid_argument& e) {
           throw py::value_error(e.what());
@@ -541,7 +560,7 @@ PYBIND11_MODULE(_core, m) {
         out["canonical_gamut"] = r.canonical_gamut;
         return out;
       },
-      py::arg("data_dir"), py::arg("canonical"), py::arg("lights"), py::arg("min_surfaces"),
-      py::arg("max_surfaces"), py::arg("scenes"), py::arg("seed"), py::arg("expand"), py::arg("expand_policy"),
-      py::arg("threads"));
+      py::arg("experiment"), py::arg("data_dir"), py::arg("canonical"), py::arg("lights"),
+      py::arg("canonical_surfaces"), py::arg("min_surfaces"), py::arg("max_surfaces"), py::arg("scenes"),
+      py::arg("seed"), py::arg("expand"), py::arg("expand_policy"), py::arg("crule"), py::arg("threads"));
 }
