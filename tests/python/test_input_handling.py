@@ -5,6 +5,7 @@ invalid one must raise ValueError or TypeError naming the argument (and the row)
 
 import math
 import threading
+import time
 from fractions import Fraction
 
 import numpy as np
@@ -210,3 +211,37 @@ def test_threads_agree_with_serial():
         assert a.feasible_set == b.feasible_set
         if a.mean_3d:
             assert a.mean_3d.map == b.mean_3d.map
+
+
+def gaps_while(call):
+    """Run `call` in a thread while this thread records time stamps in a loop; the largest gap
+    between this thread's stamps within the call, and the call's duration."""
+    started, done = threading.Event(), threading.Event()
+    span = []
+
+    def work():
+        started.set()
+        t0 = time.perf_counter()
+        call()
+        span.extend([t0, time.perf_counter()])
+        done.set()
+    t = threading.Thread(target=work)
+    t.start()
+    started.wait()
+    stamps = []
+    while not done.is_set():
+        stamps.append(time.perf_counter())
+    t.join()
+    t0, t1 = span
+    inside = [t0] + [x for x in stamps if t0 < x < t1] + [t1]
+    return max(b - a for a, b in zip(inside, inside[1:])), t1 - t0
+
+
+def test_the_gil_is_released_during_a_call():
+    """While one thread is inside a long library call (a Monte Carlo 3-D mean), this thread
+    keeps running Python: no gap in its progress comes near the call's length. (Were the GIL
+    held, it could not run from the call's start to its end: one gap as long as the call. A
+    comparison of two times of one run, not a timed assertion.)"""
+    F = gmcc.feasible_set(CANONICAL, [[1, 1, 1]])
+    gap, length = gaps_while(lambda: gmcc.mean_3d(F, method="monte-carlo", samples=5_000_000, seed=1))
+    assert gap < length / 2, (gap, length)
