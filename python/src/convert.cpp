@@ -224,14 +224,27 @@ std::vector<Colour> colours_from(py::handle x, const std::string& argument) {
 
 Colour light_from(py::handle x, const std::string& argument) {
   std::vector<Colour> one;
-  if (py::isinstance<py::array>(x) && py::reinterpret_borrow<py::array>(x).ndim() == 1)
+  if (py::isinstance<py::str>(x)) {  // "r,g,b", as the command line's light options
+    py::list fields = x.attr("split")(",");
+    if (fields.size() != 3)
+      throw py::value_error(argument + ": expected one light r,g,b (3 numbers), found " +
+                            std::to_string(fields.size()) + " in " + quoted_text(x.cast<std::string>()));
+    py::list stripped;
+    for (py::handle f : fields) stripped.append(f.attr("strip")());
+    one = colours_from(py::make_tuple(stripped), argument);
+  } else if (py::isinstance<py::array>(x) && py::reinterpret_borrow<py::array>(x).ndim() == 1) {
+    if (py::len(x) != 3)
+      throw py::value_error(argument + ": expected one light r,g,b (3 numbers), found " + std::to_string(py::len(x)));
     one = colours_from(py::module_::import("numpy").attr("reshape")(x, py::make_tuple(1, -1)), argument);
-  else if (!is_text(x) && py::isinstance<py::sequence>(x) && py::len(x) == 3 &&
-           [](py::handle first) { return is_text(first) || !py::isinstance<py::sequence>(first); }(
-               py::reinterpret_borrow<py::sequence>(x)[0]))
+  } else if (!is_text(x) && py::isinstance<py::sequence>(x) && py::len(x) > 0 &&
+             [](py::handle first) { return is_text(first) || !py::isinstance<py::sequence>(first); }(
+                 py::reinterpret_borrow<py::sequence>(x)[0])) {
+    if (py::len(x) != 3)
+      throw py::value_error(argument + ": expected one light r,g,b (3 numbers), found " + std::to_string(py::len(x)));
     one = colours_from(py::make_tuple(x), argument);
-  else
+  } else {
     one = colours_from(x, argument);
+  }
   if (one.size() != 1) throw py::value_error(argument + ": expected one light r,g,b");
   const Colour& l = one[0];
   for (const Rational* v : {&l.r, &l.g, &l.b})

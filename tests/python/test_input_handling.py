@@ -245,3 +245,19 @@ def test_the_gil_is_released_during_a_call():
     F = gmcc.feasible_set(CANONICAL, [[1, 1, 1]])
     gap, length = gaps_while(lambda: gmcc.mean_3d(F, method="monte-carlo", samples=5_000_000, seed=1))
     assert gap < length / 2, (gap, length)
+
+
+def test_lights_in_every_form():
+    """A light (truth, canonical_illuminant, an illuminant map) as a tuple, a 1-D array, one row,
+    or the command line's text "r,g,b": the same exact light; bad ones named."""
+    want = gmcc.select(CANONICAL, [[1, 1, 1]], truth=(Fraction(1), 2, "3")).truth.map
+    for light in ("1,2,3", " 1, 2 ,3", np.array([1.0, 2.0, 3.0]), [[1, 2, 3]], np.array([1, 2, 3], np.uint8)):
+        assert gmcc.select(CANONICAL, [[1, 1, 1]], truth=light).truth.map == want
+    for light, message in [((1, 1), "truth: expected one light r,g,b \\(3 numbers\\), found 2"),
+                           ("1,1", "found 2 in '1,1'"), ((1, 2, 0), "truth: every channel must be > 0"),
+                           ("a,b,c", "truth: row 0: channel r: 'a' is not a number"),
+                           ([[1, 2, 3], [1, 2, 3]], "truth: expected one light")]:
+        with pytest.raises(ValueError, match=message):
+            gmcc.select(CANONICAL, [[1, 1, 1]], truth=light)
+    with pytest.raises(TypeError, match="truth"):
+        gmcc.select(CANONICAL, [[1, 1, 1]], truth=5)
