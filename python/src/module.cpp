@@ -343,7 +343,8 @@ PYBIND11_MODULE(_core, m) {
   m.attr("__data_dir__") = std::string(GMCC_DATA_DIR);  // the source tree's data/, at build time
   bind_results(m);
 
-  m.def("prepare_canonical", &prepare, py::arg("canonical"), py::kw_only(), GMCC_OPTION_ARGS);
+  m.def("prepare_canonical", &prepare, py::arg("canonical"), py::kw_only(), GMCC_OPTION_ARGS,
+        "The canonical side prepared once (prepare_canonical.h; Finlayson & Hordley 1999 eq. 10). Public: gmcc.prepare_canonical.");
 
   m.def(
       "select_prepared",
@@ -352,7 +353,8 @@ PYBIND11_MODULE(_core, m) {
         return run_scene(canonical, image, truth, {mask, black_level, saturation}, true);
       },
       py::arg("canonical"), py::arg("image"), py::arg("truth") = py::none(), py::arg("mask") = py::none(),
-      py::arg("black_level") = 0, py::arg("saturation") = py::none());
+      py::arg("black_level") = 0, py::arg("saturation") = py::none(),
+        "select_scene (select_scene.h) on colours or an H×W×3 image. Public: gmcc.select.");
 
   m.def(
       "feasible_prepared",
@@ -361,14 +363,16 @@ PYBIND11_MODULE(_core, m) {
         return run_scene(canonical, image, py::none(), {mask, black_level, saturation}, false);
       },
       py::arg("canonical"), py::arg("image"), py::arg("mask") = py::none(), py::arg("black_level") = 0,
-      py::arg("saturation") = py::none());
+      py::arg("saturation") = py::none(),
+        "scene_feasible_set (select_scene.h): F alone. Public: gmcc.feasible_set.");
 
   m.def(
       "image_colours",
       [](py::handle image, py::object mask, py::object black_level, py::object saturation) {
         return image_colours_of(image, {mask, black_level, saturation});
       },
-      py::arg("image"), py::arg("mask") = py::none(), py::arg("black_level") = 0, py::arg("saturation") = py::none());
+      py::arg("image"), py::arg("mask") = py::none(), py::arg("black_level") = 0, py::arg("saturation") = py::none(),
+        "The pixel rules (image_pixels.h; docs/conventions.md §8). Public: gmcc.image_colours.");
 
   m.def(
       "select_maps",
@@ -389,16 +393,19 @@ PYBIND11_MODULE(_core, m) {
       },
       py::arg("feasible_set"), py::kw_only(), py::arg("mean3d") = "analytic", py::arg("precision") = 0,
       py::arg("order") = 12, py::arg("samples") = 1000000, py::arg("seed") = 1,
-      py::arg("canonical_illuminant") = py::none());
+      py::arg("canonical_illuminant") = py::none(),
+        "The three selection rules with worst cases (select_maps.h; §3, §4). Public: gmcc.select_maps.");
 
   m.def("max_area", [](const ConvexSet2& F) {
     nonempty(F, "max_area");
     return released([&] { return max_area(F); });
-  }, py::arg("feasible_set"));
+  }, py::arg("feasible_set"),
+        "max_area (max_area.h; Finlayson & Hordley 1999 §3.1).");
   m.def("mean_2d", [](const ConvexSet2& F) {
     nonempty(F, "mean_2d");
     return released([&] { return mean_2d(F); });
-  }, py::arg("feasible_set"));
+  }, py::arg("feasible_set"),
+        "mean_2d (mean_2d.h; Finlayson & Hordley 1999 §3.2).");
   m.def(
       "mean_3d",
       [](const ConvexSet2& F, const std::string& method, py::handle precision, py::handle order, py::handle samples,
@@ -410,13 +417,15 @@ PYBIND11_MODULE(_core, m) {
         return released([&] { return mean_3d(F, o); });
       },
       py::arg("feasible_set"), py::kw_only(), py::arg("method") = "analytic", py::arg("precision") = 0,
-      py::arg("order") = 12, py::arg("samples") = 1000000, py::arg("seed") = 1);
+      py::arg("order") = 12, py::arg("samples") = 1000000, py::arg("seed") = 1,
+        "mean_3d by a route (mean_3d.h; Finlayson & Hordley 1999 §3.2, docs/math.md §2).");
 
   m.def("worst_case_map_deg", [](const ConvexSet2& F, py::handle map) {
     nonempty(F, "worst_case_map_deg");
     const Point2 p = map_from(map, "map");
     return released([&] { return worst_case_map_deg(F, p); });
-  }, py::arg("feasible_set"), py::arg("map"));
+  }, py::arg("feasible_set"), py::arg("map"),
+        "worst_case_map_deg (worst_case.h; Finlayson & Hordley 1999 §4).");
   m.def("worst_case_illuminant_deg", [](const ConvexSet2& F, py::handle map, py::handle c) {
     nonempty(F, "worst_case_illuminant_deg");
     const Point2 p = map_from(map, "map");
@@ -426,29 +435,34 @@ PYBIND11_MODULE(_core, m) {
         throw py::value_error("feasible_set: a vertex touches an axis (an illuminant needs maps > 0)");
     if (sgn(p.x) <= 0 || sgn(p.y) <= 0) throw py::value_error("map: both components must be > 0");
     return released([&] { return worst_case_illuminant_deg(F, p, light); });
-  }, py::arg("feasible_set"), py::arg("map"), py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1));
+  }, py::arg("feasible_set"), py::arg("map"), py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1),
+        "worst_case_illuminant_deg (worst_case_illuminant.h; docs/derivations.md §3.2).");
 
   m.def("map_angular_error_deg", [](py::handle estimate, py::handle truth) {
     const Point2 e = map_from(estimate, "estimate"), t = map_from(truth, "truth");
     return map_angular_error_deg(e, t);
-  }, py::arg("estimate"), py::arg("truth"));
+  }, py::arg("estimate"), py::arg("truth"),
+        "map_angular_error_deg (angular_error.h; Finlayson & Hordley 1999 §4).");
   m.def("illuminant_angular_error_deg", [](py::handle estimate, py::handle truth, py::handle c) {
     const Point2 e = map_from(estimate, "estimate"), t = map_from(truth, "truth");
     const Colour light = light_from(c, "canonical_illuminant");
     for (const Point2* p : {&e, &t})
       if (sgn(p->x) <= 0 || sgn(p->y) <= 0) throw py::value_error("estimate and truth: components must be > 0");
     return illuminant_angular_error_deg(e, t, light);
-  }, py::arg("estimate"), py::arg("truth"), py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1));
+  }, py::arg("estimate"), py::arg("truth"), py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1),
+        "illuminant_angular_error_deg (angular_error.h).");
   m.def("reproduction_angular_error_deg", [](py::handle estimate, py::handle truth) {
     const Point2 e = map_from(estimate, "estimate"), t = map_from(truth, "truth");
     for (const Point2* p : {&e, &t})
       if (sgn(p->x) <= 0 || sgn(p->y) <= 0) throw py::value_error("estimate and truth: components must be > 0");
     return reproduction_angular_error_deg(e, t);
-  }, py::arg("estimate"), py::arg("truth"));
+  }, py::arg("estimate"), py::arg("truth"),
+        "reproduction_angular_error_deg (angular_error.h).");
 
   m.def("illuminant_map", [](py::handle light, py::handle c) {
     return to_fraction_pair(illuminant_map(light_from(light, "light"), light_from(c, "canonical_illuminant")));
-  }, py::arg("light"), py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1));
+  }, py::arg("light"), py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1),
+        "illuminant_map (illumination_constraint.h): c ⊘ e in perspective, exact.");
   m.def("illumination_constraint", [](py::handle illuminants, py::handle c) {
     const std::vector<Colour> lights = colours_from(illuminants, "illuminants");
     const Colour light = light_from(c, "canonical_illuminant");
@@ -457,7 +471,8 @@ PYBIND11_MODULE(_core, m) {
     } catch (const NonPositiveIlluminant& e) {
       throw py::value_error("illuminants: row " + std::to_string(e.index) + ": " + e.what());
     }
-  }, py::arg("illuminants"), py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1));
+  }, py::arg("illuminants"), py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1),
+        "illumination_constraint (illumination_constraint.h; Finlayson 1996 §5).");
 
   m.def("crule_3d", [](py::handle canonical, py::handle image, const std::string& black) {
     const std::vector<Colour> c = colours_from(canonical, "canonical"), i = colours_from(image, "image");
@@ -469,7 +484,8 @@ PYBIND11_MODULE(_core, m) {
     } catch (const std::invalid_argument& e) {
       throw py::value_error(std::string("crule_3d: ") + e.what());
     }
-  }, py::arg("canonical"), py::arg("image"), py::kw_only(), py::arg("black") = "include");
+  }, py::arg("canonical"), py::arg("image"), py::kw_only(), py::arg("black") = "include",
+        "crule_3d (crule_3d.h): Forsyth's CRULE in 3-D.");
 
   m.def("error_statistics", [](py::handle values) {
     const py::array_t<double, py::array::c_style | py::array::forcecast> a =
@@ -480,7 +496,8 @@ PYBIND11_MODULE(_core, m) {
         throw py::value_error("values: element " + std::to_string(i) + " is not finite (NaN or infinity): drop "
                               "scenes without an error first");
     return error_statistics(std::move(v));
-  }, py::arg("values"));
+  }, py::arg("values"),
+        "error_statistics (error_statistics.h; docs/reproduction.md \"Statistics\").");
 
   // For bench/python_overhead.py only: the same scenes through select_scene in a C++ loop (the
   // inputs converted first, outside the clock), seconds per call, to compare a call from Python
@@ -499,7 +516,8 @@ PYBIND11_MODULE(_core, m) {
         if (sink == std::size_t(-1)) std::abort();  // keeps the loop's results used
         return t.count() / (double(repeats) * double(colours.size()));
       },
-      py::arg("canonical"), py::arg("scenes"), py::arg("repeats"));
+      py::arg("canonical"), py::arg("scenes"), py::arg("repeats"),
+        "For bench/python_overhead.py: seconds per select_scene call in a C++ loop.");
 
   m.def(
       "run_experiment",
@@ -562,5 +580,6 @@ PYBIND11_MODULE(_core, m) {
       },
       py::arg("experiment"), py::arg("data_dir"), py::arg("canonical"), py::arg("lights"),
       py::arg("canonical_surfaces"), py::arg("min_surfaces"), py::arg("max_surfaces"), py::arg("scenes"),
-      py::arg("seed"), py::arg("expand"), py::arg("expand_policy"), py::arg("crule"), py::arg("threads"));
+      py::arg("seed"), py::arg("expand"), py::arg("expand_policy"), py::arg("crule"), py::arg("threads"),
+        "run_gamut_experiment on synthetic_setup or camera_setup, with every scene's record (gamut_experiment.h).");
 }
