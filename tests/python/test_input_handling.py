@@ -261,3 +261,54 @@ def test_lights_in_every_form():
             gmcc.select(CANONICAL, [[1, 1, 1]], truth=light)
     with pytest.raises(TypeError, match="truth"):
         gmcc.select(CANONICAL, [[1, 1, 1]], truth=5)
+
+
+def pixel_rules_in_python(img, mask, black, saturation):
+    """The pixel rules of docs/conventions.md §8, by Python alone, as exact colours."""
+    out = []
+    for y in range(img.shape[0]):
+        for x in range(img.shape[1]):
+            if mask is not None and not mask[y, x]:
+                continue
+            v = [Fraction(c.item()) for c in img[y, x]]
+            if saturation is not None and any(c >= Fraction(saturation) for c in v):
+                continue
+            out.append([max(c - Fraction(black), Fraction(0)) for c in v])
+    return out
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(data=st.data(), dtype=st.sampled_from([np.uint8, np.uint16, np.int32, np.float32, np.float64]))
+def test_images_equal_their_pixels_as_colours(data, dtype):
+    """An H×W×3 image with a mask, black level and saturation gives the feasible set of its
+    kept pixels listed as colours (the rules applied here in Python), or the same kind of error."""
+    dt = np.dtype(dtype)
+    h, w = data.draw(st.integers(1, 5)), data.draw(st.integers(1, 5))
+    if dt.kind == "f":
+        values = st.integers(0, 64).map(lambda k: k / 8)  # exact steps: black subtracts exactly
+        black = data.draw(st.sampled_from([0, 0.5, 1.0]))
+        saturation = data.draw(st.sampled_from([None, 6.0, 7.5]))
+    else:
+        values = st.integers(0, 250)
+        black = data.draw(st.sampled_from([0, 3, 10]))
+        saturation = data.draw(st.sampled_from([None, 200, 250]))
+    img = data.draw(hnp.arrays(dt, (h, w, 3), elements=values))
+    mask = data.draw(st.one_of(st.none(), hnp.arrays(np.bool_, (h, w))))
+    if data.draw(st.booleans()):
+        img = np.asfortranarray(img)
+    listed = pixel_rules_in_python(img, mask, black, saturation)
+    kwargs = dict(mask=mask, black_level=black, saturation=saturation)
+    try:
+        want = gmcc.feasible_set(CANONICAL, listed) if listed else None
+    except ValueError:
+        with pytest.raises(ValueError):
+            gmcc.feasible_set(CANONICAL, img, **kwargs)
+        return
+    if want is None:
+        with pytest.raises(ValueError, match="no usable pixel"):
+            gmcc.feasible_set(CANONICAL, img, **kwargs)
+        return
+    assert gmcc.feasible_set(CANONICAL, img, **kwargs) == want
+    counts = gmcc.image_colours(img, **kwargs).counts
+    assert counts["kept"] == len(listed)
+    assert counts["colours"] == len({tuple(c) for c in listed})
