@@ -8,8 +8,14 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
+from hypothesis import settings
 
 import gmcc
+
+# Property tests are reproducible (the same examples every run: derandomized) and leave no
+# example database behind in the working directory.
+settings.register_profile("gmcc", derandomize=True, database=None)
+settings.load_profile("gmcc")
 
 REPO = Path(__file__).resolve().parents[2]
 DATA = Path(os.environ.get("GMCC_DATA_DIR", REPO / "data"))
