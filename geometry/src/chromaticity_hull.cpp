@@ -178,6 +178,62 @@ ChromaticityHull chromaticity_hull_of_pixels(const std::vector<std::array<std::u
                              b0 * (r1 * g2 - r2 * g1);
     return (det > 0) - (det < 0);
   };
+  // Akl & Toussaint (1978), exactly: the points extreme in eight directions of the chromaticity
+  // plane lie on the hull in counter-clockwise order (ties: any point of the extreme face keeps
+  // that order), so a point strictly inside every edge of their octagon is no hull vertex and
+  // is dropped before the sort. Direction (α, β) ranks (α·r + β·g)/b, compared by
+  // cross-multiplication: |α·r + β·g| < 2^17 and b < 2^16, so the products fit in 64 bits.
+  if (p.size() > 64) {
+    static constexpr int dir[8][2] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+    // Per direction, the best point's rank as the fraction num/den (den = its b).
+    std::int64_t num[8], den[8];
+    std::size_t best[8];
+    for (int d = 0; d < 8; ++d) {
+      best[d] = 0;
+      num[d] = dir[d][0] * std::int64_t(p[0][0]) + dir[d][1] * std::int64_t(p[0][1]);
+      den[d] = p[0][2];
+    }
+    for (std::size_t i = 1; i < p.size(); ++i) {
+      const std::int64_t r = p[i][0], g = p[i][1], b = p[i][2];
+      for (int d = 0; d < 8; ++d) {
+        const std::int64_t f = dir[d][0] * r + dir[d][1] * g;
+        if (f * den[d] > num[d] * b) {
+          best[d] = i;
+          num[d] = f;
+          den[d] = b;
+        }
+      }
+    }
+    std::vector<C> corner;
+    for (int d = 0; d < 8; ++d) {
+      const C& c = p[best[d]];
+      if (corner.empty() || !same(corner.back(), c)) corner.push_back(c);
+    }
+    while (corner.size() > 1 && same(corner.back(), corner.front())) corner.pop_back();
+    if (corner.size() >= 3) {
+      // orient(a, b, c) = det[a; b; c] = (a × b) · c: each edge's cross product once (entries
+      // below 2^33), then three products below 2^49 per point; the same exact value.
+      // Fewer than eight distinct corners: the first edge fills the rest (a repeated test), so
+      // that every point takes the same eight branch-free tests.
+      const std::size_t k = corner.size();
+      std::array<std::array<std::int64_t, 3>, 8> normal;
+      for (std::size_t e = 0; e < k; ++e) {
+        const C& a = corner[e];
+        const C& b = corner[(e + 1) % k];
+        normal[e] = {std::int64_t(a[1]) * b[2] - std::int64_t(a[2]) * b[1],
+                     std::int64_t(a[2]) * b[0] - std::int64_t(a[0]) * b[2],
+                     std::int64_t(a[0]) * b[1] - std::int64_t(a[1]) * b[0]};
+      }
+      for (std::size_t e = k; e < 8; ++e) normal[e] = normal[0];
+      auto inside = [&normal](const C& c) {
+        bool in = true;
+        for (std::size_t e = 0; e < 8; ++e)
+          in &= normal[e][0] * c[0] + normal[e][1] * c[1] + normal[e][2] * c[2] > 0;
+        return in;
+      };
+      p.erase(std::remove_if(p.begin(), p.end(), inside), p.end());
+    }
+  }
   std::sort(p.begin(), p.end(), less);
   p.erase(std::unique(p.begin(), p.end(), same), p.end());
   std::vector<C> hull;

@@ -43,17 +43,8 @@ RecoveryReport recover(const PreparedCanonical& pc, const std::vector<Point2>& i
 
 }  // namespace
 
-SceneResult select_scene(const PreparedCanonical& pc, const std::vector<Colour>& image,
-                         const std::optional<Colour>& truth) {
+SceneResult scene_feasible_set(const PreparedCanonical& pc, const std::vector<Colour>& image) {
   const SelectSceneOptions& o = pc.options;
-  const Colour& c = o.canonical_illuminant;
-  std::optional<Point2> true_map;
-  if (truth) {
-    if (sgn(truth->r) <= 0 || sgn(truth->g) <= 0 || sgn(truth->b) <= 0)
-      throw SceneInputError(SceneInput::truth, SceneProblem::nonpositive_light, std::nullopt,
-                            "the true light needs every channel > 0 (its map c ⊘ e is undefined)");
-    true_map = illuminant_map(*truth, c);
-  }
   const Chromaticities iq = internal::scene_chromaticities(image, o.nonpositive_blue, SceneInput::image);
   SceneResult r;
   r.image_colours = image.size();
@@ -86,6 +77,21 @@ SceneResult select_scene(const PreparedCanonical& pc, const std::vector<Colour>&
                            "illuminant (the illumination constraint)"
                          : "no diagonal map takes every image colour into the canonical gamut";
   if (o.on_empty != RecoveryPolicy::none) r.recovery = recover(pc, iq.points, r);
+  return r;
+}
+
+SceneResult select_scene(const PreparedCanonical& pc, const std::vector<Colour>& image,
+                         const std::optional<Colour>& truth) {
+  const SelectSceneOptions& o = pc.options;
+  const Colour& c = o.canonical_illuminant;
+  std::optional<Point2> true_map;
+  if (truth) {
+    if (sgn(truth->r) <= 0 || sgn(truth->g) <= 0 || sgn(truth->b) <= 0)
+      throw SceneInputError(SceneInput::truth, SceneProblem::nonpositive_light, std::nullopt,
+                            "the true light needs every channel > 0 (its map c ⊘ e is undefined)");
+    true_map = illuminant_map(*truth, c);
+  }
+  SceneResult r = scene_feasible_set(pc, image);
   SelectionOptions selection;
   selection.mean3d = o.mean3d;
   if (o.illuminant_worst_case) selection.illuminant_worst_case_for = c;

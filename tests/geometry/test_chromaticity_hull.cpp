@@ -5,6 +5,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -91,6 +92,38 @@ BOOST_AUTO_TEST_CASE(integer_colours_agree_with_the_reference) {
   const ChromaticityHull line = chromaticity_hull_of_pixels(
       std::vector<std::array<std::uint16_t, 3>>{{1, 1, 1}, {2, 2, 1}, {3, 3, 1}, {6, 6, 2}});
   BOOST_TEST((line.hull.kind == ConvexKind::segment));
+}
+
+// Many pixels (the octagon prefilter of Akl & Toussaint drops most before the sort): clouds of
+// noisy colours, as in a chart image, and points on a few lines (ties with the octagon's edges,
+// its corners repeated); the same hull as the reference either way.
+BOOST_AUTO_TEST_CASE(integer_colours_many_points_agree_with_the_reference) {
+  std::mt19937_64 gen(20261125);
+  for (int trial = 0; trial < 12; ++trial) {
+    std::vector<std::array<std::uint16_t, 3>> ints;
+    std::vector<std::array<double, 3>> doubles;
+    std::uniform_int_distribution<int> centre(200, 60000), noise(-150, 150), pick(0, 5);
+    std::array<std::array<int, 3>, 6> cells;
+    for (auto& c : cells) c = {centre(gen), centre(gen), centre(gen)};
+    for (int i = 0; i < 5000; ++i) {
+      std::array<std::uint16_t, 3> c;
+      if (trial % 3 == 2) {  // on lines through few chromaticities: many exact ties
+        const int k = 1 + pick(gen);
+        const auto& base = cells[static_cast<std::size_t>(pick(gen))];
+        c = {std::uint16_t(base[0] / 8 * k), std::uint16_t(base[1] / 8 * k), std::uint16_t(base[2] / 8 * k)};
+      } else {
+        const auto& base = cells[static_cast<std::size_t>(pick(gen))];
+        for (int ch = 0; ch < 3; ++ch)
+          c[static_cast<std::size_t>(ch)] = std::uint16_t(std::clamp(base[static_cast<std::size_t>(ch)] + noise(gen), 0, 65535));
+      }
+      ints.push_back(c);
+      doubles.push_back({double(c[0]), double(c[1]), double(c[2])});
+    }
+    const ChromaticityHull h = chromaticity_hull_of_pixels(ints);
+    const ConvexSet2 want = reference(doubles);
+    BOOST_TEST_REQUIRE((h.hull.kind == want.kind), "trial " << trial);
+    BOOST_TEST_REQUIRE((h.hull.vertices == want.vertices), "trial " << trial);
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

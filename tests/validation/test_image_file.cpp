@@ -9,6 +9,7 @@
 #include <tiffio.h>
 
 #include <boost/test/unit_test.hpp>
+#include <cmath>
 #include <cstdio>
 #include <random>
 #include <set>
@@ -299,6 +300,68 @@ BOOST_AUTO_TEST_CASE(mondrian_is_what_it_says) {
   BOOST_CHECK_THROW(render_mondrian({}, spec), std::invalid_argument);
   spec.peak = 65535;
   BOOST_CHECK_THROW(render_mondrian(colours, spec), std::invalid_argument);
+}
+
+// Floating-point images (the Python module's float arrays): on integer-valued samples the same
+// hull colours and counts as the 16-bit route, whose rules are tested above; black level and
+// saturation as doubles; bad samples and inexact subtractions refused, naming the pixel.
+BOOST_AUTO_TEST_CASE(float_images_follow_the_integer_rules) {
+  std::mt19937_64 gen(17);
+  for (int trial = 0; trial < 60; ++trial) {
+    const unsigned range = trial % 3 == 0 ? 6 : trial % 3 == 1 ? 200 : 65535;
+    std::uniform_int_distribution<unsigned> channel(0, range);
+    RgbImage im;
+    im.width = 7 + static_cast<std::size_t>(trial % 5);
+    im.height = 5;
+    FloatRgbImage fim;
+    fim.width = im.width;
+    fim.height = im.height;
+    for (std::size_t i = 0; i < im.width * im.height * 3; ++i) {
+      const unsigned v = channel(gen);
+      im.samples.push_back(static_cast<std::uint16_t>(v));
+      fim.samples.push_back(v);
+    }
+    PixelRules rules;
+    rules.colour_set = ColourSet::hull;
+    rules.black_level = static_cast<std::uint32_t>(trial % 4);
+    if (trial % 2) rules.saturation = range / 2 + 1;
+    std::bernoulli_distribution keep(0.8);
+    if (trial % 3 == 1)
+      for (std::size_t i = 0; i < im.width * im.height; ++i) rules.keep.push_back(keep(gen));
+    FloatPixelRules frules;
+    frules.black_level = rules.black_level;
+    if (rules.saturation) frules.saturation = *rules.saturation;
+    frules.keep = rules.keep;
+    const ImageColours a = image_colours(im, rules), b = image_colours(fim, frules);
+    BOOST_TEST_REQUIRE((a.colours == b.colours), "trial " << trial);
+    BOOST_TEST(a.counts.masked == b.counts.masked);
+    BOOST_TEST(a.counts.saturated == b.counts.saturated);
+    BOOST_TEST(a.counts.kept == b.counts.kept);
+    BOOST_TEST(a.counts.colours == b.counts.colours);
+    BOOST_TEST(a.counts.hull_vertices == b.counts.hull_vertices);
+    BOOST_TEST(a.counts.no_chromaticity == b.counts.no_chromaticity);
+  }
+  FloatRgbImage bad;
+  bad.width = 2;
+  bad.height = 1;
+  bad.samples = {1, 1, 1, 1, NAN, 1};
+  try {
+    image_colours(bad, {});
+    BOOST_FAIL("NaN accepted");
+  } catch (const std::invalid_argument& e) {
+    BOOST_TEST(std::string(e.what()).find("pixel (row 0, column 1) channel g: NaN") == 0);
+  }
+  bad.samples = {1, 1, 1, 1, -1, 1};
+  BOOST_CHECK_THROW(image_colours(bad, {}), std::invalid_argument);
+  bad.samples = {1e17, 1, 1, 1, 1, 1};  // 1e17 − 1 is not a double
+  FloatPixelRules one;
+  one.black_level = 1;
+  BOOST_CHECK_THROW(image_colours(bad, one), std::invalid_argument);
+  one.black_level = 0.5;  // 1e17 − 0.5 neither; but 3 − 0.5 is
+  bad.samples = {3, 3, 3, 2, 2, 2};
+  BOOST_TEST(image_colours(bad, one).counts.kept == 2u);
+  one.black_level = -1;
+  BOOST_CHECK_THROW(image_colours(bad, one), std::invalid_argument);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -69,6 +69,12 @@ struct SceneResult {
 /// rationals, O(k·m²) for m gamut edges (2000 edges: about 13 s).
 inline constexpr std::size_t max_min_violation_edges = 2000;
 
+/// The first half of select_scene: image chromaticities, F against the prepared G_c (and C) and
+/// the recovery policy when F is empty; no selections and no truth (`selections` and `truth` are
+/// left empty). For callers that want the feasible set alone (the Python module's feasible_set).
+/// \throws SceneInputError as select_scene, except for the truth. Complexity: feasible_set.
+SceneResult scene_feasible_set(const PreparedCanonical& canonical, const std::vector<Colour>& image);
+
 /// Run the pipeline on one image: image chromaticities, F against the prepared G_c (and C), the
 /// recovery policy when F is empty, select_maps with the illuminant-space worst cases for c, and
 /// with `truth` (the true light's RGB, channels > 0) truth_errors for each rule against its map

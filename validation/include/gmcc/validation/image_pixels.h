@@ -73,6 +73,32 @@ struct ImageColours {
 ///         a polygon has fewer than 3 vertices.
 ImageColours image_colours(const RgbImage& image, const PixelRules& rules);
 
+/// A linear camera image of floating-point samples (as a Python or MATLAB reader returns it):
+/// width · height pixels, row-major, three channels each. Every double is an exact rational.
+struct FloatRgbImage {
+  std::size_t width = 0, height = 0;
+  std::vector<double> samples;  ///< width · height · 3
+};
+
+/// The pixel rules of a floating-point image: `keep` (steps 1), saturation (2) and black level
+/// (3) as for integer images; no binning, and always ColourSet::hull (the colours are
+/// (x, y, 1) for the hull's vertices, counter-clockwise).
+struct FloatPixelRules {
+  double black_level = 0;            ///< subtracted from every channel (>= 0, finite)
+  std::optional<double> saturation;  ///< drop pixels with a raw channel >= this
+  std::vector<bool> keep;            ///< per pixel (row-major), false to exclude; empty for none
+};
+
+/// Apply the rules to a floating-point image, exactly: each v − black_level must be exact in
+/// double (it is for float32 data and whenever v <= 2·black_level; Sterbenz), checked by an
+/// error-free transformation (Knuth's TwoSum), so the hull is that of the exact differences;
+/// a channel at or below the black level becomes 0. The hull is chromaticity_hull's (exact).
+/// counts.colours is the number of distinct kept colours.
+/// \throws std::invalid_argument naming the pixel (row, column) and channel for a NaN, an
+///         infinity or a negative sample, a subtraction that is not exact, a black level or
+///         saturation that is negative or not finite, or a `keep` of the wrong size.
+ImageColours image_colours(const FloatRgbImage& image, const FloatPixelRules& rules);
+
 /// The pixels a polygon excludes, row-major (true: centre inside or on the
 /// boundary). Exposed for tests and reports.
 std::vector<bool> polygon_cover(const std::vector<Point2>& polygon, std::size_t width,

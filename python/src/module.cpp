@@ -1,0 +1,585 @@
+/// \file module.cpp
+/// gmcc._core: the pybind11 extension behind the Python package gmcc (docs/python.md). A thin
+/// layer over the library: Python values are converted to exact C++ values (convert.h) while the
+/// GIL is held, the library call runs with the GIL released, and its result is wrapped
+/// (results.h). No geometry or selection is done here.
+
+#include "convert.h"
+#include "results.h"
+
+#include <gmcc/geometry/illumination_constraint.h>
+#include <gmcc/selection/angular_error.h>
+#include <gmcc/selection/max_area.h>
+#include <gmcc/selection/mean_2d.h>
+#include <gmcc/selection/worst_case.h>
+#include <gmcc/selection/worst_case_illuminant.h>
+#include <gmcc/validation/build_info.h>
+#include <gmcc/validation/camera_experiment.h>
+#include <gmcc/validation/error_statistics.h>
+#include <gmcc/validation/gamut_experiment.h>
+#include <gmcc/validation/spectral_table.h>
+#include <gmcc/validation/synthetic_experiment.h>
+
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+
+namespace gmcc::python {
+namespace {
+
+// ---- options (the command line's checks, with the Python argument names) ----
+
+template <class T>
+T integer_in(py::handle x, const char* name, unsigned long long lo, unsigned long long hi) {
+  if (PyBool_Check(x.ptr()) || !py::isinstance(x, py::module_::import("numbers").attr("Integral")))
+    throw py::type_error(std::string(name) + ": expected an int, got " +
+                         std::string(py::str(py::type::handle_of(x).attr("__name__"))));
+  const py::int_ i(py::reinterpret_borrow<py::object>(x));
+  if (i < py::int_(lo) || i > py::int_(hi))
+    throw py::value_error(std::string(name) + ": must be from " + std::to_string(lo) + " to " + std::to_string(hi));
+  return i.cast<T>();
+}
+
+SelectSceneOptions scene_options(py::handle expand, const std::string& expand_policy, py::handle illuminants,
+                                 py::handle canonical_illuminant, const std::string& on_empty,
+                                 const std::string& mean3d, py::handle precision, py::handle order,
+                                 py::handle samples, py::handle seed, bool illuminant_worst_case,
+                                 const std::string& nonpositive_blue) {
+  SelectSceneOptions o;
+  try {
+    o.on_empty = recovery_policy_from_string(on_empty);
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(std::string("on_empty: ") + e.what());
+  }
+  if (nonpositive_blue != "drop" && nonpositive_blue != "reject")
+    throw py::value_error("nonpositive_blue: " + quoted_text(nonpositive_blue) + " is not one of drop, reject");
+  o.nonpositive_blue = nonpositive_blue == "reject" ? NonPositiveBluePolicy::reject : NonPositiveBluePolicy::drop;
+  try {
+    o.expansion.policy = expansion_policy_from_string(expand_policy);
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(std::string("expand_policy: ") + e.what());
+  }
+  o.expansion.factor = number_from(expand, "expand");
+  if (sgn(o.expansion.factor) < 0) throw py::value_error("expand: must be >= 0");
+  if (sgn(o.expansion.factor) > 0 && o.expansion.policy == ExpansionPolicy::none)
+    throw py::value_error("expand: needs expand_policy='centroid-clip' or 'multiplicative'");
+  if (o.on_empty == RecoveryPolicy::grow_canonical && o.expansion.policy == ExpansionPolicy::centroid_clip)
+    throw py::value_error("on_empty: grow-canonical grows the gamut by the multiplicative policy; it cannot "
+                          "continue a centroid-clip expansion (use expand_policy='multiplicative')");
+  o.illuminant_worst_case = illuminant_worst_case;
+  o.canonical_illuminant = light_from(canonical_illuminant, "canonical_illuminant");
+  if (!illuminants.is_none()) o.illuminants = colours_from(illuminants, "illuminants");
+  Mean3dOptions& m = o.mean3d;
+  try {
+    m.method = mean3d_method_from_string(mean3d);
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(std::string("mean3d: ") + e.what());
+  }
+  m.precision_bits = integer_in<unsigned>(precision, "precision", 0, 1 << 20);
+  if (m.precision_bits != 0 && m.precision_bits < 53)
+    throw py::value_error("precision: must be 0 (automatic) or from 53 to 1048576 bits");
+  m.order = integer_in<unsigned>(order, "order", 1, 256);
+  m.samples = integer_in<std::uint64_t>(samples, "samples", 1, 1000000000);
+  m.seed = integer_in<std::uint64_t>(seed, "seed", 0, ~0ULL);
+  return o;
+}
+
+// A SceneInputError as ValueError, naming the Python argument and the row (0-based).
+[[noreturn]] void raise_scene_error(const SceneInputError& e) {
+  static const char* names[] = {"canonical", "image", "illuminants", "truth",
+                                "canonical_illuminant", "expand", "on_empty"};
+  std::string m = names[static_cast<int>(e.input)];
+  if (e.index) m += ": row " + std::to_string(*e.index);
+  m += std::string(": ") + e.what();
+  if (e.problem == SceneProblem::nonpositive_blue) m += "; use nonpositive_blue='drop' to skip such colours";
+  throw py::value_error(m);
+}
+
+// Library calls with the GIL released; SceneInputError and std::invalid_argument as ValueError.
+template <class F>
+auto released(F f) {
+  try {
+    py::gil_scoped_release nogil;
+    return f();
+  } catch (const SceneInputError& e) {
+    raise_scene_error(e);
+  }
+}
+
+#define GMCC_OPTION_ARGS                                                                          \
+  py::arg("expand") = 0, py::arg("expand_policy") = "none", py::arg("illuminants") = py::none(),   \
+  py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1), py::arg("on_empty") = "none",        \
+  py::arg("mean3d") = "analytic", py::arg("precision") = 0, py::arg("order") = 12,                 \
+  py::arg("samples") = 1000000, py::arg("seed") = 1, py::arg("illuminant_worst_case") = true,      \
+  py::arg("nonpositive_blue") = "drop"
+
+std::shared_ptr<PreparedCanonical> prepare(py::handle canonical, py::handle expand, const std::string& expand_policy,
+                                           py::handle illuminants, py::handle canonical_illuminant,
+                                           const std::string& on_empty, const std::string& mean3d,
+                                           py::handle precision, py::handle order, py::handle samples,
+                                           py::handle seed, bool illuminant_worst_case,
+                                           const std::string& nonpositive_blue) {
+  const std::vector<Colour> colours = colours_from(canonical, "canonical");
+  const SelectSceneOptions options =
+      scene_options(expand, expand_policy, illuminants, canonical_illuminant, on_empty, mean3d, precision, order,
+                    samples, seed, illuminant_worst_case, nonpositive_blue);
+  return released([&] { return std::make_shared<PreparedCanonical>(prepare_canonical(colours, options)); });
+}
+
+// ---- images: H×W×3 arrays through the pixel rules (image_pixels.h) ----
+
+struct PixelArgs {
+  py::object mask = py::none();
+  py::object black_level = py::int_(0);
+  py::object saturation = py::none();
+};
+
+std::string shape_of(const py::array& a) {
+  std::string s = "(";
+  for (py::ssize_t d = 0; d < a.ndim(); ++d) s += (d ? ", " : "") + std::to_string(a.shape(d));
+  return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+PyImageColours run_pixel_rules(const RgbImage& img, std::vector<bool> keep, const PixelArgs& args);
+
+PyImageColours image_colours_of(py::handle image_obj, const PixelArgs& args) {
+  py::module_ np = py::module_::import("numpy");
+  if (!py::isinstance<py::array>(image_obj))
+    throw py::type_error("image: expected a numpy array of shape (H, W, 3), got " +
+                         std::string(py::str(py::type::handle_of(image_obj).attr("__name__"))));
+  py::array image = py::reinterpret_borrow<py::array>(image_obj);
+  if (image.ndim() != 3 || image.shape(2) != 3)
+    throw py::value_error("image: expected an array of shape (H, W, 3), got " + shape_of(image));
+  const char kind = image.dtype().kind();
+  if (kind == 'b' || (kind != 'f' && kind != 'u' && kind != 'i'))
+    throw py::type_error("image: dtype " + std::string(py::str(image.dtype())) +
+                         " is not a real number type (expected unsigned integers or floats)");
+  if (kind == 'f' && image.itemsize() > 8)
+    throw py::type_error("image: dtype " + std::string(py::str(image.dtype())) + " has no exact double value");
+  const std::size_t h = static_cast<std::size_t>(image.shape(0)), w = static_cast<std::size_t>(image.shape(1));
+  std::vector<bool> keep;
+  if (!args.mask.is_none()) {
+    if (!py::isinstance<py::array>(args.mask))
+      throw py::type_error("mask: expected a boolean numpy array of shape (H, W)");
+    py::array mask = py::reinterpret_borrow<py::array>(args.mask);
+    if (mask.dtype().kind() != 'b') throw py::type_error("mask: expected dtype bool, got " + std::string(py::str(mask.dtype())));
+    if (mask.ndim() != 2 || mask.shape(0) != image.shape(0) || mask.shape(1) != image.shape(1))
+      throw py::value_error("mask: shape " + shape_of(mask) + " does not match the image's (" + std::to_string(h) +
+                            ", " + std::to_string(w) + ")");
+    const py::array_t<bool, py::array::c_style> m = np.attr("ascontiguousarray")(mask);
+    keep.assign(m.data(), m.data() + h * w);
+  }
+  PyImageColours out;
+  if (kind == 'f') {
+    FloatRgbImage img;
+    img.width = w;
+    img.height = h;
+    const py::array_t<double, py::array::c_style> a = np.attr("ascontiguousarray")(image, "float64");
+    img.samples.assign(a.data(), a.data() + h * w * 3);
+    FloatPixelRules rules;
+    rules.keep = std::move(keep);
+    const Rational black = number_from(args.black_level, "black_level");
+    if (sgn(black) < 0) throw py::value_error("black_level: must be >= 0");
+    rules.black_level = to_double_nearest(black);
+    if (Rational(rules.black_level) != black)  // exact: every double is a rational
+      throw py::value_error("black_level: must be a double exactly for a float image");
+    if (!args.saturation.is_none()) {
+      const Rational s = number_from(args.saturation, "saturation");
+      rules.saturation = to_double_nearest(s);
+      if (sgn(s) < 0 || Rational(*rules.saturation) != s)
+        throw py::value_error("saturation: must be >= 0 and a double exactly for a float image");
+    }
+    try {
+      py::gil_scoped_release nogil;
+      ImageColours c = image_colours(img, rules);
+      out.colours = std::move(c.colours);
+      out.counts = c.counts;
+    } catch (const std::invalid_argument& e) {
+      throw py::value_error(std::string("image: ") + e.what());
+    }
+    return out;
+  }
+  // Integer samples: the library's 16-bit route (exact integer hull).
+  RgbImage img;
+  img.width = w;
+  img.height = h;
+  img.bits = 16;
+  img.samples.resize(h * w * 3);
+  if (kind == 'u' && image.itemsize() <= 2) {  // uint8, uint16: every value fits
+    const py::array_t<std::uint16_t, py::array::c_style> a = np.attr("ascontiguousarray")(image, "uint16");
+    if (!img.samples.empty()) std::memcpy(img.samples.data(), a.data(), img.samples.size() * sizeof(std::uint16_t));
+    return run_pixel_rules(img, std::move(keep), args);
+  }
+  const py::array_t<std::int64_t, py::array::c_style> a = np.attr("ascontiguousarray")(image, "int64");
+  const std::int64_t* p = a.data();
+  for (std::size_t i = 0; i < h * w * 3; ++i) {
+    if (p[i] < 0 || p[i] > 65535) {
+      const std::size_t px = i / 3;
+      throw py::value_error("image: pixel (row " + std::to_string(px / w) + ", column " + std::to_string(px % w) +
+                            ") channel " + "rgb"[i % 3] + ": " + std::to_string(p[i]) +
+                            " is outside 0..65535 (integer images are 8- or 16-bit linear samples)");
+    }
+    img.samples[i] = static_cast<std::uint16_t>(p[i]);
+  }
+  return run_pixel_rules(img, std::move(keep), args);
+}
+
+PyImageColours run_pixel_rules(const RgbImage& img, std::vector<bool> keep, const PixelArgs& args) {
+  PyImageColours out;
+  PixelRules rules;
+  rules.keep = std::move(keep);
+  rules.colour_set = ColourSet::hull;
+  rules.black_level = integer_in<std::uint32_t>(args.black_level, "black_level", 0, 65535);
+  if (!args.saturation.is_none()) rules.saturation = integer_in<std::uint32_t>(args.saturation, "saturation", 0, 65536);
+  try {
+    py::gil_scoped_release nogil;
+    ImageColours c = image_colours(img, rules);
+    out.colours = std::move(c.colours);
+    out.counts = c.counts;
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(std::string("image: ") + e.what());
+  }
+  return out;
+}
+
+bool is_image(py::handle x) { return py::isinstance<py::array>(x) && py::reinterpret_borrow<py::array>(x).ndim() == 3; }
+
+Scene run_scene(const std::shared_ptr<PreparedCanonical>& canonical, py::handle image, py::handle truth,
+                const PixelArgs& pixels, bool select) {
+  Scene scene;
+  scene.canonical = canonical;
+  std::vector<Colour> colours;
+  if (is_image(image)) {
+    PyImageColours c = image_colours_of(image, pixels);
+    scene.pixels = c.counts;
+    colours = std::move(c.colours);
+    if (colours.empty())
+      throw py::value_error("image: no usable pixel (every pixel masked, saturated or with b = 0)");
+  } else {
+    if (!pixels.mask.is_none() || !pixels.saturation.is_none() ||
+        !(py::isinstance<py::int_>(pixels.black_level) && pixels.black_level.cast<long long>() == 0))
+      throw py::value_error("mask, black_level and saturation apply to an image of shape (H, W, 3), not to colours");
+    colours = colours_from(image, "image");
+  }
+  std::optional<Colour> t;
+  if (!truth.is_none()) t = light_from(truth, "truth");
+  scene.result = released([&] {
+    return select ? select_scene(*canonical, colours, t) : scene_feasible_set(*canonical, colours);
+  });
+  return scene;
+}
+
+const ConvexSet2& nonempty(const ConvexSet2& F, const char* what) {
+  if (F.kind == ConvexKind::empty) throw py::value_error(std::string(what) + ": the feasible set is empty");
+  return F;
+}
+
+// ---- experiments ----
+
+py::dict records_columns(const ExperimentResult& r) {
+  const std::size_t n = r.scenes.size();
+  py::dict cols;
+  std::vector<std::string> light(n), kind(n), drawn(n);
+  std::vector<std::int64_t> surfaces(n), scene(n);
+  std::vector<double> area(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const SceneRecord& s = r.scenes[i];
+    light[i] = r.lights[s.light];
+    kind[i] = to_string(s.kind);
+    surfaces[i] = s.surfaces;
+    scene[i] = static_cast<std::int64_t>(s.scene);
+    area[i] = s.area;
+    for (std::size_t k = 0; k < s.drawn.size(); ++k) drawn[i] += (k ? " " : "") + std::to_string(s.drawn[k]);
+  }
+  cols["light"] = light;
+  cols["surfaces"] = py::array(py::cast(surfaces));
+  cols["scene"] = py::array(py::cast(scene));
+  cols["kind"] = kind;
+  cols["area"] = py::array(py::cast(area));
+  cols["drawn"] = drawn;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t k = 0; k < r.rules.size(); ++k) {
+    std::vector<double> mx(n, nan), my(n, nan), err(n, nan), wc(n, nan), il(n, nan), rep(n, nan);
+    std::vector<bool> in_f(n, false);
+    for (std::size_t i = 0; i < n; ++i) {
+      const SceneRecord& s = r.scenes[i];
+      if (k >= s.rules.size() || !s.rules[k].scored) continue;
+      const RuleRecord& q = s.rules[k];
+      mx[i] = q.map[0];
+      my[i] = q.map[1];
+      err[i] = q.error_deg;
+      wc[i] = q.worst_case_deg;
+      if (q.positive_map) {
+        il[i] = q.illuminant_error_deg;
+        rep[i] = q.reproduction_error_deg;
+      }
+    }
+    const std::string p = r.rules[k];
+    cols[(p + "_map_x").c_str()] = py::array(py::cast(mx));
+    cols[(p + "_map_y").c_str()] = py::array(py::cast(my));
+    cols[(p + "_error_deg").c_str()] = py::array(py::cast(err));
+    cols[(p + "_worst_case_deg").c_str()] = py::array(py::cast(wc));
+    cols[(p + "_illuminant_error_deg").c_str()] = py::array(py::cast(il));
+    cols[(p + "_reproduction_error_deg").c_str()] = py::array(py::cast(rep));
+  }
+  return cols;
+}
+
+}  // namespace
+
+}  // namespace gmcc::python
+
+PYBIND11_MODULE(_core, m) {
+  using namespace gmcc;
+  using namespace gmcc::python;
+  m.doc() = "gmcc._core: the compiled half of the Python module gmcc (docs/python.md).";
+  m.attr("__version__") = std::string(gmcc_version());
+  m.attr("__commit__") = std::string(gmcc_commit());
+  m.attr("__commit_date__") = std::string(gmcc_commit_date());
+  m.attr("__data_dir__") = std::string(GMCC_DATA_DIR);  // the source tree's data/, at build time
+  bind_results(m);
+
+  m.def("prepare_canonical", &prepare, py::arg("canonical"), py::kw_only(), GMCC_OPTION_ARGS,
+        "The canonical side prepared once (prepare_canonical.h; Finlayson & Hordley 1999 eq. 10). Public: gmcc.prepare_canonical.");
+
+  m.def(
+      "select_prepared",
+      [](const std::shared_ptr<PreparedCanonical>& canonical, py::handle image, py::handle truth, py::object mask,
+         py::object black_level, py::object saturation) {
+        return run_scene(canonical, image, truth, {mask, black_level, saturation}, true);
+      },
+      py::arg("canonical"), py::arg("image"), py::arg("truth") = py::none(), py::arg("mask") = py::none(),
+      py::arg("black_level") = 0, py::arg("saturation") = py::none(),
+        "select_scene (select_scene.h) on colours or an H×W×3 image. Public: gmcc.select.");
+
+  m.def(
+      "feasible_prepared",
+      [](const std::shared_ptr<PreparedCanonical>& canonical, py::handle image, py::object mask,
+         py::object black_level, py::object saturation) {
+        return run_scene(canonical, image, py::none(), {mask, black_level, saturation}, false);
+      },
+      py::arg("canonical"), py::arg("image"), py::arg("mask") = py::none(), py::arg("black_level") = 0,
+      py::arg("saturation") = py::none(),
+        "scene_feasible_set (select_scene.h): F alone. Public: gmcc.feasible_set.");
+
+  m.def(
+      "image_colours",
+      [](py::handle image, py::object mask, py::object black_level, py::object saturation) {
+        return image_colours_of(image, {mask, black_level, saturation});
+      },
+      py::arg("image"), py::arg("mask") = py::none(), py::arg("black_level") = 0, py::arg("saturation") = py::none(),
+        "The pixel rules (image_pixels.h; docs/conventions.md §8). Public: gmcc.image_colours.");
+
+  m.def(
+      "select_maps",
+      [](const ConvexSet2& F, const std::string& mean3d, py::handle precision, py::handle order, py::handle samples,
+         py::handle seed, py::handle canonical_illuminant) {
+        SelectionOptions o;
+        o.mean3d = scene_options(py::int_(0), "none", py::none(), py::make_tuple(1, 1, 1), "none", mean3d, precision,
+                                 order, samples, seed, true, "drop")
+                       .mean3d;
+        if (!canonical_illuminant.is_none())
+          o.illuminant_worst_case_for = light_from(canonical_illuminant, "canonical_illuminant");
+        const Selections s = released([&] { return select_maps(F, o); });
+        py::dict d;
+        d["max_area"] = py::cast(s.max_area);
+        d["mean_2d"] = py::cast(s.mean_2d);
+        d["mean_3d"] = py::cast(s.mean_3d);
+        return d;
+      },
+      py::arg("feasible_set"), py::kw_only(), py::arg("mean3d") = "analytic", py::arg("precision") = 0,
+      py::arg("order") = 12, py::arg("samples") = 1000000, py::arg("seed") = 1,
+      py::arg("canonical_illuminant") = py::none(),
+        "The three selection rules with worst cases (select_maps.h; §3, §4). Public: gmcc.select_maps.");
+
+  m.def("max_area", [](const ConvexSet2& F) {
+    nonempty(F, "max_area");
+    return released([&] { return max_area(F); });
+  }, py::arg("feasible_set"),
+        "max_area (max_area.h; Finlayson & Hordley 1999 §3.1).");
+  m.def("mean_2d", [](const ConvexSet2& F) {
+    nonempty(F, "mean_2d");
+    return released([&] { return mean_2d(F); });
+  }, py::arg("feasible_set"),
+        "mean_2d (mean_2d.h; Finlayson & Hordley 1999 §3.2).");
+  m.def(
+      "mean_3d",
+      [](const ConvexSet2& F, const std::string& method, py::handle precision, py::handle order, py::handle samples,
+         py::handle seed) {
+        nonempty(F, "mean_3d");
+        const Mean3dOptions o = scene_options(py::int_(0), "none", py::none(), py::make_tuple(1, 1, 1), "none", method,
+                                              precision, order, samples, seed, true, "drop")
+                                    .mean3d;
+        return released([&] { return mean_3d(F, o); });
+      },
+      py::arg("feasible_set"), py::kw_only(), py::arg("method") = "analytic", py::arg("precision") = 0,
+      py::arg("order") = 12, py::arg("samples") = 1000000, py::arg("seed") = 1,
+        "mean_3d by a route (mean_3d.h; Finlayson & Hordley 1999 §3.2, docs/math.md §2).");
+
+  m.def("worst_case_map_deg", [](const ConvexSet2& F, py::handle map) {
+    nonempty(F, "worst_case_map_deg");
+    const Point2 p = map_from(map, "map");
+    return released([&] { return worst_case_map_deg(F, p); });
+  }, py::arg("feasible_set"), py::arg("map"),
+        "worst_case_map_deg (worst_case.h; Finlayson & Hordley 1999 §4).");
+  m.def("worst_case_illuminant_deg", [](const ConvexSet2& F, py::handle map, py::handle c) {
+    nonempty(F, "worst_case_illuminant_deg");
+    const Point2 p = map_from(map, "map");
+    const Colour light = light_from(c, "canonical_illuminant");
+    for (const Point2& v : F.vertices)
+      if (sgn(v.x) <= 0 || sgn(v.y) <= 0)
+        throw py::value_error("feasible_set: a vertex touches an axis (an illuminant needs maps > 0)");
+    if (sgn(p.x) <= 0 || sgn(p.y) <= 0) throw py::value_error("map: both components must be > 0");
+    return released([&] { return worst_case_illuminant_deg(F, p, light); });
+  }, py::arg("feasible_set"), py::arg("map"), py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1),
+        "worst_case_illuminant_deg (worst_case_illuminant.h; docs/derivations.md §3.2).");
+
+  m.def("map_angular_error_deg", [](py::handle estimate, py::handle truth) {
+    const Point2 e = map_from(estimate, "estimate"), t = map_from(truth, "truth");
+    return map_angular_error_deg(e, t);
+  }, py::arg("estimate"), py::arg("truth"),
+        "map_angular_error_deg (angular_error.h; Finlayson & Hordley 1999 §4).");
+  m.def("illuminant_angular_error_deg", [](py::handle estimate, py::handle truth, py::handle c) {
+    const Point2 e = map_from(estimate, "estimate"), t = map_from(truth, "truth");
+    const Colour light = light_from(c, "canonical_illuminant");
+    for (const Point2* p : {&e, &t})
+      if (sgn(p->x) <= 0 || sgn(p->y) <= 0) throw py::value_error("estimate and truth: components must be > 0");
+    return illuminant_angular_error_deg(e, t, light);
+  }, py::arg("estimate"), py::arg("truth"), py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1),
+        "illuminant_angular_error_deg (angular_error.h).");
+  m.def("reproduction_angular_error_deg", [](py::handle estimate, py::handle truth) {
+    const Point2 e = map_from(estimate, "estimate"), t = map_from(truth, "truth");
+    for (const Point2* p : {&e, &t})
+      if (sgn(p->x) <= 0 || sgn(p->y) <= 0) throw py::value_error("estimate and truth: components must be > 0");
+    return reproduction_angular_error_deg(e, t);
+  }, py::arg("estimate"), py::arg("truth"),
+        "reproduction_angular_error_deg (angular_error.h).");
+
+  m.def("illuminant_map", [](py::handle light, py::handle c) {
+    return to_fraction_pair(illuminant_map(light_from(light, "light"), light_from(c, "canonical_illuminant")));
+  }, py::arg("light"), py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1),
+        "illuminant_map (illumination_constraint.h): c ⊘ e in perspective, exact.");
+  m.def("illumination_constraint", [](py::handle illuminants, py::handle c) {
+    const std::vector<Colour> lights = colours_from(illuminants, "illuminants");
+    const Colour light = light_from(c, "canonical_illuminant");
+    try {
+      return illumination_constraint(lights, light);
+    } catch (const NonPositiveIlluminant& e) {
+      throw py::value_error("illuminants: row " + std::to_string(e.index) + ": " + e.what());
+    }
+  }, py::arg("illuminants"), py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1),
+        "illumination_constraint (illumination_constraint.h; Finlayson 1996 §5).");
+
+  m.def("crule_3d", [](py::handle canonical, py::handle image, const std::string& black) {
+    const std::vector<Colour> c = colours_from(canonical, "canonical"), i = colours_from(image, "image");
+    if (black != "include" && black != "exclude")
+      throw py::value_error("black: " + quoted_text(black) + " is not one of include, exclude");
+    const CanonicalBlack b = black == "include" ? CanonicalBlack::include : CanonicalBlack::exclude;
+    try {
+      return released([&] { return crule_3d(c, i, b); });
+    } catch (const std::invalid_argument& e) {
+      throw py::value_error(std::string("crule_3d: ") + e.what());
+    }
+  }, py::arg("canonical"), py::arg("image"), py::kw_only(), py::arg("black") = "include",
+        "crule_3d (crule_3d.h): Forsyth's CRULE in 3-D.");
+
+  m.def("error_statistics", [](py::handle values) {
+    const py::array_t<double, py::array::c_style | py::array::forcecast> a =
+        py::module_::import("numpy").attr("asarray")(values, "float64").attr("ravel")();
+    std::vector<double> v(a.data(), a.data() + a.size());
+    for (std::size_t i = 0; i < v.size(); ++i)
+      if (!std::isfinite(v[i]))
+        throw py::value_error("values: element " + std::to_string(i) + " is not finite (NaN or infinity): drop "
+                              "scenes without an error first");
+    return error_statistics(std::move(v));
+  }, py::arg("values"),
+        "error_statistics (error_statistics.h; docs/reproduction.md \"Statistics\").");
+
+  // For bench/python_overhead.py only: the same scenes through select_scene in a C++ loop (the
+  // inputs converted first, outside the clock), seconds per call, to compare a call from Python
+  // with the C++ call in one run.
+  m.def(
+      "_time_select_scene",
+      [](const std::shared_ptr<PreparedCanonical>& canonical, py::list scenes, int repeats) {
+        std::vector<std::vector<Colour>> colours;
+        for (py::handle s : scenes) colours.push_back(colours_from(s, "scenes"));
+        py::gil_scoped_release nogil;
+        std::size_t sink = 0;
+        const auto start = std::chrono::steady_clock::now();
+        for (int k = 0; k < repeats; ++k)
+          for (const auto& c : colours) sink += select_scene(*canonical, c).feasible.vertices.size();
+        const std::chrono::duration<double> t = std::chrono::steady_clock::now() - start;
+        if (sink == std::size_t(-1)) std::abort();  // keeps the loop's results used
+        return t.count() / (double(repeats) * double(colours.size()));
+      },
+      py::arg("canonical"), py::arg("scenes"), py::arg("repeats"),
+        "For bench/python_overhead.py: seconds per select_scene call in a C++ loop.");
+
+  m.def(
+      "run_experiment",
+      [](const std::string& experiment, const std::string& data_dir, const std::string& canonical,
+         const std::vector<std::string>& lights, const std::string& canonical_surfaces, int min_surfaces,
+         int max_surfaces, std::uint64_t scenes, std::uint64_t seed, py::handle expand,
+         const std::string& expand_policy, bool crule, unsigned threads) {
+        if (experiment != "synthetic" && experiment != "camera")
+          throw py::value_error("experiment: " + quoted_text(experiment) + " is not one of synthetic, camera");
+        if (canonical_surfaces != "sfu" && canonical_surfaces != "macbeth")
+          throw py::value_error("canonical_surfaces: " + quoted_text(canonical_surfaces) + " is not one of sfu, macbeth");
+        ExperimentConfig config;
+        config.min_surfaces = min_surfaces;
+        config.max_surfaces = max_surfaces;
+        config.scenes = scenes;
+        config.seed = seed;
+        config.threads = threads;
+        config.crule = crule;
+        config.keep_scenes = true;
+        try {
+          config.expansion.policy = expansion_policy_from_string(expand_policy);
+        } catch (const std::invalid_argument& e) {
+          throw py::value_error(std::string("expand_policy: ") + e.what());
+        }
+        config.expansion.factor = number_from(expand, "expand");
+        if (sgn(config.expansion.factor) < 0) throw py::value_error("expand: must be >= 0");
+        if (sgn(config.expansion.factor) > 0 && config.expansion.policy == ExpansionPolicy::none)
+          throw py::value_error("expand: needs expand_policy='centroid-clip' or 'multiplicative'");
+        if (min_surfaces < 1 || max_surfaces < min_surfaces)
+          throw py::value_error("surfaces: need 1 <= min_surfaces <= max_surfaces");
+        if (scenes < 1) throw py::value_error("scenes: must be >= 1");
+        ExperimentResult r;
+        try {
+          py::gil_scoped_release nogil;
+          auto table = [&](const char* name) { return read_spectral_csv(data_dir + "/" + name); };
+          ExperimentSetup setup;
+          if (experiment == "synthetic") {
+            setup = synthetic_setup(table("munsell_matt_1269_joensuu_5nm.csv"),
+                                    table("cie_daylight_basis_S0_S1_S2.csv"), canonical, lights);
+          } else {
+            setup = camera_setup(table("camera_sony_dxc930_sfu_4nm.csv"),
+                                 table(canonical_surfaces == "macbeth" ? "sfu_macbeth_24_4nm.csv"
+                                                                       : "sfu_reflect_db_1995_4nm.csv"),
+                                 table("sfu_macbeth_24_4nm.csv"), table("sfu_lab_11_illuminants_4nm.csv"),
+                                 canonical, lights);
+          }
+          r = run_gamut_experiment(setup, config);
+        } catch (const std::invalid_argument& e) {
+          throw py::value_error(e.what());
+        } catch (const std::domain_error& e) {
+          throw py::value_error(e.what());
+        } catch (const std::runtime_error& e) {  // files (InputError)
+          throw py::value_error(e.what());
+        }
+        py::dict out;
+        out["columns"] = records_columns(r);
+        out["rules"] = r.rules;
+        out["canonical_gamut"] = r.canonical_gamut;
+        return out;
+      },
+      py::arg("experiment"), py::arg("data_dir"), py::arg("canonical"), py::arg("lights"),
+      py::arg("canonical_surfaces"), py::arg("min_surfaces"), py::arg("max_surfaces"), py::arg("scenes"),
+      py::arg("seed"), py::arg("expand"), py::arg("expand_policy"), py::arg("crule"), py::arg("threads"),
+        "run_gamut_experiment on synthetic_setup or camera_setup, with every scene's record (gamut_experiment.h).");
+}

@@ -1,0 +1,431 @@
+#include "results.h"
+
+#include <gmcc/geometry/convex_set_3.h>
+#include <gmcc/validation/error_statistics.h>
+
+#include <pybind11/stl.h>
+
+#include <cstdio>
+
+namespace gmcc::python {
+namespace {
+
+std::string g10(double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", x);
+  return buf;
+}
+
+py::object optional_double(const std::optional<double>& x) {
+  return x ? py::object(py::float_(*x)) : py::object(py::none());
+}
+
+py::array_t<double> vertices_float(const ConvexSet2& s) {
+  std::vector<double> v;
+  for (const Point2& p : s.vertices) {
+    const auto d = to_double_nearest(p);
+    v.push_back(d[0]);
+    v.push_back(d[1]);
+  }
+  return float_array(v, s.vertices.size(), 2);
+}
+
+std::string convex_set_repr(const ConvexSet2& s) {
+  std::string r = "ConvexSet(" + to_string(s.kind);
+  if (s.kind != ConvexKind::empty) r += ", " + std::to_string(s.vertices.size()) + " vertices";
+  if (s.kind == ConvexKind::polygon) r += ", area≈" + g10(to_double_nearest(area(s)));
+  if (s.kind == ConvexKind::point) {
+    const auto d = to_double_nearest(s.vertices[0]);
+    r += " at (" + g10(d[0]) + ", " + g10(d[1]) + ")";
+  }
+  return r + ")";
+}
+
+std::string estimate_repr(const MapEstimate& e) {
+  if (!e.valid) return e.rule + ": no map (" + e.method + ": " + e.note + ")";
+  std::string r = e.rule + " (" + g10(e.map[0]) + ", " + g10(e.map[1]) + ") ";
+  if (e.exact) return r + "exact";
+  return r + e.method + " ± " + g10(e.error_bound);
+}
+
+// The MapEstimate's properties, on MapEstimate itself and (forwarded) on Selection.
+template <class Class, class Get>
+void estimate_properties(Class& c, Get get) {
+  c.def_property_readonly("rule", [get](const typename Class::type& s) { return get(s).rule; },
+                          "`max_area`, `mean_2d` or `mean_3d`.")
+      .def_property_readonly("method", [get](const typename Class::type& s) { return get(s).method; },
+                             "`exact` (a rational rule), `analytic`, `quadrature` or `monte-carlo`.")
+      .def_property_readonly("valid", [get](const typename Class::type& s) { return get(s).valid; },
+                             "False when the route could not produce a map (see `note`).")
+      .def_property_readonly("note", [get](const typename Class::type& s) { return get(s).note; })
+      .def_property_readonly(
+          "map",
+          [get](const typename Class::type& s) -> py::object {
+            const MapEstimate& e = get(s);
+            if (!e.valid) return py::none();
+            return py::make_tuple(e.map[0], e.map[1]);
+          },
+          "The perspective map (d1/d3, d2/d3) as the nearest doubles; None when not valid.")
+      .def_property_readonly(
+          "exact",
+          [get](const typename Class::type& s) -> py::object {
+            const MapEstimate& e = get(s);
+            if (!e.exact) return py::none();
+            return to_fraction_pair(*e.exact);
+          },
+          "The exact map as (Fraction, Fraction) where the rule's answer is rational, else None.")
+      .def_property_readonly("error_bound", [get](const typename Class::type& s) { return get(s).error_bound; },
+                             "max of error_bounds.")
+      .def_property_readonly(
+          "error_bounds",
+          [get](const typename Class::type& s) {
+            const MapEstimate& e = get(s);
+            return py::make_tuple(e.error_bounds[0], e.error_bounds[1]);
+          },
+          "Per component: a rigorous bound on |map - true map| (exact, analytic), the truncation "
+          "estimate plus rounding bound (quadrature), the standard error (monte-carlo).")
+      .def_property_readonly(
+          "correctly_rounded",
+          [get](const typename Class::type& s) {
+            const MapEstimate& e = get(s);
+            return py::make_tuple(e.correctly_rounded[0], e.correctly_rounded[1]);
+          },
+          "Per component: map is the double nearest the true value.")
+      .def_property_readonly(
+          "enclosure",
+          [get](const typename Class::type& s) -> py::object {
+            const MapEstimate& e = get(s);
+            if (!e.enclosure) return py::none();
+            const auto& q = *e.enclosure;
+            return float_array({q[0][0], q[0][1], q[1][0], q[1][1]}, 2, 2);
+          },
+          "exact and analytic: a certified enclosure, rows (lo, hi) per component; else None.")
+      .def_property_readonly("precision_bits", [get](const typename Class::type& s) { return get(s).precision_bits; })
+      .def_property_readonly("order", [get](const typename Class::type& s) { return get(s).quadrature_order; })
+      .def_property_readonly("samples", [get](const typename Class::type& s) { return get(s).samples; })
+      .def_property_readonly("samples_kept", [get](const typename Class::type& s) { return get(s).samples_kept; })
+      .def_property_readonly("seed", [get](const typename Class::type& s) { return get(s).seed; })
+      .def_property_readonly("standard_error", [get](const typename Class::type& s) {
+        const MapEstimate& e = get(s);
+        return py::make_tuple(e.standard_error[0], e.standard_error[1]);
+      });
+}
+
+py::object pixel_counts(const PixelCounts& c) {
+  py::dict d;
+  d["pixels"] = c.pixels;
+  d["masked"] = c.masked;
+  d["saturated"] = c.saturated;
+  d["kept"] = c.kept;
+  d["colours"] = c.colours;
+  d["hull_vertices"] = c.hull_vertices;
+  d["no_chromaticity"] = c.no_chromaticity;
+  return std::move(d);
+}
+
+py::object colour_tuple(const Colour& c) {
+  return py::make_tuple(to_fraction(c.r), to_fraction(c.g), to_fraction(c.b));
+}
+
+py::object point3_tuple(const Point3& p) {
+  return py::make_tuple(to_fraction(p.x), to_fraction(p.y), to_fraction(p.z));
+}
+
+}  // namespace
+
+void bind_results(py::module_& m) {
+  py::class_<ConvexSet2>(m, "ConvexSet",
+                         "An exact closed convex set of the plane (a feasible set of perspective "
+                         "maps, a gamut of chromaticities): a polygon (counter-clockwise, from its "
+                         "lexicographically smallest vertex), a segment, a point or empty. "
+                         "Degenerate kinds are results, not errors (docs/conventions.md).")
+      .def_property_readonly("kind", [](const ConvexSet2& s) { return to_string(s.kind); },
+                             "`polygon`, `segment`, `point` or `empty`.")
+      .def_property_readonly(
+          "vertices",
+          [](const ConvexSet2& s) {
+            py::list l;
+            for (const Point2& p : s.vertices) l.append(to_fraction_pair(p));
+            return l;
+          },
+          "The exact vertices, a list of (Fraction, Fraction).")
+      .def_property_readonly("vertices_float", &vertices_float,
+                             "The vertices as the nearest doubles, a float array of shape (k, 2).")
+      .def_property_readonly("area", [](const ConvexSet2& s) { return to_fraction(area(s)); },
+                             "The exact area, a Fraction (0 unless a polygon).")
+      .def_property_readonly("area_float", [](const ConvexSet2& s) { return to_double_nearest(area(s)); },
+                             "The area as the nearest double.")
+      .def_property_readonly(
+          "centroid",
+          [](const ConvexSet2& s) -> py::object {
+            if (s.kind == ConvexKind::empty) return py::none();
+            return to_fraction_pair(centroid(s));
+          },
+          "The exact centroid of the set in its own dimension (the 2-D mean's map), or None.")
+      .def(
+          "contains",
+          [](const ConvexSet2& s, py::handle p) { return contains(s, map_from(p, "point")); },
+          py::arg("point"), "Whether the point (x, y) lies in the closed set, exactly.")
+      .def("__len__", [](const ConvexSet2& s) { return s.vertices.size(); })
+      .def("__bool__", [](const ConvexSet2& s) { return s.kind != ConvexKind::empty; })
+      .def("__eq__", [](const ConvexSet2& a, const ConvexSet2& b) { return a == b; })
+      .def("__repr__", &convex_set_repr);
+
+  auto estimate = py::class_<MapEstimate>(
+      m, "MapEstimate",
+      "A selection rule's perspective map (d1/d3, d2/d3) with its provenance: exact where the "
+      "rule's answer is rational (max-area, 2-D mean), else the double map with its error "
+      "statement (3-D mean; Finlayson & Hordley 1999 §3).");
+  estimate_properties(estimate, [](const MapEstimate& e) -> const MapEstimate& { return e; });
+  estimate.def("__repr__", [](const MapEstimate& e) { return "MapEstimate(" + estimate_repr(e) + ")"; });
+
+  auto selection = py::class_<Selection>(
+      m, "Selection",
+      "One rule's answer and the largest error it can make within F (Finlayson & Hordley 1999 "
+      "§4): the estimate's properties, and worst_case_deg, worst_case_illuminant_deg.");
+  estimate_properties(selection, [](const Selection& s) -> const MapEstimate& { return s.estimate; });
+  selection
+      .def_property_readonly("estimate", [](const Selection& s) { return s.estimate; })
+      .def_property_readonly("worst_case_deg", [](const Selection& s) { return optional_double(s.worst_case_deg); },
+                             "The largest map-space angular error within F, degrees (None if not valid).")
+      .def_property_readonly(
+          "worst_case_illuminant_deg",
+          [](const Selection& s) { return optional_double(s.worst_case_illuminant_deg); },
+          "The same in illuminant space (docs/derivations.md §3.2); None when not computed.")
+      .def("__repr__", [](const Selection& s) {
+        std::string r = "Selection(" + estimate_repr(s.estimate);
+        if (s.worst_case_deg) r += ", worst case " + g10(*s.worst_case_deg) + " deg";
+        return r + ")";
+      });
+
+  py::class_<TruthErrors>(m, "TruthErrors", "One rule's errors against the true light, degrees.")
+      .def_readonly("map_error_deg", &TruthErrors::map_error_deg,
+                    "The paper's map-space angular error (§4).")
+      .def_property_readonly("illuminant_error_deg",
+                             [](const TruthErrors& e) { return optional_double(e.illuminant_error_deg); },
+                             "Recovery (illuminant) angular error; None for a map with a component <= 0.")
+      .def_property_readonly("reproduction_error_deg",
+                             [](const TruthErrors& e) { return optional_double(e.reproduction_error_deg); },
+                             "Reproduction angular error (Finlayson & Zakizadeh 2014); None likewise.")
+      .def("__repr__", [](const TruthErrors& e) {
+        std::string r = "TruthErrors(map " + g10(e.map_error_deg) + " deg";
+        if (e.illuminant_error_deg) r += ", illuminant " + g10(*e.illuminant_error_deg) + " deg";
+        if (e.reproduction_error_deg) r += ", reproduction " + g10(*e.reproduction_error_deg) + " deg";
+        return r + ")";
+      });
+
+  py::class_<TruthReport>(m, "Truth", "The scene scored against its true light.")
+      .def_property_readonly("light", [](const TruthReport& t) { return colour_tuple(t.light); })
+      .def_property_readonly("map", [](const TruthReport& t) { return to_fraction_pair(t.map); },
+                             "The true perspective map c ⊘ e, exact.")
+      .def_property_readonly("map_float", [](const TruthReport& t) {
+        const auto d = to_double_nearest(t.map);
+        return py::make_tuple(d[0], d[1]);
+      })
+      .def_readonly("in_feasible_set", &TruthReport::in_feasible_set)
+      .def_readonly("max_area", &TruthReport::max_area)
+      .def_readonly("mean_2d", &TruthReport::mean_2d)
+      .def_readonly("mean_3d", &TruthReport::mean_3d)
+      .def("__repr__", [](const TruthReport& t) {
+        const auto d = to_double_nearest(t.map);
+        return "Truth(map (" + g10(d[0]) + ", " + g10(d[1]) + "), " +
+               (t.in_feasible_set ? "inside" : "outside") + " F)";
+      });
+
+  py::class_<ConstraintReport>(m, "Constraint", "Finlayson's illumination constraint as applied.")
+      .def_readonly("illuminants", &ConstraintReport::illuminants)
+      .def_readonly("maps", &ConstraintReport::maps, "C: the hull of the lights' perspective maps.")
+      .def_readonly("unconstrained", &ConstraintReport::unconstrained, "F before F ∩ C.")
+      .def("__repr__", [](const ConstraintReport& c) {
+        return "Constraint(" + std::to_string(c.illuminants) + " illuminants, C " + convex_set_repr(c.maps) + ")";
+      });
+
+  py::class_<RecoveryReport>(m, "Recovery", "What the recovery policy did with an empty F.")
+      .def_property_readonly("policy", [](const RecoveryReport& r) { return to_string(r.policy); })
+      .def_readonly("reason", &RecoveryReport::reason)
+      .def_readonly("applied", &RecoveryReport::applied)
+      .def_property_readonly("factor", [](const RecoveryReport& r) -> py::object {
+        if (!r.grown || !r.grown->found) return py::none();
+        return to_fraction(r.grown->factor);
+      }, "grow-canonical: the expansion factor found (Fraction), else None.")
+      .def_property_readonly("empty_below", [](const RecoveryReport& r) -> py::object {
+        if (!r.grown || !r.grown->empty_below) return py::none();
+        return to_fraction(*r.grown->empty_below);
+      })
+      .def_property_readonly("violation", [](const RecoveryReport& r) -> py::object {
+        if (!r.min_violation) return py::none();
+        return to_fraction(r.min_violation->violation);
+      }, "min-violation: the least Chebyshev violation t* (Fraction), else None.")
+      .def_property_readonly("canonical_gamut", [](const RecoveryReport& r) -> py::object {
+        if (r.grown && r.grown->found) return py::cast(r.grown->canonical);
+        if (r.min_violation) return py::cast(r.min_violation->canonical);
+        return py::none();
+      })
+      .def("__repr__", [](const RecoveryReport& r) {
+        return "Recovery(" + to_string(r.policy) + (r.applied ? ", applied" : ", not applied") + ")";
+      });
+
+  py::class_<PreparedCanonical, std::shared_ptr<PreparedCanonical>>(
+      m, "Canonical",
+      "The canonical side prepared once for many images (gmcc.prepare_canonical): the exact "
+      "(expanded) canonical gamut G_c and the illumination constraint C. Immutable; one object "
+      "may serve many calls, also from several threads.")
+      .def_readonly("gamut", &PreparedCanonical::gamut, "G_c after expansion (ConvexSet).")
+      .def_readonly("colours", &PreparedCanonical::colours, "Canonical colours given.")
+      .def_readonly("dropped", &PreparedCanonical::dropped, "Of those, with b <= 0 (dropped).")
+      .def_readonly("constraint", &PreparedCanonical::constraint, "C (ConvexSet) or None.")
+      .def_property_readonly("chromaticities", [](const PreparedCanonical& c) {
+        std::vector<double> v;
+        for (const Point2& p : c.chromaticities) {
+          const auto d = to_double_nearest(p);
+          v.push_back(d[0]);
+          v.push_back(d[1]);
+        }
+        return float_array(v, c.chromaticities.size(), 2);
+      }, "The canonical perspective chromaticities (r/b, g/b) as doubles, shape (n, 2).")
+      .def("__repr__", [](const PreparedCanonical& c) {
+        return "Canonical(" + std::to_string(c.colours) + " colours, gamut " + convex_set_repr(c.gamut) +
+               (c.constraint ? ", constrained" : "") + ")";
+      });
+
+  py::class_<Scene>(m, "SceneResult",
+                    "Everything gmcc.select found for one image: the feasible set F (Finlayson & "
+                    "Hordley 1999 eqs. 7–9, in perspective), the three selections (§3) with their "
+                    "worst cases (§4), and the truth report when a true light was given.")
+      .def_property_readonly("feasible_set", [](const Scene& s) { return s.result.feasible; },
+                             "F (∩ C), or what a recovery policy recovered (ConvexSet).")
+      .def_property_readonly("kind", [](const Scene& s) { return to_string(s.result.feasible.kind); })
+      .def_property_readonly("canonical", [](const Scene& s) { return std::const_pointer_cast<PreparedCanonical>(s.canonical); })
+      .def_property_readonly("canonical_gamut", [](const Scene& s) { return s.canonical->gamut; })
+      .def_property_readonly("image_colours", [](const Scene& s) { return s.result.image_colours; })
+      .def_property_readonly("image_dropped", [](const Scene& s) { return s.result.image_dropped; })
+      .def_property_readonly("empty_reason", [](const Scene& s) { return s.result.empty_reason; })
+      .def_property_readonly("constraint", [](const Scene& s) { return s.result.constraint; })
+      .def_property_readonly("recovery", [](const Scene& s) { return s.result.recovery; })
+      .def_property_readonly("max_area", [](const Scene& s) { return s.result.selections.max_area; })
+      .def_property_readonly("mean_2d", [](const Scene& s) { return s.result.selections.mean_2d; })
+      .def_property_readonly("mean_3d", [](const Scene& s) { return s.result.selections.mean_3d; })
+      .def_property_readonly("selections", [](const Scene& s) {
+        py::dict d;
+        d["max_area"] = py::cast(s.result.selections.max_area);
+        d["mean_2d"] = py::cast(s.result.selections.mean_2d);
+        d["mean_3d"] = py::cast(s.result.selections.mean_3d);
+        return d;
+      }, "{'max_area': Selection, 'mean_2d': ..., 'mean_3d': ...}; values None when F is empty.")
+      .def_property_readonly("truth", [](const Scene& s) { return s.result.truth; })
+      .def_property_readonly("pixels", [](const Scene& s) -> py::object {
+        return s.pixels ? pixel_counts(*s.pixels) : py::object(py::none());
+      }, "For gmcc.select_image: what the pixel rules did (dict of counts), else None.")
+      .def("__repr__", [](const Scene& s) {
+        std::string r = "SceneResult(feasible set " + convex_set_repr(s.result.feasible);
+        for (const auto* sel : {&s.result.selections.max_area, &s.result.selections.mean_2d,
+                                &s.result.selections.mean_3d})
+          if (*sel) r += ",\n  " + estimate_repr((*sel)->estimate) +
+                         ((*sel)->worst_case_deg ? ", worst case " + g10(*(*sel)->worst_case_deg) + " deg" : "");
+        if (!s.result.empty_reason.empty()) r += ", " + s.result.empty_reason;
+        return r + ")";
+      });
+
+  py::class_<PyImageColours>(m, "ImageColours",
+                             "The colours the pixel rules kept (docs/conventions.md §8), with counts.")
+      .def_property_readonly("colours", [](const PyImageColours& c) {
+        py::list l;
+        for (const Colour& x : c.colours) l.append(colour_tuple(x));
+        return l;
+      }, "Exact colours, a list of (Fraction, Fraction, Fraction).")
+      .def_property_readonly("colours_float", [](const PyImageColours& c) {
+        std::vector<double> v;
+        for (const Colour& x : c.colours)
+          for (const Rational* q : {&x.r, &x.g, &x.b}) v.push_back(to_double_nearest(*q));
+        return float_array(v, c.colours.size(), 3);
+      }, "The colours as the nearest doubles, shape (n, 3).")
+      .def_property_readonly("counts", [](const PyImageColours& c) { return pixel_counts(c.counts); })
+      .def("__len__", [](const PyImageColours& c) { return c.colours.size(); })
+      .def("__repr__", [](const PyImageColours& c) {
+        return "ImageColours(" + std::to_string(c.colours.size()) + " colours of " +
+               std::to_string(c.counts.pixels) + " pixels, " + std::to_string(c.counts.kept) + " kept)";
+      });
+
+  py::class_<ConvexSet3>(m, "ConvexSet3",
+                         "An exact convex set of diagonal maps (d1, d2, d3): Forsyth's 3-D "
+                         "feasible set; polytope, polygon, segment, point or empty.")
+      .def_property_readonly("kind", [](const ConvexSet3& s) { return to_string(s.kind); })
+      .def_property_readonly("vertices", [](const ConvexSet3& s) {
+        py::list l;
+        for (const Point3& p : s.vertices) l.append(point3_tuple(p));
+        return l;
+      }, "Exact vertices, a list of (Fraction, Fraction, Fraction), sorted.")
+      .def_property_readonly("vertices_float", [](const ConvexSet3& s) {
+        std::vector<double> v;
+        for (const Point3& p : s.vertices)
+          for (const Rational* q : {&p.x, &p.y, &p.z}) v.push_back(to_double_nearest(*q));
+        return float_array(v, s.vertices.size(), 3);
+      })
+      .def_readonly("faces", &ConvexSet3::faces, "Facets as cycles of vertex indices.")
+      .def_property_readonly("volume", [](const ConvexSet3& s) { return to_fraction(volume(s)); })
+      .def("__len__", [](const ConvexSet3& s) { return s.vertices.size(); })
+      .def("__repr__", [](const ConvexSet3& s) {
+        return "ConvexSet3(" + to_string(s.kind) + ", " + std::to_string(s.vertices.size()) +
+               " vertices, volume≈" + g10(to_double_nearest(volume(s))) + ")";
+      });
+
+  py::class_<Selection3>(m, "Selection3", "A 3-D CRULE rule's diagonal map and its worst case.")
+      .def_property_readonly("rule", [](const Selection3& s) { return s.estimate.rule; })
+      .def_property_readonly("method", [](const Selection3& s) { return s.estimate.method; },
+                             "`exact` (rational) or `certified` (a quadratic irrational, enclosed).")
+      .def_property_readonly("map", [](const Selection3& s) {
+        return py::make_tuple(s.estimate.map[0], s.estimate.map[1], s.estimate.map[2]);
+      })
+      .def_property_readonly("exact", [](const Selection3& s) -> py::object {
+        if (!s.estimate.exact) return py::none();
+        return point3_tuple(*s.estimate.exact);
+      })
+      .def_property_readonly("error_bound", [](const Selection3& s) { return s.estimate.error_bound; })
+      .def_property_readonly("enclosure", [](const Selection3& s) {
+        const auto& q = s.estimate.enclosure;
+        return float_array({q[0][0], q[0][1], q[1][0], q[1][1], q[2][0], q[2][1]}, 3, 2);
+      })
+      .def_property_readonly("worst_case_deg", [](const Selection3& s) { return optional_double(s.worst_case_deg); })
+      .def("__repr__", [](const Selection3& s) {
+        const auto& e = s.estimate;
+        return "Selection3(" + e.rule + " (" + g10(e.map[0]) + ", " + g10(e.map[1]) + ", " + g10(e.map[2]) +
+               ") " + e.method + ")";
+      });
+
+  py::class_<Crule3d>(m, "Crule3d", "Forsyth's CRULE in 3-D: F3, its volume and two selections.")
+      .def_readonly("feasible_set", &Crule3d::feasible)
+      .def_property_readonly("volume", [](const Crule3d& c) { return to_fraction(c.volume); })
+      .def_readonly("max_volume", &Crule3d::max_volume)
+      .def_readonly("centroid", &Crule3d::centroid)
+      .def("__repr__", [](const Crule3d& c) {
+        return "Crule3d(" + to_string(c.feasible.kind) + ", " + std::to_string(c.feasible.vertices.size()) +
+               " vertices, volume≈" + g10(to_double_nearest(c.volume)) + ")";
+      });
+
+  py::class_<ErrorStatistics>(m, "ErrorStatistics",
+                              "The statistics the field reports for a list of angular errors "
+                              "(docs/reproduction.md \"Statistics\").")
+      .def_readonly("n", &ErrorStatistics::n)
+      .def_readonly("mean", &ErrorStatistics::mean)
+      .def_readonly("standard_error", &ErrorStatistics::standard_error)
+      .def_readonly("median", &ErrorStatistics::median)
+      .def_readonly("trimean", &ErrorStatistics::trimean)
+      .def_readonly("best25", &ErrorStatistics::best25)
+      .def_readonly("worst25", &ErrorStatistics::worst25)
+      .def_readonly("p95", &ErrorStatistics::p95)
+      .def_readonly("max", &ErrorStatistics::max)
+      .def("as_dict", [](const ErrorStatistics& s) {
+        py::dict d;
+        d["n"] = s.n; d["mean"] = s.mean; d["standard_error"] = s.standard_error; d["median"] = s.median;
+        d["trimean"] = s.trimean; d["best25"] = s.best25; d["worst25"] = s.worst25; d["p95"] = s.p95;
+        d["max"] = s.max;
+        return d;
+      })
+      .def("__repr__", [](const ErrorStatistics& s) {
+        return "ErrorStatistics(n=" + std::to_string(s.n) + ", mean=" + g10(s.mean) + ", median=" +
+               g10(s.median) + ", trimean=" + g10(s.trimean) + ", best25=" + g10(s.best25) +
+               ", worst25=" + g10(s.worst25) + ", max=" + g10(s.max) + ")";
+      });
+}
+
+}  // namespace gmcc::python
