@@ -76,7 +76,8 @@ ImageColours image_colours(const RgbImage& image, const PixelRules& rules);
 /// A linear camera image of floating-point samples (as a Python or MATLAB reader returns it):
 /// width · height pixels, row-major, three channels each. Every double is an exact rational.
 struct FloatRgbImage {
-  std::size_t width = 0, height = 0;
+  std::size_t width = 0;   ///< pixels per row
+  std::size_t height = 0;  ///< rows
   std::vector<double> samples;  ///< width · height · 3
 };
 
