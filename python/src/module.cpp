@@ -44,6 +44,22 @@ T integer_in(py::handle x, const char* name, unsigned long long lo, unsigned lon
   return i.cast<T>();
 }
 
+// The expansion of the canonical gamut (`expand`, `expand_policy`), checked as the command line
+// checks --expand and --expand-policy.
+Expansion expansion_from(py::handle expand, const std::string& expand_policy) {
+  Expansion x;
+  try {
+    x.policy = expansion_policy_from_string(expand_policy);
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(std::string("expand_policy: ") + e.what());
+  }
+  x.factor = number_from(expand, "expand");
+  if (sgn(x.factor) < 0) throw py::value_error("expand: must be >= 0");
+  if (sgn(x.factor) > 0 && x.policy == ExpansionPolicy::none)
+    throw py::value_error("expand: needs expand_policy='centroid-clip' or 'multiplicative'");
+  return x;
+}
+
 SelectSceneOptions scene_options(py::handle expand, const std::string& expand_policy, py::handle illuminants,
                                  py::handle canonical_illuminant, const std::string& on_empty,
                                  const std::string& mean3d, py::handle precision, py::handle order,
@@ -58,15 +74,7 @@ SelectSceneOptions scene_options(py::handle expand, const std::string& expand_po
   if (nonpositive_blue != "drop" && nonpositive_blue != "reject")
     throw py::value_error("nonpositive_blue: " + quoted_text(nonpositive_blue) + " is not one of drop, reject");
   o.nonpositive_blue = nonpositive_blue == "reject" ? NonPositiveBluePolicy::reject : NonPositiveBluePolicy::drop;
-  try {
-    o.expansion.policy = expansion_policy_from_string(expand_policy);
-  } catch (const std::invalid_argument& e) {
-    throw py::value_error(std::string("expand_policy: ") + e.what());
-  }
-  o.expansion.factor = number_from(expand, "expand");
-  if (sgn(o.expansion.factor) < 0) throw py::value_error("expand: must be >= 0");
-  if (sgn(o.expansion.factor) > 0 && o.expansion.policy == ExpansionPolicy::none)
-    throw py::value_error("expand: needs expand_policy='centroid-clip' or 'multiplicative'");
+  o.expansion = expansion_from(expand, expand_policy);
   if (o.on_empty == RecoveryPolicy::grow_canonical && o.expansion.policy == ExpansionPolicy::centroid_clip)
     throw py::value_error("on_empty: grow-canonical grows the gamut by the multiplicative policy; it cannot "
                           "continue a centroid-clip expansion (use expand_policy='multiplicative')");
@@ -537,15 +545,7 @@ PYBIND11_MODULE(_core, m) {
         config.threads = threads;
         config.crule = crule;
         config.keep_scenes = true;
-        try {
-          config.expansion.policy = expansion_policy_from_string(expand_policy);
-        } catch (const std::invalid_argument& e) {
-          throw py::value_error(std::string("expand_policy: ") + e.what());
-        }
-        config.expansion.factor = number_from(expand, "expand");
-        if (sgn(config.expansion.factor) < 0) throw py::value_error("expand: must be >= 0");
-        if (sgn(config.expansion.factor) > 0 && config.expansion.policy == ExpansionPolicy::none)
-          throw py::value_error("expand: needs expand_policy='centroid-clip' or 'multiplicative'");
+        config.expansion = expansion_from(expand, expand_policy);
         if (min_surfaces < 1 || max_surfaces < min_surfaces)
           throw py::value_error("surfaces: need 1 <= min_surfaces <= max_surfaces");
         if (scenes < 1) throw py::value_error("scenes: must be >= 1");
