@@ -154,6 +154,21 @@ std::string shape_of(const py::array& a) {
 
 PyImageColours run_pixel_rules(const RgbImage& img, std::vector<bool> keep, const PixelArgs& args);
 
+// The library's pixel rules on an image, with the GIL released; its input errors as ValueError.
+template <class Image, class Rules>
+PyImageColours colours_by_rules(const Image& img, const Rules& rules) {
+  PyImageColours out;
+  try {
+    py::gil_scoped_release nogil;
+    ImageColours c = image_colours(img, rules);
+    out.colours = std::move(c.colours);
+    out.counts = c.counts;
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(std::string("image: ") + e.what());
+  }
+  return out;
+}
+
 PyImageColours image_colours_of(py::handle image_obj, const PixelArgs& args) {
   py::module_ np = py::module_::import("numpy");
   if (!py::isinstance<py::array>(image_obj))
@@ -181,7 +196,6 @@ PyImageColours image_colours_of(py::handle image_obj, const PixelArgs& args) {
     const py::array_t<bool, py::array::c_style> m = np.attr("ascontiguousarray")(mask);
     keep.assign(m.data(), m.data() + h * w);
   }
-  PyImageColours out;
   if (kind == 'f') {
     FloatRgbImage img;
     img.width = w;
@@ -201,15 +215,7 @@ PyImageColours image_colours_of(py::handle image_obj, const PixelArgs& args) {
       if (sgn(s) < 0 || Rational(*rules.saturation) != s)
         throw py::value_error("saturation: must be >= 0 and a double exactly for a float image");
     }
-    try {
-      py::gil_scoped_release nogil;
-      ImageColours c = image_colours(img, rules);
-      out.colours = std::move(c.colours);
-      out.counts = c.counts;
-    } catch (const std::invalid_argument& e) {
-      throw py::value_error(std::string("image: ") + e.what());
-    }
-    return out;
+    return colours_by_rules(img, rules);
   }
   // Integer samples: the library's 16-bit route (exact integer hull).
   RgbImage img;
@@ -237,21 +243,12 @@ PyImageColours image_colours_of(py::handle image_obj, const PixelArgs& args) {
 }
 
 PyImageColours run_pixel_rules(const RgbImage& img, std::vector<bool> keep, const PixelArgs& args) {
-  PyImageColours out;
   PixelRules rules;
   rules.keep = std::move(keep);
   rules.colour_set = ColourSet::hull;
   rules.black_level = integer_in<std::uint32_t>(args.black_level, "black_level", 0, 65535);
   if (!args.saturation.is_none()) rules.saturation = integer_in<std::uint32_t>(args.saturation, "saturation", 0, 65536);
-  try {
-    py::gil_scoped_release nogil;
-    ImageColours c = image_colours(img, rules);
-    out.colours = std::move(c.colours);
-    out.counts = c.counts;
-  } catch (const std::invalid_argument& e) {
-    throw py::value_error(std::string("image: ") + e.what());
-  }
-  return out;
+  return colours_by_rules(img, rules);
 }
 
 bool is_image(py::handle x) { return py::isinstance<py::array>(x) && py::reinterpret_borrow<py::array>(x).ndim() == 3; }
