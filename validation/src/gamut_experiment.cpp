@@ -262,7 +262,10 @@ ExperimentCell summarise_cell(const std::string& light, int n, std::vector<const
   return cell;
 }
 
-ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const ExperimentConfig& config) {
+namespace {
+
+// The setup and config make sense together. \throws std::invalid_argument saying what does not.
+void check_experiment(const ExperimentSetup& setup, const ExperimentConfig& config) {
   if (config.min_surfaces < 1 || config.max_surfaces < config.min_surfaces)
     throw std::invalid_argument("surface counts must satisfy 1 <= min <= max");
   for (const TestLight& l : setup.lights) {
@@ -278,6 +281,10 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
     throw std::invalid_argument("3-D CRULE needs one set of canonical surfaces, not a canonical set per light");
   if (config.shard_count < 1 || config.shard_index < 1 || config.shard_index > config.shard_count)
     throw std::invalid_argument("a shard K/N needs 1 <= K <= N");
+}
+
+// The result's description before any scene: names, rules, baselines and the canonical gamut(s).
+ExperimentResult result_header(const ExperimentSetup& setup, const ExperimentConfig& config) {
   ExperimentResult result;
   result.name = setup.name;
   result.figure = setup.figure;
@@ -297,54 +304,66 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
       result.canonical_gamuts.push_back(canonical_gamut(set, config.expansion));
     result.canonical_gamut = result.canonical_gamuts.front();
   }
-  // The cells' rows: each light's group (its own name when it has none), in order of first
-  // appearance; light ℓ's scenes go to row group_of[ℓ].
-  std::vector<std::string> groups;
-  std::vector<std::size_t> group_of;
+  return result;
+}
+
+// The cells' rows: each light's group (its own name when it has none), in order of first
+// appearance; light ℓ's scenes go to row `of`[ℓ]. `grouped` when any light names a group.
+struct LightGroups {
+  std::vector<std::string> names;
+  std::vector<std::size_t> of;
   bool grouped = false;
+};
+LightGroups light_groups(const ExperimentSetup& setup) {
+  LightGroups r;
   for (const TestLight& l : setup.lights) {
     const std::string& g = l.group.empty() ? l.name : l.group;
-    grouped = grouped || !l.group.empty();
-    const auto at = std::find(groups.begin(), groups.end(), g);
-    group_of.push_back(static_cast<std::size_t>(at - groups.begin()));
-    if (at == groups.end()) groups.push_back(g);
+    r.grouped = r.grouped || !l.group.empty();
+    const auto at = std::find(r.names.begin(), r.names.end(), g);
+    r.of.push_back(static_cast<std::size_t>(at - r.names.begin()));
+    if (at == r.names.end()) r.names.push_back(g);
   }
+  return r;
+}
 
-  struct Job {
-    std::size_t light;
-    int n;
-  };
-  std::vector<Job> jobs;
-  for (std::size_t l = 0; l < setup.lights.size(); ++l)
-    for (int n = config.min_surfaces; n <= config.max_surfaces; ++n) jobs.push_back({l, n});
-  result.cells.resize(jobs.size());
-  // The shard's scenes: global indices [first, last) of the canonical order (light, n, s).
-  // T = scenes·jobs (and so base = scenes·j) fits in 64 bits, checked; T·K may not, so the share
-  // ⌊T·K/N⌋ is divided from its 128-bit product.
-  if (!jobs.empty() && config.scenes > std::numeric_limits<std::uint64_t>::max() / jobs.size())
+// The shard's scenes: global indices [first, last) of the canonical order (light, n, s) over
+// `jobs` cells of config.scenes scenes each. T = scenes·jobs (and so base = scenes·j) fits in 64
+// bits, checked; T·K may not, so the share ⌊T·K/N⌋ is divided from its 128-bit product.
+struct ShardScenes {
+  std::uint64_t first = 0, last = 0, scenes = 0;
+  // Cell j's scenes [begin, end) within the cell.
+  std::pair<std::uint64_t, std::uint64_t> of_cell(std::size_t j) const {
+    const std::uint64_t base = scenes * j;
+    auto clamp = [&](std::uint64_t g) { return g <= base ? 0 : std::min<std::uint64_t>(g - base, scenes); };
+    return {clamp(first), clamp(last)};
+  }
+};
+ShardScenes shard_scenes(const ExperimentConfig& config, std::size_t jobs) {
+  if (jobs && config.scenes > std::numeric_limits<std::uint64_t>::max() / jobs)
     throw std::invalid_argument("more scenes than 2^64 in all");
-  const std::uint64_t T = config.scenes * jobs.size();
-  const std::uint64_t first = numerics::divide_wide(numerics::multiply_wide(T, config.shard_index - 1), config.shard_count);
-  const std::uint64_t last = numerics::divide_wide(numerics::multiply_wide(T, config.shard_index), config.shard_count);
-  auto scene_range = [&](std::size_t j) {
-    const std::uint64_t base = config.scenes * j;
-    auto clamp = [&](std::uint64_t g) { return g <= base ? 0 : std::min<std::uint64_t>(g - base, config.scenes); };
-    return std::pair{clamp(first), clamp(last)};
-  };
-  std::vector<std::vector<SceneRecord>> records(jobs.size());
+  const std::uint64_t T = config.scenes * jobs;
+  return {numerics::divide_wide(numerics::multiply_wide(T, config.shard_index - 1), config.shard_count),
+          numerics::divide_wide(numerics::multiply_wide(T, config.shard_index), config.shard_count), config.scenes};
+}
 
-  // G_c (and Finlayson's constraint C, when given) prepared once for every scene: one per
-  // canonical set.
+// G_c (and Finlayson's constraint C, when given) prepared once for every scene: one per
+// canonical set.
+std::deque<CanonicalConstraints> prepared_gamuts(const ExperimentResult& result, const ExperimentConfig& config) {
   std::deque<CanonicalConstraints> gamuts;
   for (const ConvexSet2& g : result.canonical_gamuts.empty() ? std::vector<ConvexSet2>{result.canonical_gamut}
                                                               : result.canonical_gamuts) {
     if (config.constraint) gamuts.emplace_back(g, *config.constraint);
     else gamuts.emplace_back(g);
   }
-  // Without noise a scene's colours are the light's surfaces as given: their chromaticities are
-  // computed once per light (b <= 0 left as a placeholder; scenes skip those surfaces).
-  // Lights are shared out among the threads (each light's list is written by one thread only).
-  const unsigned threads = config.threads ? config.threads : std::max(1u, std::thread::hardware_concurrency());
+  return gamuts;
+}
+
+// Without noise a scene's colours are the light's surfaces as given: their chromaticities are
+// computed once per light (b <= 0 left as a placeholder; scenes skip those surfaces). Lights are
+// shared out among the threads (each light's list is written by one thread only). With noise:
+// empty lists.
+std::vector<std::vector<Point2>> light_chromaticities(const ExperimentSetup& setup, const ExperimentConfig& config,
+                                                      unsigned threads) {
   std::vector<std::vector<Point2>> chromaticities(setup.lights.size());
   if (config.noise <= 0) {
     std::atomic<std::size_t> next_light{0};
@@ -361,6 +380,51 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
     precompute();
     for (std::thread& t : helpers) t.join();
   }
+  return chromaticities;
+}
+
+// One cell of scenes: light `light` (index into the setup's lights) with n surfaces.
+struct Job {
+  std::size_t light;
+  int n;
+};
+
+// The cells when lights are grouped: per group and surface count, the scenes of every light of
+// the group (jobs[j]'s scenes are records[j]).
+std::vector<ExperimentCell> group_cells(const LightGroups& groups, const std::vector<Job>& jobs,
+                                        const std::vector<std::vector<SceneRecord>>& records,
+                                        const ExperimentConfig& config, const ExperimentResult& result) {
+  std::vector<ExperimentCell> cells;
+  const std::size_t counts = static_cast<std::size_t>(config.max_surfaces - config.min_surfaces + 1);
+  for (std::size_t g = 0; g < groups.names.size(); ++g)
+    for (std::size_t k = 0; k < counts; ++k) {
+      std::vector<const SceneRecord*> scenes;
+      for (std::size_t j = 0; j < jobs.size(); ++j)
+        if (groups.of[jobs[j].light] == g && static_cast<std::size_t>(jobs[j].n - config.min_surfaces) == k)
+          for (const SceneRecord& rec : records[j]) scenes.push_back(&rec);
+      cells.push_back(summarise_cell(groups.names[g], config.min_surfaces + static_cast<int>(k), std::move(scenes),
+                                     result.rules.size(), result.baselines.size()));
+    }
+  return cells;
+}
+
+}  // namespace
+
+ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const ExperimentConfig& config) {
+  check_experiment(setup, config);
+  ExperimentResult result = result_header(setup, config);
+  const LightGroups groups = light_groups(setup);
+
+  std::vector<Job> jobs;
+  for (std::size_t l = 0; l < setup.lights.size(); ++l)
+    for (int n = config.min_surfaces; n <= config.max_surfaces; ++n) jobs.push_back({l, n});
+  result.cells.resize(jobs.size());
+  const ShardScenes shard = shard_scenes(config, jobs.size());
+  std::vector<std::vector<SceneRecord>> records(jobs.size());
+
+  const std::deque<CanonicalConstraints> gamuts = prepared_gamuts(result, config);
+  const unsigned threads = config.threads ? config.threads : std::max(1u, std::thread::hardware_concurrency());
+  const std::vector<std::vector<Point2>> chromaticities = light_chromaticities(setup, config, threads);
   std::atomic<std::size_t> next{0};
   std::atomic<std::uint64_t> done{0};
   std::exception_ptr failure;
@@ -369,11 +433,11 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
   auto worker = [&] {
     for (std::size_t j; (j = next++) < jobs.size();) {
       try {
-        const auto [s_begin, s_end] = scene_range(j);
+        const auto [s_begin, s_end] = shard.of_cell(j);
         const std::size_t l = jobs[j].light;
         records[j] = run_cell(setup, config, gamuts[setup.canonical_chromaticity_sets.empty() ? 0 : setup.lights[l].canonical],
                               chromaticities[l], l, jobs[j].n, s_begin, s_end, done);
-        if (grouped) continue;  // summarised per group below, once every light's scenes are in
+        if (groups.grouped) continue;  // summarised per group below, once every light's scenes are in
         std::vector<const SceneRecord*> scenes;
         for (const SceneRecord& rec : records[j]) scenes.push_back(&rec);
         result.cells[j] = summarise_cell(setup.lights[jobs[j].light].name, jobs[j].n, std::move(scenes),
@@ -394,7 +458,7 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
   };
   std::vector<std::thread> pool =
       start_threads(std::max<std::size_t>(std::min<std::size_t>(threads, jobs.size()), 1) - 1, thread_worker);
-  const std::uint64_t total = last - first;
+  const std::uint64_t total = shard.last - shard.first;
   std::vector<std::thread> reporter_free_worker;
   if (config.progress) reporter_free_worker = start_threads(1, thread_worker);
   if (!reporter_free_worker.empty()) {  // report from this thread while the others work, then join in
@@ -409,19 +473,7 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
   }
   for (std::thread& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
-  if (grouped) {
-    const std::size_t counts = static_cast<std::size_t>(config.max_surfaces - config.min_surfaces + 1);
-    result.cells.clear();
-    for (std::size_t g = 0; g < groups.size(); ++g)
-      for (std::size_t k = 0; k < counts; ++k) {
-        std::vector<const SceneRecord*> scenes;
-        for (std::size_t j = 0; j < jobs.size(); ++j)
-          if (group_of[jobs[j].light] == g && static_cast<std::size_t>(jobs[j].n - config.min_surfaces) == k)
-            for (const SceneRecord& rec : records[j]) scenes.push_back(&rec);
-        result.cells.push_back(summarise_cell(groups[g], config.min_surfaces + static_cast<int>(k), std::move(scenes),
-                                              result.rules.size(), result.baselines.size()));
-      }
-  }
+  if (groups.grouped) result.cells = group_cells(groups, jobs, records, config, result);
   if (config.keep_scenes)
     for (std::vector<SceneRecord>& cell : records)
       for (SceneRecord& rec : cell) result.scenes.push_back(std::move(rec));
