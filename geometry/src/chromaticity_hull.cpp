@@ -151,38 +151,18 @@ ChromaticityHull chromaticity_hull(const std::vector<std::array<double, 3>>& col
 
 namespace gmcc {
 
-ChromaticityHull chromaticity_hull_of_pixels(const std::vector<std::array<std::uint16_t, 3>>& colours) {
-  using C = std::array<std::uint16_t, 3>;
-  ChromaticityHull out;
-  std::vector<C> p;
-  p.reserve(colours.size());
-  for (const C& c : colours) {
-    if (c[2] == 0) ++out.dropped;
-    else p.push_back(c);
-  }
-  // (r1/b1, g1/b1) < (r2/b2, g2/b2) lexicographically, by cross-multiplication (below 2^32).
-  auto less = [](const C& a, const C& b) {
-    const std::uint64_t xa = std::uint64_t(a[0]) * b[2], xb = std::uint64_t(b[0]) * a[2];
-    if (xa != xb) return xa < xb;
-    return std::uint64_t(a[1]) * b[2] < std::uint64_t(b[1]) * a[2];
-  };
-  auto same = [](const C& a, const C& b) {
-    return std::uint64_t(a[0]) * b[2] == std::uint64_t(b[0]) * a[2] &&
-           std::uint64_t(a[1]) * b[2] == std::uint64_t(b[1]) * a[2];
-  };
-  // sign of det[(r,g,b)_a; _o... ]: the orientation of the chromaticities of o, a, b (b's > 0).
-  auto orient = [](const C& o, const C& a, const C& b) {
-    const std::int64_t r0 = o[0], g0 = o[1], b0 = o[2], r1 = a[0], g1 = a[1], b1 = a[2],
-                       r2 = b[0], g2 = b[1], b2 = b[2];
-    const std::int64_t det = r0 * (g1 * b2 - g2 * b1) - g0 * (r1 * b2 - r2 * b1) +
-                             b0 * (r1 * g2 - r2 * g1);
-    return (det > 0) - (det < 0);
-  };
-  // Akl & Toussaint (1978), exactly: the points extreme in eight directions of the chromaticity
-  // plane lie on the hull in counter-clockwise order (ties: any point of the extreme face keeps
-  // that order), so a point strictly inside every edge of their octagon is no hull vertex and
-  // is dropped before the sort. Direction (α, β) ranks (α·r + β·g)/b, compared by
-  // cross-multiplication: |α·r + β·g| < 2^17 and b < 2^16, so the products fit in 64 bits.
+namespace {
+using Pixel = std::array<std::uint16_t, 3>;
+
+// Akl & Toussaint (1978), exactly: the points extreme in eight directions of the chromaticity
+// plane lie on the hull in counter-clockwise order (ties: any point of the extreme face keeps
+// that order), so a point strictly inside every edge of their octagon is no hull vertex and
+// is dropped before the sort. Direction (α, β) ranks (α·r + β·g)/b, compared by
+// cross-multiplication: |α·r + β·g| < 2^17 and b < 2^16, so the products fit in 64 bits.
+// Points equal by `same` (the same chromaticity) are kept or dropped together.
+template <class Same>
+void drop_inside_extreme_octagon(std::vector<Pixel>& p, Same same) {
+  using C = Pixel;
   if (p.size() > 64) {
     static constexpr int dir[8][2] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
     // Per direction, the best point's rank as the fraction num/den (den = its b).
@@ -234,6 +214,37 @@ ChromaticityHull chromaticity_hull_of_pixels(const std::vector<std::array<std::u
       p.erase(std::remove_if(p.begin(), p.end(), inside), p.end());
     }
   }
+}
+}  // namespace
+
+ChromaticityHull chromaticity_hull_of_pixels(const std::vector<std::array<std::uint16_t, 3>>& colours) {
+  using C = std::array<std::uint16_t, 3>;
+  ChromaticityHull out;
+  std::vector<C> p;
+  p.reserve(colours.size());
+  for (const C& c : colours) {
+    if (c[2] == 0) ++out.dropped;
+    else p.push_back(c);
+  }
+  // (r1/b1, g1/b1) < (r2/b2, g2/b2) lexicographically, by cross-multiplication (below 2^32).
+  auto less = [](const C& a, const C& b) {
+    const std::uint64_t xa = std::uint64_t(a[0]) * b[2], xb = std::uint64_t(b[0]) * a[2];
+    if (xa != xb) return xa < xb;
+    return std::uint64_t(a[1]) * b[2] < std::uint64_t(b[1]) * a[2];
+  };
+  auto same = [](const C& a, const C& b) {
+    return std::uint64_t(a[0]) * b[2] == std::uint64_t(b[0]) * a[2] &&
+           std::uint64_t(a[1]) * b[2] == std::uint64_t(b[1]) * a[2];
+  };
+  // sign of det[(r,g,b)_a; _o... ]: the orientation of the chromaticities of o, a, b (b's > 0).
+  auto orient = [](const C& o, const C& a, const C& b) {
+    const std::int64_t r0 = o[0], g0 = o[1], b0 = o[2], r1 = a[0], g1 = a[1], b1 = a[2],
+                       r2 = b[0], g2 = b[1], b2 = b[2];
+    const std::int64_t det = r0 * (g1 * b2 - g2 * b1) - g0 * (r1 * b2 - r2 * b1) +
+                             b0 * (r1 * g2 - r2 * g1);
+    return (det > 0) - (det < 0);
+  };
+  drop_inside_extreme_octagon(p, same);
   std::sort(p.begin(), p.end(), less);
   p.erase(std::unique(p.begin(), p.end(), same), p.end());
   std::vector<C> hull;
