@@ -90,6 +90,46 @@ RuleRecord score_estimate(const Colour& e, const Point2& truth, const Colour& c)
   return record(map_errors(m, truth, c), false);
 }
 
+// Grey world and max-RGB on a scene's colours as the rules see them (noise, shading): its own
+// colours when it has them, else the light's surfaces pool[0..n).
+std::vector<RuleRecord> baseline_records(const ExperimentSetup& setup, const TestLight& light,
+                                         const std::vector<std::size_t>& pool, int n,
+                                         const std::vector<Colour>& image_colours) {
+  Colour sum{0, 0, 0}, max{0, 0, 0};
+  for (int i = 0; i < n; ++i) {
+    const Colour& c = image_colours.size() == static_cast<std::size_t>(n)
+                          ? image_colours[static_cast<std::size_t>(i)]
+                          : light.surfaces[pool[static_cast<std::size_t>(i)]];
+    sum.r += c.r, sum.g += c.g, sum.b += c.b;
+    if (c.r > max.r) max.r = c.r;
+    if (c.g > max.g) max.g = c.g;
+    if (c.b > max.b) max.b = c.b;
+  }
+  // Grey world's mean is the sum / n: the same direction, hence the same map.
+  return {score_estimate(sum, light.true_map, setup.canonical_light),
+          score_estimate(max, light.true_map, setup.canonical_light)};
+}
+
+// The same scene in 3-D (Forsyth's CRULE): its two rules' maps scored by their perspective
+// (d1/d3, d2/d3) into rec.rules[3] and [4].
+void score_crule(const ExperimentSetup& setup, const TestLight& light, const std::vector<Colour>& image_colours,
+                 SceneRecord& rec) {
+  const Crule3d c3 = crule_3d(setup.canonical_surfaces, image_colours);
+  const bool truth3_inside = contains(c3.feasible, light.true_diagonal_map);
+  const std::array<const std::optional<Selection3>*, 2> rules3{&c3.max_volume, &c3.centroid};
+  for (std::size_t r = 0; r < 2; ++r) {
+    if (!*rules3[r] || !(*rules3[r])->worst_case_deg) continue;
+    const MapEstimate3& e = (*rules3[r])->estimate;
+    const Point3 d = e.exact ? *e.exact
+                             : Point3{rational_from_double(e.map[0]), rational_from_double(e.map[1]),
+                                      rational_from_double(e.map[2])};
+    if (sgn(d.z) <= 0) continue;  // the zero map has no perspective
+    RuleErrors x = map_errors({Rational(d.x / d.z), Rational(d.y / d.z)}, light.true_map, setup.canonical_light);
+    x.worst_case_deg = *(*rules3[r])->worst_case_deg;
+    rec.rules[3 + r] = record(x, truth3_inside);
+  }
+}
+
 // Scenes s_begin <= s < s_end of cell (light_index, n), each with its own generator.
 std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const ExperimentConfig& config,
                                   const CanonicalConstraints& gamut, const std::vector<Point2>& chromaticities,
@@ -153,21 +193,7 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
       if (sgn(c.b) > 0) own.push_back(perspective_chromaticity(c)), image.push_back(&own.back());
       image_colours.push_back(std::move(c));
     }
-    if (setup.baselines) {  // on the scene's colours as the rules see them (noise, shading)
-      Colour sum{0, 0, 0}, max{0, 0, 0};
-      for (int i = 0; i < n; ++i) {
-        const Colour& c = image_colours.size() == static_cast<std::size_t>(n)
-                              ? image_colours[static_cast<std::size_t>(i)]
-                              : light.surfaces[pool[static_cast<std::size_t>(i)]];
-        sum.r += c.r, sum.g += c.g, sum.b += c.b;
-        if (c.r > max.r) max.r = c.r;
-        if (c.g > max.g) max.g = c.g;
-        if (c.b > max.b) max.b = c.b;
-      }
-      // Grey world's mean is the sum / n: the same direction, hence the same map.
-      rec.baselines = {score_estimate(sum, light.true_map, setup.canonical_light),
-                       score_estimate(max, light.true_map, setup.canonical_light)};
-    }
+    if (setup.baselines) rec.baselines = baseline_records(setup, light, pool, n, image_colours);
     if (image.empty()) continue;
     const FeasiblePolygon P = feasible_polygon(gamut, image);
     rec.kind = P.kind();
@@ -180,22 +206,7 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
     rec.area = scored.area;
     for (std::size_t r = 0; r < 3; ++r)
       if (scored.rules[r]) rec.rules[r] = record(*scored.rules[r], truth_inside);
-    if (config.crule) {  // the same scene in 3-D; maps scored by their perspective (d1/d3, d2/d3)
-      const Crule3d c3 = crule_3d(setup.canonical_surfaces, image_colours);
-      const bool truth3_inside = contains(c3.feasible, light.true_diagonal_map);
-      const std::array<const std::optional<Selection3>*, 2> rules3{&c3.max_volume, &c3.centroid};
-      for (std::size_t r = 0; r < 2; ++r) {
-        if (!*rules3[r] || !(*rules3[r])->worst_case_deg) continue;
-        const MapEstimate3& e = (*rules3[r])->estimate;
-        const Point3 d = e.exact ? *e.exact
-                                 : Point3{rational_from_double(e.map[0]), rational_from_double(e.map[1]),
-                                          rational_from_double(e.map[2])};
-        if (sgn(d.z) <= 0) continue;  // the zero map has no perspective
-        RuleErrors x = map_errors({Rational(d.x / d.z), Rational(d.y / d.z)}, light.true_map, setup.canonical_light);
-        x.worst_case_deg = *(*rules3[r])->worst_case_deg;
-        rec.rules[3 + r] = record(x, truth3_inside);
-      }
-    }
+    if (config.crule) score_crule(setup, light, image_colours, rec);
   }
   return records;
 }
