@@ -22,7 +22,6 @@ using internal::ConvexClip;
 using internal::ImagePoint;
 using internal::in_filter_range;
 using internal::integer_line;
-using internal::long_lines_available;
 using internal::Vertex;
 
 struct internal::FeasiblePolygonState {
@@ -225,7 +224,7 @@ const std::vector<LongEnclosedVertex>& FeasiblePolygon::extended_vertices() cons
   internal::FeasiblePolygonState& st = state();
   if (!st.long_vertices) {
     st.long_vertices.emplace();
-    if (long_lines_available() && !st.vertices.empty())
+    if (numerics::extended_precision_active() && !st.vertices.empty())
       for (const Vertex& v : st.cycle) st.long_vertices->push_back(st.clipper->enclose_exactly(v));
   }
   return *st.long_vertices;

@@ -14,7 +14,6 @@ using internal::approx_line;
 using internal::in_filter_range;
 using internal::integer_line;
 using internal::Line;
-using internal::long_lines_compiled;
 using internal::top_bits;
 
 CanonicalConstraints::CanonicalConstraints(const ConvexSet2& canonical) {
@@ -31,7 +30,7 @@ CanonicalConstraints::CanonicalConstraints(const ConvexSet2& canonical) {
     const auto la = top_bits(l.a.get_mpz_t()), lb = top_bits(l.b.get_mpz_t()), lc = top_bits(l.c.get_mpz_t());
     if (la && lb && lc) g.long_lines.push_back({*la, *lb, *lc});
   }
-  if (!long_lines_compiled || g.long_lines.size() != g.lines.size()) g.long_lines.clear();
+  if (!numerics::extended_precision_compiled || g.long_lines.size() != g.lines.size()) g.long_lines.clear();
   g.polygon = canonical.kind == ConvexKind::polygon;
   g.x_max = canonical.vertices.front().x, g.y_max = canonical.vertices.front().y;
   for (const Point2& p : canonical.vertices) g.x_max = std::max(g.x_max, p.x), g.y_max = std::max(g.y_max, p.y);

@@ -29,10 +29,10 @@ int orientation_sign(const Point2& a, const Point2& b, const Point2& c, const st
 }  // namespace
 
 ImagePoint image_point(const Point2& q) {
-  ImagePoint p{&q, {0, 0}, {0, 0}, true, long_lines_compiled};
+  ImagePoint p{&q, {0, 0}, {0, 0}, true, numerics::extended_precision_compiled};
   for (int k = 0; k < 2; ++k) {
     const Rational& c = k ? q.y : q.x;
-    const auto l = long_lines_compiled ? top_bits(c) : std::nullopt;
+    const auto l = numerics::extended_precision_compiled ? top_bits(c) : std::nullopt;
     p.extended = p.extended && l;
     p.l[k] = l.value_or(0);
     const std::optional<double> f = approx(c, l);

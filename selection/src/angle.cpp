@@ -103,7 +103,7 @@ LDInterval angle_deg_enclosure(const std::array<LDInterval, 3>& u, const std::ar
 
 double angle_deg(const std::array<Rational, 3>& u_exact, const std::array<Rational, 3>& v_exact) {
   if (u_exact == v_exact) return 0;  // what the MPFR route returns for them, exactly
-  if (fast_path_available()) {
+  if (numerics::extended_precision_active()) {
     std::array<LDInterval, 3> u, v;
     for (int k = 0; k < 3; ++k) u[k] = enclose_ld(u_exact[k]), v[k] = enclose_ld(v_exact[k]);
     const LDInterval d = dot(u, v);

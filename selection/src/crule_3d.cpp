@@ -11,9 +11,7 @@ Rational dot(const Point3& a, const Point3& b) { return Rational(a.x * b.x + a.y
 bool is_zero(const Point3& a) { return sgn(a.x) == 0 && sgn(a.y) == 0 && sgn(a.z) == 0; }
 
 Selection3 with_worst_case(const ConvexSet3& F, MapEstimate3 e) {
-  const Point3 m = e.exact ? *e.exact
-                           : Point3{rational_from_double(e.map[0]), rational_from_double(e.map[1]),
-                                    rational_from_double(e.map[2])};
+  const Point3 m = measured_map(e);
   Selection3 s{std::move(e), std::nullopt};
   bool nonzero_vertex = false;
   for (const Point3& v : F.vertices) nonzero_vertex = nonzero_vertex || !is_zero(v);

@@ -45,6 +45,15 @@ MapEstimate exact_map_estimate(std::string rule, const Point2& exact) {
   return e;
 }
 
+Point2 measured_map(const MapEstimate& e) {
+  return e.exact ? *e.exact : Point2{rational_from_double(e.map[0]), rational_from_double(e.map[1])};
+}
+
+Point3 measured_map(const MapEstimate3& e) {
+  return e.exact ? *e.exact
+                 : Point3{rational_from_double(e.map[0]), rational_from_double(e.map[1]), rational_from_double(e.map[2])};
+}
+
 MapEstimate3 exact_map_estimate_3(std::string rule, const Point3& exact) {
   MapEstimate3 e;
   e.rule = std::move(rule);

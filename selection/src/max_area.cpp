@@ -137,7 +137,7 @@ Point2 max_area_point(const ConvexSet2& F) {
   return internal::staged(
       internal::counts(),
       [&F]() -> std::optional<Point2> {
-        return internal::fast_path_available() ? internal::max_area_filtered(F) : std::nullopt;
+        return numerics::extended_precision_active() ? internal::max_area_filtered(F) : std::nullopt;
       },
       [&F] { return internal::max_area_exact(F); });
 }

@@ -217,7 +217,7 @@ MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options
 
   // Fast path: rigorous extended-precision intervals, kept only when each component's enclosure
   // rounds to a single double (which is then the correctly rounded map).
-  if (internal::fast_path_available() && options.precision_bits == 0) {
+  if (numerics::extended_precision_active() && options.precision_bits == 0) {
     if (report_if_rounded(e, direction_map_fast(F))) return e;
     // Small or thin polygons: the same arithmetic from exactly formed edge vectors.
     if (F.kind == ConvexKind::polygon && report_if_rounded(e, direction_map_fast_edges(F))) return e;

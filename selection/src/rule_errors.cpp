@@ -203,7 +203,7 @@ std::optional<std::array<RuleErrors, 3>> rule_errors(const FeasiblePolygon& F, c
   if (auto out = stage<Enclosure>(F.vertices(), F.edges(), truth, canonical_illuminant)) return out;
   // Thin sets (F ∩ C along the daylight locus, small cones): the same in extended precision,
   // from vertex enclosures about 2^11 times tighter.
-  if (internal::fast_path_available() && !F.extended_vertices().empty())
+  if (numerics::extended_precision_active() && !F.extended_vertices().empty())
     return stage<LongEnclosure>(F.extended_vertices(), F.edges(), truth, canonical_illuminant);
   return std::nullopt;
 }

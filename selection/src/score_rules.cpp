@@ -53,9 +53,7 @@ ScoredRules score_rules(const FeasiblePolygon& F, const Point2& truth, const Col
   for (std::size_t r = 0; r < 3; ++r) {
     const MapEstimate& e = (**rules[r]).estimate;
     if (!e.valid) continue;
-    // The map scored is the exact one where the rule is rational, else the reported double taken exactly.
-    const Point2 m = e.exact ? *e.exact : Point2{rational_from_double(e.map[0]), rational_from_double(e.map[1])};
-    RuleErrors x = map_errors(m, truth, c);
+    RuleErrors x = map_errors(measured_map(e), truth, c);
     x.worst_case_deg = *(**rules[r]).worst_case_deg;
     out.rules[r] = x;
   }

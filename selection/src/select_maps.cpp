@@ -14,8 +14,7 @@ bool positive(const Point2& p) { return sgn(p.x) > 0 && sgn(p.y) > 0; }
 
 Selection with_worst_case(const ConvexSet2& F, MapEstimate e, const std::optional<Colour>& c) {
   if (!e.valid) return {std::move(e), std::nullopt, std::nullopt};
-  const Point2 m = e.exact ? *e.exact
-                           : Point2{rational_from_double(e.map[0]), rational_from_double(e.map[1])};
+  const Point2 m = measured_map(e);
   Selection s{std::move(e), worst_case_map_deg(F, m), std::nullopt};
   if (c && positive(m) && std::all_of(F.vertices.begin(), F.vertices.end(), positive))
     s.worst_case_illuminant_deg = worst_case_illuminant_deg(F, m, *c);

@@ -10,8 +10,7 @@ std::optional<TruthErrors> truth_errors(const Selection& s, const Point2& truth,
     throw std::invalid_argument("truth_errors: the true map and c must be > 0");
   const MapEstimate& e = s.estimate;
   if (!e.valid) return std::nullopt;
-  const Point2 m = e.exact ? *e.exact
-                           : Point2{rational_from_double(e.map[0]), rational_from_double(e.map[1])};
+  const Point2 m = measured_map(e);
   const RuleErrors x = map_errors(m, truth, c);
   TruthErrors t;
   t.map_error_deg = x.map_error_deg;

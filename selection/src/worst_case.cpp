@@ -48,7 +48,7 @@ double worst_case_map_deg(const ConvexSet2& F, const Point2& m) {
   const std::array<Rational, 3> lifted_m{m.x, m.y, Rational(1)};
   auto lifted = [](const Point2& v) { return std::array<Rational, 3>{v.x, v.y, Rational(1)}; };
   double worst = 0;
-  if (!internal::fast_path_available()) {
+  if (!numerics::extended_precision_active()) {
     for (const Point2& v : candidates) worst = std::max(worst, internal::angle_deg(lifted_m, lifted(v)));
     return worst;
   }

@@ -119,10 +119,7 @@ void score_crule(const ExperimentSetup& setup, const TestLight& light, const std
   const std::array<const std::optional<Selection3>*, 2> rules3{&c3.max_volume, &c3.centroid};
   for (std::size_t r = 0; r < 2; ++r) {
     if (!*rules3[r] || !(*rules3[r])->worst_case_deg) continue;
-    const MapEstimate3& e = (*rules3[r])->estimate;
-    const Point3 d = e.exact ? *e.exact
-                             : Point3{rational_from_double(e.map[0]), rational_from_double(e.map[1]),
-                                      rational_from_double(e.map[2])};
+    const Point3 d = measured_map((*rules3[r])->estimate);
     if (sgn(d.z) <= 0) continue;  // the zero map has no perspective
     RuleErrors x = map_errors({Rational(d.x / d.z), Rational(d.y / d.z)}, light.true_map, setup.canonical_light);
     x.worst_case_deg = *(*rules3[r])->worst_case_deg;

@@ -34,7 +34,7 @@ class Clipper {
       : keep_(std::move(g)), g_(*keep_), hq_(qs.size()) {
     lines_.reserve(lines);
     filtered_ = g_.filtered;
-    long_ = !g_.long_lines.empty() && long_lines_available();
+    long_ = !g_.long_lines.empty() && numerics::extended_precision_active();
     qs_.reserve(qs.size());
     for (const ImagePoint& q : qs) {
       qs_.push_back(q.exact);

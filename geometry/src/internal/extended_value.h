@@ -48,10 +48,9 @@ inline std::optional<long double> top_bits(const Rational& q) {
 }
 
 // Extended-precision values are computed where the platform has the 64-bit significand this
-// analysis assumes; the enclosures built from them are used only where the thread's x87 is at its
-// full precision, checked where they are used (numerics/platform.h).
-constexpr bool long_lines_compiled = numerics::extended_precision_compiled;
-inline bool long_lines_available() { return numerics::extended_precision_active(); }
+// analysis assumes (numerics::extended_precision_compiled); the enclosures built from them are used
+// only where the thread's x87 is at its full precision (numerics::extended_precision_active()),
+// checked where they are used.
 
 // A rational as a double within a relative 2u (u = 2^-53) of it, or nothing when it is outside
 // [2^-140, 2^140] (checked from its size). From the extended-precision quotient (2^-61.6) rounded
@@ -65,7 +64,7 @@ inline std::optional<double> approx(const Rational& q, const std::optional<long 
 }
 // The same, where q's extended-precision value is not at hand.
 inline std::optional<double> approx(const Rational& q) {
-  return approx(q, long_lines_compiled ? top_bits(q) : std::nullopt);
+  return approx(q, numerics::extended_precision_compiled ? top_bits(q) : std::nullopt);
 }
 
 // A line in extended precision: each coefficient within a relative 2^-61 of the same positive

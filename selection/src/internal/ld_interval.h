@@ -67,11 +67,10 @@ inline LDInterval atan2(LDInterval y, LDInterval x) {
   return LDInterval::around(lo, hi, LDInterval::push_transcendental);
 }
 
-/// The fast path's error analysis is for x87 extended precision (64-bit significand) at full
-/// precision control, and 64-bit GMP limbs; elsewhere (e.g. aarch64's 113-bit long double, or a
-/// thread whose x87 is set to 53 bits) it is skipped and MPFI is used. Asked at each use: the
-/// precision control is per thread and can change at run time (numerics/platform.h).
-inline bool fast_path_available() { return numerics::extended_precision_active(); }
+// These intervals' error analysis is for x87 extended precision (64-bit significand) at full
+// precision control, and 64-bit GMP limbs: callers use them only where
+// numerics::extended_precision_active() says so, asked at each use (numerics/platform.h), and
+// take MPFI elsewhere.
 
 /// An enclosure of an exact rational, from the top 64 bits of numerator and denominator
 /// (each truncated: relative error < 2^-63; exact when they fit in 64 bits) and one division:

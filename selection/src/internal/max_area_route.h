@@ -12,7 +12,7 @@ namespace gmcc::internal {
 
 /// The filter: every candidate's m1·m2 in x87 extended-precision intervals; the unique maximum
 /// when one enclosure lies strictly above all others', else nothing. Only where
-/// fast_path_available().
+/// numerics::extended_precision_active().
 std::optional<Point2> max_area_filtered(const ConvexSet2& F);
 
 /// The exact stage: the candidates' m1·m2 in ℚ, ties to the lexicographically least point.

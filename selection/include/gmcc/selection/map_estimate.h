@@ -51,4 +51,9 @@ struct MapEstimate {
 /// A MapEstimate for an exact rational answer: map rounded to nearest, with its error bound.
 MapEstimate exact_map_estimate(std::string rule, const Point2& exact);
 
+/// The map a rule's estimate stands for when it is measured (worst cases, errors against truth):
+/// the exact map where the rule is rational, else the reported double map taken exactly.
+/// \pre e.valid. O(1).
+Point2 measured_map(const MapEstimate& e);
+
 }  // namespace gmcc

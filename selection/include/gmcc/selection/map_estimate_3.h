@@ -38,4 +38,8 @@ struct MapEstimate3 {
 /// A MapEstimate3 for an exact rational map: rounded to nearest, with its rounding bound.
 MapEstimate3 exact_map_estimate_3(std::string rule, const Point3& exact);
 
+/// The 3-D map an estimate stands for when it is measured: the exact map where it is rational,
+/// else the reported double map taken exactly (as measured_map in 2-D). O(1).
+Point3 measured_map(const MapEstimate3& e);
+
 }  // namespace gmcc
