@@ -13,7 +13,7 @@ namespace gmcc::internal {
 namespace {
 
 // 180/π as an enclosure (the nearest long double to π is within half an ulp, 2^-63, of it).
-const LDInterval degrees_per_radian =
+const LDInterval degrees_per_radian_ld =
     LDInterval{180.0L, 180.0L} / LDInterval{numerics::pi - 0x1p-62L, numerics::pi + 0x1p-62L};
 
 double angle_mpfr(const std::array<Rational, 3>& u_exact, const std::array<Rational, 3>& v_exact) {
@@ -91,14 +91,14 @@ LDInterval dot(const std::array<LDInterval, 3>& u, const std::array<LDInterval, 
 // The angle's midpoint when cross2 is bounded away from 0 and the enclosure pins it to 2^-56.
 std::optional<double> tight_angle(const LDInterval& cross2, const LDInterval& dot) {
   if (!(cross2.lo > 0)) return std::nullopt;
-  const LDInterval deg = atan2(sqrt(cross2), dot) * degrees_per_radian;
+  const LDInterval deg = atan2(sqrt(cross2), dot) * degrees_per_radian_ld;
   if (!tight_degrees(deg)) return std::nullopt;
   return midpoint(deg);
 }
 }  // namespace
 
 LDInterval angle_deg_enclosure(const std::array<LDInterval, 3>& u, const std::array<LDInterval, 3>& v) {
-  return atan2(sqrt(cross2(u, v)), dot(u, v)) * degrees_per_radian;
+  return atan2(sqrt(cross2(u, v)), dot(u, v)) * degrees_per_radian_ld;
 }
 
 double angle_deg(const std::array<Rational, 3>& u_exact, const std::array<Rational, 3>& v_exact) {

@@ -1,7 +1,7 @@
 #include <gmcc/selection/crule_3d.h>
 #include <gmcc/selection/max_volume.h>
 
-#include <mpfr.h>
+#include "internal/angle.h"
 
 #include <stdexcept>
 
@@ -23,21 +23,7 @@ Selection3 with_worst_case(const ConvexSet3& F, MapEstimate3 e) {
 double diagonal_map_angular_error_deg(const Point3& u, const Point3& v) {
   if (is_zero(u) || is_zero(v))
     throw std::invalid_argument("diagonal_map_angular_error_deg: a zero map has no direction");
-  const Rational c0 = u.y * v.z - u.z * v.y, c1 = u.z * v.x - u.x * v.z, c2 = u.x * v.y - u.y * v.x;
-  const Rational cross2 = c0 * c0 + c1 * c1 + c2 * c2;
-  const Rational d = dot(u, v);
-  mpfr_t s, c, a, pi;
-  mpfr_inits2(128, s, c, a, pi, static_cast<mpfr_ptr>(nullptr));
-  mpfr_set_q(s, cross2.get_mpq_t(), MPFR_RNDN);
-  mpfr_sqrt(s, s, MPFR_RNDN);
-  mpfr_set_q(c, d.get_mpq_t(), MPFR_RNDN);
-  mpfr_atan2(a, s, c, MPFR_RNDN);
-  mpfr_const_pi(pi, MPFR_RNDN);
-  mpfr_mul_ui(a, a, 180, MPFR_RNDN);
-  mpfr_div(a, a, pi, MPFR_RNDN);
-  const double deg = mpfr_get_d(a, MPFR_RNDN);
-  mpfr_clears(s, c, a, pi, static_cast<mpfr_ptr>(nullptr));
-  return deg;
+  return internal::angle_deg({u.x, u.y, u.z}, {v.x, v.y, v.z});
 }
 
 double worst_case_map_deg_3d(const ConvexSet3& F, const Point3& m) {

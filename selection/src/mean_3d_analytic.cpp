@@ -1,7 +1,8 @@
 #include <gmcc/selection/mean_3d_analytic.h>
 
-#include "internal/ld_interval.h"
+#include "internal/closed_form.h"
 #include "internal/interval.h"
+#include "internal/ld_interval.h"
 
 #include <algorithm>
 #include <array>
@@ -44,34 +45,30 @@ unsigned automatic_precision(const std::vector<Point2>& v) {
   return static_cast<unsigned>(53 + 40 + cancel);
 }
 
-// The map's direction as enclosures, generic over the interval type: (τ1/τ3, τ2/τ3) for a
-// polygon, the bisector's perspective for a segment. `make` encloses an exact rational.
+// The map's direction (τ1/τ3, τ2/τ3) for a polygon, the bisector's perspective for a segment, in
+// interval kind I from exact products: c_i = p_i × p_{i+1}, |c_i|² and p_i·p_{i+1} formed exactly,
+// then enclosed by `make`. The sum is closed_form.h's, as for every other kind.
 template <class I, class Make>
 std::array<I, 2> direction_map(const ConvexSet2& F, Make make) {
   const auto& v = F.vertices;
-  std::array<I, 3> dir{make(Rational(0)), make(Rational(0)), make(Rational(0))};
   if (F.kind == ConvexKind::segment) {
     // û1 + û2: the bisector of the end rays (docs/derivations.md §1.5).
+    std::array<I, 3> dir{make(Rational(0)), make(Rational(0)), make(Rational(0))};
     for (const Point2& p : v) {
       const Vec3 u = lift(p);
       const I inv_norm = make(Rational(1)) / sqrt(make(dot(u, u)));
       for (int k = 0; k < 3; ++k) dir[k] = dir[k] + inv_norm * make(u[k]);
     }
-  } else {
-    // τ = ½ Σ θ_i c_i/|c_i|; the ½ cancels in the ratio, as does the orientation sign.
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      const Vec3 p = lift(v[i]), q = lift(v[(i + 1) % v.size()]);
-      const Vec3 c = cross(p, q);  // exact
-      const I norm = sqrt(make(dot(c, c)));
-      const I w = atan2(norm, make(dot(p, q))) / norm;
-      for (int k = 0; k < 3; ++k) dir[k] = dir[k] + w * make(c[k]);
-    }
+    return internal::tau_direction(dir);
   }
-  return {dir[0] / dir[2], dir[1] / dir[2]};
+  const auto tau = internal::tau_sum<I>(v.size(), make(Rational(0)), [&](std::size_t i) {
+    const Vec3 p = lift(v[i]), q = lift(v[(i + 1) % v.size()]);
+    const Vec3 c = cross(p, q);  // exact
+    return internal::TauTerm<I>{{make(c[0]), make(c[1]), make(c[2])},
+                                internal::theta_over_norm(sqrt(make(dot(c, c))), make(dot(p, q)))};
+  });
+  return internal::tau_direction(*tau);
 }
-
-LDInterval square(const LDInterval& x) { return x * x; }  // its sqrt clamps a negative end
-Interval square(const Interval& x) { return sqr(x); }
 
 // The same map from enclosures of the vertices (c_i and p_i·p_{i+1} in interval arithmetic:
 // cheap, with no exact rational products, but on thin polygons too wide to be kept). `make`
@@ -84,23 +81,20 @@ std::array<I, 2> direction_map_from_vertices(const ConvexSet2& F, Make make) {
   a.reserve(n), b.reserve(n);
   for (std::size_t i = 0; i < n; ++i) a.push_back(make(v[i].x)), b.push_back(make(v[i].y));
   const I one = make(Rational(1));
-  std::array<I, 3> dir{make(Rational(0)), make(Rational(0)), make(Rational(0))};
   if (F.kind == ConvexKind::segment) {
+    std::array<I, 3> dir{make(Rational(0)), make(Rational(0)), make(Rational(0))};
     for (std::size_t i = 0; i < 2; ++i) {
-      const I inv_norm = one / sqrt(square(a[i]) + square(b[i]) + one);
+      const I inv_norm = one / sqrt(sqr(a[i]) + sqr(b[i]) + one);
       dir = {dir[0] + inv_norm * a[i], dir[1] + inv_norm * b[i], dir[2] + inv_norm};
     }
-  } else {
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t j = (i + 1) % n;
-      // c = (a_i, b_i, 1) × (a_j, b_j, 1)
-      const I c0 = b[i] - b[j], c1 = a[j] - a[i], c2 = a[i] * b[j] - b[i] * a[j];
-      const I norm = sqrt(square(c0) + square(c1) + square(c2));
-      const I w = atan2(norm, a[i] * a[j] + b[i] * b[j] + one) / norm;
-      dir = {dir[0] + w * c0, dir[1] + w * c1, dir[2] + w * c2};
-    }
+    return internal::tau_direction(dir);
   }
-  return {dir[0] / dir[2], dir[1] / dir[2]};
+  const auto tau = internal::tau_sum<I>(n, make(Rational(0)), [&](std::size_t i) {
+    const std::size_t j = (i + 1) % n;
+    const std::array<I, 3> c = internal::cross_from_vertices(a[i], b[i], a[j], b[j]);
+    return internal::TauTerm<I>{c, internal::theta_over_norm(c, a[i] * a[j] + b[i] * b[j] + one)};
+  });
+  return internal::tau_direction(*tau);
 }
 
 // In x87 extended-precision intervals.
@@ -121,19 +115,17 @@ std::array<LDInterval, 2> direction_map_fast_edges(const ConvexSet2& F) {
     return internal::enclose_ld(num.get_mpz_t(), den.get_mpz_t());
   };
   const LDInterval one{1, 1};
-  std::array<LDInterval, 3> dir{LDInterval{0, 0}, LDInterval{0, 0}, LDInterval{0, 0}};
   LDInterval a_i = internal::enclose_ld(v[0].x), b_i = internal::enclose_ld(v[0].y);
-  for (std::size_t i = 0; i < n; ++i) {
+  const auto tau = internal::tau_sum<LDInterval>(n, LDInterval{0, 0}, [&](std::size_t i) {
     const std::size_t j = (i + 1) % n;
     const LDInterval a_j = internal::enclose_ld(v[j].x), b_j = internal::enclose_ld(v[j].y);
-    const LDInterval ex = difference(v[j].x, v[i].x), ey = difference(v[j].y, v[i].y);
-    const LDInterval c0{-ey.hi, -ey.lo}, c1 = ex, c2 = a_i * ey - b_i * ex;
-    const LDInterval norm = sqrt(c0 * c0 + c1 * c1 + c2 * c2);
-    const LDInterval w = atan2(norm, a_i * a_j + b_i * b_j + one) / norm;
-    dir = {dir[0] + w * c0, dir[1] + w * c1, dir[2] + w * c2};
+    const std::array<LDInterval, 3> c =
+        internal::cross_from_edge(a_i, b_i, difference(v[j].x, v[i].x), difference(v[j].y, v[i].y));
+    const internal::TauTerm<LDInterval> t{c, internal::theta_over_norm(c, a_i * a_j + b_i * b_j + one)};
     a_i = a_j, b_i = b_j;
-  }
-  return {dir[0] / dir[2], dir[1] / dir[2]};
+    return t;
+  });
+  return internal::tau_direction(*tau);
 }
 
 // The double that every point of an extended-precision enclosure rounds to, if there is one

@@ -1,7 +1,6 @@
 #include <gmcc/selection/rule_errors.h>
 
-#include <gmcc/numerics/constants.h>
-
+#include "internal/angle.h"
 #include "internal/closed_form.h"
 #include "internal/ld_interval.h"
 
@@ -28,42 +27,6 @@ LongEnclosure enclose<LongEnclosure>(const Rational& q) {
   if (sgn(q) == 0) return LongEnclosure::exact(0);
   const internal::LDInterval i = internal::enclose_ld(q);
   return LongEnclosure::between(i.lo, i.hi);
-}
-
-// libm's atan2 (and atan2l, the x87's fpatan) is within one ulp on x86_64 glibc (and every
-// platform we know); the nearest 180/π and the product by it add two roundings. The pads below
-// cover these.
-template <class T>
-constexpr T degrees_per_radian = T(180) / T(numerics::pi);
-
-// ∠(u, v) = atan2(|u×v|, u·v) in degrees, from s = |u×v| ∈ [s_lo, s_hi] and d = u·v ∈ d. One
-// atan2 at the box's centre; over the box |∂θ/∂s| = |d|/(s² + d²) <= max|d|/R² and
-// |∂θ/∂d| = s/(s² + d²) <= s_hi/R², R² the least s² + d² on it, which bounds the rest. When the box
-// reaches the origin (R = 0: the vectors' enclosures allow a zero vector) the result is unbounded.
-template <class E, class T = decltype(E::mid)>
-E angle_deg(const std::array<E, 3>& a, const std::array<E, 3>& b) {
-  constexpr T u = E::u;
-  std::array<E, 3> c;
-  for (int k = 0; k < 3; ++k) {
-    const int i = (k + 1) % 3, j = (k + 2) % 3;
-    c[static_cast<std::size_t>(k)] = a[static_cast<std::size_t>(i)] * b[static_cast<std::size_t>(j)] -
-                                     a[static_cast<std::size_t>(j)] * b[static_cast<std::size_t>(i)];
-  }
-  T s_lo, s_hi;
-  internal::norm_bounds(c, s_lo, s_hi);
-  const E d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  if (!std::isfinite(s_hi) || !d.finite()) return {0, E::unbounded};
-  const T d_lo = d.lo(), d_hi = d.hi();
-  const T d_min = d_lo > 0 ? d_lo : d_hi < 0 ? -d_hi : 0, d_max = std::max(std::fabs(d_lo), std::fabs(d_hi));
-  const T r2 = (s_lo * s_lo + d_min * d_min) * (1 - 4 * u);
-  if (!(r2 > 0)) return {0, E::unbounded};
-  const T s_mid = s_lo + (s_hi - s_lo) / 2;
-  const T ds = (s_hi - s_lo) / 2 * (1 + 4 * u) + u * s_hi, dd = d.rad + u * std::fabs(d.mid);
-  const T theta = std::atan2(s_mid, d.mid);  // radians, within one ulp (2u relative)
-  const T spread = (d_max * ds + s_hi * dd) / r2 * (1 + 32 * u) + std::fabs(theta) * 8 * u +
-                   std::numeric_limits<T>::min();
-  const T mid = theta * degrees_per_radian<T>;  // 180/π and the product: two more roundings
-  return {mid, E::round_up(spread * degrees_per_radian<T> * (1 + 8 * u) + std::fabs(mid) * 4 * u)};
 }
 
 template <class E>
@@ -156,7 +119,7 @@ std::optional<std::array<RuleErrors, 3>> stage(const std::vector<V>& v, const st
     const E m1 = (*maps[r])[0], m2 = (*maps[r])[1];
     if (!in_range(m1) || !in_range(m2) || m1.uncertain_sign() || m2.uncertain_sign()) return std::nullopt;
     const std::array<E, 3> lifted{m1, m2, one};
-    const E error = angle_deg<E>(lifted, {t1, t2, one});
+    const E error = internal::enclosed_angle_deg<E>(lifted, {t1, t2, one});
     // Worst case: every vertex at an acute angle to the map (u·v > 0), so the maximum is at a
     // vertex (docs/derivations.md §3.1). There the angle falls as (u·v)²/|v|² rises (|u| is
     // common): only vertices whose key may be the least need their angle; the enclosure of a
@@ -172,7 +135,7 @@ std::optional<std::array<RuleErrors, 3>> stage(const std::vector<V>& v, const st
     T worst_lo = 0, worst_hi = 0;
     for (std::size_t i = 0; i < v.size(); ++i) {
       if (keys[i].lo() > least_hi) continue;  // certainly a smaller angle than another vertex's
-      const E a = angle_deg<E>(lifted, {v[i].x, v[i].y, one});
+      const E a = internal::enclosed_angle_deg<E>(lifted, {v[i].x, v[i].y, one});
       worst_lo = std::max(worst_lo, a.lo()), worst_hi = std::max(worst_hi, a.hi());
     }
     const E worst = E::between(worst_lo, worst_hi);
@@ -183,8 +146,8 @@ std::optional<std::array<RuleErrors, 3>> stage(const std::vector<V>& v, const st
     e.map = {static_cast<double>(m1.mid), static_cast<double>(m2.mid)};
     e.positive_map = m1.positive() && m2.positive();
     if (e.positive_map) {  // e = c ⊘ (m, 1); the reproduction error compares d_est ⊘ d_true with white
-      const E illuminant = angle_deg<E>({cr / m1, cg / m2, cb}, {cr / t1, cg / t2, cb});
-      const E reproduction = angle_deg<E>({m1 / t1, m2 / t2, one}, {one, one, one});
+      const E illuminant = internal::enclosed_angle_deg<E>({cr / m1, cg / m2, cb}, {cr / t1, cg / t2, cb});
+      const E reproduction = internal::enclosed_angle_deg<E>({m1 / t1, m2 / t2, one}, {one, one, one});
       if (!accurate(illuminant) || !accurate(reproduction)) return std::nullopt;
       e.illuminant_error_deg = static_cast<double>(illuminant.mid);
       e.reproduction_error_deg = static_cast<double>(reproduction.mid);

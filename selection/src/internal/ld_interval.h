@@ -31,6 +31,8 @@ struct LDInterval {
     return {down(lo, rel), up(hi, rel)};
   }
 
+  /// −x: exact.
+  friend LDInterval operator-(LDInterval a) { return {-a.hi, -a.lo}; }
   friend LDInterval operator+(LDInterval a, LDInterval b) { return around(a.lo + b.lo, a.hi + b.hi); }
   friend LDInterval operator-(LDInterval a, LDInterval b) { return around(a.lo - b.hi, a.hi - b.lo); }
   friend LDInterval operator*(LDInterval a, LDInterval b) {
@@ -46,6 +48,9 @@ struct LDInterval {
     return around(*std::min_element(p, p + 4), *std::max_element(p, p + 4));
   }
 };
+
+/// x², as x·x (its enclosure may reach below 0 when x holds 0: sqrt clamps it).
+inline LDInterval sqr(LDInterval x) { return x * x; }
 
 /// √x (a negative lower end, from outward rounding of a non-negative quantity, is clamped).
 inline LDInterval sqrt(LDInterval x) {
