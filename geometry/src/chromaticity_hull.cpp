@@ -1,5 +1,7 @@
 #include <gmcc/geometry/chromaticity_hull.h>
 
+#include "internal/monotone_chain.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -120,29 +122,21 @@ ChromaticityHull chromaticity_hull(const std::vector<std::array<double, 3>>& col
     if (!inside) survivors.push_back(p);
   }
 
-  // Andrew's monotone chain on the survivors, with exact (filtered) predicates.
+  // The hull of the survivors' distinct chromaticities, with exact (filtered) predicates.
   std::sort(survivors.begin(), survivors.end(), less_xy);
-  std::vector<Colour3> hull;
-  auto chain = [&](auto begin, auto end) {
-    const std::size_t base = hull.size();
-    for (auto it = begin; it != end; ++it) {
-      while (hull.size() >= base + 2 && orientation3(hull[hull.size() - 2], hull.back(), *it) <= 0)
-        hull.pop_back();
-      hull.push_back(*it);
-    }
-    hull.pop_back();  // the last point starts the other chain
-  };
-  chain(survivors.begin(), survivors.end());
-  chain(survivors.rbegin(), survivors.rend());
-
+  survivors.erase(std::unique(survivors.begin(), survivors.end(),
+                              [](const Colour3& p, const Colour3& q) { return compare_x(p, q) == 0 && compare_y(p, q) == 0; }),
+                  survivors.end());
+  const std::vector<std::size_t> hull = internal::monotone_chain(survivors.size(), [&](std::size_t a, std::size_t b, std::size_t c) {
+    return orientation3(survivors[a], survivors[b], survivors[c]) > 0;
+  });
   std::vector<Point2> cycle;
   cycle.reserve(hull.size());
-  for (const Colour3& c : hull) {
+  for (std::size_t i : hull) {
+    const Colour3& c = survivors[i];
     const Rational b = exact(c[2]);
     cycle.push_back({Rational(exact(c[0]) / b), Rational(exact(c[1]) / b)});
   }
-  if (cycle.empty()) cycle.push_back({Rational(exact(pts[0][0]) / exact(pts[0][2])),
-                                      Rational(exact(pts[0][1]) / exact(pts[0][2]))});
   out.hull = canonical_convex_set(std::move(cycle));
   return out;
 }
@@ -248,21 +242,10 @@ ChromaticityHull chromaticity_hull_of_pixels(const std::vector<std::array<std::u
   std::sort(p.begin(), p.end(), less);
   p.erase(std::unique(p.begin(), p.end(), same), p.end());
   std::vector<C> hull;
-  if (p.size() <= 2) {
-    hull = p;
-  } else {
-    hull.resize(2 * p.size());
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) {  // lower chain, left to right
-      while (k >= 2 && orient(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
-      hull[k++] = p[i];
-    }
-    for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {  // upper chain, back
-      while (k >= lower && orient(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
-      hull[k++] = p[i];
-    }
-    hull.resize(k - 1);  // the last point repeats the first
-  }
+  for (std::size_t i : internal::monotone_chain(p.size(), [&](std::size_t a, std::size_t b, std::size_t c) {
+         return orient(p[a], p[b], p[c]) > 0;
+       }))
+    hull.push_back(p[i]);
   out.hull.kind = hull.empty()        ? ConvexKind::empty
                   : hull.size() == 1 ? ConvexKind::point
                   : hull.size() == 2 ? ConvexKind::segment

@@ -4,6 +4,7 @@
 #include <gmcc/geometry/enclosure.h>
 
 #include "internal/convex_hull_cgal.h"
+#include "internal/monotone_chain.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/convex_hull_2.h>
@@ -82,22 +83,12 @@ ConvexSet2 convex_hull(const std::vector<Point2>& points) {
     for (std::size_t i : p) few.push_back(points[i]);
     return canonical_convex_set(std::move(few));
   }
-  auto left = [&](std::size_t i, std::size_t j, std::size_t k) {
-    return turn(points[i], points[j], points[k], e[i], e[j], e[k]) > 0;
-  };
-  std::vector<std::size_t> h(2 * m);
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < m; ++i) {  // lower chain, left to right
-    while (k >= 2 && !left(h[k - 2], h[k - 1], p[i])) --k;
-    h[k++] = p[i];
-  }
-  for (std::size_t i = m - 1, t = k + 1; i-- > 0;) {  // upper chain, right to left
-    while (k >= t && !left(h[k - 2], h[k - 1], p[i])) --k;
-    h[k++] = p[i];
-  }
+  const std::vector<std::size_t> h = internal::monotone_chain(m, [&](std::size_t i, std::size_t j, std::size_t k) {
+    return turn(points[p[i]], points[p[j]], points[p[k]], e[p[i]], e[p[j]], e[p[k]]) > 0;
+  });
   std::vector<Point2> cycle;
-  cycle.reserve(k);
-  for (std::size_t i = 0; i + 1 < k; ++i) cycle.push_back(points[h[i]]);
+  cycle.reserve(h.size());
+  for (std::size_t i : h) cycle.push_back(points[p[i]]);
   if (cycle.size() < 3) return canonical_convex_set(std::move(cycle));  // all collinear: a segment
   // Every kept turn is strictly left, the cycle runs counter-clockwise from the lexicographically
   // smallest point: already canonical.

@@ -2,6 +2,7 @@
 
 #include "internal/extended_value.h"
 #include "internal/integer_line.h"
+#include "internal/monotone_chain.h"
 
 #include <algorithm>
 #include <cmath>
@@ -67,25 +68,13 @@ std::vector<ImagePoint> image_hull_vertices(const std::vector<const Point2*>& im
   auto equal = [&](const ImagePoint& a, const ImagePoint& b) { return compare(a, b, 0) == 0 && compare(a, b, 1) == 0; };
   std::sort(p.begin(), p.end(), less);
   p.erase(std::unique(p.begin(), p.end(), equal), p.end());
-  if (p.size() < 3) return p;
-  std::vector<std::size_t> h(2 * p.size());
-  std::size_t k = 0;
-  auto turn = [&](std::size_t a, std::size_t b, std::size_t c) {
-    return orientation_sign(*p[a].exact, *p[b].exact, *p[c].exact, p[a].f, p[b].f, p[c].f, filtered);
-  };
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && turn(h[k - 2], h[k - 1], i) <= 0) --k;
-    h[k++] = i;
-  }
-  for (std::size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
-    while (k >= t && turn(h[k - 2], h[k - 1], i) <= 0) --k;
-    h[k++] = i;
-  }
+  const std::vector<std::size_t> h = monotone_chain(p.size(), [&](std::size_t a, std::size_t b, std::size_t c) {
+    return orientation_sign(*p[a].exact, *p[b].exact, *p[c].exact, p[a].f, p[b].f, p[c].f, filtered) > 0;
+  });
   std::vector<ImagePoint> out;
-  out.reserve(k - 1);
-  for (std::size_t i = 0; i + 1 < k; ++i) out.push_back(p[h[i]]);
+  out.reserve(h.size());
+  for (std::size_t i : h) out.push_back(p[i]);
   return out;  // all collinear: the two extreme points
 }
-
 
 }  // namespace gmcc::internal
