@@ -106,6 +106,52 @@ std::string fixed(double x, int digits) {
   return buf;
 }
 
+// The scene of one image's colours, with its true light if one is given; bad input as an
+// InputError naming the image or the canonical file.
+SceneResult select_image(const PreparedCanonical& prepared, const ColourTable& canonical, const Settings& s,
+                         const std::string& truths_path, const std::string& path, const ImageColours& colours) {
+  try {
+    const std::optional<Colour> truth =
+        s.truths.empty() ? s.truth : std::optional<Colour>(light_of_image(s.truths, path, truths_path));
+    return select_scene(prepared, colours.colours, truth);
+  } catch (const SceneInputError& e) {
+    if (e.input == SceneInput::image)
+      throw InputError(path, 0, std::string(e.what()) +
+                                    (e.problem == SceneProblem::no_usable_colour
+                                         ? " (every kept pixel has b = 0 after the black level)"
+                                         : ""));
+    throw select_input_error(e, canonical, nullptr, nullptr);
+  }
+}
+
+// An image's JSON record: the file, its size and depth, and what became of its pixels.
+Json image_record(const std::string& path, const RgbImage& image, const ImageColours& colours) {
+  Json record;
+  record["file"] = path;
+  record["width"] = image.width;
+  record["height"] = image.height;
+  record["bits"] = image.bits;
+  record["pixels"] = {{"total", colours.counts.pixels},     {"masked", colours.counts.masked},
+                      {"saturated", colours.counts.saturated}, {"kept", colours.counts.kept},
+                      {"colours", colours.counts.colours},
+                      {"hull_vertices", colours.counts.hull_vertices},
+                      {"no_chromaticity", colours.counts.no_chromaticity}};
+  return record;
+}
+
+// The summary's lines on an image's pixels and its feasible set.
+void describe_image(std::ostream& text, const std::string& path, const RgbImage& image, const ImageColours& colours,
+                    const PixelRules& rules, const SceneResult& result) {
+  text << path << ": " << image.width << "x" << image.height << " (" << image.bits
+       << "-bit), " << colours.counts.masked << " pixels masked, " << colours.counts.saturated
+       << " saturated, " << colours.counts.kept << " kept, " << colours.counts.colours
+       << " distinct colours";
+  if (rules.colour_set == ColourSet::hull && rules.bin == 1)
+    text << ", " << colours.counts.hull_vertices << " on the chromaticity hull";
+  text << "\n  feasible set: " << to_string(result.feasible.kind) << ", "
+       << result.feasible.vertices.size() << " vertices\n";
+}
+
 }  // namespace
 
 CLI::App* add_estimate_command(CLI::App& app, EstimateOptions& o) {
@@ -116,11 +162,9 @@ CLI::App* add_estimate_command(CLI::App& app, EstimateOptions& o) {
       "set and the three selection rules against one canonical gamut.");
   cmd->add_option("--canonical", o.canonical_path, "canonical colours, one r,g,b per line")
       ->required();
-  cmd->add_option("images", o.images, "image files (PNG or TIFF, linear RGB)")->required();
+  add_images_argument(*cmd, o.images);
   add_pixel_options(*cmd, o.pixels);
-  cmd->add_option("--truths", o.truths_path,
-                  "CSV with header image,r,g,b: each image's true light (image as given on the "
-                  "command line, or its file name), for each rule's errors");
+  add_truths_option(*cmd, o.truths_path, ", for each rule's errors");
   cmd->add_option("--truth", o.truth,
                   "r,g,b of the true light (one image): each rule's errors against it")
       ->type_name("R,G,B");
@@ -167,39 +211,10 @@ int run_estimate(const EstimateOptions& o) {
     RgbImage image;
     PixelRules rules;
     const ImageColours colours = image_colours_of(path, s.pixels, &image, &rules);
-    SceneResult result;
-    try {
-      const std::optional<Colour> truth =
-          s.truths.empty() ? s.truth
-                           : std::optional<Colour>(light_of_image(s.truths, path, o.truths_path));
-      result = select_scene(prepared, colours.colours, truth);
-    } catch (const SceneInputError& e) {
-      if (e.input == SceneInput::image)
-        throw InputError(path, 0, std::string(e.what()) +
-                                      (e.problem == SceneProblem::no_usable_colour
-                                           ? " (every kept pixel has b = 0 after the black level)"
-                                           : ""));
-      throw select_input_error(e, canonical, nullptr, nullptr);
-    }
-    Json record;
-    record["file"] = path;
-    record["width"] = image.width;
-    record["height"] = image.height;
-    record["bits"] = image.bits;
-    record["pixels"] = {{"total", colours.counts.pixels},     {"masked", colours.counts.masked},
-                        {"saturated", colours.counts.saturated}, {"kept", colours.counts.kept},
-                        {"colours", colours.counts.colours},
-                        {"hull_vertices", colours.counts.hull_vertices},
-                        {"no_chromaticity", colours.counts.no_chromaticity}};
+    const SceneResult result = select_image(prepared, canonical, s, o.truths_path, path, colours);
+    Json record = image_record(path, image, colours);
     Json estimates = Json::object();
-    text << path << ": " << image.width << "x" << image.height << " (" << image.bits
-         << "-bit), " << colours.counts.masked << " pixels masked, " << colours.counts.saturated
-         << " saturated, " << colours.counts.kept << " kept, " << colours.counts.colours
-         << " distinct colours";
-    if (rules.colour_set == ColourSet::hull && rules.bin == 1)
-      text << ", " << colours.counts.hull_vertices << " on the chromaticity hull";
-    text << "\n  feasible set: " << to_string(result.feasible.kind) << ", "
-         << result.feasible.vertices.size() << " vertices\n";
+    describe_image(text, path, image, colours, rules, result);
     for (int k = 0; k < 3; ++k) {
       const std::optional<Selection>& sel = rule(result.selections, k);
       if (!sel || !sel->estimate.valid) continue;

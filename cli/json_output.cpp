@@ -213,8 +213,11 @@ std::string select_json(const PreparedCanonical& c, const SceneResult& r) {
   return j.dump(2) + "\n";
 }
 
-std::string select_text(const PreparedCanonical& c, const SceneResult& r) {
-  std::ostringstream out;
+namespace {
+
+// The summary's lines on the canonical gamut, the image, the illumination constraint and any
+// recovery from an empty feasible set.
+void inputs_text(std::ostream& out, const PreparedCanonical& c, const SceneResult& r) {
   const Expansion& expansion = c.options.expansion;
   out << "canonical gamut: " << to_string(c.gamut.kind) << ", "
       << c.gamut.vertices.size() << " vertices from " << c.colours
@@ -244,24 +247,64 @@ std::string select_text(const PreparedCanonical& c, const SceneResult& r) {
           << fmt(to_double_nearest(r.recovery->min_violation->violation))
           << " (chromaticity units)";
   }
-  out << "\nfeasible set: " << to_string(r.feasible.kind);
-  if (r.feasible.kind == ConvexKind::polygon)
-    out << ", " << r.feasible.vertices.size() << " vertices, area "
-        << fmt(to_double_nearest(area(r.feasible)));
-  out << "\n";
+}
+
+// The feasible set's vertices, one a line.
+void vertices_text(std::ostream& out, const std::vector<Point2>& vertices) {
   // Each vertex as the shortest decimals that read back as its nearest doubles; where two
   // distinct vertices round to the same doubles (a sliver), their exact values too.
   std::vector<std::array<double, 2>> approx;
-  for (const Point2& v : r.feasible.vertices) approx.push_back(to_double_nearest(v));
+  for (const Point2& v : vertices) approx.push_back(to_double_nearest(v));
   for (std::size_t i = 0; i < approx.size(); ++i) {
     out << "  (" << shortest(approx[i][0]) << ", " << shortest(approx[i][1]) << ")";
     bool shared = false;
     for (std::size_t k = 0; k < approx.size(); ++k) shared = shared || (k != i && approx[k] == approx[i]);
     if (shared)
-      out << "  exact (" << to_string(r.feasible.vertices[i].x) << ", "
-          << to_string(r.feasible.vertices[i].y) << ")";
+      out << "  exact (" << to_string(vertices[i].x) << ", "
+          << to_string(vertices[i].y) << ")";
     out << "\n";
   }
+}
+
+// One rule's line: its map, worst case, and exact value or error bound.
+void selection_line(std::ostream& out, const char* name, const Selection& s) {
+  if (!s.estimate.valid) {
+    out << "  " << name << "  none (" << s.estimate.method << "): " << s.estimate.note << "\n";
+    return;
+  }
+  out << "  " << name << "  (" << fmt(s.estimate.map[0]) << ", " << fmt(s.estimate.map[1])
+      << ")  worst case " << fmt(*s.worst_case_deg) << " deg";
+  if (s.worst_case_illuminant_deg)
+    out << " (illuminant " << fmt(*s.worst_case_illuminant_deg) << ")";
+  if (s.estimate.exact) {
+    const std::string x = to_string(s.estimate.exact->x), y = to_string(s.estimate.exact->y);
+    if (x.size() + y.size() <= 40)
+      out << "  exact (" << x << ", " << y << ")";
+    else
+      out << "  exact rational (" << x.size() + y.size() << " digits; see --json)";
+  }
+  else
+    out << "  ± " << fmt(s.estimate.error_bound) << " ("
+        << (s.estimate.method == "monte-carlo" ? "monte-carlo, one standard error"
+            : s.estimate.method == "quadrature" ? "quadrature, estimated truncation + rounding bound"
+                                                : "analytic, certified")
+        << (s.estimate.correctly_rounded[0] && s.estimate.correctly_rounded[1]
+                ? ", correctly rounded" : "")
+        << ")";
+  out << "\n";
+}
+
+}  // namespace
+
+std::string select_text(const PreparedCanonical& c, const SceneResult& r) {
+  std::ostringstream out;
+  inputs_text(out, c, r);
+  out << "\nfeasible set: " << to_string(r.feasible.kind);
+  if (r.feasible.kind == ConvexKind::polygon)
+    out << ", " << r.feasible.vertices.size() << " vertices, area "
+        << fmt(to_double_nearest(area(r.feasible)));
+  out << "\n";
+  vertices_text(out, r.feasible.vertices);
   if (r.feasible.kind == ConvexKind::empty) {
     out << r.empty_reason << "\n";
     if (r.recovery && r.recovery->grown && !r.recovery->grown->found)
@@ -271,35 +314,9 @@ std::string select_text(const PreparedCanonical& c, const SceneResult& r) {
     return out.str();
   }
   out << "selections (perspective map d1/d3, d2/d3; worst-case map-space error):\n";
-  auto line = [&out](const char* name, const Selection& s) {
-    if (!s.estimate.valid) {
-      out << "  " << name << "  none (" << s.estimate.method << "): " << s.estimate.note << "\n";
-      return;
-    }
-    out << "  " << name << "  (" << fmt(s.estimate.map[0]) << ", " << fmt(s.estimate.map[1])
-        << ")  worst case " << fmt(*s.worst_case_deg) << " deg";
-    if (s.worst_case_illuminant_deg)
-      out << " (illuminant " << fmt(*s.worst_case_illuminant_deg) << ")";
-    if (s.estimate.exact) {
-      const std::string x = to_string(s.estimate.exact->x), y = to_string(s.estimate.exact->y);
-      if (x.size() + y.size() <= 40)
-        out << "  exact (" << x << ", " << y << ")";
-      else
-        out << "  exact rational (" << x.size() + y.size() << " digits; see --json)";
-    }
-    else
-      out << "  ± " << fmt(s.estimate.error_bound) << " ("
-          << (s.estimate.method == "monte-carlo" ? "monte-carlo, one standard error"
-              : s.estimate.method == "quadrature" ? "quadrature, estimated truncation + rounding bound"
-                                                  : "analytic, certified")
-          << (s.estimate.correctly_rounded[0] && s.estimate.correctly_rounded[1]
-                  ? ", correctly rounded" : "")
-          << ")";
-    out << "\n";
-  };
-  line("max-area", *r.selections.max_area);
-  line("2-D mean", *r.selections.mean_2d);
-  line("3-D mean", *r.selections.mean_3d);
+  selection_line(out, "max-area", *r.selections.max_area);
+  selection_line(out, "2-D mean", *r.selections.mean_2d);
+  selection_line(out, "3-D mean", *r.selections.mean_3d);
   if (r.truth) truth_text(out, *r.truth);
   return out.str();
 }

@@ -165,19 +165,55 @@ CLI::App* add_merge_command(CLI::App& app, MergeOptions& o) {
   return cmd;
 }
 
+namespace {
+
+// A scene record with its global index g (light, n, s) and where it was read: the records are
+// sorted by g once all are read, so memory follows the records read, not the scene count a
+// setup line claims.
+struct Read {
+  std::uint64_t g;
+  Place at;
+  SceneRecord scene;
+};
+
+// The records sorted by g; each scene of the run exactly once (else an InputError naming it).
+void check_every_scene_once(std::vector<Read>& scenes, const ExperimentResult& r, std::size_t cells,
+                            std::uint64_t total, const std::string& first_file) {
+  std::stable_sort(scenes.begin(), scenes.end(), [](const Read& a, const Read& b) { return a.g < b.g; });
+  auto name = [&](std::uint64_t g) {
+    const std::uint64_t cell = g / r.config.scenes;
+    return "scene " + std::to_string(g % r.config.scenes) + " of " + r.lights[cell / cells] + " with " +
+           std::to_string(r.config.min_surfaces + static_cast<int>(cell % cells)) + " surfaces";
+  };
+  for (std::size_t i = 1; i < scenes.size(); ++i)
+    if (scenes[i].g == scenes[i - 1].g)
+      bad(scenes[i].at, name(scenes[i].g) + " is already in " + scenes[i - 1].at.file + ":" +
+                            std::to_string(scenes[i - 1].at.line));
+  for (std::uint64_t g = 0; g < total; ++g)
+    if (g >= scenes.size() || scenes[g].g != g)
+      throw InputError(first_file, 0, name(g) + " is in none of the files: a shard is missing");
+}
+
+// Each cell's statistics from the merged scenes (in cell order, as reproduce computes them).
+void summarise_cells(ExperimentResult& r, std::size_t cells) {
+  for (std::size_t l = 0; l < r.lights.size(); ++l)
+    for (std::size_t k = 0; k < cells; ++k) {
+      std::vector<const SceneRecord*> cell;
+      const std::size_t base = (l * cells + k) * r.config.scenes;
+      for (std::size_t s = 0; s < r.config.scenes; ++s) cell.push_back(&r.scenes[base + s]);
+      r.cells.push_back(summarise_cell(r.lights[l], r.config.min_surfaces + static_cast<int>(k),
+                                             std::move(cell), r.rules.size()));
+    }
+}
+
+}  // namespace
+
 int run_merge(const MergeOptions& o) {
   std::optional<ExperimentResult> result;
   std::string provenance;  // the first part's: the whole run's, as every part records the same run
   std::optional<ExperimentOutputs> outputs;
   json setup;
   std::string first_file;
-  // Every record with its global index g (light, n, s) and where it was read: sorted by g at the
-  // end, so memory follows the records read, not the scene count a setup line claims.
-  struct Read {
-    std::uint64_t g;
-    Place at;
-    SceneRecord scene;
-  };
   std::vector<Read> scenes;
   std::uint64_t total = 0;
   std::size_t cells = 0;
@@ -231,31 +267,12 @@ int run_merge(const MergeOptions& o) {
     if (header) throw InputError(file, 0, "empty: no setup line");
   }
   set_activity("checking the scenes");
-  std::stable_sort(scenes.begin(), scenes.end(), [](const Read& a, const Read& b) { return a.g < b.g; });
-  auto name = [&](std::uint64_t g) {
-    const std::uint64_t cell = g / result->config.scenes;
-    return "scene " + std::to_string(g % result->config.scenes) + " of " + result->lights[cell / cells] + " with " +
-           std::to_string(result->config.min_surfaces + static_cast<int>(cell % cells)) + " surfaces";
-  };
-  for (std::size_t i = 1; i < scenes.size(); ++i)
-    if (scenes[i].g == scenes[i - 1].g)
-      bad(scenes[i].at, name(scenes[i].g) + " is already in " + scenes[i - 1].at.file + ":" +
-                            std::to_string(scenes[i - 1].at.line));
-  for (std::uint64_t g = 0; g < total; ++g)
-    if (g >= scenes.size() || scenes[g].g != g)
-      throw InputError(o.files.front(), 0, name(g) + " is in none of the files: a shard is missing");
+  check_every_scene_once(scenes, *result, cells, total, o.files.front());
   set_activity("merging the scenes");
   result->scenes.reserve(scenes.size());
   for (Read& r : scenes) result->scenes.push_back(std::move(r.scene));
   std::vector<Read>().swap(scenes);
-  for (std::size_t l = 0; l < result->lights.size(); ++l)
-    for (std::size_t k = 0; k < cells; ++k) {
-      std::vector<const SceneRecord*> cell;
-      const std::size_t base = (l * cells + k) * result->config.scenes;
-      for (std::size_t s = 0; s < result->config.scenes; ++s) cell.push_back(&result->scenes[base + s]);
-      result->cells.push_back(summarise_cell(result->lights[l], result->config.min_surfaces + static_cast<int>(k),
-                                             std::move(cell), result->rules.size()));
-    }
+  summarise_cells(*result, cells);
   return outputs->write(*result, provenance);
 }
 

@@ -62,10 +62,11 @@ std::string quoted_text(std::string_view text) {
   return out;
 }
 
+namespace {
 
-Rational parse_rational(std::string_view text) {
-  if (text.empty()) malformed(text, "empty field");
-  // Digits before any exponent, counted first so that a long field is refused in O(length).
+// Refuse, before any parsing, a field of more digits (before any exponent) than a number may
+// have (in O(length)), and NaN and the infinities by name.
+void check_digits_and_specials(std::string_view text) {
   std::size_t digit_count = 0;
   for (char c : text) {
     if (c == 'e' || c == 'E') break;
@@ -82,6 +83,39 @@ Rational parse_rational(std::string_view text) {
     throw std::invalid_argument("NaN is not allowed: a colour channel must be a finite number");
   if (unsigned_low == "inf" || unsigned_low == "infinity")
     throw std::invalid_argument("infinity is not allowed: a colour channel must be finite");
+}
+
+// sign · digits · 10^power, exactly and reduced (digits: the mantissa's decimal digits).
+Rational decimal_value(const std::string& digits, long power, bool negative) {
+  // Short decimals (the spectral tables' every number) in machine integers: m/10^k is reduced by
+  // removing the factors 2 and 5 it shares with 10^k, the only ones it can share.
+  static_assert(sizeof(unsigned long) >= 8, "mpq_set_ui takes the 18-digit mantissa as unsigned long");
+  if (digits.size() <= 18 && power <= 0 && power >= -18) {
+    std::uint64_t m = 0, d = 1;
+    for (char c : digits) m = m * 10 + static_cast<std::uint64_t>(c - '0');
+    for (long k = 0; k < -power; ++k) d *= 10;
+    if (m == 0) d = 1;
+    while (d % 2 == 0 && m % 2 == 0) m /= 2, d /= 2;
+    while (d % 5 == 0 && m % 5 == 0) m /= 5, d /= 5;
+    Rational r;
+    mpq_set_ui(r.get_mpq_t(), static_cast<unsigned long>(m), static_cast<unsigned long>(d));
+    if (negative) mpq_neg(r.get_mpq_t(), r.get_mpq_t());
+    return r;
+  }
+  mpz_class mantissa(digits, 10);
+  if (negative) mantissa = -mantissa;
+  mpz_class scale;
+  mpz_ui_pow_ui(scale.get_mpz_t(), 10, static_cast<unsigned long>(power < 0 ? -power : power));
+  Rational r = power >= 0 ? Rational(mantissa * scale) : Rational(mantissa, scale);
+  r.canonicalize();
+  return r;
+}
+
+}  // namespace
+
+Rational parse_rational(std::string_view text) {
+  if (text.empty()) malformed(text, "empty field");
+  check_digits_and_specials(text);
 
   if (const auto slash = text.find('/'); slash != std::string_view::npos) {
     const mpz_class p = parse_integer(text.substr(0, slash), text, true);
@@ -127,28 +161,7 @@ Rational parse_rational(std::string_view text) {
   // |power| <= max_decimal_exponent + max_number_digits: both were checked above.
   const long power = exponent - fraction_digits;
 
-  // Short decimals (the spectral tables' every number) in machine integers: m/10^k is reduced by
-  // removing the factors 2 and 5 it shares with 10^k, the only ones it can share.
-  static_assert(sizeof(unsigned long) >= 8, "mpq_set_ui takes the 18-digit mantissa as unsigned long");
-  if (digits.size() <= 18 && power <= 0 && power >= -18) {
-    std::uint64_t m = 0, d = 1;
-    for (char c : digits) m = m * 10 + static_cast<std::uint64_t>(c - '0');
-    for (long k = 0; k < -power; ++k) d *= 10;
-    if (m == 0) d = 1;
-    while (d % 2 == 0 && m % 2 == 0) m /= 2, d /= 2;
-    while (d % 5 == 0 && m % 5 == 0) m /= 5, d /= 5;
-    Rational r;
-    mpq_set_ui(r.get_mpq_t(), static_cast<unsigned long>(m), static_cast<unsigned long>(d));
-    if (negative) mpq_neg(r.get_mpq_t(), r.get_mpq_t());
-    return r;
-  }
-  mpz_class mantissa(digits, 10);
-  if (negative) mantissa = -mantissa;
-  mpz_class scale;
-  mpz_ui_pow_ui(scale.get_mpz_t(), 10, static_cast<unsigned long>(power < 0 ? -power : power));
-  Rational r = power >= 0 ? Rational(mantissa * scale) : Rational(mantissa, scale);
-  r.canonicalize();
-  return r;
+  return decimal_value(digits, power, negative);
 }
 
 Rational rational_from_double(double value) {

@@ -131,9 +131,8 @@ py::object point3_tuple(const Point3& p) {
   return py::make_tuple(to_fraction(p.x), to_fraction(p.y), to_fraction(p.z));
 }
 
-}  // namespace
-
-void bind_results(py::module_& m) {
+// The 2-D feasible set and gamut type.
+void bind_convex_set(py::module_& m) {
   py::class_<ConvexSet2>(m, "ConvexSet",
                          "An exact closed convex set of the plane (a feasible set of perspective "
                          "maps, a gamut of chromaticities): a polygon (counter-clockwise, from its "
@@ -197,7 +196,10 @@ void bind_results(py::module_& m) {
         if (s.worst_case_deg) r += ", worst case " + g10(*s.worst_case_deg) + " deg";
         return r + ")";
       });
+}
 
+// What a scene is scored and recovered with: truth errors, the illumination constraint, recovery.
+void bind_scene_reports(py::module_& m) {
   py::class_<TruthErrors>(m, "TruthErrors", "One rule's errors against the true light, degrees.")
       .def_readonly("map_error_deg", &TruthErrors::map_error_deg,
                     "The paper's map-space angular error (§4).")
@@ -213,7 +215,6 @@ void bind_results(py::module_& m) {
         if (e.reproduction_error_deg) r += ", reproduction " + g10(*e.reproduction_error_deg) + " deg";
         return r + ")";
       });
-
   py::class_<TruthReport>(m, "Truth", "The scene scored against its true light.")
       .def_property_readonly("light", [](const TruthReport& t) { return colour_tuple(t.light); })
       .def_property_readonly("map", [](const TruthReport& t) { return to_fraction_pair(t.map); },
@@ -231,7 +232,6 @@ void bind_results(py::module_& m) {
         return "Truth(map (" + g10(d[0]) + ", " + g10(d[1]) + "), " +
                (t.in_feasible_set ? "inside" : "outside") + " F)";
       });
-
   py::class_<ConstraintReport>(m, "Constraint", "Finlayson's illumination constraint as applied.")
       .def_readonly("illuminants", &ConstraintReport::illuminants)
       .def_readonly("maps", &ConstraintReport::maps, "C: the hull of the lights' perspective maps.")
@@ -239,7 +239,6 @@ void bind_results(py::module_& m) {
       .def("__repr__", [](const ConstraintReport& c) {
         return "Constraint(" + std::to_string(c.illuminants) + " illuminants, C " + convex_set_repr(c.maps) + ")";
       });
-
   py::class_<RecoveryReport>(m, "Recovery", "What the recovery policy did with an empty F.")
       .def_property_readonly("policy", [](const RecoveryReport& r) { return to_string(r.policy); })
       .def_readonly("reason", &RecoveryReport::reason)
@@ -264,7 +263,10 @@ void bind_results(py::module_& m) {
       .def("__repr__", [](const RecoveryReport& r) {
         return "Recovery(" + to_string(r.policy) + (r.applied ? ", applied" : ", not applied") + ")";
       });
+}
 
+// A prepared canonical gamut, a scene's result and an image's colours.
+void bind_scene(py::module_& m) {
   py::class_<PreparedCanonical, std::shared_ptr<PreparedCanonical>>(
       m, "Canonical",
       "The canonical side prepared once for many images (gmcc.prepare_canonical): the exact "
@@ -287,7 +289,6 @@ void bind_results(py::module_& m) {
         return "Canonical(" + std::to_string(c.colours) + " colours, gamut " + convex_set_repr(c.gamut) +
                (c.constraint ? ", constrained" : "") + ")";
       });
-
   py::class_<Scene>(m, "SceneResult",
                     "Everything gmcc.select found for one image: the feasible set F (Finlayson & "
                     "Hordley 1999 eqs. 7–9, in perspective), the three selections (§3) with their "
@@ -325,7 +326,6 @@ void bind_results(py::module_& m) {
         if (!s.result.empty_reason.empty()) r += ", " + s.result.empty_reason;
         return r + ")";
       });
-
   py::class_<PyImageColours>(m, "ImageColours",
                              "The colours the pixel rules kept (docs/conventions.md §8), with counts.")
       .def_property_readonly("colours", [](const PyImageColours& c) {
@@ -345,7 +345,10 @@ void bind_results(py::module_& m) {
         return "ImageColours(" + std::to_string(c.colours.size()) + " colours of " +
                std::to_string(c.counts.pixels) + " pixels, " + std::to_string(c.counts.kept) + " kept)";
       });
+}
 
+// CRULE in 3-D: F3, its selections and the whole result.
+void bind_crule(py::module_& m) {
   py::class_<ConvexSet3>(m, "ConvexSet3",
                          "An exact convex set of diagonal maps (d1, d2, d3): Forsyth's 3-D "
                          "feasible set; polytope, polygon, segment, point or empty.")
@@ -368,7 +371,6 @@ void bind_results(py::module_& m) {
         return "ConvexSet3(" + to_string(s.kind) + ", " + std::to_string(s.vertices.size()) +
                " vertices, volume≈" + g10(to_double_nearest(volume(s))) + ")";
       });
-
   py::class_<Selection3>(m, "Selection3", "A 3-D CRULE rule's diagonal map and its worst case.")
       .def_property_readonly("rule", [](const Selection3& s) { return s.estimate.rule; })
       .def_property_readonly("method", [](const Selection3& s) { return s.estimate.method; },
@@ -391,7 +393,6 @@ void bind_results(py::module_& m) {
         return "Selection3(" + e.rule + " (" + g10(e.map[0]) + ", " + g10(e.map[1]) + ", " + g10(e.map[2]) +
                ") " + e.method + ")";
       });
-
   py::class_<Crule3d>(m, "Crule3d", "Forsyth's CRULE in 3-D: F3, its volume and two selections.")
       .def_readonly("feasible_set", &Crule3d::feasible)
       .def_property_readonly("volume", [](const Crule3d& c) { return to_fraction(c.volume); })
@@ -401,7 +402,10 @@ void bind_results(py::module_& m) {
         return "Crule3d(" + to_string(c.feasible.kind) + ", " + std::to_string(c.feasible.vertices.size()) +
                " vertices, volume≈" + g10(to_double_nearest(c.volume)) + ")";
       });
+}
 
+// Error statistics over scenes.
+void bind_statistics(py::module_& m) {
   py::class_<ErrorStatistics>(m, "ErrorStatistics",
                               "The statistics the field reports for a list of angular errors "
                               "(docs/reproduction.md \"Statistics\").")
@@ -426,6 +430,16 @@ void bind_results(py::module_& m) {
                g10(s.median) + ", trimean=" + g10(s.trimean) + ", best25=" + g10(s.best25) +
                ", worst25=" + g10(s.worst25) + ", max=" + g10(s.max) + ")";
       });
+}
+
+}  // namespace
+
+void bind_results(py::module_& m) {
+  bind_convex_set(m);
+  bind_scene_reports(m);
+  bind_scene(m);
+  bind_crule(m);
+  bind_statistics(m);
 }
 
 }  // namespace gmcc::python

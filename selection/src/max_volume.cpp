@@ -60,15 +60,18 @@ int compare_with(const Interval& x, const Rational& q) {  // −1: x < q surely,
   if (mpfr_sgn(&d.get()->right) < 0) return -1;
   return 0;
 }
-}  // namespace
 
-MapEstimate3 max_volume(const ConvexSet3& F) {
-  if (F.kind == ConvexKind3::empty) throw std::invalid_argument("max_volume: empty feasible set");
-  const auto& v = F.vertices;
-
-  // Rational candidates: vertices, facet stationary points, rational edge roots.
-  std::vector<Point3> rational(v.begin(), v.end());
+// The candidates for the maximum of d1·d2·d3 on F: rational ones (vertices, facet stationary
+// points, rational edge roots) and the edges' irrational roots.
+struct Candidates {
+  std::vector<Point3> rational;
   std::vector<EdgeRoot> irrational;
+};
+Candidates candidates(const ConvexSet3& F) {
+  const auto& v = F.vertices;
+  Candidates out{{v.begin(), v.end()}, {}};
+  std::vector<Point3>& rational = out.rational;
+  std::vector<EdgeRoot>& irrational = out.irrational;
   std::vector<std::vector<std::size_t>> planes = F.faces;  // polytope facets, or the polygon
   for (const auto& f : planes) {
     const Point3 n = cross(sub(v[f[1]], v[f[0]]), sub(v[f[2]], v[f[0]]));
@@ -107,6 +110,36 @@ MapEstimate3 max_volume(const ConvexSet3& F) {
     }
     for (int sign : {1, -1}) irrational.push_back({p, u, a, b, disc, sign});
   }
+  return out;
+}
+
+// An irrational winner's map enclosed tightly enough for a double (at least `bits`), reported
+// with its exact form.
+MapEstimate3 edge_root_estimate(const EdgeRoot& e, mpfr_prec_t bits) {
+  const auto d = e.point(std::max<mpfr_prec_t>(bits, 256));
+  MapEstimate3 out;
+  out.rule = "max_volume";
+  out.method = "certified";
+  for (int k = 0; k < 3; ++k) {
+    const auto [m, bound] = internal::nearest_with_bound(d[k]);
+    const auto [lo, hi] = internal::outward_doubles(d[k]);
+    out.map[k] = m;
+    out.error_bound = std::max(out.error_bound, bound);
+    out.enclosure[k] = {lo, hi};
+  }
+  out.edge_root = MapEstimate3::EdgeRoot{e.p, along(e.p, e.u, 1), e.a, e.b,
+                                          Rational((e.b * e.b - e.disc) / (4 * e.a)), e.sign};
+  return out;
+}
+
+}  // namespace
+
+MapEstimate3 max_volume(const ConvexSet3& F) {
+  if (F.kind == ConvexKind3::empty) throw std::invalid_argument("max_volume: empty feasible set");
+
+  Candidates c = candidates(F);
+  std::vector<Point3>& rational = c.rational;
+  std::vector<EdgeRoot>& irrational = c.irrational;
 
   // The best rational candidate, exactly (ties: the lexicographically smallest).
   Point3 best = rational.front();
@@ -145,22 +178,7 @@ MapEstimate3 max_volume(const ConvexSet3& F) {
       for (std::size_t j = 0; j < value.size() && wins; ++j)
         wins = j == i || interval_lt(value[j], value[i]);
       if (!wins) continue;
-      // Enclose the map tightly enough for a double, and report it with its exact form.
-      const EdgeRoot& e = irrational[i];
-      const auto d = e.point(std::max<mpfr_prec_t>(bits, 256));
-      MapEstimate3 out;
-      out.rule = "max_volume";
-      out.method = "certified";
-      for (int k = 0; k < 3; ++k) {
-        const auto [m, bound] = internal::nearest_with_bound(d[k]);
-        const auto [lo, hi] = internal::outward_doubles(d[k]);
-        out.map[k] = m;
-        out.error_bound = std::max(out.error_bound, bound);
-        out.enclosure[k] = {lo, hi};
-      }
-      out.edge_root = MapEstimate3::EdgeRoot{e.p, along(e.p, e.u, 1), e.a, e.b,
-                                              Rational((e.b * e.b - e.disc) / (4 * e.a)), e.sign};
-      return out;
+      return edge_root_estimate(irrational[i], bits);
     }
   }
   return exact_map_estimate_3("max_volume", best);

@@ -395,13 +395,8 @@ class SineFilter {
   std::optional<Interval> c1_, c2_, c3_, m1_, m2_, c2c3_, c1c3_, c1c2_, c3c3_;
 };
 
-}  // namespace
-
-IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const Point2& m, const Colour& c,
-                                                    IlluminantRoute route, IlluminantRouteWork* work) {
-  IlluminantRouteWork tally;
-  const bool filtered = route != IlluminantRoute::exact;
-  const bool certified = route == IlluminantRoute::certified;
+// worst_case_illuminant's preconditions (std::invalid_argument when one fails).
+void check_input(const ConvexSet2& F, const Point2& m, const Colour& c) {
   if (F.kind == ConvexKind::empty)
     throw std::invalid_argument("worst_case_illuminant: empty feasible set");
   for (const Rational* x : {&m.x, &m.y, &c.r, &c.g, &c.b})
@@ -410,6 +405,43 @@ IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const P
   for (const Point2& v : F.vertices)
     if (sgn(v.x) <= 0 || sgn(v.y) <= 0)
       throw std::invalid_argument("worst_case_illuminant: feasible maps must be > 0");
+}
+
+// Along the edge x(t) = p + t·(da, db), t ∈ [0, 1], the numerator of d/dt of the angle's cosine
+// (a quartic in t; e_int the estimate's illuminant direction in integers).
+Poly stationary_polynomial(const Point2& p, const Rational& da, const Rational& db, const Colour& c,
+                           const std::vector<mpz_class>& e_int) {
+  // v(t) = a·b · (c ⊘ (a, b, 1)) = (c1·b, c2·a, c3·a·b) with a = p.x + t·da, b = p.y + t·db,
+  // scaled by a positive integer to integer coefficients (the angle's stationary points are
+  // unchanged by positive scalings of v and of e).
+  const std::vector<mpz_class> k = common_integers(
+      {c.r * p.y, c.r * db, c.g * p.x, c.g * da, c.b * p.x * p.y,
+       c.b * (p.x * db + da * p.y), c.b * da * db});
+  std::array<Poly, 3> v{Poly{k[0], k[1]}, Poly{k[2], k[3]}, Poly{k[4], k[5], k[6]}};
+  for (Poly& vj : v) trim(vj);
+  const std::array<Poly, 3> dv{derivative(v[0]), derivative(v[1]), derivative(v[2])};
+  Poly e_v, e_dv, v_v, v_dv;
+  for (int j = 0; j < 3; ++j) {
+    e_v = add(e_v, scaled(v[j], e_int[j]));
+    e_dv = add(e_dv, scaled(dv[j], e_int[j]));
+    v_v = add(v_v, mul(v[j], v[j]));
+    v_dv = add(v_dv, mul(v[j], dv[j]));
+  }
+  // d/dt (e·v)/|v| = [(e·v′)|v|² − (e·v)(v·v′)] / |v|³. The product is degree 5 term by term;
+  // the t⁵ terms cancel (both are 2·e3·c3³·(Δa·Δb)³), which we check rather than assume.
+  const Poly stationary = sub(mul(e_dv, v_v), mul(e_v, v_dv));
+  GMCC_CHECK(stationary.size() <= 5, "worst_case_illuminant: the edge polynomial is a quartic");
+  return stationary;
+}
+
+}  // namespace
+
+IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const Point2& m, const Colour& c,
+                                                    IlluminantRoute route, IlluminantRouteWork* work) {
+  IlluminantRouteWork tally;
+  const bool filtered = route != IlluminantRoute::exact;
+  const bool certified = route == IlluminantRoute::certified;
+  check_input(F, m, c);
 
   // e: the estimate's illuminant c ⊘ (m, 1). A candidate x implies the direction c ⊘ (x, 1); the
   // angle grows as cos²/|e|² = (e·w)²/|w|² falls, compared exactly (e·w > 0: all positive).
@@ -477,26 +509,7 @@ IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const P
     const Point2& p = vs[i];
     const Point2& q = vs[(i + 1) % vs.size()];
     const Rational da = q.x - p.x, db = q.y - p.y;
-    // v(t) = a·b · (c ⊘ (a, b, 1)) = (c1·b, c2·a, c3·a·b) with a = p.x + t·da, b = p.y + t·db,
-    // scaled by a positive integer to integer coefficients (the angle's stationary points are
-    // unchanged by positive scalings of v and of e).
-    const std::vector<mpz_class> k = common_integers(
-        {c.r * p.y, c.r * db, c.g * p.x, c.g * da, c.b * p.x * p.y,
-         c.b * (p.x * db + da * p.y), c.b * da * db});
-    std::array<Poly, 3> v{Poly{k[0], k[1]}, Poly{k[2], k[3]}, Poly{k[4], k[5], k[6]}};
-    for (Poly& vj : v) trim(vj);
-    const std::array<Poly, 3> dv{derivative(v[0]), derivative(v[1]), derivative(v[2])};
-    Poly e_v, e_dv, v_v, v_dv;
-    for (int j = 0; j < 3; ++j) {
-      e_v = add(e_v, scaled(v[j], e_int[j]));
-      e_dv = add(e_dv, scaled(dv[j], e_int[j]));
-      v_v = add(v_v, mul(v[j], v[j]));
-      v_dv = add(v_dv, mul(v[j], dv[j]));
-    }
-    // d/dt (e·v)/|v| = [(e·v′)|v|² − (e·v)(v·v′)] / |v|³. The product is degree 5 term by term;
-    // the t⁵ terms cancel (both are 2·e3·c3³·(Δa·Δb)³), which we check rather than assume.
-    const Poly stationary = sub(mul(e_dv, v_v), mul(e_v, v_dv));
-    GMCC_CHECK(stationary.size() <= 5, "worst_case_illuminant: the edge polynomial is a quartic");
+    const Poly stationary = stationary_polynomial(p, da, db, c, e_int);
     if (stationary.empty()) continue;  // constant angle along the edge: its ends suffice
     // No stationary point inside the edge: roots_in_unit_interval would find at most t = 1,
     // the vertex q, which is no new candidate.

@@ -76,16 +76,13 @@ bool is_nan(std::string_view s) {
          std::tolower(static_cast<unsigned char>(s[2])) == 'n';
 }
 
-}  // namespace
-
-ChartDataset parse_gehler_shi(const std::string& patches_text, const std::string& patches_file,
-                              const std::string& truth_text, const std::string& truth_file) {
-  ChartDataset data;
+// The ground-truth file's images, in index order, each with its name's position in by_name.
+void read_truths(const std::string& truth_text, const std::string& truth_file, ChartDataset& data,
+                 std::map<std::string_view, std::size_t>& by_name) {
   const std::vector<Row> truth_rows = rows_of(truth_text);
   check_header(truth_rows, truth_file,
                {"index", "image", "camera", "shi_real_rgb_r", "shi_real_rgb_g", "shi_real_rgb_b",
                 "rec2018_r", "rec2018_g", "rec2018_b"});
-  std::map<std::string_view, std::size_t> by_name;
   for (std::size_t i = 1; i < truth_rows.size(); ++i) {
     const Row& row = truth_rows[i];
     check_columns(row, truth_file, 9);
@@ -116,8 +113,12 @@ ChartDataset parse_gehler_shi(const std::string& patches_text, const std::string
     image.truth = {c[0], c[1], c[2]};
     data.images.push_back(std::move(image));
   }
-  if (data.images.empty()) throw InputError(truth_file, 0, "no images");
+}
 
+// The patch file's measurements into the images named in by_name (NaN in all three channels:
+// missing).
+void read_patches(const std::string& patches_text, const std::string& patches_file, const std::string& truth_file,
+                  ChartDataset& data, const std::map<std::string_view, std::size_t>& by_name) {
   const std::vector<Row> patch_rows = rows_of(patches_text);
   check_header(patch_rows, patches_file, {"index", "image", "patch", "r", "g", "b"});
   std::vector<std::array<bool, chart_patches>> seen(data.images.size());  // a row, NaN or not
@@ -160,6 +161,18 @@ ChartDataset parse_gehler_shi(const std::string& patches_text, const std::string
     }
     image.patches[patch - 1] = Colour{c[0], c[1], c[2]};
   }
+}
+
+}  // namespace
+
+ChartDataset parse_gehler_shi(const std::string& patches_text, const std::string& patches_file,
+                              const std::string& truth_text, const std::string& truth_file) {
+  ChartDataset data;
+  std::map<std::string_view, std::size_t> by_name;  // views into truth_text
+  read_truths(truth_text, truth_file, data, by_name);
+  if (data.images.empty()) throw InputError(truth_file, 0, "no images");
+
+  read_patches(patches_text, patches_file, truth_file, data, by_name);
   for (const ChartImage& image : data.images)
     for (const std::optional<Colour>& p : image.patches) data.missing_patches += !p;
   return data;

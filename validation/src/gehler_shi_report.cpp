@@ -1,18 +1,16 @@
 #include <gmcc/validation/gehler_shi_report.h>
 
 #include <cstdio>
+#include <ostream>
 #include <sstream>
 
 namespace gmcc {
 
-std::string gehler_shi_table(const ExperimentResult& r, const GehlerShiSetup& setup) {
-  std::ostringstream out;
+namespace {
+
+// Each camera's images, patches and canonical gamut.
+void camera_lines(std::ostream& out, const GehlerShiSetup& setup) {
   char line[512];
-  out << "gmcc reproduce gehler-shi: " << r.figure << "; " << r.config.scenes
-      << " scenes per image and count, seed " << r.config.seed << ", canonical light (1, 1, 1), expansion "
-      << to_string(r.config.expansion.policy);
-  if (r.config.expansion.policy != ExpansionPolicy::none) out << " by " << to_string(r.config.expansion.factor);
-  out << "\n";
   for (const GehlerShiCamera& c : setup.cameras) {
     std::snprintf(line, sizeof line, "  %s: %zu images, %zu usable patches, %zu dropped (near-black or clipped), %zu missing",
                   c.camera.c_str(), c.images, c.usable_patches, c.dropped_patches, c.missing_patches);
@@ -29,8 +27,11 @@ std::string gehler_shi_table(const ExperimentResult& r, const GehlerShiSetup& se
           << " neither\n";
     }
   }
-  out << "\nrecovery angular error in degrees (true vs estimated illuminant), mean / median over the scenes\n"
-         "with a feasible map; baselines on the same scenes, and (all) over every scene\n";
+}
+
+// Recovery angular error (mean / median) per light group and surface count, rules and baselines.
+void recovery_table(std::ostream& out, const ExperimentResult& r) {
+  char line[512];
   const std::size_t R = r.rules.size(), B = r.baselines.size();
   std::string group;
   for (const ExperimentCell& c : r.cells) {
@@ -64,9 +65,13 @@ std::string gehler_shi_table(const ExperimentResult& r, const GehlerShiSetup& se
     for (std::size_t b = 0; b < B; ++b) cell(c.baselines_all[b].illuminant);
     out << "\n";
   }
-  out << "\nmap-space angular error (the paper's measure) and its worst case, means in degrees; truth in F:\n"
-         "share of answered scenes whose true map lies in the feasible set\n";
-  group.clear();
+}
+
+// The paper's map-space error, its worst case, truth in F and the reproduction error.
+void map_error_table(std::ostream& out, const ExperimentResult& r) {
+  char line[512];
+  const std::size_t B = r.baselines.size();
+  std::string group;
   for (const ExperimentCell& c : r.cells) {
     if (c.light != group) {
       group = c.light;
@@ -82,6 +87,24 @@ std::string gehler_shi_table(const ExperimentResult& r, const GehlerShiSetup& se
                   s[2].reproduction.mean, B ? c.baselines[0].reproduction.mean : 0.0);
     out << line;
   }
+}
+
+}  // namespace
+
+std::string gehler_shi_table(const ExperimentResult& r, const GehlerShiSetup& setup) {
+  std::ostringstream out;
+  out << "gmcc reproduce gehler-shi: " << r.figure << "; " << r.config.scenes
+      << " scenes per image and count, seed " << r.config.seed << ", canonical light (1, 1, 1), expansion "
+      << to_string(r.config.expansion.policy);
+  if (r.config.expansion.policy != ExpansionPolicy::none) out << " by " << to_string(r.config.expansion.factor);
+  out << "\n";
+  camera_lines(out, setup);
+  out << "\nrecovery angular error in degrees (true vs estimated illuminant), mean / median over the scenes\n"
+         "with a feasible map; baselines on the same scenes, and (all) over every scene\n";
+  recovery_table(out, r);
+  out << "\nmap-space angular error (the paper's measure) and its worst case, means in degrees; truth in F:\n"
+         "share of answered scenes whose true map lies in the feasible set\n";
+  map_error_table(out, r);
   out << "\nEvery statistic of every cell (se, trimean, best/worst 25%, p95, max) is in --csv and --json\n"
          "(docs/reproduction.md \"Real camera data (Gehler-Shi)\").\n";
   return out.str();

@@ -100,12 +100,10 @@ std::vector<bool> polygon_cover(const std::vector<Point2>& polygon, std::size_t 
   return cover;
 }
 
-ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
-  if (rules.bin == 0) throw std::invalid_argument("the binning block size must be at least 1");
-  const std::size_t w = image.width, h = image.height;
-  if (!rules.keep.empty() && rules.keep.size() != w * h)
-    throw std::invalid_argument("the mask has " + std::to_string(rules.keep.size()) +
-                                " pixels, the image " + std::to_string(w * h));
+namespace {
+
+// The pixels the rules leave out: inside an excluded polygon, or not kept by the mask.
+std::vector<bool> excluded_pixels(const PixelRules& rules, std::size_t w, std::size_t h) {
   std::vector<bool> excluded(w * h, false);
   for (const std::vector<Point2>& polygon : rules.exclude_polygons) {
     const std::vector<bool> cover = polygon_cover(polygon, w, h);
@@ -115,6 +113,54 @@ ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
   if (!rules.keep.empty())
     for (std::size_t i = 0; i < w * h; ++i)
       if (!rules.keep[i]) excluded[i] = true;
+  return excluded;
+}
+
+// Without binning: the distinct kept pixels (keys r·2^32 + g·2^16 + b), or their chromaticity
+// hull's vertices, into out.
+ImageColours colours_of_pixels(std::vector<std::uint64_t>& keys, ColourSet colour_set, ImageColours out) {
+  sort_keys(keys);
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  out.counts.colours = keys.size();
+  auto channels = [](std::uint64_t key) {
+    return std::array<std::uint32_t, 3>{static_cast<std::uint32_t>(key >> 32),
+                                        static_cast<std::uint32_t>((key >> 16) & 0xffff),
+                                        static_cast<std::uint32_t>(key & 0xffff)};
+  };
+  if (colour_set == ColourSet::hull) {
+    std::vector<std::array<std::uint16_t, 3>> colours;
+    colours.reserve(keys.size());
+    for (std::uint64_t key : keys) {
+      const auto c = channels(key);
+      colours.push_back({std::uint16_t(c[0]), std::uint16_t(c[1]), std::uint16_t(c[2])});
+    }
+    const ChromaticityHull hull = chromaticity_hull_of_pixels(colours);
+    out.counts.no_chromaticity = hull.dropped;
+    for (const Point2& p : hull.hull.vertices) out.colours.push_back({p.x, p.y, Rational(1)});
+    out.counts.hull_vertices = out.colours.size();
+    return out;
+  }
+  if (keys.size() > max_colours)
+    throw std::length_error(std::to_string(keys.size()) + " distinct colours, more than the " +
+                            std::to_string(max_colours) +
+                            " a colour set may hold: use the hull colour set or binning");
+  out.colours.reserve(keys.size());
+  for (std::uint64_t key : keys) {
+    const auto c = channels(key);
+    out.colours.push_back({Rational(c[0]), Rational(c[1]), Rational(c[2])});
+  }
+  return out;
+}
+
+}  // namespace
+
+ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
+  if (rules.bin == 0) throw std::invalid_argument("the binning block size must be at least 1");
+  const std::size_t w = image.width, h = image.height;
+  if (!rules.keep.empty() && rules.keep.size() != w * h)
+    throw std::invalid_argument("the mask has " + std::to_string(rules.keep.size()) +
+                                " pixels, the image " + std::to_string(w * h));
+  const std::vector<bool> excluded = excluded_pixels(rules, w, h);
 
   ImageColours out;
   out.counts.pixels = static_cast<std::uint64_t>(w) * h;
@@ -156,39 +202,7 @@ ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
         ++block.n;
       }
     }
-  if (b == 1) {
-    sort_keys(keys);
-    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-    out.counts.colours = keys.size();
-    auto channels = [](std::uint64_t key) {
-      return std::array<std::uint32_t, 3>{static_cast<std::uint32_t>(key >> 32),
-                                          static_cast<std::uint32_t>((key >> 16) & 0xffff),
-                                          static_cast<std::uint32_t>(key & 0xffff)};
-    };
-    if (rules.colour_set == ColourSet::hull) {
-      std::vector<std::array<std::uint16_t, 3>> colours;
-      colours.reserve(keys.size());
-      for (std::uint64_t key : keys) {
-        const auto c = channels(key);
-        colours.push_back({std::uint16_t(c[0]), std::uint16_t(c[1]), std::uint16_t(c[2])});
-      }
-      const ChromaticityHull hull = chromaticity_hull_of_pixels(colours);
-      out.counts.no_chromaticity = hull.dropped;
-      for (const Point2& p : hull.hull.vertices) out.colours.push_back({p.x, p.y, Rational(1)});
-      out.counts.hull_vertices = out.colours.size();
-      return out;
-    }
-    if (keys.size() > max_colours)
-      throw std::length_error(std::to_string(keys.size()) + " distinct colours, more than the " +
-                              std::to_string(max_colours) +
-                              " a colour set may hold: use the hull colour set or binning");
-    out.colours.reserve(keys.size());
-    for (std::uint64_t key : keys) {
-      const auto c = channels(key);
-      out.colours.push_back({Rational(c[0]), Rational(c[1]), Rational(c[2])});
-    }
-    return out;
-  }
+  if (b == 1) return colours_of_pixels(keys, rules.colour_set, std::move(out));
   {
     std::set<std::array<Rational, 3>> distinct;  // ordered: increasing (r, g, b)
     for (const Block& block : blocks) {
