@@ -30,11 +30,8 @@ CLI::App* add_canonical_command(CLI::App& app, CanonicalOptions& o) {
       "written as a colour file for --canonical.");
   cmd->add_flag("--from-images", o.from_images, "learn the gamut from IMAGE... (required)")
       ->required();
-  cmd->add_option("images", o.images, "image files (PNG or TIFF, linear RGB)")->required();
-  cmd->add_option("--truths", o.truths_path,
-                  "CSV with header image,r,g,b: each image's true light (image as given on the "
-                  "command line, or its file name)")
-      ->required();
+  add_images_argument(*cmd, o.images);
+  add_truths_option(*cmd, o.truths_path, "")->required();
   cmd->add_option("--out", o.out_path, "write the colour file here (default: stdout)");
   add_pixel_options(*cmd, o.pixels);
   return cmd;

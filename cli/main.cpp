@@ -23,10 +23,12 @@
 #include <exception>
 #include <functional>
 #include <iostream>
+#include <memory>
 #include <new>
 #include <optional>
 #include <sstream>
 #include <system_error>
+#include <vector>
 
 namespace {
 
@@ -60,6 +62,18 @@ int print_help_or_version(const CLI::App& app, const CLI::Error& e) {
   return status;
 }
 
+// A subcommand: what CLI11 parsed into, and what runs it then (its options live as long as it).
+struct Command {
+  CLI::App* app;
+  std::function<int()> run;
+};
+template <class Options, class Run>
+Command command(CLI::App& app, CLI::App* (*add)(CLI::App&, Options&), Run run) {
+  auto options = std::make_shared<Options>();
+  CLI::App* cmd = add(app, *options);
+  return {cmd, [options, cmd, run] { return run(*cmd, *options); }};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -79,18 +93,13 @@ int main(int argc, char** argv) {
                  "limit the address space to this many MiB (setrlimit RLIMIT_AS); reaching it "
                  "ends the run with a message and exit status 3; default: no limit")
       ->type_name("MIB");
-  gmcc::cli::SelectOptions select_options;
-  CLI::App* select = gmcc::cli::add_select_command(app, select_options);
-  gmcc::cli::AccuracyOptions accuracy_options;
-  CLI::App* accuracy = gmcc::cli::add_accuracy_command(app, accuracy_options);
-  gmcc::cli::ReproduceOptions reproduce_options;
-  CLI::App* reproduce = gmcc::cli::add_reproduce_command(app, reproduce_options);
-  gmcc::cli::EstimateOptions estimate_options;
-  CLI::App* estimate = gmcc::cli::add_estimate_command(app, estimate_options);
-  gmcc::cli::MergeOptions merge_options;
-  CLI::App* merge = gmcc::cli::add_merge_command(app, merge_options);
-  gmcc::cli::CanonicalOptions canonical_options;
-  CLI::App* canonical = gmcc::cli::add_canonical_command(app, canonical_options);
+  // The subcommands in --help's order (cite last), each with its options and what runs it.
+  using namespace gmcc::cli;
+  const auto plain = [](auto run) { return [run](const CLI::App&, const auto& o) { return run(o); }; };
+  const std::vector<Command> commands{
+      command(app, add_select_command, plain(run_select)), command(app, add_accuracy_command, plain(run_accuracy)),
+      command(app, add_reproduce_command, run_reproduce), command(app, add_estimate_command, plain(run_estimate)),
+      command(app, add_merge_command, plain(run_merge)), command(app, add_canonical_command, plain(run_canonical))};
   CLI::App* cite = app.add_subcommand(
       "cite", "print a BibTeX entry for this build of gmcc (version, git commit, commit date) "
               "and the paper it implements (docs/cli.md \"Provenance\")");
@@ -122,12 +131,8 @@ int main(int argc, char** argv) {
     gmcc::cli::record_command(app);
     int status = 0;
     if (cite->parsed()) gmcc::cli::write_stdout(gmcc::cli::bibtex_of_this_build());
-    else if (canonical->parsed()) status = gmcc::cli::run_canonical(canonical_options);
-    else if (estimate->parsed()) status = gmcc::cli::run_estimate(estimate_options);
-    else if (select->parsed()) status = gmcc::cli::run_select(select_options);
-    else if (accuracy->parsed()) status = gmcc::cli::run_accuracy(accuracy_options);
-    else if (reproduce->parsed()) status = gmcc::cli::run_reproduce(*reproduce, reproduce_options);
-    else if (merge->parsed()) status = gmcc::cli::run_merge(merge_options);
+    for (const Command& c : commands)
+      if (c.app->parsed()) status = c.run();
     gmcc::cli::write_stdout("");  // what a command wrote without write_stdout, flushed and checked
     return status;
   } catch (const gmcc::InputError& e) {

@@ -32,6 +32,16 @@ std::vector<Point2> polygon(const std::string& text) {
 
 }  // namespace
 
+void add_images_argument(CLI::App& cmd, std::vector<std::string>& images) {
+  cmd.add_option("images", images, "image files (PNG or TIFF, linear RGB)")->required();
+}
+
+CLI::Option* add_truths_option(CLI::App& cmd, std::string& path, const std::string& use) {
+  return cmd.add_option("--truths", path,
+                        "CSV with header image,r,g,b: each image's true light (image as given on the "
+                        "command line, or its file name)" + use);
+}
+
 void add_pixel_options(CLI::App& cmd, PixelOptions& o) {
   o.command = &cmd;
   cmd.add_option("--black-level", o.black_level, "subtracted from every channel, 0 to 65535")

@@ -23,6 +23,13 @@ struct PixelOptions {
   const CLI::App* command = nullptr;
 };
 
+/// Register the IMAGE... argument (PNG or TIFF files, linear RGB; required).
+void add_images_argument(CLI::App& command, std::vector<std::string>& images);
+
+/// Register --truths: a CSV with header image,r,g,b giving each image's true light; `use` ends
+/// its help text (what the command does with them).
+CLI::Option* add_truths_option(CLI::App& command, std::string& path, const std::string& use);
+
 /// Register --black-level, --saturation, --exclude-polygon, --mask, --bin, --colour-set.
 void add_pixel_options(CLI::App& command, PixelOptions& options);
 

@@ -2,8 +2,10 @@
 // Shared test fixtures: seeded generators of exact inputs and the definition of feasibility.
 // Every random test names its generator and seed, so a failure reproduces.
 
+#include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/convex_hull.h>
 #include <gmcc/geometry/convex_set.h>
+#include <gmcc/geometry/convex_set_3.h>
 
 #include <ostream>
 #include <random>
@@ -47,6 +49,29 @@ inline std::vector<Point2> random_points(Rng& rng, int n, long lo, long hi, long
     p.push_back({x, y});
   }
   return p;
+}
+
+/// (x, y), each random_rational(rng, lo, hi, max_den), x drawn first.
+inline Point2 random_point(Rng& rng, long lo, long hi, long max_den) {
+  Rational x = random_rational(rng, lo, hi, max_den);
+  return {x, random_rational(rng, lo, hi, max_den)};
+}
+
+/// (x, y, z) likewise, in that order.
+inline Point3 random_point3(Rng& rng, long lo, long hi, long max_den) {
+  Rational x = random_rational(rng, lo, hi, max_den), y = random_rational(rng, lo, hi, max_den);
+  return {x, y, random_rational(rng, lo, hi, max_den)};
+}
+
+/// q ⊘ d componentwise: what a noise-free scene under the map d shows of the canonical q.
+inline Point2 divided(const Point2& q, const Point2& d) { return {Rational(q.x / d.x), Rational(q.y / d.y)}; }
+/// The same in 3-D.
+inline Point3 divided(const Point3& q, const Point3& d) {
+  return {Rational(q.x / d.x), Rational(q.y / d.y), Rational(q.z / d.z)};
+}
+/// The same for a colour (r, g, b) under d = (d1, d2, d3).
+inline Colour divided(const Colour& q, const Point3& d) {
+  return {Rational(q.r / d.x), Rational(q.g / d.y), Rational(q.b / d.z)};
 }
 
 /// m ⊙ q, componentwise.

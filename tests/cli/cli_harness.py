@@ -44,6 +44,16 @@ class Runner:
             self.failed += 1
             print(f"FAIL {name}: {e!r}")
 
+    def check_all(self, *fns):
+        """`check` each function under its own name, in order."""
+        for fn in fns:
+            self.check(fn.__name__, fn)
+
+    def finish(self):
+        """Print the closing line `N passed, M failed` that ctest's log shows; the exit status."""
+        print(f"{self.passed} passed, {self.failed} failed")
+        return 1 if self.failed else 0
+
 
 class Tally:
     """Counts checks that report every failure and go on; `finish` prints the closing line
@@ -52,12 +62,12 @@ class Tally:
     def __init__(self):
         self.passed = self.failed = 0
 
-    def check(self, ok, what):
+    def check(self, ok, what, detail=""):
         if ok:
             self.passed += 1
         else:
             self.failed += 1
-            print("FAIL:", what)
+            print(f"FAIL: {what}" + (f"\n  {detail}" if detail else ""))
 
     def finish(self):
         print(f"{self.passed} passed, {self.failed} failed")

@@ -189,16 +189,9 @@ def main():
             rc, _, err = r.run(*base, "--bin", "0", png)
             expect(rc == 2 and "--bin" in err, err)
 
-        r.check("png_equals_tiff", png_equals_tiff)
-        r.check("pixel_counts", pixel_counts)
-        r.check("agrees_with_select_on_exact_colours", agrees_with_select_on_exact_colours)
-        r.check("hull_equals_distinct", hull_equals_distinct)
-        r.check("learned_canonical", learned_canonical)
-        r.check("truths_file", truths_file)
-        r.check("corrected_images", corrected_images)
-        r.check("bad_inputs", bad_inputs)
-        print(f"{r.passed} passed, {r.failed} failed")
-        return 1 if r.failed else 0
+        r.check_all(png_equals_tiff, pixel_counts, agrees_with_select_on_exact_colours, hull_equals_distinct,
+                    learned_canonical, truths_file, corrected_images, bad_inputs)
+        return r.finish()
 
 
 if __name__ == "__main__":

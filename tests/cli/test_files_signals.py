@@ -42,6 +42,9 @@ import tempfile
 import threading
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cli_harness import Tally  # noqa: E402
+
 TIMEOUT_S = 60
 GOOD = b"1,1,1\n2,1,1\n2,2,1\n1,2,1\n"  # chromaticities: the square [1,2]^2
 GOOD_IMAGE = b"3,3,2\n"
@@ -49,16 +52,8 @@ GOOD_IMAGE = b"3,3,2\n"
 LONG_RUN = ["reproduce", "synthetic", "--scenes", "100000", "--threads", "1"]
 SMALL_RUN = ["reproduce", "synthetic", "--scenes", "1", "--surfaces", "2", "--threads", "1"]
 
-passed = failed = 0
-
-
-def check(ok, what, detail=""):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print(f"FAIL: {what}" + (f"\n  {detail}" if detail else ""))
+TALLY = Tally()
+check = TALLY.check
 
 
 def default_signals():
@@ -382,8 +377,7 @@ def main():
         test_input_paths(binary, tmp)
         test_output_paths(binary, tmp)
         test_signals_and_limits(binary, tmp)
-    print(f"{passed} passed, {failed} failed")
-    return 1 if failed else 0
+    return TALLY.finish()
 
 
 if __name__ == "__main__":

@@ -140,14 +140,8 @@ def main():
             check_record(first["provenance"], "select", version, commit)
             expect(first["provenance"]["inputs"][-1]["path"] == scenes, "the scene file's digest")
 
-        r.check("version_line", version_line)
-        r.check("select_json", select_json)
-        r.check("select_batch_jsonl", select_batch_jsonl)
-        r.check("cite", cite)
-        r.check("citation_files", citation_files)
-        r.check("accuracy_csv", accuracy_csv)
-        print(f"{r.passed} passed, {r.failed} failed")
-        return 1 if r.failed else 0
+        r.check_all(version_line, select_json, select_batch_jsonl, cite, citation_files, accuracy_csv)
+        return r.finish()
 
 
 if __name__ == "__main__":

@@ -128,8 +128,7 @@ def main():
         for name, fn in list(locals().items()):
             if callable(fn) and name not in ("r", "refused"):
                 r.check(name, fn)
-        print(f"{r.passed} passed, {r.failed} failed")
-        return 0 if r.failed == 0 else 1
+        return r.finish()
 
 
 if __name__ == "__main__":

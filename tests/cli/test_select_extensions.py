@@ -137,8 +137,7 @@ def main():
         for name, fn in list(locals().items()):
             if callable(fn) and name not in ("r",) and fn.__code__.co_argcount == 0:
                 r.check(name, fn)
-        print(f"{r.passed} passed, {r.failed} failed")
-        return 1 if r.failed else 0
+        return r.finish()
 
 
 if __name__ == "__main__":

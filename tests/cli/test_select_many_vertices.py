@@ -21,6 +21,9 @@ import sys
 import tempfile
 from fractions import Fraction as Fr
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cli_harness import Tally  # noqa: E402
+
 
 def decimal(fr):
     """The exact decimal of a fraction whose denominator divides a power of 10."""
@@ -128,15 +131,10 @@ def main():
     n = int(sys.argv[2]) if len(sys.argv) > 2 else 1000
     canonical = [(1 + Fr(i, n), 1 + Fr(i, n) ** 2, Fr(1)) for i in range(n)]
     image = [(Fr(1), Fr(1), Fr(1)), (Fr(1001, 1000), Fr(1), Fr(1)), (Fr(1), Fr(1001, 1000), Fr(1))]
-    passed = failed = 0
+    tally = Tally()
 
     def check(name, cond, what=""):
-        nonlocal passed, failed
-        if cond:
-            passed += 1
-        else:
-            failed += 1
-            print(f"FAIL {name}: {what}")
+        tally.check(cond, name, what)
 
     with tempfile.TemporaryDirectory() as tmp:
         paths = []
@@ -157,8 +155,7 @@ def main():
             check("vertex count", len(got) == len(vertices), f"{len(got)} != {len(vertices)}")
             check("exact vertices", got == vertices,
                   next((f"vertex {i}: {a} != {b}" for i, (a, b) in enumerate(zip(got, vertices)) if a != b), ""))
-    print(f"{passed} passed, {failed} failed")
-    return 0 if failed == 0 else 1
+    return tally.finish()
 
 
 if __name__ == "__main__":

@@ -47,6 +47,8 @@ import subprocess
 import sys
 import tempfile
 
+from doc_checks import report
+
 TEXT_SUFFIXES = (".cpp", ".h", ".hpp", ".c", ".py", ".md", ".in", ".txt", ".cmake", ".dict",
                  ".sh", ".cff", ".gp")
 DATA_FOLDERS = ("fuzz/corpus/", "fuzz/findings/")
@@ -317,13 +319,8 @@ def main(argv):
         os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
     checker = Checker(root)
     problems = checker.run()
-    for p in problems:
-        print(p)
-    if problems:
-        print(f"{len(problems)} problem(s) in {checker.citations} citations and links")
-        return 1
-    print(f"{checker.citations} citations and links resolve; none outside the repository")
-    return 0
+    return report(problems, f"{len(problems)} problem(s) in {checker.citations} citations and links",
+                  f"{checker.citations} citations and links resolve; none outside the repository")
 
 
 if __name__ == "__main__":

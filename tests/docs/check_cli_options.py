@@ -34,6 +34,8 @@ import subprocess
 import sys
 import tempfile
 
+from doc_checks import report
+
 OPTION = re.compile(r"--[a-z0-9][a-z0-9-]*")
 
 
@@ -225,14 +227,9 @@ def main(argv):
     tree = commands(argv[0])
     with open(doc_path, encoding="utf-8") as f:
         problems = check(tree, f.read())
-    for p in problems:
-        print(p)
     n = sum(len(o) for o, _ in tree.values())
-    if problems:
-        print(f"{len(problems)} difference(s) between --help and docs/cli.md")
-        return 1
-    print(f"{len(tree)} commands, {n} options: docs/cli.md and --help agree")
-    return 0
+    return report(problems, f"{len(problems)} difference(s) between --help and docs/cli.md",
+                  f"{len(tree)} commands, {n} options: docs/cli.md and --help agree")
 
 
 if __name__ == "__main__":

@@ -203,20 +203,15 @@ BOOST_AUTO_TEST_CASE(random_scenes_against_brute_force) {
   int polytopes = 0;
   for (int trial = 0; trial < 40; ++trial) {
     std::vector<Point3> canonical;
-    for (int i = 0; i < 5 + trial % 5; ++i)
-      canonical.push_back({test::random_rational(rng, 1, 20, 4), test::random_rational(rng, 1, 20, 4),
-                           test::random_rational(rng, 1, 20, 4)});
+    for (int i = 0; i < 5 + trial % 5; ++i) canonical.push_back(test::random_point3(rng, 1, 20, 4));
     const bool black = trial % 2 == 0;
     std::vector<Point3> g = canonical;
     if (black) g.push_back({0, 0, 0});
     const std::vector<Plane> G = brute_force_facets(g);
-    const Point3 d{test::random_rational(rng, 1, 8, 3), test::random_rational(rng, 1, 8, 3),
-                   test::random_rational(rng, 1, 8, 3)};
+    const Point3 d = test::random_point3(rng, 1, 8, 3);
     std::vector<Point3> image;
-    for (int i = 0; i < 1 + trial % 4; ++i) {
-      const Point3& p = canonical[static_cast<std::size_t>(i * 3 + trial) % canonical.size()];
-      image.push_back({R(p.x / d.x), R(p.y / d.y), R(p.z / d.z)});
-    }
+    for (int i = 0; i < 1 + trial % 4; ++i)
+      image.push_back(test::divided(canonical[static_cast<std::size_t>(i * 3 + trial) % canonical.size()], d));
     const ConvexSet3 F = feasible_set_3d(colours(canonical), colours(image),
                                          black ? CanonicalBlack::include : CanonicalBlack::exclude);
     BOOST_TEST(contains(F, d));  // noise-free: the true map is feasible

@@ -53,11 +53,10 @@ BOOST_AUTO_TEST_CASE(clipping_equals_cgal_bso_exactly) {
     const auto canonical = test::random_points(rng, 4 + trial % 20, 1, 4, 5);
     const ConvexSet2 G = convex_hull(canonical);
     if (G.kind != ConvexKind::polygon) continue;
-    const Point2 d{test::random_rational(rng, 3, 10, 5), test::random_rational(rng, 3, 10, 5)};
+    const Point2 d = test::random_point(rng, 3, 10, 5);
     std::vector<Point2> image;
     for (int i = 0; i < 1 + trial % 7; ++i) {
-      const Point2& p = canonical[static_cast<std::size_t>(i * 7 + trial) % canonical.size()];
-      image.push_back({Rational(p.x / d.x), Rational(p.y / d.y)});
+      image.push_back(test::divided(canonical[static_cast<std::size_t>(i * 7 + trial) % canonical.size()], d));
     }
     if (trial % 4 == 0) image.push_back(test::random_points(rng, 1, 1, 2, 4)[0]);
     const ConvexSet2 F = feasible_set(G, image);

@@ -126,16 +126,14 @@ BOOST_AUTO_TEST_CASE(noise_free_scenes_truth_within_the_worst_case) {
   Rng rng(1999);
   for (int trial = 0; trial < 30; ++trial) {
     std::vector<Colour> canonical;
-    for (int i = 0; i < 6 + trial % 6; ++i)
-      canonical.push_back({test::random_rational(rng, 1, 20, 4), test::random_rational(rng, 1, 20, 4),
-                           test::random_rational(rng, 1, 20, 4)});
-    const Point3 d{test::random_rational(rng, 1, 8, 3), test::random_rational(rng, 1, 8, 3),
-                   test::random_rational(rng, 1, 8, 3)};
-    std::vector<Colour> image;
-    for (int i = 0; i < 1 + trial % 5; ++i) {
-      const Colour& p = canonical[static_cast<std::size_t>(i * 5 + trial) % canonical.size()];
-      image.push_back({R(p.r / d.x), R(p.g / d.y), R(p.b / d.z)});
+    for (int i = 0; i < 6 + trial % 6; ++i) {
+      const Point3 p = test::random_point3(rng, 1, 20, 4);
+      canonical.push_back({p.x, p.y, p.z});
     }
+    const Point3 d = test::random_point3(rng, 1, 8, 3);
+    std::vector<Colour> image;
+    for (int i = 0; i < 1 + trial % 5; ++i)
+      image.push_back(test::divided(canonical[static_cast<std::size_t>(i * 5 + trial) % canonical.size()], d));
     const CanonicalBlack black = trial % 2 ? CanonicalBlack::include : CanonicalBlack::exclude;
     const Crule3d r = crule_3d(canonical, image, black);
     BOOST_REQUIRE(contains(r.feasible, d));

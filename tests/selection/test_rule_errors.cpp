@@ -39,7 +39,7 @@ BOOST_AUTO_TEST_CASE(agrees_with_the_exact_route_within_its_accuracy) {
         const Point2 q = pick(), r = pick();
         p = {Rational((p.x + q.x + r.x) / 3), Rational((p.y + q.y + r.y) / 3)};
       }
-      image.push_back({Rational(p.x / truth.x), Rational(p.y / truth.y)});
+      image.push_back(test::divided(p, truth));
     }
     const Colour c{test::random_rational(rng, 1, 9, 7), test::random_rational(rng, 1, 9, 7),
                    test::random_rational(rng, 1, 9, 7)};
