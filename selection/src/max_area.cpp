@@ -1,6 +1,7 @@
 #include <gmcc/selection/max_area.h>
 
 #include "internal/ld_interval.h"
+#include "internal/max_area_candidates.h"
 #include "internal/max_area_route.h"
 
 #include <optional>
@@ -11,39 +12,33 @@ namespace gmcc {
 namespace internal {
 namespace {
 
-// The candidates for argmax m1·m2 over F (docs/derivations.md §2.3), one definition for every
-// number kind N: the vertices, and on each edge p → q of the north-east chain (Δa·Δb < 0) the
-// stationary point of the concave f(t) = (p1 + t·Δa)(p2 + t·Δb) when it lies inside the edge:
-// t* ∈ (0, 1) iff f′(0) = Δa·p2 + Δb·p1 > 0 > f′(1) = Δa·q2 + Δb·q1, where
-// f(t*) = p1·p2 − f′(0)²/(4·Δa·Δb). `Kind` gives N's values: x(i), y(i), dx(i, j), dy(i, j) (the
-// coordinate differences, from the exact values), constant(int), and sign(N) → std::optional<int> (nothing:
-// not decided in N; Rational always decides). Nothing when a sign is not decided.
-template <class N>
-struct Candidate {
-  N value;
-  std::size_t index;  // a vertex, or the edge from vertex index − n
-};
+// F's candidates (max_area_candidates.h) from its exact vertices, in number kind `Kind`: on each
+// edge p → q of the north-east chain the stationary point of the concave
+// f(t) = (p1 + t·Δa)(p2 + t·Δb) lies inside the edge iff f′(0) = Δa·p2 + Δb·p1 > 0 > f′(1) =
+// Δa·q2 + Δb·q1, and f(t*) = p1·p2 − f′(0)²/(4·Δa·Δb). `Kind` gives N's values: x(i), y(i), dx(i, j),
+// dy(i, j) (the coordinate differences, from the exact values), constant(int), and
+// sign(N) → std::optional<int> (nothing: not decided in N; Rational always decides).
 template <class Kind>
-std::optional<std::vector<Candidate<typename Kind::Number>>> candidates(const ConvexSet2& F, const Kind& k) {
-  using N = typename Kind::Number;
-  const auto& v = F.vertices;
-  const std::size_t n = v.size();
-  std::vector<Candidate<N>> out;
-  out.reserve(2 * n);
-  for (std::size_t i = 0; i < n; ++i) out.push_back({k.x(i) * k.y(i), i});
-  // A segment has one edge; a polygon n edges (a segment's "second edge" is the same edge).
-  const std::size_t edges = F.kind == ConvexKind::polygon ? n : n - 1;
-  for (std::size_t i = 0; i < edges; ++i) {
-    const std::size_t j = (i + 1) % n;
-    if (cmp(v[j].x, v[i].x) * cmp(v[j].y, v[i].y) >= 0) continue;  // the maximum is at an end
-    const N da = k.dx(i, j), db = k.dy(i, j);
-    const N d0 = da * k.y(i) + db * k.x(i), d1 = da * k.y(j) + db * k.x(j);
+struct VertexCandidates {
+  using Number = typename Kind::Number;
+  const std::vector<Point2>& v;
+  const Kind& k;
+  Number product(std::size_t i) const { return k.x(i) * k.y(i); }
+  std::optional<std::optional<Number>> stationary(std::size_t i, std::size_t j) const {
+    if (cmp(v[j].x, v[i].x) * cmp(v[j].y, v[i].y) >= 0) return std::optional<Number>{};  // an end
+    const Number da = k.dx(i, j), db = k.dy(i, j);
+    const Number d0 = da * k.y(i) + db * k.x(i), d1 = da * k.y(j) + db * k.x(j);
     const std::optional<int> s0 = Kind::sign(d0), s1 = Kind::sign(d1);
     if (!s0 || !s1) return std::nullopt;
-    if (!(*s0 > 0 && *s1 < 0)) continue;
-    out.push_back({N(k.x(i) * k.y(i) - d0 * d0 / (Kind::constant(4) * (da * db))), n + i});
+    if (!(*s0 > 0 && *s1 < 0)) return std::optional<Number>{};
+    return std::optional<Number>{Number(k.x(i) * k.y(i) - d0 * d0 / (Kind::constant(4) * (da * db)))};
   }
-  return out;
+};
+template <class Kind>
+auto candidates(const ConvexSet2& F, const Kind& k) {
+  // A segment has one edge; a polygon n edges (a segment's "second edge" is the same edge).
+  const std::size_t n = F.vertices.size(), edges = F.kind == ConvexKind::polygon ? n : n - 1;
+  return area_candidates(n, edges, VertexCandidates<Kind>{F.vertices, k});
 }
 
 // The point a candidate stands for, exactly: vertex, or p + t*·(Δa, Δb) with t* = −f′(0)/(2·Δa·Δb).
@@ -106,13 +101,9 @@ StageCounts& counts() {
 std::optional<Point2> max_area_filtered(const ConvexSet2& F) {
   const auto c = candidates(F, ExtendedKind(F.vertices));
   if (!c) return std::nullopt;
-  // The unique maximum: one enclosure strictly above all others' (near-ties decline).
-  std::size_t best = 0;
-  for (std::size_t k = 1; k < c->size(); ++k)
-    if ((*c)[k].value.lo > (*c)[best].value.lo) best = k;
-  for (std::size_t k = 0; k < c->size(); ++k)
-    if (k != best && (*c)[k].value.hi >= (*c)[best].value.lo) return std::nullopt;
-  return candidate_point(F, (*c)[best].index);
+  const auto best = unique_maximum(*c, [](const LDInterval& x) { return x.lo; }, [](const LDInterval& x) { return x.hi; });
+  if (!best) return std::nullopt;
+  return candidate_point(F, (*c)[*best].index);
 }
 
 Point2 max_area_exact(const ConvexSet2& F) {

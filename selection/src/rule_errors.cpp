@@ -2,6 +2,7 @@
 
 #include "internal/angle.h"
 #include "internal/closed_form.h"
+#include "internal/max_area_candidates.h"
 #include "internal/ld_interval.h"
 
 #include <cmath>
@@ -29,44 +30,51 @@ LongEnclosure enclose<LongEnclosure>(const Rational& q) {
   return LongEnclosure::between(i.lo, i.hi);
 }
 
-template <class E>
-struct Candidate {
-  E value, x, y;
-};
-
 // The edges' lines are double approximations (each coefficient within 6·2^-53 of the same
 // positive multiple of the exact line), whatever E is.
 constexpr double line_error = 6 * 0x1p-53;
 
+// Max-area's candidates (max_area_candidates.h) from F's vertex enclosures v and edge lines: the
+// edge a·x + b·y = c has Δx·Δy < 0 iff a·b > 0, and there m1·m2 is concave along it with its
+// stationary point at (c/2a, c/2b), value c²/4ab — formed from the line, so that a short edge
+// costs no cancellation. Inside the edge iff x − p.x and x − q.x have opposite signs.
+template <class E, class V>
+struct EdgeLineCandidates {
+  using Number = E;
+  const std::vector<V>& v;
+  const std::vector<ApproximateLine>& edges;
+
+  E product(std::size_t i) const { return v[i].x * v[i].y; }
+  // The stationary point (x, y) of edge i, when its line is on the north-east chain.
+  std::optional<std::array<E, 3>> point(std::size_t i) const {
+    const ApproximateLine& l = edges[i];
+    if (!((l.a > 0 && l.b > 0) || (l.a < 0 && l.b < 0))) return std::nullopt;
+    const E a = E::relative(l.a, line_error), b = E::relative(l.b, line_error), k = E::relative(l.c, line_error);
+    return std::array<E, 3>{k / (E::exact(2) * a), k / (E::exact(2) * b), k * k / (E::exact(4) * a * b)};
+  }
+  std::optional<std::optional<E>> stationary(std::size_t i, std::size_t j) const {
+    const auto s = point(i);
+    if (!s) return std::optional<E>{};
+    const E to_p = (*s)[0] - v[i].x, to_q = (*s)[0] - v[j].x;  // strictly inside iff opposite signs
+    if (to_p.uncertain_sign() || to_q.uncertain_sign()) return std::nullopt;
+    if (to_p.positive() == to_q.positive()) return std::optional<E>{};
+    return std::optional<E>{(*s)[2]};
+  }
+};
+
 template <class E, class V>
 std::optional<std::array<E, 2>> max_area_map(const std::vector<V>& v, const std::vector<ApproximateLine>& edges) {
-  const std::size_t n = v.size();
-  std::vector<Candidate<E>> c;
-  c.reserve(2 * n);
-  for (const V& p : v) c.push_back({p.x * p.y, p.x, p.y});
-  for (std::size_t i = 0; i < n; ++i) {
-    const ApproximateLine& l = edges[i];
-    // The edge's direction (−b, a) has Δx·Δy < 0 iff a·b > 0: there m1·m2 is concave along the
-    // edge, with its stationary point at (c/2a, c/2b) (m1·m2 on a·x + b·y = c), value c²/4ab.
-    if (!((l.a > 0 && l.b > 0) || (l.a < 0 && l.b < 0))) continue;
-    const E a = E::relative(l.a, line_error), b = E::relative(l.b, line_error), k = E::relative(l.c, line_error);
-    const E x = k / (E::exact(2) * a), y = k / (E::exact(2) * b);
-    const E& p = v[i].x;
-    const E& q = v[(i + 1) % n].x;
-    const E to_p = x - p, to_q = x - q;  // strictly inside iff these have opposite signs
-    if (to_p.uncertain_sign() || to_q.uncertain_sign()) return std::nullopt;
-    if (to_p.positive() == to_q.positive()) continue;
-    c.push_back({k * k / (E::exact(4) * a * b), x, y});
-  }
-  for (const Candidate<E>& k : c)
+  const EdgeLineCandidates<E, V> kind{v, edges};
+  const auto c = internal::area_candidates(v.size(), v.size(), kind);
+  if (!c) return std::nullopt;
+  for (const auto& k : *c)
     if (!k.value.finite()) return std::nullopt;
-  std::size_t best = 0;
-  for (std::size_t k = 1; k < c.size(); ++k)
-    if (c[k].value.lo() > c[best].value.lo()) best = k;
-  const auto floor = c[best].value.lo();  // in E's own type: rounding it to double could raise it
-  for (std::size_t k = 0; k < c.size(); ++k)
-    if (k != best && c[k].value.hi() >= floor) return std::nullopt;
-  return std::array<E, 2>{c[best].x, c[best].y};
+  const auto best = internal::unique_maximum(*c, [](const E& x) { return x.lo(); }, [](const E& x) { return x.hi(); });
+  if (!best) return std::nullopt;
+  const std::size_t index = (*c)[*best].index;
+  if (index < v.size()) return std::array<E, 2>{v[index].x, v[index].y};
+  const auto s = *kind.point(index - v.size());
+  return std::array<E, 2>{s[0], s[1]};
 }
 
 template <class E, class V>
