@@ -1,4 +1,5 @@
 #include "internal/convex_clip.h"
+#include "internal/sutherland_hodgman.h"
 
 namespace gmcc::internal {
 
@@ -7,27 +8,20 @@ void clip(Clipper& c, const std::vector<Vertex>& cycle, std::size_t hi, std::vec
   const std::size_t n = cycle.size();
   s.resize(n);
   out.clear();
-  bool all_inside = true;
-  for (std::size_t i = 0; i < n; ++i) {
-    s[i] = c.side(hi, cycle[i]);
-    all_inside = all_inside && s[i] <= 0;
-  }
-  if (all_inside) {
-    out = cycle;
-    return;
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t j = (i + 1) % n;
-    const std::size_t edge = cycle[i].out;
-    if (s[i] <= 0) {
-      Vertex v = cycle[i];
-      // Leaving the half-plane from a point on its line: the boundary follows h from here.
-      if (s[i] == 0 && s[j] > 0) v.out = hi;
-      out.push_back(v);
-    }
-    if (s[i] * s[j] < 0)  // a strict crossing: exiting continues along h, entering along the edge
-      out.push_back(c.vertex(edge, hi, s[i] < 0 ? hi : edge));
-  }
+  for (std::size_t i = 0; i < n; ++i) s[i] = c.side(hi, cycle[i]);
+  const bool clipped = sutherland_hodgman(
+      s,
+      [&](std::size_t i, std::size_t j) {
+        Vertex v = cycle[i];
+        // Leaving the half-plane from a point on its line: the boundary follows h from here.
+        if (s[i] == 0 && s[j] > 0) v.out = hi;
+        out.push_back(v);
+      },
+      [&](std::size_t i, std::size_t) {  // exiting continues along h, entering along the edge
+        const std::size_t edge = cycle[i].out;
+        out.push_back(c.vertex(edge, hi, s[i] < 0 ? hi : edge));
+      });
+  if (!clipped) out = cycle;
 }
 
 std::vector<Vertex> reduced(Clipper& c, const std::vector<Vertex>& cycle) {

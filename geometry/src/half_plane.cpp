@@ -1,4 +1,5 @@
 #include "internal/half_plane.h"
+#include "internal/sutherland_hodgman.h"
 
 namespace gmcc::internal {
 
@@ -36,26 +37,22 @@ std::vector<HalfPlane> half_planes(const ConvexSet2& set) {
 
 std::vector<Point2> clip(const std::vector<Point2>& cycle, const HalfPlane& h) {
   const std::size_t n = cycle.size();
-  std::vector<Rational> s(n);
-  bool all_inside = true;
+  std::vector<Rational> value(n);  // a·x + b·y − c: the side, and where an edge crosses
+  std::vector<int> side(n);
   for (std::size_t i = 0; i < n; ++i) {
-    s[i] = h.a * cycle[i].x + h.b * cycle[i].y - h.c;
-    all_inside = all_inside && sgn(s[i]) <= 0;
+    value[i] = h.a * cycle[i].x + h.b * cycle[i].y - h.c;
+    side[i] = sgn(value[i]);
   }
-  if (all_inside) return cycle;
   std::vector<Point2> out;
   out.reserve(n + 1);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t j = (i + 1) % n;
-    const int si = sgn(s[i]), sj = sgn(s[j]);
-    if (si <= 0) out.push_back(cycle[i]);
-    if (si * sj < 0) {  // the edge crosses the line strictly inside: add the crossing point
-      const Rational t = s[i] / (s[i] - s[j]);
-      out.push_back({Rational(cycle[i].x + t * (cycle[j].x - cycle[i].x)),
-                     Rational(cycle[i].y + t * (cycle[j].y - cycle[i].y))});
-    }
-  }
-  return out;
+  const bool clipped = sutherland_hodgman(
+      side, [&](std::size_t i, std::size_t) { out.push_back(cycle[i]); },
+      [&](std::size_t i, std::size_t j) {  // the crossing point, at t = value_i/(value_i − value_j)
+        const Rational t = value[i] / (value[i] - value[j]);
+        out.push_back({Rational(cycle[i].x + t * (cycle[j].x - cycle[i].x)),
+                       Rational(cycle[i].y + t * (cycle[j].y - cycle[i].y))});
+      });
+  return clipped ? out : cycle;
 }
 
 }  // namespace gmcc::internal
