@@ -85,8 +85,8 @@ struct ExtendedKind {
   LDInterval dy(std::size_t i, std::size_t j) const { return difference(v[j].y, v[i].y); }
   static LDInterval constant(int c) { return {static_cast<long double>(c), static_cast<long double>(c)}; }
   static std::optional<int> sign(const LDInterval& a) {
-    if (a.lo > 0) return 1;
-    if (a.hi < 0) return -1;
+    if (numerics::certainly_positive(a)) return 1;
+    if (numerics::certainly_negative(a)) return -1;
     return std::nullopt;
   }
 };
@@ -101,7 +101,7 @@ StageCounts& counts() {
 std::optional<Point2> max_area_filtered(const ConvexSet2& F) {
   const auto c = candidates(F, ExtendedKind(F.vertices));
   if (!c) return std::nullopt;
-  const auto best = unique_maximum(*c, [](const LDInterval& x) { return x.lo; }, [](const LDInterval& x) { return x.hi; });
+  const auto best = unique_maximum(*c);
   if (!best) return std::nullopt;
   return candidate_point(F, (*c)[*best].index);
 }

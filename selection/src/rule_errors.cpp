@@ -69,7 +69,7 @@ std::optional<std::array<E, 2>> max_area_map(const std::vector<V>& v, const std:
   if (!c) return std::nullopt;
   for (const auto& k : *c)
     if (!k.value.finite()) return std::nullopt;
-  const auto best = internal::unique_maximum(*c, [](const E& x) { return x.lo(); }, [](const E& x) { return x.hi(); });
+  const auto best = internal::unique_maximum(*c);
   if (!best) return std::nullopt;
   const std::size_t index = (*c)[*best].index;
   if (index < v.size()) return std::array<E, 2>{v[index].x, v[index].y};

@@ -6,6 +6,8 @@
 // vertices (in ℚ, and in x87 intervals); rule_errors.cpp from vertex enclosures and edge lines.
 // Internal to gmcc::selection.
 
+#include <gmcc/numerics/enclosure.h>
+
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -39,17 +41,19 @@ auto area_candidates(std::size_t n, std::size_t edges, const Kind& k)
   return out;
 }
 
-/// The position of the candidate whose enclosure lies strictly above every other's (`lo` and
-/// `hi` give an enclosure's certain ends): the first largest lower end, kept only when every
-/// other upper end is below it; nothing on a near-tie, which only a finer kind can settle.
-template <class N, class Lo, class Hi>
-std::optional<std::size_t> unique_maximum(const std::vector<AreaCandidate<N>>& c, Lo lo, Hi hi) {
+/// The position of the candidate whose enclosure (a kind of numerics/enclosure.h) lies strictly
+/// above every other's: the first largest lower end, kept only when every other upper end is
+/// below it; nothing on a near-tie, which only a finer kind can settle.
+template <class N>
+std::optional<std::size_t> unique_maximum(const std::vector<AreaCandidate<N>>& c) {
+  using numerics::lower;
+  using numerics::upper;
   std::size_t best = 0;
   for (std::size_t k = 1; k < c.size(); ++k)
-    if (lo(c[k].value) > lo(c[best].value)) best = k;
-  const auto floor = lo(c[best].value);  // in N's own type: rounding it could raise it
+    if (lower(c[k].value) > lower(c[best].value)) best = k;
+  const auto floor = lower(c[best].value);  // in N's own type: rounding it could raise it
   for (std::size_t k = 0; k < c.size(); ++k)
-    if (k != best && hi(c[k].value) >= floor) return std::nullopt;
+    if (k != best && upper(c[k].value) >= floor) return std::nullopt;
   return best;
 }
 
