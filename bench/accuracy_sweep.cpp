@@ -92,100 +92,77 @@ unsigned long long number(const char* text) {
   return v;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+// The sweep's options: --cases N, --seed S, --verbose.
+struct Args {
   unsigned cases = 320;
   std::uint64_t seed = 19990301;
   bool verbose = false;
+};
+Args parse_args(int argc, char** argv) {
+  Args a;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--cases") && i + 1 < argc) {
-      cases = static_cast<unsigned>(number(argv[++i]));
+      a.cases = static_cast<unsigned>(number(argv[++i]));
     } else if (!std::strcmp(argv[i], "--seed") && i + 1 < argc) {
-      seed = number(argv[++i]);
+      a.seed = number(argv[++i]);
     } else if (!std::strcmp(argv[i], "--verbose")) {
-      verbose = true;
+      a.verbose = true;
     } else {
       usage("unknown option or missing value");
     }
   }
+  return a;
+}
 
-  std::vector<HardCase> all{test::reproducer_thin_triangle(), test::reproducer_feasible_set()};
-  for (HardCase& c : test::hard_cases(seed, cases)) all.push_back(std::move(c));
-
-  const std::vector<Route> routes{
-      {"analytic", [](const ConvexSet2& F) { return mean_3d_analytic(F); }},
-      {"quadrature-4", [](const ConvexSet2& F) { return mean_3d_quadrature(F, 4); }},
-      {"quadrature-12", [](const ConvexSet2& F) { return mean_3d_quadrature(F); }},
-      {"quadrature-24", [](const ConvexSet2& F) { return mean_3d_quadrature(F, 24); }},
-  };
-  std::map<std::pair<std::string, std::string>, Row> rows;
-  unsigned reference_failures = 0;
-  std::vector<std::string> worst;  // names of cases over their bound, for the reader
-
-  for (const HardCase& c : all) {
-    Mean3dReference ref;
-    try {
-      ref = test::mean_3d_reference_checked(c.set);
-    } catch (const std::exception& e) {
-      ++reference_failures;
-      std::fprintf(stderr, "%s: reference self-check failed: %s\n", c.name.c_str(), e.what());
-      continue;
-    }
-    for (const Route& route : routes) {
-      MapEstimate e;
-      try {
-        e = route.run(c.set);
-      } catch (const std::exception& ex) {
-        std::fprintf(stderr, "%s %s: threw %s\n", c.name.c_str(), route.name.c_str(), ex.what());
-        e.valid = false;
-      }
-      double ratio = 0;
-      bool over = false, off = false, wrong = false;
-      if (e.valid) {
-        for (int k = 0; k < 2; ++k) {
-          ratio = std::max(ratio, ref.error_ratio(e.map[k], bound_of(e, k), k));
-          over |= ref.covers(e.map[k], bound_of(e, k), k) != Coverage::covered;
-          const bool nearest = e.map[k] == ref.nearest_double(k);
-          off |= !nearest;
+// One route on one case against its reference: the estimate, its largest error/bound ratio, and
+// whether it is over its bound, not the nearest double, or wrongly claims correct rounding.
+struct Outcome {
+  MapEstimate e;
+  double ratio = 0, micros = 0;
+  bool over = false, off = false, wrong = false;
+};
+Outcome evaluate(const Route& route, const HardCase& c, const Mean3dReference& ref, bool verbose) {
+  Outcome o;
+  MapEstimate& e = o.e;
+  try {
+    e = route.run(c.set);
+  } catch (const std::exception& ex) {
+    std::fprintf(stderr, "%s %s: threw %s\n", c.name.c_str(), route.name.c_str(), ex.what());
+    e.valid = false;
+  }
+  if (e.valid) {
+    for (int k = 0; k < 2; ++k) {
+      o.ratio = std::max(o.ratio, ref.error_ratio(e.map[k], bound_of(e, k), k));
+      o.over |= ref.covers(e.map[k], bound_of(e, k), k) != Coverage::covered;
+      const bool nearest = e.map[k] == ref.nearest_double(k);
+      o.off |= !nearest;
 #ifdef GMCC_SWEEP_NEW_API
-          wrong |= e.correctly_rounded[k] && !nearest;
+      o.wrong |= e.correctly_rounded[k] && !nearest;
 #endif
-        }
-      }
-      const double micros = route.name == "analytic" ? analytic_micros(c.set, 5) : 0;
-      if (verbose) {
-        std::fprintf(stderr, "%-14s %-14s %-8s %3zu", route.name.c_str(), c.name.c_str(),
-                     to_string(c.set.kind).c_str(), c.set.vertices.size());
-        for (int k = 0; k < 2 && e.valid; ++k)
-          std::fprintf(stderr, "  [%d] map %.17g ref %.17g bound %.3g err/bound %.4g%s", k,
-                       e.map[k], ref.nearest_double(k), bound_of(e, k),
-                       ref.error_ratio(e.map[k], bound_of(e, k), k),
-                       e.map[k] == ref.nearest_double(k) ? "" : " !nearest");
-        if (!e.valid) std::fprintf(stderr, "  invalid: %s", e.note.c_str());
-        if (micros > 0) std::fprintf(stderr, "  %.1f us", micros);
-        std::fprintf(stderr, "\n");
-      }
-      if (over) worst.push_back(route.name + " " + c.name);
-      for (const std::string& category : {c.category, std::string("all")}) {
-        Row& r = rows[{route.name, category}];
-        ++r.cases;
-        if (!e.valid) {
-          ++r.invalid;
-          continue;
-        }
-        if (ratio >= r.max_ratio) {
-          r.max_ratio = ratio;
-          r.worst_case = c.name;
-        }
-        r.over_bound += over;
-        r.not_nearest += off;
-        r.wrong_claim += wrong;
-        if (route.name == "analytic") r.micros.push_back(micros);
-      }
     }
   }
+  o.micros = route.name == "analytic" ? analytic_micros(c.set, 5) : 0;
+  if (verbose) {
+    std::fprintf(stderr, "%-14s %-14s %-8s %3zu", route.name.c_str(), c.name.c_str(),
+                 to_string(c.set.kind).c_str(), c.set.vertices.size());
+    for (int k = 0; k < 2 && e.valid; ++k)
+      std::fprintf(stderr, "  [%d] map %.17g ref %.17g bound %.3g err/bound %.4g%s", k,
+                   e.map[k], ref.nearest_double(k), bound_of(e, k),
+                   ref.error_ratio(e.map[k], bound_of(e, k), k),
+                   e.map[k] == ref.nearest_double(k) ? "" : " !nearest");
+    if (!e.valid) std::fprintf(stderr, "  invalid: %s", e.note.c_str());
+    if (o.micros > 0) std::fprintf(stderr, "  %.1f us", o.micros);
+    std::fprintf(stderr, "\n");
+  }
+  return o;
+}
 
+// The table: a row per route and category.
+void print_table(const Args& args, unsigned reference_failures, const std::vector<Route>& routes,
+                 const std::map<std::pair<std::string, std::string>, Row>& rows) {
+  const bool verbose = args.verbose;
+  const unsigned cases = args.cases;
+  const std::uint64_t seed = args.seed;
   std::printf("3-D mean accuracy sweep: seed %llu, %u generated cases + 2 reproducers, reference "
               "2048 bits (self-checked at 4096; %u failed)\n",
               static_cast<unsigned long long>(seed), cases, reference_failures);
@@ -216,6 +193,57 @@ int main(int argc, char** argv) {
       std::printf("\n");
     }
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Args args = parse_args(argc, argv);
+  std::vector<HardCase> all{test::reproducer_thin_triangle(), test::reproducer_feasible_set()};
+  for (HardCase& c : test::hard_cases(args.seed, args.cases)) all.push_back(std::move(c));
+
+  const std::vector<Route> routes{
+      {"analytic", [](const ConvexSet2& F) { return mean_3d_analytic(F); }},
+      {"quadrature-4", [](const ConvexSet2& F) { return mean_3d_quadrature(F, 4); }},
+      {"quadrature-12", [](const ConvexSet2& F) { return mean_3d_quadrature(F); }},
+      {"quadrature-24", [](const ConvexSet2& F) { return mean_3d_quadrature(F, 24); }},
+  };
+  std::map<std::pair<std::string, std::string>, Row> rows;
+  unsigned reference_failures = 0;
+  std::vector<std::string> worst;  // names of cases over their bound, for the reader
+
+  for (const HardCase& c : all) {
+    Mean3dReference ref;
+    try {
+      ref = test::mean_3d_reference_checked(c.set);
+    } catch (const std::exception& e) {
+      ++reference_failures;
+      std::fprintf(stderr, "%s: reference self-check failed: %s\n", c.name.c_str(), e.what());
+      continue;
+    }
+    for (const Route& route : routes) {
+      const Outcome o = evaluate(route, c, ref, args.verbose);
+      if (o.over) worst.push_back(route.name + " " + c.name);
+      for (const std::string& category : {c.category, std::string("all")}) {
+        Row& r = rows[{route.name, category}];
+        ++r.cases;
+        if (!o.e.valid) {
+          ++r.invalid;
+          continue;
+        }
+        if (o.ratio >= r.max_ratio) {
+          r.max_ratio = o.ratio;
+          r.worst_case = c.name;
+        }
+        r.over_bound += o.over;
+        r.not_nearest += o.off;
+        r.wrong_claim += o.wrong;
+        if (route.name == "analytic") r.micros.push_back(o.micros);
+      }
+    }
+  }
+
+  print_table(args, reference_failures, routes, rows);
   if (!worst.empty()) {
     std::printf("over their bound:");
     for (const std::string& w : worst) std::printf(" %s;", w.c_str());

@@ -279,17 +279,9 @@ void check_constrained(ByteReader& in, std::vector<Rational>& pool, const Convex
   check_agreement(*fast, exact_route, truth, light, where);
 }
 
-}  // namespace
-
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  ByteReader in(data, size);
-  const std::uint8_t flags = in.byte();
-  std::vector<Rational> pool;
-  // Few points keep each run to milliseconds (10^6 runs); degeneracies need only a few.
-  const int n_canonical = 1 + in.byte() % 7, n_image = 1 + in.byte() % 5;
-  const std::vector<Point2> canonical = points(in, n_canonical, pool);
-  const std::vector<Point2> image = points(in, n_image, pool);
-
+// The canonical gamut (expanded as the flags say) and its checks: not empty, every canonical
+// point inside, every vertex an input point when not expanded.
+ConvexSet2 checked_gamut(const std::vector<Point2>& canonical, std::uint8_t flags) {
   gmcc::Expansion expansion;
   if (flags % 4 == 1) expansion = {gmcc::ExpansionPolicy::centroid_clip, Rational(1, 10)};
   if (flags % 4 == 2) expansion = {gmcc::ExpansionPolicy::multiplicative, Rational(1, 3)};
@@ -302,46 +294,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       FUZZ_CHECK(std::find(canonical.begin(), canonical.end(), v) != canonical.end(),
                  "hull vertex not an input point: " + text(v));
 
-  const bool unbounded = std::all_of(image.begin(), image.end(), [](const Point2& q) { return sgn(q.x) == 0; }) ||
-                         std::all_of(image.begin(), image.end(), [](const Point2& q) { return sgn(q.y) == 0; });
-  const gmcc::CanonicalConstraints constraints(G);
-  ConvexSet2 F;
-  try {
-    F = gmcc::feasible_set(G, image);
-  } catch (const gmcc::UnboundedFeasibleSet&) {
-    FUZZ_CHECK(unbounded, "UnboundedFeasibleSet for a bounded feasible set");
-    bool thrown = false;
-    try {
-      (void)gmcc::feasible_polygon(constraints, image);
-    } catch (const gmcc::UnboundedFeasibleSet&) {
-      thrown = true;
-    }
-    FUZZ_CHECK(thrown, "feasible_polygon: no UnboundedFeasibleSet where feasible_set throws it");
-    return 0;
-  }
-  FUZZ_CHECK(!unbounded, "no UnboundedFeasibleSet though a component is unconstrained");
-  check_canonical(F, "feasible set");
-  std::vector<Point2> reordered(image.rbegin(), image.rend());
-  FUZZ_CHECK(gmcc::feasible_set(G, reordered) == F, "F depends on the image order (reversed)");
-  std::rotate(reordered.begin(), reordered.begin() + 1, reordered.end());
-  FUZZ_CHECK(gmcc::feasible_set(G, reordered) == F, "F depends on the image order (rotated)");
-  for (const Point2& v : F.vertices)
-    FUZZ_CHECK(feasible(G, image, v), "vertex " + text(v) + " of F is not feasible");
+  return G;
+}
 
-  // The certified route on the same scene: its kind, enclosures and membership tests are
-  // checked before its exact set is built (exact() is built on demand), then that set.
-  const gmcc::FeasiblePolygon P = gmcc::feasible_polygon(constraints, image);
-  FUZZ_CHECK(P.kind() == F.kind, "feasible_polygon: kind differs from F's");
-  FUZZ_CHECK(!P.enclosed() || P.kind() == ConvexKind::polygon, "feasible_polygon: enclosed but not a polygon");
-  if (P.enclosed()) check_enclosed(P, F);
-  {
-    std::vector<const Point2*> by_address;  // the image by address, in reverse order
-    for (auto q = image.rbegin(); q != image.rend(); ++q) by_address.push_back(&*q);
-    const gmcc::FeasiblePolygon Q = gmcc::feasible_polygon(constraints, by_address);
-    FUZZ_CHECK(Q.kind() == F.kind && Q.exact() == F, "feasible_polygon by address (reversed) is not F");
-  }
-
-  // Candidate maps, each checked against the definition.
+// Candidate maps: F's vertices and edge midpoints, points a hair away from the first vertices
+// both ways, gamut vertices over image points, and a few points from the fuzz bytes.
+std::vector<Point2> candidate_maps(ByteReader& in, std::vector<Rational>& pool, const ConvexSet2& G,
+                                   const std::vector<Point2>& image, const ConvexSet2& F) {
   std::vector<Point2> candidates = F.vertices;
   const auto& fv = F.vertices;
   for (std::size_t i = 0; fv.size() >= 2 && i < fv.size(); ++i) {
@@ -367,80 +326,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     Rational y = coordinate(in, pool);
     candidates.push_back({x, y});
   }
-  std::vector<Point2> in_F;
-  for (const Point2& m : candidates) {
-    const bool inside = gmcc::contains(F, m);
-    FUZZ_CHECK(inside == feasible(G, image, m),
-               "map " + text(m) + (inside ? " in F but not feasible" : " feasible but not in F"));
-    FUZZ_CHECK(P.contains(m) == inside, "feasible_polygon: contains(" + text(m) + ") is not " +
-                                            (inside ? "true" : "false"));
-    if (inside) in_F.push_back(m);
-  }
-  FUZZ_CHECK(P.exact() == F && P.exact().kind == P.kind(), "feasible_polygon: exact() is not F");
+  return candidates;
+}
 
-  // rule_errors against a positive truth (a positive candidate in F, or one from fuzz bytes) and
-  // a positive light from fuzz bytes (huge and tiny ones too: it must then decline).
-  auto positive_or_one = [](const Rational& x) { return sgn(x) > 0 ? x : Rational(1); };
-  std::vector<Point2> positive_in_F;
-  std::copy_if(in_F.begin(), in_F.end(), std::back_inserter(positive_in_F), positive);
-  const unsigned pick = in.byte();
-  Point2 truth{1, 1};
-  if (pick % 4 != 0 && !positive_in_F.empty()) {
-    truth = positive_in_F[pick / 4 % positive_in_F.size()];
-  } else {
-    truth.x = positive_or_one(coordinate(in, pool));
-    truth.y = positive_or_one(coordinate(in, pool));
-  }
-  gmcc::Colour light{1, 1, 1};
-  for (Rational* k : {&light.r, &light.g, &light.b}) *k = positive_or_one(coordinate(in, pool));
-  const auto fast = gmcc::rule_errors(P, truth, light);
-  FUZZ_CHECK(P.enclosed() || !fast, "rule_errors answered for a feasible set that is not enclosed");
-  check_constrained(in, pool, G, image, F, in_F, candidates, truth, light);
-  if (F.kind == ConvexKind::empty) return 0;
-
-  gmcc::Mean3dOptions mean3d;
-  if (flags & 4) mean3d.precision_bits = 60;
-  const gmcc::Colour c = flags & 8 ? gmcc::Colour{2, 1, Rational(3, 7)} : gmcc::Colour{1, 1, 1};
-  // Seven runs in eight take the rules one by one without the illuminant worst case (15 times
-  // the cost of the rest of the selection), so that 10^6 runs take hours rather than days; the
-  // eighth calls select_maps, all of it.
-  const bool whole = (flags >> 4) % 8 == 0;
-  auto rule = [&F](gmcc::MapEstimate e) { return rule_selection(F, std::move(e)); };
-  gmcc::Selections s;
-  if (whole) {
-    try {
-      s = gmcc::select_maps(F, gmcc::SelectionOptions{mean3d, c});
-    } catch (const std::domain_error&) {
-      FUZZ_CHECK(!finite_doubles(F), "domain_error though F is within the double range");
-      FUZZ_CHECK(!fast, "rule_errors answered for F beyond the double range");
-      return 0;
-    }
-    FUZZ_CHECK(finite_doubles(F), "no domain_error though F is beyond the double range");
-  } else {
-    if (!finite_doubles(F)) {
-      FUZZ_CHECK(!fast, "rule_errors answered for F beyond the double range");
-      return 0;
-    }
-    s.max_area = rule(gmcc::max_area(F));
-    s.mean_2d = rule(gmcc::mean_2d(F));
-    s.mean_3d = rule(gmcc::mean_3d(F, mean3d));
-  }
-  FUZZ_CHECK(s.max_area && s.mean_2d && s.mean_3d, "a rule is missing for a non-empty F");
-
-  const Point2 best = *s.max_area->estimate.exact;
-  FUZZ_CHECK(gmcc::contains(F, best), "max-area " + text(best) + " not in F");
-  for (const Point2& m : in_F)
-    FUZZ_CHECK(m.x * m.y <= best.x * best.y, "max-area beaten by " + text(m));
-  FUZZ_CHECK(*s.mean_2d->estimate.exact == gmcc::centroid(F) && gmcc::contains(F, gmcc::centroid(F)),
-             "2-D mean not the centroid in F");
-
-  const gmcc::MapEstimate& m3 = s.mean_3d->estimate;
+// The 3-D mean: analytic; valid unless a forced precision is too low (then with a note); a point
+// is its own mean; otherwise a finite enclosure that meets F and holds the map.
+void check_mean_3d(const ConvexSet2& F, const gmcc::Selection& mean_3d, const gmcc::Mean3dOptions& mean3d) {
+  const gmcc::MapEstimate& m3 = mean_3d.estimate;
   FUZZ_CHECK(m3.method == "analytic", "3-D mean: method " + m3.method);
   // Only a forced precision may be too low to bound the closed form.
   FUZZ_CHECK(m3.valid || mean3d.precision_bits != 0, "3-D mean not valid: " + m3.note);
   FUZZ_CHECK(m3.valid == m3.enclosure.has_value(), "3-D mean: enclosure iff valid");
   if (!m3.valid) {
-    FUZZ_CHECK(!m3.note.empty() && !s.mean_3d->worst_case_deg, "3-D mean: invalid without a note");
+    FUZZ_CHECK(!m3.note.empty() && !mean_3d.worst_case_deg, "3-D mean: invalid without a note");
   } else if (F.kind == ConvexKind::point) {
     FUZZ_CHECK(m3.exact && *m3.exact == F.vertices[0], "3-D mean of a point is not the point");
   } else {
@@ -455,19 +353,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (int k = 0; k < 2; ++k)
       FUZZ_CHECK(e[k][0] <= m3.map[k] && m3.map[k] <= e[k][1], "3-D mean: map outside its enclosure");
   }
+}
 
-  // rule_errors against the exact route. Its 3-D mean is at the default precision: a forced one
-  // is recomputed (only when rule_errors answered).
-  if (fast) {
-    std::optional<gmcc::Selection> mean_3d_default;
-    if (mean3d.precision_bits != 0) mean_3d_default = rule(gmcc::mean_3d(F));
-    const gmcc::Selection* const exact_route[3] = {&*s.max_area, &*s.mean_2d,
-                                                   mean_3d_default ? &*mean_3d_default : &*s.mean_3d};
-    check_agreement(*fast, exact_route, truth, light, "");
-  }
-
-  // Worst cases against the vertices and a few other points of F (each angle costs an MPFR
-  // evaluation).
+// Worst cases against the vertices and a few other points of F (each angle costs an MPFR
+// evaluation); the illuminant worst case only on the runs that computed it (`whole`).
+void check_worst_cases(const ConvexSet2& F, const std::vector<Point2>& in_F, const gmcc::Selections& s, bool whole,
+                       const gmcc::Colour& c) {
+  const auto& fv = F.vertices;
   std::vector<Point2> probes = F.vertices;
   for (std::size_t i = F.vertices.size(); i < in_F.size() && i < F.vertices.size() + 2; ++i)
     probes.push_back(in_F[i]);
@@ -490,5 +382,181 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                   [&m, &c](const Point2& x) { return gmcc::illuminant_angular_error_deg(m, x, c); },
                   est.rule + " illuminant worst case");
   }
+}
+
+// F is canonical, independent of the image's order, and its vertices feasible by definition.
+void check_feasible_set(const ConvexSet2& G, const std::vector<Point2>& image, const ConvexSet2& F) {
+  check_canonical(F, "feasible set");
+  std::vector<Point2> reordered(image.rbegin(), image.rend());
+  FUZZ_CHECK(gmcc::feasible_set(G, reordered) == F, "F depends on the image order (reversed)");
+  std::rotate(reordered.begin(), reordered.begin() + 1, reordered.end());
+  FUZZ_CHECK(gmcc::feasible_set(G, reordered) == F, "F depends on the image order (rotated)");
+  for (const Point2& v : F.vertices)
+    FUZZ_CHECK(feasible(G, image, v), "vertex " + text(v) + " of F is not feasible");
+}
+
+// Each candidate's membership in F by contains, the definition and the feasible polygon; those
+// in F.
+std::vector<Point2> candidates_in_F(const std::vector<Point2>& candidates, const ConvexSet2& G,
+                                    const std::vector<Point2>& image, const ConvexSet2& F,
+                                    const gmcc::FeasiblePolygon& P) {
+  std::vector<Point2> in_F;
+  for (const Point2& m : candidates) {
+    const bool inside = gmcc::contains(F, m);
+    FUZZ_CHECK(inside == feasible(G, image, m),
+               "map " + text(m) + (inside ? " in F but not feasible" : " feasible but not in F"));
+    FUZZ_CHECK(P.contains(m) == inside, "feasible_polygon: contains(" + text(m) + ") is not " +
+                                            (inside ? "true" : "false"));
+    if (inside) in_F.push_back(m);
+  }
+  FUZZ_CHECK(P.exact() == F && P.exact().kind == P.kind(), "feasible_polygon: exact() is not F");
+  return in_F;
+}
+
+// A positive truth (a positive candidate in F, or one from fuzz bytes) and a positive light from
+// fuzz bytes (huge and tiny ones too: rule_errors must then decline).
+std::pair<Point2, gmcc::Colour> truth_and_light(ByteReader& in, std::vector<Rational>& pool,
+                                                const std::vector<Point2>& in_F) {
+  auto positive_or_one = [](const Rational& x) { return sgn(x) > 0 ? x : Rational(1); };
+  std::vector<Point2> positive_in_F;
+  std::copy_if(in_F.begin(), in_F.end(), std::back_inserter(positive_in_F), positive);
+  const unsigned pick = in.byte();
+  Point2 truth{1, 1};
+  if (pick % 4 != 0 && !positive_in_F.empty()) {
+    truth = positive_in_F[pick / 4 % positive_in_F.size()];
+  } else {
+    truth.x = positive_or_one(coordinate(in, pool));
+    truth.y = positive_or_one(coordinate(in, pool));
+  }
+  gmcc::Colour light{1, 1, 1};
+  for (Rational* k : {&light.r, &light.g, &light.b}) *k = positive_or_one(coordinate(in, pool));
+  return {truth, light};
+}
+
+// The three rules: all of select_maps (`whole`), or the rules one by one without the
+// illuminant worst case; nothing (after checking that this is right) for F beyond the doubles.
+std::optional<gmcc::Selections> selections(const ConvexSet2& F, const gmcc::Mean3dOptions& mean3d,
+                                           const gmcc::Colour& c, bool whole, bool fast) {
+  gmcc::Selections s;
+  if (whole) {
+    try {
+      s = gmcc::select_maps(F, gmcc::SelectionOptions{mean3d, c});
+    } catch (const std::domain_error&) {
+      FUZZ_CHECK(!finite_doubles(F), "domain_error though F is within the double range");
+      FUZZ_CHECK(!fast, "rule_errors answered for F beyond the double range");
+      return std::nullopt;
+    }
+    FUZZ_CHECK(finite_doubles(F), "no domain_error though F is beyond the double range");
+  } else {
+    if (!finite_doubles(F)) {
+      FUZZ_CHECK(!fast, "rule_errors answered for F beyond the double range");
+      return std::nullopt;
+    }
+    s.max_area = rule_selection(F, gmcc::max_area(F));
+    s.mean_2d = rule_selection(F, gmcc::mean_2d(F));
+    s.mean_3d = rule_selection(F, gmcc::mean_3d(F, mean3d));
+  }
+  return s;
+}
+
+// F, or nothing when it is unbounded — exactly when a component is unconstrained (every image
+// point has it 0), and then feasible_polygon says so too.
+std::optional<ConvexSet2> bounded_feasible_set(const ConvexSet2& G, const gmcc::CanonicalConstraints& constraints,
+                                               const std::vector<Point2>& image) {
+  const bool unbounded = std::all_of(image.begin(), image.end(), [](const Point2& q) { return sgn(q.x) == 0; }) ||
+                         std::all_of(image.begin(), image.end(), [](const Point2& q) { return sgn(q.y) == 0; });
+  try {
+    ConvexSet2 F = gmcc::feasible_set(G, image);
+    FUZZ_CHECK(!unbounded, "no UnboundedFeasibleSet though a component is unconstrained");
+    return F;
+  } catch (const gmcc::UnboundedFeasibleSet&) {
+    FUZZ_CHECK(unbounded, "UnboundedFeasibleSet for a bounded feasible set");
+    bool thrown = false;
+    try {
+      (void)gmcc::feasible_polygon(constraints, image);
+    } catch (const gmcc::UnboundedFeasibleSet&) {
+      thrown = true;
+    }
+    FUZZ_CHECK(thrown, "feasible_polygon: no UnboundedFeasibleSet where feasible_set throws it");
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  ByteReader in(data, size);
+  const std::uint8_t flags = in.byte();
+  std::vector<Rational> pool;
+  // Few points keep each run to milliseconds (10^6 runs); degeneracies need only a few.
+  const int n_canonical = 1 + in.byte() % 7, n_image = 1 + in.byte() % 5;
+  const std::vector<Point2> canonical = points(in, n_canonical, pool);
+  const std::vector<Point2> image = points(in, n_image, pool);
+
+  const ConvexSet2 G = checked_gamut(canonical, flags);
+
+  const gmcc::CanonicalConstraints constraints(G);
+  const std::optional<ConvexSet2> bounded = bounded_feasible_set(G, constraints, image);
+  if (!bounded) return 0;
+  const ConvexSet2& F = *bounded;
+  check_feasible_set(G, image, F);
+
+  // The certified route on the same scene: its kind, enclosures and membership tests are
+  // checked before its exact set is built (exact() is built on demand), then that set.
+  const gmcc::FeasiblePolygon P = gmcc::feasible_polygon(constraints, image);
+  FUZZ_CHECK(P.kind() == F.kind, "feasible_polygon: kind differs from F's");
+  FUZZ_CHECK(!P.enclosed() || P.kind() == ConvexKind::polygon, "feasible_polygon: enclosed but not a polygon");
+  if (P.enclosed()) check_enclosed(P, F);
+  {
+    std::vector<const Point2*> by_address;  // the image by address, in reverse order
+    for (auto q = image.rbegin(); q != image.rend(); ++q) by_address.push_back(&*q);
+    const gmcc::FeasiblePolygon Q = gmcc::feasible_polygon(constraints, by_address);
+    FUZZ_CHECK(Q.kind() == F.kind && Q.exact() == F, "feasible_polygon by address (reversed) is not F");
+  }
+
+  // Candidate maps, each checked against the definition.
+  const std::vector<Point2> candidates = candidate_maps(in, pool, G, image, F);
+  const std::vector<Point2> in_F = candidates_in_F(candidates, G, image, F, P);
+
+  // rule_errors against a positive truth and light.
+  const auto [truth, light] = truth_and_light(in, pool, in_F);
+  const auto fast = gmcc::rule_errors(P, truth, light);
+  FUZZ_CHECK(P.enclosed() || !fast, "rule_errors answered for a feasible set that is not enclosed");
+  check_constrained(in, pool, G, image, F, in_F, candidates, truth, light);
+  if (F.kind == ConvexKind::empty) return 0;
+
+  gmcc::Mean3dOptions mean3d;
+  if (flags & 4) mean3d.precision_bits = 60;
+  const gmcc::Colour c = flags & 8 ? gmcc::Colour{2, 1, Rational(3, 7)} : gmcc::Colour{1, 1, 1};
+  // Seven runs in eight take the rules one by one without the illuminant worst case (15 times
+  // the cost of the rest of the selection), so that 10^6 runs take hours rather than days; the
+  // eighth calls select_maps, all of it.
+  const bool whole = (flags >> 4) % 8 == 0;
+  auto rule = [&F](gmcc::MapEstimate e) { return rule_selection(F, std::move(e)); };
+  const std::optional<gmcc::Selections> selected = selections(F, mean3d, c, whole, fast.has_value());
+  if (!selected) return 0;
+  const gmcc::Selections& s = *selected;
+  FUZZ_CHECK(s.max_area && s.mean_2d && s.mean_3d, "a rule is missing for a non-empty F");
+
+  const Point2 best = *s.max_area->estimate.exact;
+  FUZZ_CHECK(gmcc::contains(F, best), "max-area " + text(best) + " not in F");
+  for (const Point2& m : in_F)
+    FUZZ_CHECK(m.x * m.y <= best.x * best.y, "max-area beaten by " + text(m));
+  FUZZ_CHECK(*s.mean_2d->estimate.exact == gmcc::centroid(F) && gmcc::contains(F, gmcc::centroid(F)),
+             "2-D mean not the centroid in F");
+
+  check_mean_3d(F, *s.mean_3d, mean3d);
+
+  // rule_errors against the exact route. Its 3-D mean is at the default precision: a forced one
+  // is recomputed (only when rule_errors answered).
+  if (fast) {
+    std::optional<gmcc::Selection> mean_3d_default;
+    if (mean3d.precision_bits != 0) mean_3d_default = rule(gmcc::mean_3d(F));
+    const gmcc::Selection* const exact_route[3] = {&*s.max_area, &*s.mean_2d,
+                                                   mean_3d_default ? &*mean_3d_default : &*s.mean_3d};
+    check_agreement(*fast, exact_route, truth, light, "");
+  }
+
+  check_worst_cases(F, in_F, s, whole, c);
   return 0;
 }

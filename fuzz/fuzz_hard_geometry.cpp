@@ -205,26 +205,30 @@ void check_3d(const std::vector<Point2>& canonical, const std::vector<Point2>& i
   }
 }
 
-}  // namespace
-
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  ByteReader in(data, size);
-  const std::uint8_t flags = in.byte();
+// A target input's recipe: flags, canonical points of one family, scaled per axis by powers of
+// two (2^-20 to 2^20), and image points under the same scale (F stays about 1).
+struct Recipe {
+  std::uint8_t flags;
+  std::vector<Point2> canonical, image;
+};
+Recipe read_recipe(ByteReader& in) {
+  Recipe r;
+  r.flags = in.byte();
   const unsigned family = in.byte() % 6;
   // One size byte in two: up to 64 points; otherwise up to 2000 (hundreds to thousands of vertices).
   const unsigned size_byte = in.byte();
   const int n = size_byte & 1 ? 3 + static_cast<int>(in.bytes(2) % 1998) : 3 + size_byte / 2 % 62;
-  std::vector<Point2> canonical = canonical_points(in, family, n);
-  // Scaled by powers of two, each axis on its own (2^-20 to 2^20).
+  r.canonical = canonical_points(in, family, n);
   const Rational sx = two_to(static_cast<int>(in.byte() % 41) - 20), sy = two_to(static_cast<int>(in.byte() % 41) - 20);
-  for (Point2& p : canonical) p = {Rational(p.x * sx), Rational(p.y * sy)};
-  std::vector<Point2> image = image_points(in, in.byte() % 5, canonical);
-  for (Point2& q : image) q = {Rational(q.x * sx), Rational(q.y * sy)};  // the same scale: F stays about 1
+  for (Point2& p : r.canonical) p = {Rational(p.x * sx), Rational(p.y * sy)};
+  r.image = image_points(in, in.byte() % 5, r.canonical);
+  for (Point2& q : r.image) q = {Rational(q.x * sx), Rational(q.y * sy)};  // the same scale: F stays about 1
+  return r;
+}
 
-  stage("recipe");
-  gmcc::Expansion expansion;
-  if (flags % 4 == 1) expansion = {gmcc::ExpansionPolicy::multiplicative, Rational(1, 10)};
-  if (flags % 4 == 2) expansion = {gmcc::ExpansionPolicy::centroid_clip, Rational(1, 10)};
+// The canonical gamut (expanded as the flags say) and its checks: every canonical point inside,
+// every vertex an input point when not expanded.
+ConvexSet2 checked_gamut(const std::vector<Point2>& canonical, const gmcc::Expansion& expansion) {
   const ConvexSet2 G = gmcc::canonical_gamut(canonical, expansion);
   stage("canonical_gamut");
   check_canonical(G, "canonical gamut");
@@ -234,31 +238,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::set<Point2> inputs(canonical.begin(), canonical.end());
     for (const Point2& v : G.vertices) FUZZ_CHECK(inputs.count(v), "hull vertex not an input point: " + text(v));
   }
+  return G;
+}
 
-  stage("gamut checks");
-  const ConvexSet2 F = gmcc::feasible_set(G, image);  // images are positive: never unbounded
-  stage("feasible_set");
-  if (std::getenv("GMCC_FUZZ_TIMES"))
-    std::fprintf(stderr, "  (%zu canonical points, G %zu vertices, %zu image points, F a %s of %zu vertices)\n",
-                 canonical.size(), G.vertices.size(), image.size(), gmcc::to_string(F.kind).c_str(), F.vertices.size());
-  check_canonical(F, "feasible set");
-  const std::vector<Point2> reversed(image.rbegin(), image.rend());
-  FUZZ_CHECK(gmcc::feasible_set(G, reversed) == F, "F depends on the image order (reversed)");
-  stage("feasible_set (reversed)");
-  const std::vector<Point2> hull = gmcc::convex_hull(image).vertices;  // as good as the image (above)
-  const std::size_t budget = brute_force_budget(hull.size(), G.vertices.size());
-  for (std::size_t i : sample(F.vertices.size(), budget))
-    FUZZ_CHECK(feasible(G, hull, F.vertices[i]), "vertex " + text(F.vertices[i]) + " of F is not feasible");
-
-  stage("F checks");
-  const gmcc::CanonicalConstraints constraints(G);
-  const gmcc::FeasiblePolygon P = gmcc::feasible_polygon(constraints, image);
-  FUZZ_CHECK(P.kind() == F.kind, "feasible_polygon: kind differs from F's");
-  FUZZ_CHECK(!P.enclosed() || P.kind() == ConvexKind::polygon, "feasible_polygon: enclosed but not a polygon");
-  stage("feasible_polygon");
-  if (P.enclosed()) check_enclosed(P, F);
-  stage("check_enclosed");
-
+// Candidate maps about F's sampled vertices (the vertex, an edge midpoint, two nearby points)
+// and gamut vertices over image points, checked against the target's membership test, contains,
+// the definition (within the budget) and the feasible polygon; those in F.
+std::vector<Point2> check_candidates(ByteReader& in, const ConvexSet2& G, const std::vector<Point2>& image,
+                                     const ConvexSet2& F, const gmcc::FeasiblePolygon& P,
+                                     const std::vector<Point2>& hull, std::size_t budget) {
   std::vector<Point2> candidates;
   const auto& fv = F.vertices;
   // Four candidates about each sampled vertex, and gamut vertices over image points: a budget's worth.
@@ -293,47 +281,42 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (in) in_F.push_back(m);
   }
   FUZZ_CHECK(P.exact() == F, "feasible_polygon: exact() is not F");
+  return in_F;
+}
 
-  stage("candidates");
-  if (flags & 4 && canonical.size() <= 200 && image.size() <= 50)
-    check_3d(canonical, image, F, !(flags & 8), expansion.policy == gmcc::ExpansionPolicy::none);
+// An empty F: min_violation finds a positive least violation, attained at its minimisers.
+void check_min_violation(const ConvexSet2& G, const std::vector<Point2>& image) {
+  const gmcc::MinViolation v = gmcc::min_violation(G, image);
+  FUZZ_CHECK(sgn(v.violation) > 0, "min_violation: violation <= 0 for an empty F");
+  FUZZ_CHECK(v.feasible.kind != ConvexKind::empty, "min_violation: no minimiser");
+  check_canonical(v.feasible, "min_violation's minimisers");
+  FUZZ_CHECK(gmcc::gamut_violation(G, image, v.feasible.vertices[0]) == v.violation,
+             "min_violation: the violation is not attained at a minimiser");
+  stage("min_violation");
+}
 
-  stage("crule_3d");
-  if (F.kind == ConvexKind::empty) {
-    const gmcc::MinViolation v = gmcc::min_violation(G, image);
-    FUZZ_CHECK(sgn(v.violation) > 0, "min_violation: violation <= 0 for an empty F");
-    FUZZ_CHECK(v.feasible.kind != ConvexKind::empty, "min_violation: no minimiser");
-    check_canonical(v.feasible, "min_violation's minimisers");
-    FUZZ_CHECK(gmcc::gamut_violation(G, image, v.feasible.vertices[0]) == v.violation,
-               "min_violation: the violation is not attained at a minimiser");
-    stage("min_violation");
-    return 0;
+// GMCC_FUZZ_TIMES: select_maps's parts one by one, to say which is slow.
+void time_selection_parts(const ConvexSet2& F, const gmcc::Colour& light) {
+  stage("(before the parts)");
+  const gmcc::MapEstimate a = gmcc::max_area(F);
+  stage("  max_area");
+  const gmcc::MapEstimate b = gmcc::mean_2d(F);
+  stage("  mean_2d");
+  const gmcc::MapEstimate c = gmcc::mean_3d(F);
+  stage("  mean_3d");
+  for (const gmcc::MapEstimate* e : {&a, &b, &c}) {
+    const Point2 m = e->exact ? *e->exact : Point2{gmcc::rational_from_double(e->map[0]), gmcc::rational_from_double(e->map[1])};
+    (void)gmcc::worst_case_map_deg(F, m);
+    stage(("  worst_case_map_deg " + e->rule).c_str());
+    if (positive(m)) (void)gmcc::worst_case_illuminant_deg(F, m, light);
+    stage(("  worst_case_illuminant_deg " + e->rule).c_str());
   }
-  if (!finite_doubles(F)) return 0;  // beyond the doubles: select_maps refuses (fuzz_geometry checks it)
+}
 
-  const gmcc::Colour light{2, 1, Rational(3, 7)};
-  if (const char* path = std::getenv("GMCC_FUZZ_DUMP_F")) {  // F's exact vertices, one "x y" a line
-    if (std::FILE* out = std::fopen(path, "w")) {           // (bench_worst_case_illuminant reads them)
-      for (const Point2& v : fv) std::fprintf(out, "%s %s\n", v.x.get_str().c_str(), v.y.get_str().c_str());
-      std::fclose(out);
-    }
-  }
-  if (std::getenv("GMCC_FUZZ_TIMES")) {  // select_maps's parts, one by one, to say which is slow
-    stage("(before the parts)");
-    const gmcc::MapEstimate a = gmcc::max_area(F);
-    stage("  max_area");
-    const gmcc::MapEstimate b = gmcc::mean_2d(F);
-    stage("  mean_2d");
-    const gmcc::MapEstimate c = gmcc::mean_3d(F);
-    stage("  mean_3d");
-    for (const gmcc::MapEstimate* e : {&a, &b, &c}) {
-      const Point2 m = e->exact ? *e->exact : Point2{gmcc::rational_from_double(e->map[0]), gmcc::rational_from_double(e->map[1])};
-      (void)gmcc::worst_case_map_deg(F, m);
-      stage(("  worst_case_map_deg " + e->rule).c_str());
-      if (positive(m)) (void)gmcc::worst_case_illuminant_deg(F, m, light);
-      stage(("  worst_case_illuminant_deg " + e->rule).c_str());
-    }
-  }
+// The three rules on a non-empty F: max-area beats every candidate in F, the 2-D mean is the
+// centroid, the 3-D mean's enclosure meets F, and each worst case is at least every probe's.
+void check_selections(const ConvexSet2& F, const std::vector<Point2>& in_F, const gmcc::Colour& light) {
+  const auto& fv = F.vertices;
   const gmcc::Selections s = gmcc::select_maps(F, gmcc::SelectionOptions{{}, light});
   stage("select_maps");
   FUZZ_CHECK(s.max_area && s.mean_2d && s.mean_3d, "a rule is missing for a non-empty F");
@@ -372,6 +355,62 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                   [&m, &light](const Point2& x) { return gmcc::illuminant_angular_error_deg(m, x, light); },
                   est.rule + " illuminant worst case");
   }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  ByteReader in(data, size);
+  const Recipe r = read_recipe(in);
+  const std::uint8_t flags = r.flags;
+  const std::vector<Point2>& canonical = r.canonical;
+  const std::vector<Point2>& image = r.image;
+  stage("recipe");
+  gmcc::Expansion expansion;
+  if (flags % 4 == 1) expansion = {gmcc::ExpansionPolicy::multiplicative, Rational(1, 10)};
+  if (flags % 4 == 2) expansion = {gmcc::ExpansionPolicy::centroid_clip, Rational(1, 10)};
+  const ConvexSet2 G = checked_gamut(canonical, expansion);
+  stage("gamut checks");
+  const ConvexSet2 F = gmcc::feasible_set(G, image);  // images are positive: never unbounded
+  stage("feasible_set");
+  if (std::getenv("GMCC_FUZZ_TIMES"))
+    std::fprintf(stderr, "  (%zu canonical points, G %zu vertices, %zu image points, F a %s of %zu vertices)\n",
+                 canonical.size(), G.vertices.size(), image.size(), gmcc::to_string(F.kind).c_str(), F.vertices.size());
+  check_canonical(F, "feasible set");
+  const std::vector<Point2> reversed(image.rbegin(), image.rend());
+  FUZZ_CHECK(gmcc::feasible_set(G, reversed) == F, "F depends on the image order (reversed)");
+  stage("feasible_set (reversed)");
+  const std::vector<Point2> hull = gmcc::convex_hull(image).vertices;  // as good as the image (above)
+  const std::size_t budget = brute_force_budget(hull.size(), G.vertices.size());
+  for (std::size_t i : sample(F.vertices.size(), budget))
+    FUZZ_CHECK(feasible(G, hull, F.vertices[i]), "vertex " + text(F.vertices[i]) + " of F is not feasible");
+  stage("F checks");
+  const gmcc::CanonicalConstraints constraints(G);
+  const gmcc::FeasiblePolygon P = gmcc::feasible_polygon(constraints, image);
+  FUZZ_CHECK(P.kind() == F.kind, "feasible_polygon: kind differs from F's");
+  FUZZ_CHECK(!P.enclosed() || P.kind() == ConvexKind::polygon, "feasible_polygon: enclosed but not a polygon");
+  stage("feasible_polygon");
+  if (P.enclosed()) check_enclosed(P, F);
+  stage("check_enclosed");
+  const std::vector<Point2> in_F = check_candidates(in, G, image, F, P, hull, budget);
+  stage("candidates");
+  if (flags & 4 && canonical.size() <= 200 && image.size() <= 50)
+    check_3d(canonical, image, F, !(flags & 8), expansion.policy == gmcc::ExpansionPolicy::none);
+  stage("crule_3d");
+  if (F.kind == ConvexKind::empty) {
+    check_min_violation(G, image);
+    return 0;
+  }
+  if (!finite_doubles(F)) return 0;  // beyond the doubles: select_maps refuses (fuzz_geometry checks it)
+  const gmcc::Colour light{2, 1, Rational(3, 7)};
+  if (const char* path = std::getenv("GMCC_FUZZ_DUMP_F")) {  // F's exact vertices, one "x y" a line
+    if (std::FILE* out = std::fopen(path, "w")) {           // (bench_worst_case_illuminant reads them)
+      for (const Point2& v : F.vertices) std::fprintf(out, "%s %s\n", v.x.get_str().c_str(), v.y.get_str().c_str());
+      std::fclose(out);
+    }
+  }
+  if (std::getenv("GMCC_FUZZ_TIMES")) time_selection_parts(F, light);
+  check_selections(F, in_F, light);
   stage("selection checks");
   return 0;
 }

@@ -124,14 +124,8 @@ void check_message(const std::string& message) {
   FUZZ_CHECK(message.find('\n') == std::string::npos, "a message of more than one line: " + message);
 }
 
-}  // namespace
-
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (size == 0) return 0;
-  const std::uint8_t flags = data[0];
-  const bool camera = flags & 1, run_scene = flags & 2;
-  const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
-
+// The command line the input spells: one field's value a line, in `fields` order.
+std::vector<std::string> arguments(bool camera, const std::string& text) {
   std::vector<std::string> args{"gmcc", "reproduce", camera ? "camera" : "synthetic"};
   std::size_t start = 0;
   for (std::size_t i = 0; i < std::size(fields) && start <= text.size(); ++i) {
@@ -143,6 +137,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // `--lights=` keeps a value that starts with '-' a value (CLI11 reads `--lights -x` as two options).
     args.push_back(std::string(fields[i]) + "=" + value);
   }
+  return args;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return 0;
+  const std::uint8_t flags = data[0];
+  const bool camera = flags & 1, run_scene = flags & 2;
+  const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
+
+  const std::vector<std::string> args = arguments(camera, text);
   std::vector<const char*> argv;
   for (const std::string& a : args) argv.push_back(a.c_str());
 

@@ -278,21 +278,10 @@ class CaptureCout {
   std::streambuf* old_;
 };
 
-}  // namespace
-
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (size < 2) return 0;
-  const std::uint8_t flags = data[0], more = data[1];
-  const std::string rest(reinterpret_cast<const char*>(data) + 2, size - 2);
-  const std::size_t bar = rest.find('|');
-  const std::size_t bar2 = bar == std::string::npos ? bar : rest.find('|', bar + 1);
-  const std::string canonical_text = rest.substr(0, bar);
-  const std::string image_text = bar == std::string::npos ? rest : rest.substr(bar + 1, bar2 - bar - 1);
-  const bool has_illuminants = bar2 != std::string::npos;
-  const std::string illuminants_text = has_illuminants ? rest.substr(bar2 + 1) : std::string();
-
-  // Options from the flag bits; small Monte Carlo and quadrature sizes keep each run short.
-  // The second byte 0 gives the options the first byte alone gave before it was added.
+// The select options the two flag bytes choose. Options from the flag bits; small Monte Carlo
+// and quadrature sizes keep each run short; the second byte 0 gives the options the first byte
+// alone gave before it was added.
+gmcc::cli::SelectOptions options_of(std::uint8_t flags, std::uint8_t more) {
   gmcc::cli::SelectOptions o;
   o.json = flags & 1;
   o.mean3d_method = (flags >> 1 & 3) == 2 ? "quadrature" : (flags >> 1 & 3) == 3 ? "monte-carlo" : "analytic";
@@ -316,8 +305,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   static const char* const on_empty[] = {"none", "grow-canonical", "min-violation", "none"};
   o.on_empty = on_empty[more & 3];
-  const bool space_3d = more & 4;
-  if (space_3d) {
+  if (more & 4) {
     o.space = "3d";
     o.black = more & 8 ? "exclude" : "include";
     // The 2-D-only options must be refused; mostly they are left out so that the 3-D route runs.
@@ -327,6 +315,41 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       o.precision_bits = "0", o.canonical_illuminant = "1,1,1", o.nonpositive_blue = "drop";
     }
   }
+  return o;
+}
+
+// An input error's message: names a file or an option first, one line, bounded in length.
+void check_message(const std::string& message, bool space_3d) {
+  const std::string dir = space_3d ? scratch_dir() + "/" : "";
+  bool named = false;
+  for (const std::string& name : {dir + "canonical.csv", dir + "image.csv", dir + "illuminants.csv",
+                                  std::string("--expand"), std::string("--on-empty"),
+                                  std::string("--illuminants"), std::string("--mean3d"),
+                                  std::string("--precision"), std::string("--order"),
+                                  std::string("--samples"), std::string("--seed"),
+                                  std::string("--canonical-illuminant"),
+                                  std::string("--nonpositive-blue")})
+    named = named || message.rfind(name, 0) == 0;
+  FUZZ_CHECK(named, "message names no file: " + message);
+  FUZZ_CHECK(message.find('\n') == std::string::npos, "a message of more than one line");
+  FUZZ_CHECK(message.size() <= 400 + dir.size(), "a message of " + std::to_string(message.size()) + " bytes");
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size < 2) return 0;
+  const std::uint8_t flags = data[0], more = data[1];
+  const std::string rest(reinterpret_cast<const char*>(data) + 2, size - 2);
+  const std::size_t bar = rest.find('|');
+  const std::size_t bar2 = bar == std::string::npos ? bar : rest.find('|', bar + 1);
+  const std::string canonical_text = rest.substr(0, bar);
+  const std::string image_text = bar == std::string::npos ? rest : rest.substr(bar + 1, bar2 - bar - 1);
+  const bool has_illuminants = bar2 != std::string::npos;
+  const std::string illuminants_text = has_illuminants ? rest.substr(bar2 + 1) : std::string();
+
+  gmcc::cli::SelectOptions o = options_of(flags, more);
+  const bool space_3d = more & 4;
 
   std::string out;
   try {
@@ -353,20 +376,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       out = gmcc::cli::select_output(settings, canonical, image, illuminants ? &*illuminants : nullptr);
     }
   } catch (const gmcc::InputError& e) {
-    const std::string message = e.what();
-    const std::string dir = space_3d ? scratch_dir() + "/" : "";
-    bool named = false;
-    for (const std::string& name : {dir + "canonical.csv", dir + "image.csv", dir + "illuminants.csv",
-                                    std::string("--expand"), std::string("--on-empty"),
-                                    std::string("--illuminants"), std::string("--mean3d"),
-                                    std::string("--precision"), std::string("--order"),
-                                    std::string("--samples"), std::string("--seed"),
-                                    std::string("--canonical-illuminant"),
-                                    std::string("--nonpositive-blue")})
-      named = named || message.rfind(name, 0) == 0;
-    FUZZ_CHECK(named, "message names no file: " + message);
-    FUZZ_CHECK(message.find('\n') == std::string::npos, "a message of more than one line");
-    FUZZ_CHECK(message.size() <= 400 + dir.size(), "a message of " + std::to_string(message.size()) + " bytes");
+    check_message(e.what(), space_3d);
     return 0;
   }
   FUZZ_CHECK(!out.empty() && out.back() == '\n', "output not ended by a newline");

@@ -434,6 +434,55 @@ Poly stationary_polynomial(const Point2& p, const Rational& da, const Rational& 
   return stationary;
 }
 
+// The vertices and edges that may hold the worst case, after the double filters (and, on the
+// certified route, the sine filter): the rest certainly lose to one of these.
+struct Survivors {
+  std::vector<std::size_t> vertices, edges;
+  unsigned sine_bits = 0;
+};
+Survivors filter_candidates(const ConvexSet2& F, const Point2& m, const Colour& c, const std::array<Rational, 3>& e,
+                            bool filtered, bool certified) {
+  const auto& vs = F.vertices;
+  Survivors out;
+  // The vertices in enclosures: only those whose closeness may be the least need the exact
+  // comparison. The first vertex attaining the least exact closeness is among them (its lower
+  // end is at most every upper end), and is still found first, in order.
+  const std::array<Enclosure, 3> ce{enclose_rational(c.r), enclose_rational(c.g), enclose_rational(c.b)};
+  const std::array<Enclosure, 3> ee{enclose_rational(e[0]), enclose_rational(e[1]), enclose_rational(e[2])};
+  std::vector<std::array<Enclosure, 2>> ve;  // the vertices' enclosures (when filtered)
+  std::vector<double> lower(vs.size(), -Enclosure::unbounded);
+  double least_upper = Enclosure::unbounded;
+  if (filtered) {
+    ve.resize(vs.size());
+    for (std::size_t i = 0; i < vs.size(); ++i) {
+      ve[i] = {enclose_rational(vs[i].x), enclose_rational(vs[i].y)};
+      const Enclosure k = closeness_enclosure(ee, ce, ve[i][0], ve[i][1]);
+      if (!k.finite()) continue;
+      lower[i] = k.lo();
+      least_upper = std::min(least_upper, k.hi());
+    }
+  }
+  std::vector<std::size_t>& candidates = out.vertices;
+  for (std::size_t i = 0; i < vs.size(); ++i)
+    if (!(lower[i] > least_upper)) candidates.push_back(i);
+  // A segment has one edge, a polygon n, a point none; those the double filters leave.
+  const std::size_t n_edges =
+      F.kind == ConvexKind::polygon ? vs.size() : F.kind == ConvexKind::segment ? 1 : 0;
+  std::vector<std::size_t>& edges = out.edges;
+  for (std::size_t i = 0; i < n_edges; ++i) {
+    const std::size_t j = (i + 1) % vs.size();
+    if (filtered && (edge_cannot_be_worst(ee, ce, ve[i][0], ve[i][1], ve[j][0], ve[j][1], least_upper) ||
+                     no_stationary_point(ee, ce, ve[i][0], ve[i][1], ve[j][0], ve[j][1]) ||
+                     edge_skippable(ee, ce, ve[i][0], ve[i][1], ve[j][0] - ve[i][0], ve[j][1] - ve[i][1],
+                                    0, 1, least_upper, 8)))
+      continue;
+    edges.push_back(i);
+  }
+  if (certified && candidates.size() + edges.size() > 1)
+    out.sine_bits = SineFilter(vs, m, c).refine(candidates, edges);
+  return out;
+}
+
 }  // namespace
 
 IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const Point2& m, const Colour& c,
@@ -452,43 +501,11 @@ IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const P
     const Rational ew = e[0] * w0 + e[1] * w1 + e[2] * c.b;
     return Rational(ew * ew / (w0 * w0 + w1 * w1 + c.b * c.b));
   };
-  // The vertices in enclosures: only those whose closeness may be the least need the exact
-  // comparison. The first vertex attaining the least exact closeness is among them (its lower
-  // end is at most every upper end), and is still found first, in order.
-  const std::array<Enclosure, 3> ce{enclose_rational(c.r), enclose_rational(c.g), enclose_rational(c.b)};
-  const std::array<Enclosure, 3> ee{enclose_rational(e[0]), enclose_rational(e[1]), enclose_rational(e[2])};
   const auto& vs = F.vertices;
-  std::vector<std::array<Enclosure, 2>> ve;  // the vertices' enclosures (when filtered)
-  std::vector<double> lower(vs.size(), -Enclosure::unbounded);
-  double least_upper = Enclosure::unbounded;
-  if (filtered) {
-    ve.resize(vs.size());
-    for (std::size_t i = 0; i < vs.size(); ++i) {
-      ve[i] = {enclose_rational(vs[i].x), enclose_rational(vs[i].y)};
-      const Enclosure k = closeness_enclosure(ee, ce, ve[i][0], ve[i][1]);
-      if (!k.finite()) continue;
-      lower[i] = k.lo();
-      least_upper = std::min(least_upper, k.hi());
-    }
-  }
-  std::vector<std::size_t> candidates;
-  for (std::size_t i = 0; i < vs.size(); ++i)
-    if (!(lower[i] > least_upper)) candidates.push_back(i);
-  // A segment has one edge, a polygon n, a point none; those the double filters leave.
-  const std::size_t n_edges =
-      F.kind == ConvexKind::polygon ? vs.size() : F.kind == ConvexKind::segment ? 1 : 0;
-  std::vector<std::size_t> edges;
-  for (std::size_t i = 0; i < n_edges; ++i) {
-    const std::size_t j = (i + 1) % vs.size();
-    if (filtered && (edge_cannot_be_worst(ee, ce, ve[i][0], ve[i][1], ve[j][0], ve[j][1], least_upper) ||
-                     no_stationary_point(ee, ce, ve[i][0], ve[i][1], ve[j][0], ve[j][1]) ||
-                     edge_skippable(ee, ce, ve[i][0], ve[i][1], ve[j][0] - ve[i][0], ve[j][1] - ve[i][1],
-                                    0, 1, least_upper, 8)))
-      continue;
-    edges.push_back(i);
-  }
-  if (certified && candidates.size() + edges.size() > 1)
-    tally.sine_bits = SineFilter(vs, m, c).refine(candidates, edges);
+  const Survivors survivors = filter_candidates(F, m, c, e, filtered, certified);
+  const std::vector<std::size_t>& candidates = survivors.vertices;
+  const std::vector<std::size_t>& edges = survivors.edges;
+  tally.sine_bits = survivors.sine_bits;
   tally.exact_vertices = candidates.size();
   tally.exact_edges = edges.size();
 
