@@ -46,13 +46,17 @@ def pooled(run, rule, by_surfaces=False):
             continue
         key = cell["surfaces"] if by_surfaces else 0
         e = stats["error_deg"]
-        s = acc.setdefault(key, [0.0, 0, 0, 0])
+        s = acc.setdefault(key, [0.0, 0, 0, 0, 0.0])
         if e["n"]:
             s[0] += e["n"] * e["mean"]
+            # the cells are independent: var(pooled mean) = sum n^2 se^2 / (sum n)^2
+            se = e["se"] if e["se"] is not None else 0.0
+            s[4] += (e["n"] * se) ** 2
         s[1] += e["n"]
         s[2] += stats["truth_in_feasible_set"]
         s[3] += cell["scenes"]
-    out = {k: (v[0] / v[1] if v[1] else float("nan"), v[1], v[2], v[3]) for k, v in acc.items()}
+    out = {k: (v[0] / v[1] if v[1] else float("nan"), v[1], v[2], v[3],
+               v[4] ** 0.5 / v[1] if v[1] else float("nan")) for k, v in acc.items()}
     return out if by_surfaces else out.get(0)
 
 
@@ -85,7 +89,8 @@ def main(argv):
     lines = []
     lines.append("Scenes per cell: %d; surface counts %d..%d; lights %s; seed %d. Mean map-space angular "
                  "error in degrees, pooled over every cell, over the scenes where the rule gave a map "
-                 "(scored / drawn in brackets when not all)." % (
+                 "± its standard error (cells independent; a cell of one scene counts 0); scored / drawn "
+                 "scenes in brackets when not all." % (
                      setup["scenes"], setup["min_surfaces"], setup["max_surfaces"], ", ".join(setup["lights"]),
                      setup["seed"]))
     lines.append("")
@@ -101,8 +106,8 @@ def main(argv):
             if i >= len(cols):
                 row += " |"
                 continue
-            m, n, _, total = pooled(cols[i][1], cols[i][2])
-            row += " " + fmt(m) + ("" if n == total else " (%d/%d)" % (n, total)) + " |"
+            m, n, _, total, se = pooled(cols[i][1], cols[i][2])
+            row += " " + fmt(m) + " ± " + fmt(se) + ("" if n == total else " (%d/%d)" % (n, total)) + " |"
         lines.append(row)
     lines.append("")
     lines.append("True diagonal map inside CRULE's F3 (share of drawn scenes):")
@@ -116,7 +121,7 @@ def main(argv):
             if not run:
                 row += " |"
                 continue
-            _, _, truth, total = pooled(run, "crule_max_volume")
+            _, _, truth, total, _ = pooled(run, "crule_max_volume")
             row += " %.0f%% |" % (100.0 * truth / total if total else float("nan"))
         lines.append(row)
     with open(os.path.join(directory, "seed-claim.md"), "w") as f:
@@ -154,6 +159,7 @@ def write_figure(directory, runs, present):
               "lc rgb '#e377c2' lw 2 pt 15 dt 2", "lc rgb '#7f7f7f' lw 2 pt 4 dt 2"]
     g = ["# the seed's claim (docs/reproduction.md §5b): mean error against the number of surfaces",
          "set datafile missing 'NaN'", "set xlabel 'number of surfaces'", "set ylabel 'mean error (deg)'",
+         "set xrange [0.5:%d.5]" % max(c["surfaces"] for c in (runs[present[0][0]]["include"] or runs[present[0][0]]["exclude"])["cells"]),
          "set yrange [0:*]", "set grid lc rgb '#dddddd'", "set key outside right top font ',8'"]
     g.append("do for [term = 1:2] {")
     g.append("  if (term == 1) { set terminal pngcairo size 1300,%d font ',9'; set output 'seed-claim.png' }"

@@ -231,8 +231,9 @@ BOOST_AUTO_TEST_CASE(perspective_image_by_definition) {
 }
 
 // On scenes drawn from a canonical gamut with black: every point of F3 with d3 > 0 projects into
-// the image, every image vertex is a vertex of F3 projected, and the image lies in the 2-D
-// feasible set F (d ⊙ p ∈ G_c3 puts d's perspective map in F), the cone mean too.
+// the image, every image vertex is a vertex of F3 projected, and the image is the 2-D feasible
+// set F (⊆: d ⊙ p ∈ G_c3 puts d's perspective map in F; ⊇: a small multiple of (m, 1) fits), so
+// the cone mean is the paper's 3-D mean of F.
 BOOST_AUTO_TEST_CASE(perspective_image_inside_the_2d_feasible_set) {
   Rng rng(1999);
   int polygons = 0;
@@ -266,6 +267,8 @@ BOOST_AUTO_TEST_CASE(perspective_image_inside_the_2d_feasible_set) {
     const ConvexSet2 F2 = feasible_set(canonical_gamut(perspective_chromaticities(canonical, NonPositiveBluePolicy::drop).points),
                                        perspective_chromaticities(image, NonPositiveBluePolicy::drop).points);
     for (const Point2& v : P->vertices) BOOST_TEST(contains(F2, v));
+    // With black in G_c3 the image is all of F (docs/math.md §1c): the same exact set.
+    BOOST_TEST((*P == F2));
     BOOST_TEST(contains(*P, Point2{R(d.x / d.z), R(d.y / d.z)}));  // the truth's perspective
     const std::optional<MapEstimate> mean = perspective_cone_mean(F3);
     BOOST_REQUIRE(mean.has_value());
