@@ -98,7 +98,10 @@ struct ExperimentConfig {
   double specular = 0;
   /// Intensity change of the whole scene: when > 0, every image colour is multiplied by one
   /// factor per scene drawn uniformly between `intensity` and 1 (below 1: darker, above:
-  /// brighter), after every per-surface draw. Chromaticities are unchanged; 3-D CRULE sees it.
+  /// brighter), after every per-surface draw, when the scene's colours are computed (with noise,
+  /// crule or specular; otherwise no rule could see it). Chromaticities are unchanged, and a
+  /// factor k scales CRULE's F3 by 1/k, so no rule's perspective map moves; the true map may
+  /// leave F3 (docs/reproduction.md §5b).
   double intensity = 0;
   /// Score scenes by the certified floating-point route (rule_errors.h) where it applies and
   /// certifies its angles (the default analytic 3-D mean, no constraint), else exactly. false:
