@@ -75,7 +75,9 @@ def columns(runs):
 
 
 def fmt(x):
-    return "–" if x != x else "%.2f" % x
+    if x != x:
+        return "–"
+    return "%.2f" % (0.0 if abs(x) < 0.005 else x)  # no "-0.00"
 
 
 def main(argv):
@@ -124,10 +126,53 @@ def main(argv):
             _, _, truth, total, _ = pooled(run, "crule_max_volume")
             row += " %.0f%% |" % (100.0 * truth / total if total else float("nan"))
         lines.append(row)
+    paired_rows = paired_table(directory, present)
+    if paired_rows:
+        lines.append("")
+        lines.extend(paired_rows)
     with open(os.path.join(directory, "seed-claim.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
     write_figure(directory, runs, present)
+
+
+def paired(directory, condition, black, rule, against="mean_3d"):
+    """Mean and standard error of the per-scene difference error(rule) - error(against), over the
+    scenes of the records DIR/<condition>-<black>.jsonl where both gave a map; None without them."""
+    path = os.path.join(directory, "%s-%s.jsonl" % (condition, black))
+    if not os.path.exists(path):
+        return None
+    d = []
+    with open(path) as f:
+        for line in f:
+            x = json.loads(line)
+            rules = x.get("rules")
+            if "scene" not in x or not rules or not rules.get(rule) or not rules.get(against):
+                continue
+            d.append(rules[rule]["error_deg"] - rules[against]["error_deg"])
+    if not d:
+        return None
+    mean = sum(d) / len(d)
+    se = (sum((v - mean) ** 2 for v in d) / (len(d) - 1) / len(d)) ** 0.5 if len(d) > 1 else float("nan")
+    return mean, se, len(d)
+
+
+def paired_table(directory, present):
+    """Rows of the paired-difference table (CRULE rule minus the 3-D mean, scene by scene)."""
+    rows = ["Paired per-scene difference, CRULE rule minus the perspective 3-D mean, in degrees "
+            "(negative: CRULE better), ± its standard error, over the scenes where both gave a map "
+            "(their number in brackets):", "",
+            "| rule | " + " | ".join(t for _, t in present) + " |", "|---|" + "---|" * len(present)]
+    any_records = False
+    for black, word in (("include", "with black"), ("exclude", "without black")):
+        for r in RULES_3D:
+            row = "| %s, %s |" % (TITLES[r], word)
+            for c, _ in present:
+                p = paired(directory, c, black, r)
+                any_records = any_records or p is not None
+                row += " |" if p is None else " %s ± %s (%d) |" % (fmt(p[0]), fmt(p[1]), p[2])
+            rows.append(row)
+    return rows if any_records else []
 
 
 def options(pair):
