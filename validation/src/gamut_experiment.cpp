@@ -187,8 +187,9 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
     std::vector<Colour> image_colours;
     for (int i = 0; i < n; ++i) {
       const std::size_t surface = pool[static_cast<std::size_t>(i)];
-      // Without noise the chromaticities are the light's, computed once (shading scales a
-      // colour, not its chromaticity); the colours themselves are kept only for 3-D CRULE.
+      // Without noise or highlights the chromaticities are the light's, computed once (shading
+      // and intensity scale a colour, not its chromaticity); the colours themselves are kept
+      // only for 3-D CRULE (and when they are computed anyway).
       if (config.noise <= 0 && !config.crule && config.specular <= 0) {
         if (sgn(light.surfaces[surface].b) > 0) image.push_back(&chromaticities[surface]);
         continue;
