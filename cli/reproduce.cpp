@@ -66,6 +66,22 @@ void add_output_options(CLI::App* cmd, ReproduceOptions& o) {
                   "intensity variation: each image colour scaled by a factor drawn from [S, 1] "
                   "(0: none); the 2-D rules do not see it, 3-D CRULE does")
       ->capture_default_str();
+  cmd->add_option("--crule-black", o.crule_black,
+                  "with --crule: black in CRULE's canonical gamut (include) or Forsyth's hull of the "
+                  "canonical colours alone (exclude)")
+      ->check(CLI::IsMember({"include", "exclude"}))
+      ->capture_default_str();
+  cmd->add_flag("--crule-extended", o.crule_extended,
+                "with --crule: also CRULE max-trace (max d1+d2+d3) and the 3-D cone mean of the "
+                "perspective image of F3");
+  cmd->add_option("--specular", o.specular,
+                  "specular highlights: each image colour gets s times the test light's colour "
+                  "added, s drawn from [0, S] per surface (0: none); every rule sees it")
+      ->capture_default_str();
+  cmd->add_option("--intensity", o.intensity,
+                  "intensity change of the whole scene: every image colour scaled by one factor "
+                  "drawn between K and 1 (K > 1: brighter; 0: none); the 2-D rules do not see it")
+      ->capture_default_str();
   cmd->add_option("--illuminants", o.illuminants_path,
                   "plausible lights (r,g,b as the sensors see them): intersect every feasible set "
                   "with their maps (Finlayson 1996's illumination constraint)");
@@ -119,6 +135,25 @@ ExperimentConfig config_from(const ReproduceOptions& o) {
     c.shading = to_double_nearest(shading);
   } catch (const std::invalid_argument& e) {
     throw InputError("--shading", 0, e.what());
+  }
+  c.crule_black = o.crule_black == "exclude" ? CanonicalBlack::exclude : CanonicalBlack::include;
+  c.crule_extended = o.crule_extended;
+  if ((c.crule_extended || c.crule_black == CanonicalBlack::exclude) && !c.crule)
+    throw InputError(c.crule_extended ? "--crule-extended" : "--crule-black", 0, "needs --crule");
+  try {
+    const Rational specular = parse_rational(o.specular);
+    if (sgn(specular) < 0 || specular > 100) throw std::invalid_argument("must be from 0 to 100");
+    c.specular = to_double_nearest(specular);
+  } catch (const std::invalid_argument& e) {
+    throw InputError("--specular", 0, e.what());
+  }
+  try {
+    const Rational intensity = parse_rational(o.intensity);
+    if (sgn(intensity) < 0 || intensity > 100) throw std::invalid_argument("must be from 0 to 100");
+    c.intensity = to_double_nearest(intensity);
+    if (sgn(intensity) > 0 && c.intensity <= 0) throw std::invalid_argument("too small to be a double");
+  } catch (const std::invalid_argument& e) {
+    throw InputError("--intensity", 0, e.what());
   }
   if (!o.shard.empty()) {
     const std::string& t = o.shard;

@@ -31,6 +31,10 @@ struct ReproduceOptions {
   std::string illuminants_path;  // plausible lights for the illumination constraint
   bool crule = false;            // also 3-D CRULE
   std::string shading = "0";     // intensity variation: image colours scaled by U[shading, 1]
+  std::string crule_black = "include";  // black in CRULE's canonical gamut: include | exclude
+  bool crule_extended = false;   // also CRULE max-trace and the cone mean of F3's perspective image
+  std::string specular = "0";    // highlights: + s·(light colour), s from U[0, specular] per surface
+  std::string intensity = "0";   // whole-scene factor from U between intensity and 1 (0: none)
   // gehler-shi
   std::string gehler_scenes = "5";  // its own default --scenes: 568 images, not 4 lights
   std::string protocol = "leave-one-out";

@@ -242,6 +242,28 @@ def main():
             json.load(open(p("w.json")))  # one JSON document
         r.check("3 shards merged = the whole run, byte for byte", shards_merge_to_the_whole)
 
+        def seed_claim_options_merge():
+            # The seed-claim conditions (docs/reproduction.md §5b) round-trip through the setup line:
+            # 2 shards merged give the whole run's bytes, and the members are there.
+            base = ["synthetic", "--scenes", "1", "--surfaces", "2", "--lights", "D75", "--crule",
+                    "--crule-extended", "--crule-black", "exclude", "--specular", "0.3", "--intensity", "2"]
+            rc, whole_out, err = r.run(*base, "--scenes-out", p("cw.jsonl"), "--csv", p("cw.csv"))
+            expect(rc == 0, err)
+            for k in (1, 2):
+                rc, out, err = r.run(*base, "--shard", f"{k}/2", "--scenes-out", p(f"cs{k}.jsonl"))
+                expect(rc == 0, err)
+            rc, merged_out, err = merge.run(p("cs2.jsonl"), p("cs1.jsonl"), "--scenes-out", p("cm.jsonl"),
+                                            "--csv", p("cm.csv"))
+            expect(rc == 0, err)
+            expect(merged_out == whole_out, "the table on stdout")
+            for a, b in (("cw.jsonl", "cm.jsonl"), ("cw.csv", "cm.csv")):
+                expect(open(p(a), "rb").read() == open(p(b), "rb").read(), f"{b} differs from {a}")
+            setup = lines(p("cw.jsonl"))[0]
+            expect(setup["crule_black"] == "exclude" and setup["crule_extended"] is True and
+                   setup["specular"] == 0.3 and setup["intensity"] == 2, f"the setup line: {setup}")
+            expect(setup["rules"][-2:] == ["crule_max_trace", "crule_cone_mean"], "the extended rules")
+        r.check("seed-claim options survive shards and merge", seed_claim_options_merge)
+
         def threads_do_not_matter():
             for t in ("1", "2"):
                 rc, _, err = r.run("synthetic", "--scenes", "3", "--surfaces", "5", "--threads", t,

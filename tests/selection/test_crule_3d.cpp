@@ -1,10 +1,18 @@
 // CRULE in 3-D: max-volume (exact and certified quadratic-irrational answers) and the centroid,
-// against hand cases, dense searches and the worst-case property on noise-free scenes.
+// against hand cases, dense searches and the worst-case property on noise-free scenes; max-trace
+// and the cone mean of F3's perspective image (issue 16).
 #include "../test_support.h"
 
+#include <gmcc/geometry/canonical_gamut.h>
+#include <gmcc/geometry/chromaticity.h>
+#include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
+#include <gmcc/geometry/perspective_image.h>
 #include <gmcc/selection/crule_3d.h>
+#include <gmcc/selection/max_trace.h>
 #include <gmcc/selection/max_volume.h>
+#include <gmcc/selection/mean_3d.h>
+#include <gmcc/selection/perspective_cone_mean.h>
 
 #include <boost/test/unit_test.hpp>
 
@@ -144,6 +152,132 @@ BOOST_AUTO_TEST_CASE(noise_free_scenes_truth_within_the_worst_case) {
     }
     BOOST_TEST(contains(r.feasible, *r.centroid->estimate.exact));
   }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+// The selections of issue 16 item 3 on F3: max-trace (a vertex; against brute force over points
+// of F3) and the cone mean of F3's perspective image (the image against its definition and
+// against the 2-D feasible set, which contains it).
+BOOST_AUTO_TEST_SUITE(crule_3d_more_selections)
+
+BOOST_AUTO_TEST_CASE(max_trace_hand_cases_and_ties) {
+  std::vector<Colour> cube;
+  for (int i = 0; i < 8; ++i) cube.push_back({R(1 + (i & 1)), R(1 + (i >> 1 & 1)), R(1 + (i >> 2 & 1))});
+  const Crule3d c = crule_3d(cube, {{1, 1, 1}}, CanonicalBlack::exclude);
+  const MapEstimate3 t = max_trace(c.feasible);
+  BOOST_TEST((*t.exact == Point3{2, 2, 2}));
+  BOOST_TEST(t.rule == "max_trace");
+  BOOST_TEST(t.method == "exact");
+  // The simplex d >= 0, d1 + d2 + d3 <= 3: the whole facet ties at 3; the lexicographically
+  // smallest vertex, (0, 0, 3), is returned.
+  const Crule3d s = crule_3d({{3, 0, 0}, {0, 3, 0}, {0, 0, 3}}, {{1, 1, 1}});
+  BOOST_TEST((*max_trace(s.feasible).exact == Point3{0, 0, 3}));
+  BOOST_CHECK_THROW(max_trace(ConvexSet3{}), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(max_trace_beats_every_point_of_f3) {
+  Rng rng(16);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<Colour> canonical, image;
+    for (int i = 0; i < 8; ++i)
+      canonical.push_back({test::random_rational(rng, 1, 20, 4), test::random_rational(rng, 1, 20, 4),
+                           test::random_rational(rng, 1, 20, 4)});
+    for (int i = 0; i < 1 + trial % 4; ++i)
+      image.push_back({test::random_rational(rng, 1, 20, 4), test::random_rational(rng, 1, 20, 4),
+                       test::random_rational(rng, 1, 20, 4)});
+    const Crule3d r = crule_3d(canonical, image, trial % 2 ? CanonicalBlack::include : CanonicalBlack::exclude);
+    if (r.feasible.kind == ConvexKind3::empty) continue;
+    const MapEstimate3 t = max_trace(r.feasible);
+    const Point3& m = *t.exact;
+    BOOST_TEST(contains(r.feasible, m));
+    const R best = m.x + m.y + m.z;
+    // Brute force: every vertex, and random convex combinations of them (points of F3).
+    for (const Point3& v : r.feasible.vertices) {
+      BOOST_TEST(R(v.x + v.y + v.z) <= best);
+      if (R(v.x + v.y + v.z) == best) BOOST_TEST(!(v < m));  // ties: the smallest is returned
+    }
+    for (int k = 0; k < 20; ++k) {
+      const Point3& a = r.feasible.vertices[rng() % r.feasible.vertices.size()];
+      const Point3& b = r.feasible.vertices[rng() % r.feasible.vertices.size()];
+      const Point3 p = mix(a, b, R(static_cast<long>(rng() % 17), 16));
+      BOOST_TEST(R(p.x + p.y + p.z) <= best);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(perspective_image_by_definition) {
+  // The cube [1, 2]³ seen in perspective: the hull of (a/c, b/c) over its corners.
+  std::vector<Colour> cube;
+  for (int i = 0; i < 8; ++i) cube.push_back({R(1 + (i & 1)), R(1 + (i >> 1 & 1)), R(1 + (i >> 2 & 1))});
+  const ConvexSet3 F = crule_3d(cube, {{1, 1, 1}}, CanonicalBlack::exclude).feasible;
+  const std::optional<ConvexSet2> P = perspective_image(F);
+  BOOST_REQUIRE(P.has_value());
+  BOOST_TEST((P->kind == ConvexKind::polygon));
+  // The six extreme points: (1/2, 1/2), (1, 1/2), (2, 1), (2, 2), (1, 2), (1/2, 1).
+  BOOST_TEST(P->vertices.size() == 6u);
+  BOOST_TEST(contains(*P, Point2{R(1, 2), R(1, 2)}));
+  BOOST_TEST(contains(*P, Point2{2, 2}));
+  BOOST_TEST(!contains(*P, Point2{R(2), R(1, 2)}));
+  // With black the origin is a vertex with d3 = 0 and is left out; a non-zero one makes the
+  // image unbounded: the simplex {d >= 0, d1 + d2 + d3 <= 3} has (3, 0, 0).
+  BOOST_TEST(!perspective_image(crule_3d({{3, 0, 0}, {0, 3, 0}, {0, 0, 3}}, {{1, 1, 1}}).feasible).has_value());
+  // {0} alone: no point with d3 > 0, the image is empty.
+  const ConvexSet3 origin = canonical_convex_set_3(ConvexKind3::point, {Point3{0, 0, 0}}, {});
+  BOOST_TEST((perspective_image(origin)->kind == ConvexKind::empty));
+  BOOST_TEST(!perspective_cone_mean(origin).has_value());
+}
+
+// On scenes drawn from a canonical gamut with black: every point of F3 with d3 > 0 projects into
+// the image, every image vertex is a vertex of F3 projected, and the image is the 2-D feasible
+// set F (⊆: d ⊙ p ∈ G_c3 puts d's perspective map in F; ⊇: a small multiple of (m, 1) fits), so
+// the cone mean is the paper's 3-D mean of F.
+BOOST_AUTO_TEST_CASE(perspective_image_inside_the_2d_feasible_set) {
+  Rng rng(1999);
+  int polygons = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<Colour> canonical;
+    for (int i = 0; i < 10; ++i)
+      canonical.push_back({test::random_rational(rng, 1, 20, 4), test::random_rational(rng, 1, 20, 4),
+                           test::random_rational(rng, 1, 20, 4)});
+    const Point3 d{test::random_rational(rng, 1, 8, 3), test::random_rational(rng, 1, 8, 3),
+                   test::random_rational(rng, 1, 8, 3)};
+    std::vector<Colour> image;
+    for (int i = 0; i < 1 + trial % 4; ++i) {
+      const Colour& p = canonical[static_cast<std::size_t>(i * 3 + trial) % canonical.size()];
+      image.push_back({R(p.r / d.x), R(p.g / d.y), R(p.b / d.z)});
+    }
+    const ConvexSet3 F3 = crule_3d(canonical, image).feasible;
+    const std::optional<ConvexSet2> P = perspective_image(F3);
+    BOOST_REQUIRE(P.has_value());
+    polygons += P->kind == ConvexKind::polygon;
+    for (int k = 0; k < 30; ++k) {
+      const Point3& a = F3.vertices[rng() % F3.vertices.size()];
+      const Point3& b = F3.vertices[rng() % F3.vertices.size()];
+      const Point3 q = mix(a, b, R(static_cast<long>(1 + rng() % 15), 16));
+      if (sgn(q.z) > 0) BOOST_TEST(contains(*P, Point2{R(q.x / q.z), R(q.y / q.z)}));
+    }
+    for (const Point2& v : P->vertices) {
+      bool found = false;
+      for (const Point3& w : F3.vertices) found = found || (sgn(w.z) > 0 && R(w.x / w.z) == v.x && R(w.y / w.z) == v.y);
+      BOOST_TEST(found);
+    }
+    const ConvexSet2 F2 = feasible_set(canonical_gamut(perspective_chromaticities(canonical, NonPositiveBluePolicy::drop).points),
+                                       perspective_chromaticities(image, NonPositiveBluePolicy::drop).points);
+    for (const Point2& v : P->vertices) BOOST_TEST(contains(F2, v));
+    // With black in G_c3 the image is all of F (docs/math.md §1c): the same exact set.
+    BOOST_TEST((*P == F2));
+    BOOST_TEST(contains(*P, Point2{R(d.x / d.z), R(d.y / d.z)}));  // the truth's perspective
+    const std::optional<MapEstimate> mean = perspective_cone_mean(F3);
+    BOOST_REQUIRE(mean.has_value());
+    BOOST_TEST(mean->rule == "cone_mean");
+    BOOST_TEST(mean->valid);
+    const MapEstimate direct = mean_3d(*P);
+    BOOST_TEST(mean->map[0] == direct.map[0]);
+    BOOST_TEST(mean->map[1] == direct.map[1]);
+    if (P->kind == ConvexKind::polygon) BOOST_TEST(contains(*P, measured_map(*mean)));
+  }
+  BOOST_TEST(polygons > 5);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

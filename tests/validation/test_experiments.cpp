@@ -180,6 +180,71 @@ BOOST_AUTO_TEST_CASE(crule_contains_the_true_diagonal_map_without_shading) {
   BOOST_TEST(experiment_csv(r).find(",crule_centroid,") != std::string::npos);
 }
 
+// The seed-claim conditions (issue 16 item 4). A darker scene keeps the true map in F3 when
+// black is canonical (darker versions of canonical colours are canonical); a whole-scene factor
+// never moves the 2-D rules; highlights move the chromaticities, hence the 2-D rules; the
+// extended selections are recorded and written out; the run is the same on any thread count.
+BOOST_AUTO_TEST_CASE(seed_claim_conditions) {
+  ExperimentSetup one = paper_setup();
+  one.lights.resize(1);
+  ExperimentConfig c;
+  c.scenes = 2;
+  c.max_surfaces = 3;
+  c.crule = true;
+  c.crule_extended = true;
+  c.keep_scenes = true;
+  const ExperimentResult plain = run_gamut_experiment(one, c);
+  BOOST_REQUIRE(plain.rules.size() == 7u);
+  BOOST_TEST(plain.rules[5] == "crule_max_trace");
+  BOOST_TEST(plain.rules[6] == "crule_cone_mean");
+  ExperimentConfig dark = c;
+  dark.intensity = 0.25;
+  const ExperimentResult darker = run_gamut_experiment(one, dark);
+  for (const ExperimentCell& cell : darker.cells)
+    for (std::size_t k = 3; k < 7; ++k) BOOST_TEST(cell.rules[k].truth_in_feasible_set == cell.scenes);
+  ExperimentConfig bright = c;
+  bright.intensity = 3;
+  bright.threads = 1;
+  const ExperimentResult brighter = run_gamut_experiment(one, bright);
+  bright.threads = 3;
+  BOOST_TEST(experiment_scenes_jsonl(brighter, "") == experiment_scenes_jsonl(run_gamut_experiment(one, bright), ""));
+  BOOST_TEST(experiment_setup_json(brighter).find("\"intensity\":3") != std::string::npos);
+  // A factor k on every colour scales F3 by 1/k (d ⊙ kp ∈ G iff kd ⊙ p ∈ G), and every CRULE
+  // selection with it: their perspective maps do not move (docs/reproduction.md §5b), while the
+  // true map leaves a brighter scene's F3. Max-volume's irrational maps are measured from their
+  // doubles, so its errors agree to rounding; the other rules' exactly.
+  std::uint64_t truth_bright = 0, scenes = 0;
+  for (std::size_t i = 0; i < plain.scenes.size(); ++i) {
+    for (std::size_t k = 0; k < 7; ++k) {
+      const double tolerance = k == 3 ? 1e-9 : 0;
+      BOOST_TEST(std::abs(plain.scenes[i].rules[k].error_deg - brighter.scenes[i].rules[k].error_deg) <= tolerance);
+      BOOST_TEST(std::abs(plain.scenes[i].rules[k].error_deg - darker.scenes[i].rules[k].error_deg) <= tolerance);
+    }
+    truth_bright += brighter.scenes[i].rules[3].truth_in_feasible_set;
+    ++scenes;
+  }
+  BOOST_TEST(truth_bright < scenes);  // a brighter scene does not fit G_c3 under the true map
+  ExperimentConfig shiny = c;
+  shiny.specular = 0.5;
+  const ExperimentResult specular = run_gamut_experiment(one, shiny);
+  int moved = 0;
+  for (std::size_t i = 0; i < plain.scenes.size(); ++i)
+    moved += specular.scenes[i].rules.empty() || plain.scenes[i].rules[2].error_deg != specular.scenes[i].rules[2].error_deg;
+  BOOST_TEST(moved > 0);
+  for (std::size_t i = 0; i < plain.scenes.size(); ++i)
+    BOOST_TEST(plain.scenes[i].drawn == specular.scenes[i].drawn);  // the surfaces are drawn first
+  ExperimentConfig no_black = c;
+  no_black.crule_black = CanonicalBlack::exclude;
+  const ExperimentResult forsyth = run_gamut_experiment(one, no_black);
+  BOOST_TEST(experiment_setup_json(forsyth).find("\"crule_black\":\"exclude\"") != std::string::npos);
+  BOOST_TEST(experiment_setup_json(plain).find("crule_black") == std::string::npos);
+  for (const ExperimentCell& cell : forsyth.cells)  // noise-free: the truth fits Forsyth's gamut too
+    for (std::size_t k = 3; k < 7; ++k) BOOST_TEST(cell.rules[k].truth_in_feasible_set == cell.scenes);
+  ExperimentConfig bad = c;
+  bad.crule = false;
+  BOOST_CHECK_THROW(run_gamut_experiment(one, bad), std::invalid_argument);
+}
+
 // The experiment's fast seed sequence gives std::seed_seq's words, and so the same scenes.
 
 // A seed sequence whose every word is 0 (the standard engines' special case).

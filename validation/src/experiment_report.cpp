@@ -138,6 +138,11 @@ std::string experiment_setup_json(const ExperimentResult& r) {
          ",\"factor\":" + json_string(to_string(c.expansion.factor)) + "},\"noise\":" + json_number(c.noise) +
          ",\"shading\":" + json_number(c.shading) + ",\"crule\":" + (c.crule ? "true" : "false") +
          ",\"mean3d\":" + json_string(to_string(c.mean3d.method)) +
+         // The seed-claim conditions only when set, so that older runs' records keep their bytes.
+         (c.crule_black == CanonicalBlack::exclude ? ",\"crule_black\":\"exclude\"" : "") +
+         (c.crule_extended ? ",\"crule_extended\":true" : "") +
+         (c.specular > 0 ? ",\"specular\":" + json_number(c.specular) : std::string()) +
+         (c.intensity > 0 ? ",\"intensity\":" + json_number(c.intensity) : std::string()) +
          ",\"canonical_gamut\":" + json_set(r.canonical_gamut) +
          ",\"constraint\":" + (c.constraint ? json_set(*c.constraint) : std::string("null")) +
          ",\"surface_indices\":" + json_string(r.surface_indices);
@@ -254,6 +259,9 @@ std::string experiment_table(const ExperimentResult& r) {
       << to_string(r.config.expansion.policy);
   if (r.config.expansion.policy != ExpansionPolicy::none) out << " by " << to_string(r.config.expansion.factor);
   if (r.config.noise > 0) out << ", noise " << num(r.config.noise, "%g");
+  if (r.config.specular > 0) out << ", specular " << num(r.config.specular, "%g");
+  if (r.config.intensity > 0) out << ", intensity " << num(r.config.intensity, "%g");
+  if (r.config.crule && r.config.crule_black == CanonicalBlack::exclude) out << ", CRULE without black";
   if (r.config.constraint)
     out << ", illumination constraint (" << to_string(r.config.constraint->kind) << " with "
         << r.config.constraint->vertices.size() << " vertices)";
@@ -266,7 +274,8 @@ std::string experiment_table(const ExperimentResult& r) {
       out << "\n" << light << "\n"
           << "  n   mean error:  max-area  2-D mean  3-D mean   worst case:  max-area  2-D mean  "
              "3-D mean   3-D gain  empty"
-          << (c.rules.size() > 3 ? "   CRULE mean error: max-volume  centroid" : "") << "\n";
+          << (c.rules.size() > 3 ? "   CRULE mean error: max-volume  centroid" : "")
+          << (c.rules.size() > 5 ? " max-trace cone-mean" : "") << "\n";
     }
     const auto& s = c.rules;
     const double best_other = std::min(s[0].error.mean, s[1].error.mean);
@@ -280,6 +289,10 @@ std::string experiment_table(const ExperimentResult& r) {
     out << line;
     if (s.size() > 3) {
       std::snprintf(line, sizeof line, " %30.3f %9.3f", s[3].error.mean, s[4].error.mean);
+      out << line;
+    }
+    if (s.size() > 6) {
+      std::snprintf(line, sizeof line, " %9.3f %9.3f", s[5].error.mean, s[6].error.mean);
       out << line;
     }
     out << "\n";
@@ -350,6 +363,9 @@ std::string experiment_plot_script(const ExperimentResult& r, const std::string&
     << "set style line 3 lc rgb '#2ca02c' lw 2 pt 9\n"
     << "set style line 4 lc rgb '#9467bd' lw 2 pt 11 dt 2\n"
     << "set style line 5 lc rgb '#8c564b' lw 2 pt 13 dt 2\n"
+    << (r.rules.size() > 5 ? "set style line 6 lc rgb '#e377c2' lw 2 pt 15 dt 3\n"
+                             "set style line 7 lc rgb '#7f7f7f' lw 2 pt 4 dt 3\n"
+                           : "")
     << "do for [term = 1:2] {\n"
     << "  if (term == 1) { set terminal pngcairo size " << 500 * columns << "," << 260 * rows
     << " font ',9'; set output png_file }\n"
@@ -357,7 +373,8 @@ std::string experiment_plot_script(const ExperimentResult& r, const std::string&
     << " font 'sans,9'; set output svg_file }\n"
     << "  set multiplot layout " << rows << "," << columns << "\n";
   const std::size_t R = r.rules.size();
-  const char* titles[] = {"max-area", "2-D mean", "3-D mean", "CRULE max-volume", "CRULE centroid"};
+  const char* titles[] = {"max-area",         "2-D mean",       "3-D mean",       "CRULE max-volume",
+                          "CRULE centroid",   "CRULE max-trace", "CRULE cone mean"};
   for (std::size_t i = 0; i < rows; ++i)
     for (int panel = 0; panel < 2; ++panel) {  // mean error, then mean worst case
       g << "  set ylabel '" << lights[i] << (panel ? ": mean worst case (deg)'\n" : ": mean error (deg)'\n")

@@ -5,6 +5,8 @@
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/crule_3d.h>
+#include <gmcc/selection/max_trace.h>
+#include <gmcc/selection/perspective_cone_mean.h>
 #include <gmcc/selection/score_rules.h>
 
 #include <gmcc/numerics/constants.h>
@@ -110,20 +112,32 @@ std::vector<RuleRecord> baseline_records(const ExperimentSetup& setup, const Tes
           score_estimate(max, light.true_map, setup.canonical_light)};
 }
 
-// The same scene in 3-D (Forsyth's CRULE): its two rules' maps scored by their perspective
-// (d1/d3, d2/d3) into rec.rules[3] and [4].
-void score_crule(const ExperimentSetup& setup, const TestLight& light, const std::vector<Colour>& image_colours,
-                 SceneRecord& rec) {
-  const Crule3d c3 = crule_3d(setup.canonical_surfaces, image_colours);
+// The same scene in 3-D (Forsyth's CRULE, black in G_c3 or not as configured): its rules' maps
+// scored by their perspective (d1/d3, d2/d3) into rec.rules[3], [4] (and with crule_extended
+// [5] max-trace, [6] the cone mean of F3's perspective image), each worst case over F3.
+void score_crule(const ExperimentSetup& setup, const ExperimentConfig& config, const TestLight& light,
+                 const std::vector<Colour>& image_colours, SceneRecord& rec) {
+  const Crule3d c3 = crule_3d(setup.canonical_surfaces, image_colours, config.crule_black);
   const bool truth3_inside = contains(c3.feasible, light.true_diagonal_map);
-  const std::array<const std::optional<Selection3>*, 2> rules3{&c3.max_volume, &c3.centroid};
-  for (std::size_t r = 0; r < 2; ++r) {
-    if (!*rules3[r] || !(*rules3[r])->worst_case_deg) continue;
-    const Point3 d = measured_map((*rules3[r])->estimate);
-    if (sgn(d.z) <= 0) continue;  // the zero map has no perspective
+  // The 3-D map d of a selection, its worst case over F3 given: scored when d3 > 0.
+  auto score = [&](std::size_t slot, const Point3& d, double worst_case_deg) {
+    if (sgn(d.z) <= 0) return;  // the zero map (or one in the plane d3 = 0) has no perspective
     RuleErrors x = map_errors({Rational(d.x / d.z), Rational(d.y / d.z)}, light.true_map, setup.canonical_light);
-    x.worst_case_deg = *(*rules3[r])->worst_case_deg;
-    rec.rules[3 + r] = record(x, truth3_inside);
+    x.worst_case_deg = worst_case_deg;
+    rec.rules[slot] = record(x, truth3_inside);
+  };
+  const std::array<const std::optional<Selection3>*, 2> rules3{&c3.max_volume, &c3.centroid};
+  for (std::size_t r = 0; r < 2; ++r)
+    if (*rules3[r] && (*rules3[r])->worst_case_deg)
+      score(3 + r, measured_map((*rules3[r])->estimate), *(*rules3[r])->worst_case_deg);
+  if (!config.crule_extended || c3.feasible.kind == ConvexKind3::empty) return;
+  const Point3 trace = measured_map(max_trace(c3.feasible));
+  if (sgn(trace.z) > 0) score(5, trace, worst_case_map_deg_3d(c3.feasible, trace));
+  const std::optional<MapEstimate> cone = perspective_cone_mean(c3.feasible, config.mean3d);
+  if (cone && cone->valid) {
+    const Point2 m = measured_map(*cone);
+    const Point3 lift{m.x, m.y, Rational(1)};
+    score(6, lift, worst_case_map_deg_3d(c3.feasible, lift));
   }
 }
 
@@ -133,7 +147,7 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
                                   std::size_t light_index, int n, std::uint64_t s_begin, std::uint64_t s_end,
                                   std::atomic<std::uint64_t>& done) {
   const TestLight& light = setup.lights[light_index];
-  const std::size_t R = config.crule ? 5 : 3;
+  const std::size_t R = 3 + experiment_rules_3d_count(config);
   std::vector<SceneRecord> records;
   if (static_cast<std::size_t>(n) > light.surfaces.size()) {  // setup.skip_short_lights: no scenes
     done += s_end - s_begin;
@@ -173,9 +187,10 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
     std::vector<Colour> image_colours;
     for (int i = 0; i < n; ++i) {
       const std::size_t surface = pool[static_cast<std::size_t>(i)];
-      // Without noise the chromaticities are the light's, computed once (shading scales a
-      // colour, not its chromaticity); the colours themselves are kept only for 3-D CRULE.
-      if (config.noise <= 0 && !config.crule) {
+      // Without noise or highlights the chromaticities are the light's, computed once (shading
+      // and intensity scale a colour, not its chromaticity); the colours themselves are kept
+      // only for 3-D CRULE (and when they are computed anyway).
+      if (config.noise <= 0 && !config.crule && config.specular <= 0) {
         if (sgn(light.surfaces[surface].b) > 0) image.push_back(&chromaticities[surface]);
         continue;
       }
@@ -187,8 +202,20 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
         const Rational scale = rational_from_double(config.shading + (1 - config.shading) * uniform01(g));
         for (Rational* x : {&c.r, &c.g, &c.b}) *x *= scale;
       }
+      if (config.specular > 0) {  // + s·e, e = c ⊘ d the test light's colour
+        const Rational s_k = rational_from_double(config.specular * uniform01(g));
+        const Colour& cl = setup.canonical_light;
+        const Point3& d = light.true_diagonal_map;
+        c.r += s_k * cl.r / d.x, c.g += s_k * cl.g / d.y, c.b += s_k * cl.b / d.z;
+      }
       if (sgn(c.b) > 0) own.push_back(perspective_chromaticity(c)), image.push_back(&own.back());
       image_colours.push_back(std::move(c));
+    }
+    if (config.intensity > 0 && !image_colours.empty()) {  // one factor for the scene, drawn last
+      const double lo = std::min(config.intensity, 1.0), hi = std::max(config.intensity, 1.0);
+      const Rational k = rational_from_double(lo + (hi - lo) * uniform01(g));
+      for (Colour& c : image_colours)
+        for (Rational* x : {&c.r, &c.g, &c.b}) *x *= k;
     }
     if (setup.baselines) rec.baselines = baseline_records(setup, light, pool, n, image_colours);
     if (image.empty()) continue;
@@ -203,7 +230,7 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
     rec.area = scored.area;
     for (std::size_t r = 0; r < 3; ++r)
       if (scored.rules[r]) rec.rules[r] = record(*scored.rules[r], truth_inside);
-    if (config.crule) score_crule(setup, light, image_colours, rec);
+    if (config.crule) score_crule(setup, config, light, image_colours, rec);
   }
   return records;
 }
@@ -287,6 +314,11 @@ void check_experiment(const ExperimentSetup& setup, const ExperimentConfig& conf
   }
   if (!setup.canonical_chromaticity_sets.empty() && config.crule)
     throw std::invalid_argument("3-D CRULE needs one set of canonical surfaces, not a canonical set per light");
+  if (!(config.specular >= 0) || !(config.intensity >= 0) || !std::isfinite(config.specular) ||
+      !std::isfinite(config.intensity))
+    throw std::invalid_argument("specular and intensity must be finite and >= 0");
+  if (config.crule_extended && !config.crule)
+    throw std::invalid_argument("the extended CRULE selections need CRULE");
   if (config.shard_count < 1 || config.shard_index < 1 || config.shard_index > config.shard_count)
     throw std::invalid_argument("a shard K/N needs 1 <= K <= N");
 }
@@ -300,7 +332,8 @@ ExperimentResult result_header(const ExperimentSetup& setup, const ExperimentCon
   result.config = config;
   result.config.progress = nullptr;
   result.rules.assign(experiment_rules.begin(), experiment_rules.end());
-  if (config.crule) result.rules.insert(result.rules.end(), experiment_rules_3d.begin(), experiment_rules_3d.end());
+  result.rules.insert(result.rules.end(), experiment_rules_3d.begin(),
+                      experiment_rules_3d.begin() + static_cast<std::ptrdiff_t>(experiment_rules_3d_count(config)));
   result.surface_indices = setup.surface_indices;
   if (setup.baselines) result.baselines.assign(experiment_baselines.begin(), experiment_baselines.end());
   if (setup.canonical_chromaticity_sets.empty()) {

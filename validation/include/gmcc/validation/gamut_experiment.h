@@ -8,6 +8,7 @@
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/convex_set.h>
 #include <gmcc/geometry/convex_set_3.h>
+#include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/selection/mean_3d.h>
 #include <gmcc/validation/error_statistics.h>
 
@@ -83,6 +84,25 @@ struct ExperimentConfig {
   /// factor drawn uniformly from [shading, 1]. Chromaticities, hence the 2-D rules, are unchanged;
   /// 3-D CRULE sees it (Barnard et al. 2002).
   double shading = 0;
+  /// With crule: whether black is in CRULE's canonical gamut G_c3 (docs/math.md §1b). The
+  /// default `include` is the record's historical setting; `exclude` is Forsyth's own gamut.
+  CanonicalBlack crule_black = CanonicalBlack::include;
+  /// With crule: also the selections `crule_max_trace` (max_trace.h) and `crule_cone_mean`
+  /// (perspective_cone_mean.h), after max-volume and the centroid (docs/math.md §1c).
+  bool crule_extended = false;
+  /// Specular highlights (the dichromatic model, a neutral interface reflection): when > 0, each
+  /// image surface gets s·e added, e = c ⊘ d the test light's colour (the white surface under it
+  /// where the diagonal model holds; c the canonical light, d the true diagonal map) and s drawn
+  /// per surface uniformly from [0, specular], after shading (docs/reproduction.md "Scene
+  /// generator"). Changes chromaticities: the 2-D rules see it too.
+  double specular = 0;
+  /// Intensity change of the whole scene: when > 0, every image colour is multiplied by one
+  /// factor per scene drawn uniformly between `intensity` and 1 (below 1: darker, above:
+  /// brighter), after every per-surface draw, when the scene's colours are computed (with noise,
+  /// crule or specular; otherwise no rule could see it). Chromaticities are unchanged, and a
+  /// factor k scales CRULE's F3 by 1/k, so no rule's perspective map moves; the true map may
+  /// leave F3 (docs/reproduction.md §5b).
+  double intensity = 0;
   /// Score scenes by the certified floating-point route (rule_errors.h) where it applies and
   /// certifies its angles (the default analytic 3-D mean, no constraint), else exactly. false:
   /// the exact route for every scene (for cross-checks; results agree within
@@ -104,8 +124,15 @@ struct ExperimentConfig {
 
 /// The 2-D rules in report order, then (with ExperimentConfig::crule) the 3-D ones.
 inline const std::array<const char*, 3> experiment_rules{"max_area", "mean_2d", "mean_3d"};
-/// CRULE's 3-D rules (crule_3d.h), after experiment_rules when ExperimentConfig::crule is set.
-inline const std::array<const char*, 2> experiment_rules_3d{"crule_max_volume", "crule_centroid"};
+/// CRULE's 3-D rules, after experiment_rules when ExperimentConfig::crule is set: the first two
+/// (crule_3d.h), and all four with ExperimentConfig::crule_extended (max_trace.h,
+/// perspective_cone_mean.h).
+inline const std::array<const char*, 4> experiment_rules_3d{"crule_max_volume", "crule_centroid",
+                                                            "crule_max_trace", "crule_cone_mean"};
+/// How many of experiment_rules_3d a run with `config` scores (0 without CRULE).
+inline std::size_t experiment_rules_3d_count(const ExperimentConfig& config) {
+  return config.crule ? (config.crule_extended ? 4 : 2) : 0;
+}
 /// The reference baselines (ExperimentSetup::baselines), in report order.
 inline const std::array<const char*, 2> experiment_baselines{"grey_world", "max_rgb"};
 
@@ -171,7 +198,7 @@ struct ExperimentResult {
   std::vector<std::string> lights;    ///< the test lights' names, in setup order
   ExperimentConfig config;  ///< the configuration it ran with (seed, counts, shard, …)
   ConvexSet2 canonical_gamut;  ///< G_c, exactly (after any expansion)
-  std::vector<std::string> rules;     ///< experiment_rules, then experiment_rules_3d with crule
+  std::vector<std::string> rules;     ///< experiment_rules, then experiment_rules_3d_count(config) of experiment_rules_3d
   std::vector<std::string> baselines; ///< experiment_baselines when the setup asks for them
   std::string surface_indices = "0-based";  ///< ExperimentSetup::surface_indices
   /// With canonical_chromaticity_sets: every set's gamut (canonical_gamut is then the first).
