@@ -1,0 +1,43 @@
+#pragma once
+// A convex polytope cut from a box by closed half-spaces with integer coefficients, every
+// decision exact and most of them settled by a double filter with a proven error bound
+// (docs/derivations.md §4.6): the full-dimensional route of Forsyth's CRULE feasible set.
+// Internal to gmcc::geometry.
+
+#include <gmcc/geometry/convex_set_3.h>
+
+#include <gmpxx.h>
+
+#include <vector>
+
+namespace gmcc::internal {
+
+// The closed half-space a·x <= b, integer coefficients.
+struct IntegerPlane3 {
+  mpz_class a[3];
+  mpz_class b;
+};
+
+// How many sign decisions each stage settled (the double filter, else exact integers).
+struct ClipCounts {
+  long filtered = 0;  // settled by the double filter
+  long exact = 0;     // needed the exact integer evaluation
+};
+
+// What clip_polytope found: a 3-dimensional polytope (in `set`, canonical form), the empty set,
+// or a lower-dimensional non-empty set (`flat`: some half-space left no vertex strictly inside;
+// its exact form is for another route, the LP one).
+struct ClippedPolytope {
+  enum class Outcome { polytope, empty, flat } outcome = Outcome::empty;
+  ConvexSet3 set;
+};
+
+// The intersection of the box 0 <= x_k <= box[k] (box[k] > 0) with the half-spaces `planes`, in
+// their order. Vertices are kept as triples of planes through them and faces as cycles of
+// vertices counter-clockwise seen from outside; each half-space removes the vertices strictly
+// outside it, cuts the edges that cross it and closes the cut with a new facet. Exact coordinates
+// are built only for the final vertices. `counts`, when given, adds the decisions per stage.
+ClippedPolytope clip_polytope(const Point3& box, const std::vector<IntegerPlane3>& planes,
+                              ClipCounts* counts = nullptr);
+
+}  // namespace gmcc::internal

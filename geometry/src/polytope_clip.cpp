@@ -1,0 +1,311 @@
+// A box clipped by integer half-spaces with filtered exact predicates (docs/derivations.md §4.6).
+#include "internal/polytope_clip.h"
+
+#include <gmcc/numerics/internal_check.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <utility>
+
+namespace gmcc::internal {
+namespace {
+
+// u = 2^-53, the unit roundoff of double.
+constexpr double u = 0x1p-53;
+
+// A plane's filter copy: a_k·2^-E and b·2^-E (E the largest binary exponent among them), each
+// truncated to 53 bits by mpz_get_d_2exp (relative error below 2u; the scaling by a power of 2 is
+// exact and positive, so every sign below is that of the exact plane's). Only when every non-zero
+// coefficient is at least 2^-150 after scaling: products of up to four such numbers stay normal
+// (>= 2^-600), so the relative error bounds hold; otherwise the plane is decided exactly.
+struct Filter {
+  double c[4];  // a0, a1, a2, b
+  bool usable = false;
+};
+
+Filter filter_of(const IntegerPlane3& p) {
+  const mpz_class* z[4] = {&p.a[0], &p.a[1], &p.a[2], &p.b};
+  double m[4];
+  long e[4];
+  long top = 0;
+  bool any = false;
+  for (int k = 0; k < 4; ++k) {
+    m[k] = mpz_get_d_2exp(&e[k], z[k]->get_mpz_t());
+    if (m[k] != 0) top = any ? std::max(top, e[k]) : e[k], any = true;
+  }
+  Filter f;
+  for (int k = 0; k < 4; ++k) {
+    if (m[k] == 0) {
+      f.c[k] = 0;
+      continue;
+    }
+    if (e[k] - top < -150) return f;
+    f.c[k] = std::ldexp(m[k], static_cast<int>(e[k] - top));
+  }
+  f.usable = true;
+  return f;
+}
+
+struct Vertex {
+  std::array<int, 3> planes;  // three independent planes through it
+  // Homogeneous coordinates (X, Y, Z, W) of the filter planes' solution, W > 0, each within
+  // err[k] of the exact value (docs/derivations.md §4.6); valid when `filtered`.
+  double h[4];
+  double err[4];
+  bool filtered = false;
+  // Exact homogeneous coordinates of the integer planes' solution (W of either sign), on demand.
+  std::optional<std::array<mpz_class, 4>> exact;
+};
+
+class Clipper {
+ public:
+  Clipper(const Point3& box, const std::vector<IntegerPlane3>& planes, ClipCounts* counts)
+      : counts_(counts) {
+    // The box: planes 0–2 are -x_k <= 0, planes 3–5 are den·x_k <= num.
+    for (int k = 0; k < 3; ++k) {
+      IntegerPlane3 p;
+      p.a[k] = -1;
+      p.b = 0;
+      planes_.push_back(p);
+    }
+    for (int k = 0; k < 3; ++k) {
+      const Rational& m = k == 0 ? box.x : k == 1 ? box.y : box.z;
+      IntegerPlane3 p;
+      p.a[k] = m.get_den();
+      p.b = m.get_num();
+      planes_.push_back(p);
+    }
+    planes_.insert(planes_.end(), planes.begin(), planes.end());
+    for (const IntegerPlane3& p : planes_) filters_.push_back(filter_of(p));
+    // Corner (bx, by, bz) is vertex bx + 2by + 4bz; faces counter-clockwise seen from outside.
+    for (int c = 0; c < 8; ++c)
+      add_vertex({c & 1 ? 3 : 0, c & 2 ? 4 : 1, c & 4 ? 5 : 2});
+    faces_ = {{0, {0, 4, 6, 2}}, {3, {1, 3, 7, 5}}, {1, {0, 1, 5, 4}},
+              {4, {2, 6, 7, 3}}, {2, {0, 2, 3, 1}}, {5, {4, 5, 7, 6}}};
+    live_ = {0, 1, 2, 3, 4, 5, 6, 7};
+  }
+
+  ClippedPolytope run() {
+    for (std::size_t i = 6; i < planes_.size(); ++i) {
+      const ClippedPolytope::Outcome o = clip(static_cast<int>(i));
+      if (o != ClippedPolytope::Outcome::polytope) return {o, {}};
+    }
+    return {ClippedPolytope::Outcome::polytope, result()};
+  }
+
+ private:
+  // The sign of a 3×3 determinant-like value from the filter, or nothing when the bound is hit.
+  static int filtered_sign(double value, double bound) {
+    if (value > bound) return 1;
+    if (value < -bound) return -1;
+    return 2;  // undecided
+  }
+
+  std::array<mpz_class, 4> exact_homogeneous(const std::array<int, 3>& t) const {
+    const IntegerPlane3 &p = planes_[t[0]], &q = planes_[t[1]], &r = planes_[t[2]];
+    // c_qr = a_q × a_r etc.; W = a_p·c_qr, (X, Y, Z) = b_p c_qr + b_q c_rp + b_r c_pq.
+    auto cross = [](const IntegerPlane3& s, const IntegerPlane3& t2) {
+      return std::array<mpz_class, 3>{mpz_class(s.a[1] * t2.a[2] - s.a[2] * t2.a[1]),
+                                      mpz_class(s.a[2] * t2.a[0] - s.a[0] * t2.a[2]),
+                                      mpz_class(s.a[0] * t2.a[1] - s.a[1] * t2.a[0])};
+    };
+    const auto cqr = cross(q, r), crp = cross(r, p), cpq = cross(p, q);
+    std::array<mpz_class, 4> h;
+    for (int k = 0; k < 3; ++k) h[k] = p.b * cqr[k] + q.b * crp[k] + r.b * cpq[k];
+    h[3] = p.a[0] * cqr[0] + p.a[1] * cqr[1] + p.a[2] * cqr[2];
+    return h;
+  }
+
+  int add_vertex(const std::array<int, 3>& t) {
+    Vertex v;
+    v.planes = t;
+    const Filter &p = filters_[t[0]], &q = filters_[t[1]], &r = filters_[t[2]];
+    if (p.usable && q.usable && r.usable) {
+      // Each of X, Y, Z, W is a sum of six products of three filter coefficients, evaluated with
+      // five roundings after the inputs' own (2u each): its error is at most 12u times the sum of
+      // the products' magnitudes (`perm`, evaluated here with the same care); 16u leaves room.
+      double c[3][3], ca[3][3];  // c_qr, c_rp, c_pq and their magnitudes' versions
+      const Filter* s[3][2] = {{&q, &r}, {&r, &p}, {&p, &q}};
+      for (int i = 0; i < 3; ++i) {
+        const double* x = s[i][0]->c;
+        const double* y = s[i][1]->c;
+        c[i][0] = x[1] * y[2] - x[2] * y[1], ca[i][0] = std::fabs(x[1] * y[2]) + std::fabs(x[2] * y[1]);
+        c[i][1] = x[2] * y[0] - x[0] * y[2], ca[i][1] = std::fabs(x[2] * y[0]) + std::fabs(x[0] * y[2]);
+        c[i][2] = x[0] * y[1] - x[1] * y[0], ca[i][2] = std::fabs(x[0] * y[1]) + std::fabs(x[1] * y[0]);
+      }
+      const double b[3] = {p.c[3], q.c[3], r.c[3]};
+      for (int k = 0; k < 3; ++k) {
+        v.h[k] = b[0] * c[0][k] + b[1] * c[1][k] + b[2] * c[2][k];
+        v.err[k] = 16 * u * (std::fabs(b[0]) * ca[0][k] + std::fabs(b[1]) * ca[1][k] + std::fabs(b[2]) * ca[2][k]);
+      }
+      v.h[3] = p.c[0] * c[0][0] + p.c[1] * c[0][1] + p.c[2] * c[0][2];
+      v.err[3] = 16 * u * (std::fabs(p.c[0]) * ca[0][0] + std::fabs(p.c[1]) * ca[0][1] + std::fabs(p.c[2]) * ca[0][2]);
+      const int w = filtered_sign(v.h[3], v.err[3]);
+      if (w != 2) {
+        count(true);
+        if (w < 0)
+          for (double& x : v.h) x = -x;
+        v.filtered = true;
+        GMCC_CHECK(w != 0, "clip_polytope: a vertex's three planes are independent");
+      }
+    }
+    if (!v.filtered) {
+      count(false);
+      v.exact = exact_homogeneous(t);
+      GMCC_CHECK(sgn((*v.exact)[3]) != 0, "clip_polytope: a vertex's three planes are independent");
+    }
+    vertices_.push_back(std::move(v));
+    return static_cast<int>(vertices_.size()) - 1;
+  }
+
+  // sign(a·v - b) for plane i and vertex v, exactly.
+  int side(int i, Vertex& v) {
+    const Filter& f = filters_[i];
+    if (f.usable && v.filtered) {
+      // s = a·(X, Y, Z) - b·W; with T = Σ|a_k||X_k| + |b||W| and E = Σ|a_k| err_k + |b| err_W,
+      // |s~ - s| <= E + (γ4 + 2.01u)(T + E) <= E + 8u(T + E); the bound's own evaluation (sums
+      // and products of non-negative numbers) is covered by the factor 1 + 64u.
+      const double* a = f.c;
+      const double s = a[0] * v.h[0] + a[1] * v.h[1] + a[2] * v.h[2] - a[3] * v.h[3];
+      const double T = std::fabs(a[0] * v.h[0]) + std::fabs(a[1] * v.h[1]) + std::fabs(a[2] * v.h[2]) +
+                       std::fabs(a[3] * v.h[3]);
+      const double E = std::fabs(a[0]) * v.err[0] + std::fabs(a[1]) * v.err[1] +
+                       std::fabs(a[2]) * v.err[2] + std::fabs(a[3]) * v.err[3];
+      const int sign = filtered_sign(s, (E + 8 * u * (T + E)) * (1 + 64 * u));
+      if (sign != 2) {
+        count(true);
+        return sign;
+      }
+    }
+    count(false);
+    if (!v.exact) v.exact = exact_homogeneous(v.planes);
+    const auto& h = *v.exact;
+    const IntegerPlane3& p = planes_[i];
+    const mpz_class s = p.a[0] * h[0] + p.a[1] * h[1] + p.a[2] * h[2] - p.b * h[3];
+    return sgn(s) * sgn(h[3]);
+  }
+
+  void count(bool filtered) {
+    if (counts_) ++(filtered ? counts_->filtered : counts_->exact);
+  }
+
+  ClippedPolytope::Outcome clip(int i) {
+    if (sign_.size() < vertices_.size()) sign_.resize(vertices_.size() + 64);
+    int in = 0, out = 0;
+    for (int v : live_) {
+      const int s = side(i, vertices_[v]);
+      sign_[v] = s;
+      in += s < 0, out += s > 0;
+    }
+    if (out == 0) return ClippedPolytope::Outcome::polytope;  // nothing to cut
+    if (in == 0)
+      return live_.size() == static_cast<std::size_t>(out) ? ClippedPolytope::Outcome::empty
+                                                           : ClippedPolytope::Outcome::flat;
+    // Every edge crossing the plane strictly lies on exactly two faces; the new vertex is where
+    // their planes meet plane i (independent: the edge crosses plane i transversally).
+    struct Cut {
+      int u, w, faces[2], n, vertex;
+    };
+    std::vector<Cut> cuts;
+    auto find = [&cuts](int a, int b) -> Cut* {
+      if (a > b) std::swap(a, b);
+      for (Cut& c : cuts)
+        if (c.u == a && c.w == b) return &c;
+      return nullptr;
+    };
+    for (const Face& f : faces_)
+      for (std::size_t k = 0; k < f.cycle.size(); ++k) {
+        const int a = f.cycle[k], b = f.cycle[(k + 1) % f.cycle.size()];
+        if (sign_[a] * sign_[b] >= 0) continue;
+        Cut* c = find(a, b);
+        if (!c) cuts.push_back({std::min(a, b), std::max(a, b), {f.plane, -1}, 1, -1});
+        else {
+          GMCC_CHECK(c->n == 1, "clip_polytope: an edge lies on two faces");
+          c->faces[1] = f.plane, c->n = 2;
+        }
+      }
+    for (Cut& c : cuts) {
+      GMCC_CHECK(c.n == 2, "clip_polytope: an edge lies on two faces");
+      c.vertex = add_vertex({c.faces[0], c.faces[1], i});
+      if (sign_.size() < vertices_.size()) sign_.resize(vertices_.size() + 64);
+      sign_[c.vertex] = 0;
+    }
+    std::vector<Face> kept;
+    std::vector<int> next_on_cap(vertices_.size(), -1);
+    int cap_edges = 0, cap_start = -1;
+    for (const Face& f : faces_) {
+      Face g{f.plane, {}};
+      for (std::size_t k = 0; k < f.cycle.size(); ++k) {
+        const int a = f.cycle[k], b = f.cycle[(k + 1) % f.cycle.size()];
+        if (sign_[a] <= 0) g.cycle.push_back(a);
+        if (sign_[a] * sign_[b] < 0) g.cycle.push_back(find(a, b)->vertex);
+      }
+      if (g.cycle.size() < 3) continue;
+      // An edge of the face in plane i is an edge of the cut facet, traversed the other way.
+      for (std::size_t k = 0; k < g.cycle.size(); ++k) {
+        const int a = g.cycle[k], b = g.cycle[(k + 1) % g.cycle.size()];
+        if (sign_[a] == 0 && sign_[b] == 0) {
+          GMCC_CHECK(next_on_cap[b] == -1, "clip_polytope: the cut facet is a simple cycle");
+          next_on_cap[b] = a, ++cap_edges, cap_start = b;
+        }
+      }
+      kept.push_back(std::move(g));
+    }
+    Face cap{i, {}};
+    for (int v = cap_start; v != -1 && (cap.cycle.empty() || v != cap_start); v = next_on_cap[v])
+      cap.cycle.push_back(v);
+    GMCC_CHECK(cap.cycle.size() >= 3 && static_cast<int>(cap.cycle.size()) == cap_edges,
+               "clip_polytope: a plane with vertices strictly on both sides cuts a facet");
+    kept.push_back(std::move(cap));
+    faces_ = std::move(kept);
+    live_.clear();
+    std::vector<char> seen(vertices_.size(), 0);
+    for (const Face& f : faces_)
+      for (int v : f.cycle)
+        if (!seen[v]) seen[v] = 1, live_.push_back(v);
+    return ClippedPolytope::Outcome::polytope;
+  }
+
+  ConvexSet3 result() {
+    std::vector<int> index(vertices_.size(), -1);
+    std::vector<Point3> points;
+    for (int v : live_) {
+      Vertex& x = vertices_[v];
+      if (!x.exact) x.exact = exact_homogeneous(x.planes);
+      const auto& h = *x.exact;
+      Point3 p{Rational(h[0], h[3]), Rational(h[1], h[3]), Rational(h[2], h[3])};
+      p.x.canonicalize(), p.y.canonicalize(), p.z.canonicalize();
+      index[v] = static_cast<int>(points.size());
+      points.push_back(std::move(p));
+    }
+    std::vector<std::vector<std::size_t>> faces;
+    for (const Face& f : faces_) {
+      std::vector<std::size_t> c;
+      for (int v : f.cycle) c.push_back(static_cast<std::size_t>(index[v]));
+      faces.push_back(std::move(c));
+    }
+    return canonical_convex_set_3(ConvexKind3::polytope, std::move(points), std::move(faces));
+  }
+
+  struct Face {
+    int plane;
+    std::vector<int> cycle;
+  };
+  ClipCounts* counts_;
+  std::vector<IntegerPlane3> planes_;
+  std::vector<Filter> filters_;
+  std::vector<Vertex> vertices_;
+  std::vector<Face> faces_;
+  std::vector<int> live_;
+  std::vector<int> sign_;
+};
+
+}  // namespace
+
+ClippedPolytope clip_polytope(const Point3& box, const std::vector<IntegerPlane3>& planes, ClipCounts* counts) {
+  return Clipper(box, planes, counts).run();
+}
+
+}  // namespace gmcc::internal
