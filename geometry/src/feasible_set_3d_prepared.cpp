@@ -19,7 +19,7 @@ namespace internal {
 struct CanonicalPlanes3 {
   int dimension = 0;
   std::vector<HalfSpace3> half_spaces;   // exact, for the LP route
-  std::vector<IntegerPlane3> integer;    // the same with integer coefficients (dimension 3)
+  ClipFacets integer;                    // the same with integer coefficients (dimension 3)
   Point3 max{0, 0, 0};                   // X: the largest canonical channels
 };
 
@@ -40,15 +40,6 @@ void check_colours(const std::vector<Colour>& cs, const char* what) {
   for (const Colour& c : cs)
     if (sgn(c.r) < 0 || sgn(c.g) < 0 || sgn(c.b) < 0)
       throw std::invalid_argument(std::string("feasible_set_3d: a negative ") + what + " channel");
-}
-
-// p·L with L the lcm of p's denominators: the same ray, integer coordinates.
-std::array<mpz_class, 4> integer_point(const Point3& p) {
-  mpz_class l;
-  mpz_lcm(l.get_mpz_t(), p.x.get_den_mpz_t(), p.y.get_den_mpz_t());
-  mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), p.z.get_den_mpz_t());
-  return {mpz_class(p.x.get_num() * (l / p.x.get_den())), mpz_class(p.y.get_num() * (l / p.y.get_den())),
-          mpz_class(p.z.get_num() * (l / p.z.get_den())), l};
 }
 
 // (a·L, b·L) with L the lcm of the denominators of a and b: the same half-space, integers.
@@ -163,8 +154,11 @@ CanonicalConstraints3::CanonicalConstraints3(const std::vector<Colour>& canonica
   }
   c->dimension = internal::affine_dimension(pts);
   c->half_spaces = internal::hull_half_spaces_3(pts);
-  if (c->dimension == 3)
-    for (const internal::HalfSpace3& h : c->half_spaces) c->integer.push_back(internal::integer_plane(h));
+  if (c->dimension == 3) {
+    std::vector<internal::IntegerPlane3> planes;
+    for (const internal::HalfSpace3& h : c->half_spaces) planes.push_back(internal::integer_plane(h));
+    c->integer = internal::clip_facets(std::move(planes));
+  }
   planes_ = std::move(c);
 }
 
@@ -182,28 +176,8 @@ ConvexSet3 feasible_set_3d(const CanonicalConstraints3& canonical, const std::ve
                                  " = 0: that map component is unconstrained and the feasible "
                                  "set is unbounded");
   if (c.dimension == 3) {
-    std::vector<internal::IntegerPlane3> rows;
-    rows.reserve(points.size() * c.integer.size());
-    for (const Point3& p : points) {
-      const std::array<mpz_class, 4> q = internal::integer_point(p);  // p·L, L > 0
-      for (const internal::IntegerPlane3& h : c.integer) {
-        internal::IntegerPlane3 r{{mpz_class(h.a[0] * q[0]), mpz_class(h.a[1] * q[1]), mpz_class(h.a[2] * q[2])},
-                                  mpz_class(h.b * q[3])};
-        if (sgn(r.a[0]) == 0 && sgn(r.a[1]) == 0 && sgn(r.a[2]) == 0) {
-          if (sgn(r.b) < 0) return {};  // 0 <= b fails: no map at all
-          continue;
-        }
-        mpz_class g;
-        mpz_gcd(g.get_mpz_t(), r.a[0].get_mpz_t(), r.a[1].get_mpz_t());
-        mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), r.a[2].get_mpz_t());
-        mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), r.b.get_mpz_t());
-        if (g > 1)
-          for (mpz_class* z : {&r.a[0], &r.a[1], &r.a[2], &r.b}) mpz_divexact(z->get_mpz_t(), z->get_mpz_t(), g.get_mpz_t());
-        rows.push_back(std::move(r));
-      }
-    }
     const Point3 box{Rational(c.max.x / P.x), Rational(c.max.y / P.y), Rational(c.max.z / P.z)};
-    internal::ClippedPolytope r = internal::clip_polytope(box, rows);
+    internal::ClippedPolytope r = internal::clip_polytope(box, c.integer, points);
     if (r.outcome == internal::ClippedPolytope::Outcome::polytope) return std::move(r.set);
     if (r.outcome == internal::ClippedPolytope::Outcome::empty) return {};
   }

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
+#include <numeric>
 #include <optional>
 #include <utility>
 
@@ -17,13 +19,17 @@ constexpr double u = 0x1p-53;
 
 // A plane's filter copy: a_k·2^-E and b·2^-E (E the largest binary exponent among them), each
 // truncated to 53 bits by mpz_get_d_2exp (relative error below 2u; the scaling by a power of 2 is
-// exact and positive, so every sign below is that of the exact plane's). Only when every non-zero
-// coefficient is at least 2^-150 after scaling: products of up to four such numbers stay normal
-// (>= 2^-600), so the relative error bounds hold; otherwise the plane is decided exactly.
+// exact and positive, so every sign below is that of the exact plane's). A clipping row
+// (a ⊙ p)·x <= b multiplies a facet's copy by p's double (below): relative error below 6u per
+// coefficient. A copy is used only when every non-zero coefficient is in [2^-200, 2^200]: products
+// of up to four stay normal, so the relative error bounds hold; otherwise the plane is decided
+// exactly.
 struct Filter {
   double c[4];  // a0, a1, a2, b
   bool usable = false;
 };
+constexpr double filter_min = 0x1p-200, filter_max = 0x1p200;
+bool in_range(double x) { return x == 0 || (std::fabs(x) >= filter_min && std::fabs(x) <= filter_max); }
 
 Filter filter_of(const IntegerPlane3& p) {
   const mpz_class* z[4] = {&p.a[0], &p.a[1], &p.a[2], &p.b};
@@ -48,6 +54,39 @@ Filter filter_of(const IntegerPlane3& p) {
   return f;
 }
 
+// p·L with L > 0 the lcm of p's denominators: (p·L, L), integers.
+std::array<mpz_class, 4> integer_point(const Point3& p) {
+  mpz_class l;
+  mpz_lcm(l.get_mpz_t(), p.x.get_den_mpz_t(), p.y.get_den_mpz_t());
+  mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), p.z.get_den_mpz_t());
+  return {mpz_class(p.x.get_num() * (l / p.x.get_den())), mpz_class(p.y.get_num() * (l / p.y.get_den())),
+          mpz_class(p.z.get_num() * (l / p.z.get_den())), l};
+}
+
+// p·2^-e (e the largest binary exponent of p's channels) truncated to doubles (mpq_get_d:
+// relative error below 2u), and 2^-e; not usable outside [2^-400, 2^400].
+struct ScaledPoint {
+  double c[3];
+  double scale = 0;
+  bool usable = false;
+};
+ScaledPoint scaled_point(const Point3& p) {
+  ScaledPoint s;
+  const double d[3] = {mpq_get_d(p.x.get_mpq_t()), mpq_get_d(p.y.get_mpq_t()), mpq_get_d(p.z.get_mpq_t())};
+  double top = 0;
+  for (double x : d) {
+    if (x != 0 && (std::fabs(x) < 0x1p-400 || std::fabs(x) > 0x1p400)) return s;
+    top = std::max(top, std::fabs(x));
+  }
+  if (top == 0) return s;
+  int e;
+  std::frexp(top, &e);
+  for (int k = 0; k < 3; ++k) s.c[k] = std::ldexp(d[k], -e);
+  s.scale = std::ldexp(1.0, -e);
+  s.usable = true;
+  return s;
+}
+
 struct Vertex {
   std::array<int, 3> planes;  // three independent planes through it
   // Homogeneous coordinates (X, Y, Z, W) of the filter planes' solution, W > 0, each within
@@ -61,41 +100,99 @@ struct Vertex {
 
 class Clipper {
  public:
-  Clipper(const Point3& box, const std::vector<IntegerPlane3>& planes, ClipCounts* counts)
-      : counts_(counts) {
+  Clipper(const Point3& box, const ClipFacets& facets, const std::vector<Point3>& points, ClipCounts* counts)
+      : counts_(counts), facets_(facets), nf_(static_cast<int>(facets.planes.size())) {
     // The box: planes 0–2 are -x_k <= 0, planes 3–5 are den·x_k <= num.
     for (int k = 0; k < 3; ++k) {
       IntegerPlane3 p;
       p.a[k] = -1;
       p.b = 0;
-      planes_.push_back(p);
+      box_.push_back(p);
     }
     for (int k = 0; k < 3; ++k) {
       const Rational& m = k == 0 ? box.x : k == 1 ? box.y : box.z;
       IntegerPlane3 p;
       p.a[k] = m.get_den();
       p.b = m.get_num();
-      planes_.push_back(p);
+      box_.push_back(p);
     }
-    planes_.insert(planes_.end(), planes.begin(), planes.end());
-    for (const IntegerPlane3& p : planes_) filters_.push_back(filter_of(p));
+    for (const IntegerPlane3& p : box_) filters_.push_back(filter_of(p));
+    // Row 6 + i·F + f is (a_f ⊙ p_i)·x <= b_f; its filter copy a~_f ⊙ p~_i, b~_f·2^-e.
+    for (const Point3& p : points) {
+      points_.push_back(integer_point(p));
+      signs_.push_back({sgn(p.x), sgn(p.y), sgn(p.z)});
+      const ScaledPoint q = scaled_point(p);
+      for (int f = 0; f < nf_; ++f) {
+        Filter r;
+        const std::array<double, 4>& a = facets.filters[static_cast<std::size_t>(f)];
+        if (q.usable && facets.usable[static_cast<std::size_t>(f)]) {
+          r.c[0] = a[0] * q.c[0], r.c[1] = a[1] * q.c[1], r.c[2] = a[2] * q.c[2], r.c[3] = a[3] * q.scale;
+          r.usable = in_range(r.c[0]) && in_range(r.c[1]) && in_range(r.c[2]) && in_range(r.c[3]);
+        }
+        filters_.push_back(r);
+      }
+    }
+    rows_.resize(filters_.size());
     // Corner (bx, by, bz) is vertex bx + 2by + 4bz; faces counter-clockwise seen from outside.
     for (int c = 0; c < 8; ++c)
       add_vertex({c & 1 ? 3 : 0, c & 2 ? 4 : 1, c & 4 ? 5 : 2});
     faces_ = {{0, {0, 4, 6, 2}}, {3, {1, 3, 7, 5}}, {1, {0, 1, 5, 4}},
               {4, {2, 6, 7, 3}}, {2, {0, 2, 3, 1}}, {5, {4, 5, 7, 6}}};
     live_ = {0, 1, 2, 3, 4, 5, 6, 7};
+    pack();
+    // The rows in a fixed pseudo-random order (a multiplicative permutation): the set is the same
+    // in any order, and a random order keeps the intermediate polytopes small (in point-major
+    // order the first point alone gives a copy of G_c3 with all its vertices).
+    const std::size_t n = filters_.size() - 6;
+    order_.resize(n);
+    std::size_t step = 2654435761u % (n ? n : 1);
+    while (n && std::gcd(step, n) != 1) ++step;
+    for (std::size_t k = 0, j = 0; k < n; ++k, j = (j + step) % n) order_[k] = 6 + j;
+  }
+
+  // The live vertices' doubles (h and err), packed for the all-inside pass.
+  void pack() {
+    packed_.clear();
+    all_filtered_ = true;
+    for (int v : live_) {
+      const Vertex& x = vertices_[static_cast<std::size_t>(v)];
+      all_filtered_ = all_filtered_ && x.filtered;
+      for (int k = 0; k < 4; ++k) packed_.push_back(x.h[k]);
+      for (int k = 0; k < 4; ++k) packed_.push_back(x.err[k]);
+    }
+  }
+
+  // True when the filter shows every live vertex strictly inside plane i (the bound as in side()).
+  bool all_inside(int i) const {
+    const Filter& f = filters_[static_cast<std::size_t>(i)];
+    if (!f.usable || !all_filtered_) return false;
+    const double* a = f.c;
+    for (std::size_t k = 0; k < packed_.size(); k += 8) {
+      const double* h = &packed_[k];
+      const double s = a[0] * h[0] + a[1] * h[1] + a[2] * h[2] - a[3] * h[3];
+      const double T = std::fabs(a[0] * h[0]) + std::fabs(a[1] * h[1]) + std::fabs(a[2] * h[2]) + std::fabs(a[3] * h[3]);
+      const double E = std::fabs(a[0]) * h[4] + std::fabs(a[1]) * h[5] + std::fabs(a[2]) * h[6] + std::fabs(a[3]) * h[7];
+      if (!(s < -(E + 16 * u * (T + E)) * (1 + 64 * u))) return false;
+    }
+    return true;
   }
 
   ClippedPolytope run() {
-    for (std::size_t i = 6; i < planes_.size(); ++i) {
+    for (std::size_t i : order_) {
+      // A row with a ⊙ p = 0 reads 0 <= b: true, or no map at all.
+      const int f = static_cast<int>((i - 6) % static_cast<std::size_t>(nf_));
+      const std::array<int, 3>& s = signs_[(i - 6) / static_cast<std::size_t>(nf_)];
+      const IntegerPlane3& a = facets_.planes[static_cast<std::size_t>(f)];
+      if (sgn(a.a[0]) * s[0] == 0 && sgn(a.a[1]) * s[1] == 0 && sgn(a.a[2]) * s[2] == 0) {
+        if (sgn(a.b) < 0) return {ClippedPolytope::Outcome::empty, {}};
+        continue;
+      }
       const ClippedPolytope::Outcome o = clip(static_cast<int>(i));
       if (o != ClippedPolytope::Outcome::polytope) return {o, {}};
     }
     return {ClippedPolytope::Outcome::polytope, result()};
   }
 
- private:
   // The sign of a 3×3 determinant-like value from the filter, or nothing when the bound is hit.
   static int filtered_sign(double value, double bound) {
     if (value > bound) return 1;
@@ -103,8 +200,22 @@ class Clipper {
     return 2;  // undecided
   }
 
-  std::array<mpz_class, 4> exact_homogeneous(const std::array<int, 3>& t) const {
-    const IntegerPlane3 &p = planes_[t[0]], &q = planes_[t[1]], &r = planes_[t[2]];
+  // Plane i's exact coefficients, built on first use.
+  const IntegerPlane3& plane(int i) {
+    if (i < 6) return box_[static_cast<std::size_t>(i)];
+    std::unique_ptr<IntegerPlane3>& row = rows_[static_cast<std::size_t>(i)];
+    if (!row) {
+      const std::size_t k = static_cast<std::size_t>(i - 6);
+      const IntegerPlane3& a = facets_.planes[k % static_cast<std::size_t>(nf_)];
+      const std::array<mpz_class, 4>& q = points_[k / static_cast<std::size_t>(nf_)];
+      row = std::make_unique<IntegerPlane3>(IntegerPlane3{
+          {mpz_class(a.a[0] * q[0]), mpz_class(a.a[1] * q[1]), mpz_class(a.a[2] * q[2])}, mpz_class(a.b * q[3])});
+    }
+    return *row;
+  }
+
+  std::array<mpz_class, 4> exact_homogeneous(const std::array<int, 3>& t) {
+    const IntegerPlane3 &p = plane(t[0]), &q = plane(t[1]), &r = plane(t[2]);
     // c_qr = a_q × a_r etc.; W = a_p·c_qr, (X, Y, Z) = b_p c_qr + b_q c_rp + b_r c_pq.
     auto cross = [](const IntegerPlane3& s, const IntegerPlane3& t2) {
       return std::array<mpz_class, 3>{mpz_class(s.a[1] * t2.a[2] - s.a[2] * t2.a[1]),
@@ -124,8 +235,9 @@ class Clipper {
     const Filter &p = filters_[t[0]], &q = filters_[t[1]], &r = filters_[t[2]];
     if (p.usable && q.usable && r.usable) {
       // Each of X, Y, Z, W is a sum of six products of three filter coefficients, evaluated with
-      // five roundings after the inputs' own (2u each): its error is at most 12u times the sum of
-      // the products' magnitudes (`perm`, evaluated here with the same care); 16u leaves room.
+      // five roundings after the inputs' own (below 6u each): its error is at most 24u times the
+      // sum of the products' magnitudes (`perm`, evaluated here with the same care); 32u leaves
+      // room (docs/derivations.md §4.6).
       double c[3][3], ca[3][3];  // c_qr, c_rp, c_pq and their magnitudes' versions
       const Filter* s[3][2] = {{&q, &r}, {&r, &p}, {&p, &q}};
       for (int i = 0; i < 3; ++i) {
@@ -138,10 +250,10 @@ class Clipper {
       const double b[3] = {p.c[3], q.c[3], r.c[3]};
       for (int k = 0; k < 3; ++k) {
         v.h[k] = b[0] * c[0][k] + b[1] * c[1][k] + b[2] * c[2][k];
-        v.err[k] = 16 * u * (std::fabs(b[0]) * ca[0][k] + std::fabs(b[1]) * ca[1][k] + std::fabs(b[2]) * ca[2][k]);
+        v.err[k] = 32 * u * (std::fabs(b[0]) * ca[0][k] + std::fabs(b[1]) * ca[1][k] + std::fabs(b[2]) * ca[2][k]);
       }
       v.h[3] = p.c[0] * c[0][0] + p.c[1] * c[0][1] + p.c[2] * c[0][2];
-      v.err[3] = 16 * u * (std::fabs(p.c[0]) * ca[0][0] + std::fabs(p.c[1]) * ca[0][1] + std::fabs(p.c[2]) * ca[0][2]);
+      v.err[3] = 32 * u * (std::fabs(p.c[0]) * ca[0][0] + std::fabs(p.c[1]) * ca[0][1] + std::fabs(p.c[2]) * ca[0][2]);
       const int w = filtered_sign(v.h[3], v.err[3]);
       if (w != 2) {
         count(true);
@@ -165,7 +277,7 @@ class Clipper {
     const Filter& f = filters_[i];
     if (f.usable && v.filtered) {
       // s = a·(X, Y, Z) - b·W; with T = Σ|a_k||X_k| + |b||W| and E = Σ|a_k| err_k + |b| err_W,
-      // |s~ - s| <= E + (γ4 + 2.01u)(T + E) <= E + 8u(T + E); the bound's own evaluation (sums
+      // |s~ - s| <= E + (γ4 + 6.1u)(T + E) <= E + 16u(T + E); the bound's own evaluation (sums
       // and products of non-negative numbers) is covered by the factor 1 + 64u.
       const double* a = f.c;
       const double s = a[0] * v.h[0] + a[1] * v.h[1] + a[2] * v.h[2] - a[3] * v.h[3];
@@ -173,7 +285,7 @@ class Clipper {
                        std::fabs(a[3] * v.h[3]);
       const double E = std::fabs(a[0]) * v.err[0] + std::fabs(a[1]) * v.err[1] +
                        std::fabs(a[2]) * v.err[2] + std::fabs(a[3]) * v.err[3];
-      const int sign = filtered_sign(s, (E + 8 * u * (T + E)) * (1 + 64 * u));
+      const int sign = filtered_sign(s, (E + 16 * u * (T + E)) * (1 + 64 * u));
       if (sign != 2) {
         count(true);
         return sign;
@@ -182,7 +294,7 @@ class Clipper {
     count(false);
     if (!v.exact) v.exact = exact_homogeneous(v.planes);
     const auto& h = *v.exact;
-    const IntegerPlane3& p = planes_[i];
+    const IntegerPlane3& p = plane(i);
     const mpz_class s = p.a[0] * h[0] + p.a[1] * h[1] + p.a[2] * h[2] - p.b * h[3];
     return sgn(s) * sgn(h[3]);
   }
@@ -192,6 +304,10 @@ class Clipper {
   }
 
   ClippedPolytope::Outcome clip(int i) {
+    if (all_inside(i)) {
+      if (counts_) counts_->filtered += static_cast<long>(live_.size());
+      return ClippedPolytope::Outcome::polytope;
+    }
     if (sign_.size() < vertices_.size()) sign_.resize(vertices_.size() + 64);
     int in = 0, out = 0;
     for (int v : live_) {
@@ -265,6 +381,7 @@ class Clipper {
     for (const Face& f : faces_)
       for (int v : f.cycle)
         if (!seen[v]) seen[v] = 1, live_.push_back(v);
+    pack();
     return ClippedPolytope::Outcome::polytope;
   }
 
@@ -294,18 +411,44 @@ class Clipper {
     std::vector<int> cycle;
   };
   ClipCounts* counts_;
-  std::vector<IntegerPlane3> planes_;
-  std::vector<Filter> filters_;
+  const ClipFacets& facets_;
+  int nf_;
+  std::vector<IntegerPlane3> box_;
+  std::vector<std::array<mpz_class, 4>> points_;  // the points as (p·L, L)
+  std::vector<std::array<int, 3>> signs_;         // their channels' signs
+  std::vector<Filter> filters_;                   // every plane's, box first
+  std::vector<std::unique_ptr<IntegerPlane3>> rows_;  // exact rows, on demand
   std::vector<Vertex> vertices_;
   std::vector<Face> faces_;
   std::vector<int> live_;
+  std::vector<double> packed_;  // per live vertex: h[0..3], err[0..3]
+  bool all_filtered_ = true;
+  std::vector<std::size_t> order_;  // the rows, in clipping order
   std::vector<int> sign_;
 };
 
 }  // namespace
 
+ClipFacets clip_facets(std::vector<IntegerPlane3> planes) {
+  ClipFacets out;
+  for (const IntegerPlane3& p : planes) {
+    const Filter f = filter_of(p);
+    out.filters.push_back({f.c[0], f.c[1], f.c[2], f.c[3]});
+    out.usable.push_back(f.usable);
+  }
+  out.planes = std::move(planes);
+  return out;
+}
+
+ClippedPolytope clip_polytope(const Point3& box, const ClipFacets& facets, const std::vector<Point3>& points,
+                              ClipCounts* counts) {
+  if (facets.planes.empty() || points.empty()) return Clipper(box, facets, {}, counts).run();
+  return Clipper(box, facets, points, counts).run();
+}
+
 ClippedPolytope clip_polytope(const Point3& box, const std::vector<IntegerPlane3>& planes, ClipCounts* counts) {
-  return Clipper(box, planes, counts).run();
+  const ClipFacets facets = clip_facets(planes);
+  return clip_polytope(box, facets, {Point3{1, 1, 1}}, counts);
 }
 
 }  // namespace gmcc::internal

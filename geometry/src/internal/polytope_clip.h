@@ -8,6 +8,7 @@
 
 #include <gmpxx.h>
 
+#include <array>
 #include <vector>
 
 namespace gmcc::internal {
@@ -32,11 +33,25 @@ struct ClippedPolytope {
   ConvexSet3 set;
 };
 
-// The intersection of the box 0 <= x_k <= box[k] (box[k] > 0) with the half-spaces `planes`, in
-// their order. Vertices are kept as triples of planes through them and faces as cycles of
-// vertices counter-clockwise seen from outside; each half-space removes the vertices strictly
-// outside it, cuts the edges that cross it and closes the cut with a new facet. Exact coordinates
-// are built only for the final vertices. `counts`, when given, adds the decisions per stage.
+// Half-spaces a·x <= b prepared once for many clips: exact, with their filter copies (each
+// coefficient scaled by a common power of 2 and truncated to double, docs/derivations.md §4.6).
+struct ClipFacets {
+  std::vector<IntegerPlane3> planes;
+  std::vector<std::array<double, 4>> filters;  // a0, a1, a2, b scaled; valid where usable
+  std::vector<char> usable;
+};
+ClipFacets clip_facets(std::vector<IntegerPlane3> planes);
+
+// The intersection of the box 0 <= x_k <= box[k] (box[k] > 0) with the half-spaces
+// (a ⊙ p)·x <= b for every point p of `points` (point after point) and every facet a·x <= b.
+// Vertices are kept as triples of planes through them and faces as cycles of vertices
+// counter-clockwise seen from outside; each half-space removes the vertices strictly outside it,
+// cuts the edges that cross it and closes the cut with a new facet. A half-space's exact
+// coefficients are built only when a decision or a final vertex needs them, exact coordinates
+// only for the final vertices. `counts`, when given, adds the decisions per stage.
+ClippedPolytope clip_polytope(const Point3& box, const ClipFacets& facets, const std::vector<Point3>& points,
+                              ClipCounts* counts = nullptr);
+// The same for explicit half-spaces (points = {(1, 1, 1)}).
 ClippedPolytope clip_polytope(const Point3& box, const std::vector<IntegerPlane3>& planes,
                               ClipCounts* counts = nullptr);
 
