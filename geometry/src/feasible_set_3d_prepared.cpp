@@ -127,14 +127,21 @@ std::vector<Point3> hull_candidates(const std::vector<Colour>& image) {
   return out;
 }
 
-// The image points that matter: the vertices of their hull (all of them when it is flat).
+// Below this many colours every distinct colour is kept: a colour that is no hull vertex gives
+// only rows implied by the others (F3 is the same set), and the clip dismisses each such row in
+// one box test or one pass over the vertices, which costs less than an exact hull.
+constexpr std::size_t hull_from = 32;
+
+// The image points that matter: the vertices of their hull (all of them when it is flat), or
+// every distinct colour of a small image.
 std::vector<Point3> image_points(const std::vector<Colour>& image) {
   check_colours(image, "image");
   std::vector<Point3> p;
   if (image.size() >= prefilter_from) p = hull_candidates(image);
   else
     for (const Colour& c : image) p.push_back({c.r, c.g, c.b});
-  return extreme_points_3(sorted_unique(std::move(p)));
+  p = sorted_unique(std::move(p));
+  return image.size() < hull_from ? p : extreme_points_3(p);
 }
 
 }  // namespace

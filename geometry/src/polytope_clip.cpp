@@ -150,7 +150,8 @@ class Clipper {
     for (std::size_t k = 0, j = 0; k < n; ++k, j = (j + step) % n) order_[k] = 6 + j;
   }
 
-  // The live vertices' doubles (h and err), packed for the all-inside pass.
+  // The live vertices' doubles, packed for the all-inside pass: h[0..3], then α and β with
+  // E + 16u(T + E) <= max_k |a_k|·α + |b|·β for any plane (a, b) (side() has T and E).
   void pack() {
     packed_.clear();
     all_filtered_ = true;
@@ -158,21 +159,52 @@ class Clipper {
       const Vertex& x = vertices_[static_cast<std::size_t>(v)];
       all_filtered_ = all_filtered_ && x.filtered;
       for (int k = 0; k < 4; ++k) packed_.push_back(x.h[k]);
-      for (int k = 0; k < 4; ++k) packed_.push_back(x.err[k]);
+      const double a = std::fabs(x.h[0]) + std::fabs(x.h[1]) + std::fabs(x.h[2]), e = x.err[0] + x.err[1] + x.err[2];
+      packed_.push_back(e + 16 * u * (a + e));
+      packed_.push_back(x.err[3] + 16 * u * (std::fabs(x.h[3]) + x.err[3]));
+    }
+    // An upper bound of every coordinate over the polytope (its vertices'; all are >= 0, the box
+    // rows): (h_k + err_k)/(h_3 - err_3) bounds x_k = X/W from above when X~ + err_k >= 0 and
+    // W~ > err_3 (both settled when the vertex was made); 1 + 8u covers the two roundings.
+    top_ = {0, 0, 0};
+    box_ok_ = all_filtered_;
+    for (std::size_t k = 0; k < packed_.size() && box_ok_; k += 6) {
+      const Vertex& x = vertices_[static_cast<std::size_t>(live_[k / 6])];
+      const double w = x.h[3] - x.err[3];
+      if (!(w > 0)) {
+        box_ok_ = false;
+        break;
+      }
+      for (int c = 0; c < 3; ++c) top_[c] = std::max(top_[c], std::max(0.0, (x.h[c] + x.err[c]) / w * (1 + 8 * u)));
     }
   }
 
-  // True when the filter shows every live vertex strictly inside plane i (the bound as in side()).
-  bool all_inside(int i) const {
+  // True when plane i holds on the box [0, top_] ⊇ the polytope: Σ max(a_k, 0)·top_k <= b, with
+  // the filter copy's coefficients within 6u of the exact ones (scaled) and the sum's roundings
+  // covered by 1 + 16u on the left and 1 - 16u on the right.
+  bool box_inside(int i) const {
+    const Filter& f = filters_[static_cast<std::size_t>(i)];
+    if (!f.usable || !box_ok_) return false;
+    const double* a = f.c;
+    const double lhs = (std::max(a[0], 0.0) * top_[0] + std::max(a[1], 0.0) * top_[1] + std::max(a[2], 0.0) * top_[2]) *
+                       (1 + 16 * u);
+    return lhs <= a[3] * (1 - 16 * u);
+  }
+
+  // True when the filter shows no live vertex strictly outside plane i (each strictly inside, or
+  // exactly on it with a zero bound): s < -bound with the
+  // bound of side() enlarged as in pack() (and 1 + 64u for its evaluation, 1 + 16u more for α, β).
+  bool none_outside(int i) const {
     const Filter& f = filters_[static_cast<std::size_t>(i)];
     if (!f.usable || !all_filtered_) return false;
     const double* a = f.c;
-    for (std::size_t k = 0; k < packed_.size(); k += 8) {
+    const double m = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])}) * (1 + 128 * u);
+    const double b = std::fabs(a[3]) * (1 + 128 * u);
+    for (std::size_t k = 0; k < packed_.size(); k += 6) {
       const double* h = &packed_[k];
-      const double s = a[0] * h[0] + a[1] * h[1] + a[2] * h[2] - a[3] * h[3];
-      const double T = std::fabs(a[0] * h[0]) + std::fabs(a[1] * h[1]) + std::fabs(a[2] * h[2]) + std::fabs(a[3] * h[3]);
-      const double E = std::fabs(a[0]) * h[4] + std::fabs(a[1]) * h[5] + std::fabs(a[2]) * h[6] + std::fabs(a[3]) * h[7];
-      if (!(s < -(E + 16 * u * (T + E)) * (1 + 64 * u))) return false;
+      const double v = a[0] * h[0] + a[1] * h[1] + a[2] * h[2] - a[3] * h[3], bound = m * h[4] + b * h[5];
+      // A zero bound: every term exactly zero (see filtered_sign), the vertex exactly on the plane.
+      if (!(v < -bound || (bound == 0 && v == 0))) return false;
     }
     return true;
   }
@@ -197,6 +229,9 @@ class Clipper {
   static int filtered_sign(double value, double bound) {
     if (value > bound) return 1;
     if (value < -bound) return -1;
+    // A zero bound means every term was exactly zero (non-negative sums of products of normal
+    // numbers vanish only then), so the value is exact: 0 here.
+    if (bound == 0) return 0;
     return 2;  // undecided
   }
 
@@ -304,7 +339,10 @@ class Clipper {
   }
 
   ClippedPolytope::Outcome clip(int i) {
-    if (all_inside(i)) {
+    if (box_inside(i)) {
+      return ClippedPolytope::Outcome::polytope;
+    }
+    if (none_outside(i)) {
       if (counts_) counts_->filtered += static_cast<long>(live_.size());
       return ClippedPolytope::Outcome::polytope;
     }
@@ -348,39 +386,48 @@ class Clipper {
       if (sign_.size() < vertices_.size()) sign_.resize(vertices_.size() + 64);
       sign_[c.vertex] = 0;
     }
-    std::vector<Face> kept;
-    std::vector<int> next_on_cap(vertices_.size(), -1);
+    // Faces with no vertex strictly outside are kept as they are; the others are cut.
+    kept_.clear();
+    next_on_cap_.assign(vertices_.size(), -1);
     int cap_edges = 0, cap_start = -1;
-    for (const Face& f : faces_) {
+    for (Face& f : faces_) {
+      bool cut = false;
+      for (int a : f.cycle) cut = cut || sign_[a] > 0;
       Face g{f.plane, {}};
-      for (std::size_t k = 0; k < f.cycle.size(); ++k) {
-        const int a = f.cycle[k], b = f.cycle[(k + 1) % f.cycle.size()];
-        if (sign_[a] <= 0) g.cycle.push_back(a);
-        if (sign_[a] * sign_[b] < 0) g.cycle.push_back(find(a, b)->vertex);
+      if (!cut) g = std::move(f);
+      else {
+        g.cycle.reserve(f.cycle.size() + 1);
+        for (std::size_t k = 0; k < f.cycle.size(); ++k) {
+          const int a = f.cycle[k], b = f.cycle[(k + 1) % f.cycle.size()];
+          if (sign_[a] <= 0) g.cycle.push_back(a);
+          if (sign_[a] * sign_[b] < 0) g.cycle.push_back(find(a, b)->vertex);
+        }
+        if (g.cycle.size() < 3) continue;
       }
-      if (g.cycle.size() < 3) continue;
       // An edge of the face in plane i is an edge of the cut facet, traversed the other way.
       for (std::size_t k = 0; k < g.cycle.size(); ++k) {
         const int a = g.cycle[k], b = g.cycle[(k + 1) % g.cycle.size()];
         if (sign_[a] == 0 && sign_[b] == 0) {
-          GMCC_CHECK(next_on_cap[b] == -1, "clip_polytope: the cut facet is a simple cycle");
-          next_on_cap[b] = a, ++cap_edges, cap_start = b;
+          GMCC_CHECK(next_on_cap_[b] == -1, "clip_polytope: the cut facet is a simple cycle");
+          next_on_cap_[b] = a, ++cap_edges, cap_start = b;
         }
       }
-      kept.push_back(std::move(g));
+      kept_.push_back(std::move(g));
     }
     Face cap{i, {}};
-    for (int v = cap_start; v != -1 && (cap.cycle.empty() || v != cap_start); v = next_on_cap[v])
+    for (int v = cap_start; v != -1 && static_cast<int>(cap.cycle.size()) <= cap_edges &&
+                            (cap.cycle.empty() || v != cap_start);
+         v = next_on_cap_[v])
       cap.cycle.push_back(v);
     GMCC_CHECK(cap.cycle.size() >= 3 && static_cast<int>(cap.cycle.size()) == cap_edges,
                "clip_polytope: a plane with vertices strictly on both sides cuts a facet");
-    kept.push_back(std::move(cap));
-    faces_ = std::move(kept);
+    kept_.push_back(std::move(cap));
+    std::swap(faces_, kept_);
     live_.clear();
-    std::vector<char> seen(vertices_.size(), 0);
+    seen_.assign(vertices_.size(), 0);
     for (const Face& f : faces_)
       for (int v : f.cycle)
-        if (!seen[v]) seen[v] = 1, live_.push_back(v);
+        if (!seen_[v]) seen_[v] = 1, live_.push_back(v);
     pack();
     return ClippedPolytope::Outcome::polytope;
   }
@@ -421,8 +468,13 @@ class Clipper {
   std::vector<Vertex> vertices_;
   std::vector<Face> faces_;
   std::vector<int> live_;
+  std::vector<Face> kept_;       // scratch for clip()
+  std::vector<int> next_on_cap_;  // scratch for clip()
+  std::vector<char> seen_;        // scratch for clip()
   std::vector<double> packed_;  // per live vertex: h[0..3], err[0..3]
   bool all_filtered_ = true;
+  std::array<double, 3> top_{};  // coordinates' upper bounds over the polytope (pack())
+  bool box_ok_ = false;
   std::vector<std::size_t> order_;  // the rows, in clipping order
   std::vector<int> sign_;
 };
