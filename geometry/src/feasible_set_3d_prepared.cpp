@@ -49,7 +49,16 @@ IntegerPlane3 integer_plane(const HalfSpace3& h) {
   mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), h.a.z.get_den_mpz_t());
   mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), h.b.get_den_mpz_t());
   auto times = [&l](const Rational& q) { return mpz_class(q.get_num() * (l / q.get_den())); };
-  return {{times(h.a.x), times(h.a.y), times(h.a.z)}, times(h.b)};
+  IntegerPlane3 p{{times(h.a.x), times(h.a.y), times(h.a.z)}, times(h.b)};
+  // Divided by the coefficients' gcd (once per gamut): every row and vertex built from it is
+  // smaller.
+  mpz_class g;
+  mpz_gcd(g.get_mpz_t(), p.a[0].get_mpz_t(), p.a[1].get_mpz_t());
+  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), p.a[2].get_mpz_t());
+  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), p.b.get_mpz_t());
+  if (g > 1)
+    for (mpz_class* z : {&p.a[0], &p.a[1], &p.a[2], &p.b}) mpz_divexact(z->get_mpz_t(), z->get_mpz_t(), g.get_mpz_t());
+  return p;
 }
 
 // --- The image hull, filtered (docs/math.md §1b "The prepared route") --------------------------
