@@ -19,12 +19,19 @@ using namespace gmcc;
 
 namespace {
 
+// A Rational is always in canonical form (docs/conventions.md §1): every value made here from a
+// numerator and a denominator is canonicalised.
+Rational reduced(Rational r) {
+  r.canonicalize();
+  return r;
+}
+
 Rational number(fuzz::ByteReader& in) {
   const std::uint8_t kind = in.byte();
   const long v = static_cast<long>(in.byte());
   switch (kind % 6) {
     case 0: return Rational(v % 8);
-    case 1: return Rational(v, 1 + in.byte());
+    case 1: return reduced(Rational(v, 1 + in.byte()));
     case 2: {  // a power of two, 2^-60 … 2^60, times a small odd number
       Rational r(1 + 2 * (v % 4));
       const int e = static_cast<int>(in.byte() % 121) - 60;
@@ -35,11 +42,9 @@ Rational number(fuzz::ByteReader& in) {
     case 3: {  // a long numerator over a long denominator
       mpz_class n(1 + v), d(1 + in.byte());
       for (int i = 0; i < 4; ++i) n = n * 257 + in.byte(), d = d * 263 + in.byte();
-      Rational r(n, d);
-      r.canonicalize();
-      return r;
+      return reduced(Rational(n, d));
     }
-    case 4: return Rational(v % 4, 3);
+    case 4: return reduced(Rational(v % 4, 3));
     default: return Rational(v);
   }
 }
@@ -61,7 +66,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (int i = 0; i < n; ++i) {
     if (shape == 0) canonical.push_back(colour(in));
     else {
-      const Rational s(in.byte() % 5, 4), t(shape == 1 ? in.byte() % 5 : 0, 4);
+      const Rational s = reduced(Rational(in.byte() % 5, 4)), t = reduced(Rational(shape == 1 ? in.byte() % 5 : 0, 4));
       // p + s(q - p) + t(r - p), each channel made >= 0 (abs keeps it exact and may unflatten it)
       Colour c{Rational(p.r + s * (q.r - p.r) + t * (r.r - p.r)), Rational(p.g + s * (q.g - p.g) + t * (r.g - p.g)),
                Rational(p.b + s * (q.b - p.b) + t * (r.b - p.b))};
@@ -71,15 +76,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   const std::uint8_t image_kind = in.byte();
   const int m = image_kind % 8 == 7 ? 64 + in.byte() % 64 : 1 + in.byte() % 8;
-  const Colour d{Rational(1 + in.byte() % 7, 1 + in.byte() % 5), Rational(1 + in.byte() % 7, 1 + in.byte() % 5),
-                 Rational(1 + in.byte() % 7, 1 + in.byte() % 5)};
+  // (1 + n % 7)/(1 + m % 5), the bytes read in order (function arguments are not sequenced).
+  auto ratio = [&in] {
+    const long n = 1 + in.byte() % 7;
+    return reduced(Rational(n, 1 + in.byte() % 5));
+  };
+  const Colour d{ratio(), ratio(), ratio()};
   std::vector<Colour> image;
   for (int i = 0; i < m; ++i) {
     const std::uint8_t how = in.byte() % 4;
     if (how == 0) image.push_back(colour(in));
     else {  // a canonical colour under the map 1/d, maybe shaded
       const Colour& c = canonical[in.byte() % canonical.size()];
-      const Rational f = how == 3 ? Rational(1 + in.byte() % 16, 16) : Rational(1);
+      const Rational f = how == 3 ? reduced(Rational(1 + in.byte() % 16, 16)) : Rational(1);
       image.push_back({Rational(c.r / d.r * f), Rational(c.g / d.g * f), Rational(c.b / d.b * f)});
     }
   }
