@@ -53,9 +53,9 @@ class CanonicalConstraints3 {
 /// feasible_set_3d(canonical colours, image, black) below, faster (docs/math.md §1b "The
 /// prepared route", docs/performance.md "CRULE in 3-D (issue 16)").
 ///
-/// The image hull's vertices are found first (points certified strictly inside a small hull of
-/// extreme image colours by a double filter with a proven bound are dropped, the rest go to
-/// CGAL's exact hull). When G_c3 is 3-dimensional, the box 0 <= d_k <= X_k/P_k is clipped by the
+/// The image hull's vertices are found first (from 64 colours, those certified strictly inside a
+/// small hull of extreme image colours by a double filter with a proven bound are dropped; from
+/// 32, CGAL's exact hull; below 32 every distinct colour is kept, which gives the same set). When G_c3 is 3-dimensional, the box 0 <= d_k <= X_k/P_k is clipped by the
 /// half-spaces (a ⊙ p)·d <= b, integer coefficients, for every canonical facet a·x <= b and image
 /// hull vertex p: vertices kept as triples of planes, every side test the sign of an integer
 /// polynomial decided by a double filter with a proven error bound or else exactly in GMP
