@@ -6,6 +6,7 @@
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/numerics/internal_check.h>
 
+#include "internal/crule_exact.h"
 #include "internal/half_plane.h"
 #include "internal/linear_program.h"
 #include "internal/vector3.h"
@@ -26,6 +27,13 @@
 // ---- Forsyth's CRULE feasible set in 3-D ----------------------------------------------------
 
 namespace gmcc {
+namespace internal {
+bool operator<(const HalfSpace3& h, const HalfSpace3& g) {
+  if (h.a != g.a) return h.a < g.a;
+  return h.b < g.b;
+}
+bool operator==(const HalfSpace3& h, const HalfSpace3& g) { return h.a == g.a && h.b == g.b; }
+}  // namespace internal
 namespace {
 using internal::coord;
 using internal::cross;
@@ -37,16 +45,7 @@ using KPoint3 = Kernel::Point_3;
 static_assert(std::is_same<Kernel::FT::Exact_type, mpq_class>::value,
               "gmcc expects CGAL built with CGAL_USE_GMPXX (link CGAL::CGAL)");
 
-/// The closed half-space a·x <= b, normalised so the first non-zero |a_k| is 1 (a unique key).
-struct HalfSpace {
-  Point3 a;
-  Rational b;
-};
-bool operator<(const HalfSpace& h, const HalfSpace& g) {
-  if (h.a != g.a) return h.a < g.a;
-  return h.b < g.b;
-}
-bool operator==(const HalfSpace& h, const HalfSpace& g) { return h.a == g.a && h.b == g.b; }
+using HalfSpace = internal::HalfSpace3;
 HalfSpace normalised(Point3 a, Rational b) {
   const Rational& first = sgn(a.x) != 0 ? a.x : sgn(a.y) != 0 ? a.y : a.z;
   const Rational s = 1 / abs(first);
@@ -215,10 +214,9 @@ struct Rows {
   std::vector<HalfSpace> rows;
   Point3 box_max;
 };
-std::optional<Rows> crule_rows(const std::vector<Point3>& canonical, const std::vector<Point3>& image) {
-  Point3 X{0, 0, 0}, P{0, 0, 0};
-  for (const Point3& c : canonical)
-    for (int k = 0; k < 3; ++k) coord(X, k) = std::max(coord(X, k), coord(c, k));
+std::optional<Rows> crule_rows(const std::vector<HalfSpace>& canonical, const Point3& X,
+                               const std::vector<Point3>& image) {
+  Point3 P{0, 0, 0};
   for (const Point3& p : image)
     for (int k = 0; k < 3; ++k) coord(P, k) = std::max(coord(P, k), coord(p, k));
   for (int k = 0; k < 3; ++k)
@@ -227,7 +225,7 @@ std::optional<Rows> crule_rows(const std::vector<Point3>& canonical, const std::
                                  " = 0: that map component is unconstrained and the feasible "
                                  "set is unbounded");
   Rows out;
-  for (const HalfSpace& h : hull_half_spaces(canonical))
+  for (const HalfSpace& h : canonical)
     for (const Point3& p : image) {
       const Point3 a = internal::hadamard(h.a, p);
       if (!is_zero(a)) out.rows.push_back(normalised(a, h.b));
@@ -370,13 +368,21 @@ ConvexSet3 polytope_of(const std::vector<HalfSpace>& rows, const Point3& inner) 
 
 }  // namespace
 
-ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical_colours,
-                           const std::vector<Colour>& image_colours, CanonicalBlack black) {
-  std::vector<Point3> canonical = colours_to_points(canonical_colours, "canonical");
-  if (black == CanonicalBlack::include) canonical.push_back({0, 0, 0});
-  canonical = sorted_unique(canonical);
-  const std::vector<Point3> image = extreme_points(sorted_unique(colours_to_points(image_colours, "image")));
-  const std::optional<Rows> rows = crule_rows(canonical, image);
+namespace internal {
+
+int affine_dimension(const std::vector<Point3>& points) {
+  return static_cast<int>(affine_frame(points).size()) - 1;
+}
+
+std::vector<HalfSpace3> hull_half_spaces_3(const std::vector<Point3>& points) {
+  return hull_half_spaces(points);
+}
+
+std::vector<Point3> extreme_points_3(const std::vector<Point3>& points) { return extreme_points(points); }
+
+ConvexSet3 feasible_set_3d_lp(const std::vector<HalfSpace3>& canonical, const Point3& canonical_max,
+                              const std::vector<Point3>& image) {
+  const std::optional<Rows> rows = crule_rows(canonical, canonical_max, image);
   if (!rows) return {};
   const std::optional<AffineHull> f = affine_hull(rows->rows);
   if (!f) return {};
@@ -388,4 +394,17 @@ ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical_colours,
   }
 }
 
+ConvexSet3 feasible_set_3d_reference(const std::vector<Colour>& canonical_colours,
+                                     const std::vector<Colour>& image_colours, bool include_black) {
+  std::vector<Point3> canonical = colours_to_points(canonical_colours, "canonical");
+  if (include_black) canonical.push_back({0, 0, 0});
+  canonical = sorted_unique(canonical);
+  const std::vector<Point3> image = extreme_points(sorted_unique(colours_to_points(image_colours, "image")));
+  Point3 X{0, 0, 0};
+  for (const Point3& c : canonical)
+    for (int k = 0; k < 3; ++k) coord(X, k) = std::max(coord(X, k), coord(c, k));
+  return feasible_set_3d_lp(hull_half_spaces(canonical), X, image);
+}
+
+}  // namespace internal
 }  // namespace gmcc

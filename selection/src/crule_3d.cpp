@@ -45,8 +45,12 @@ double worst_case_map_deg_3d(const ConvexSet3& F, const Point3& m) {
 
 Crule3d crule_3d(const std::vector<Colour>& canonical, const std::vector<Colour>& image,
                  CanonicalBlack black) {
+  return crule_3d(CanonicalConstraints3(canonical, black), image);
+}
+
+Crule3d crule_3d(const CanonicalConstraints3& canonical, const std::vector<Colour>& image) {
   Crule3d r;
-  r.feasible = feasible_set_3d(canonical, image, black);
+  r.feasible = feasible_set_3d(canonical, image);
   r.volume = volume(r.feasible);
   if (r.feasible.kind == ConvexKind3::empty) return r;
   r.max_volume = with_worst_case(r.feasible, max_volume(r.feasible));

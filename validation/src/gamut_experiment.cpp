@@ -26,6 +26,7 @@
 #include <stdexcept>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 namespace gmcc {
@@ -112,12 +113,13 @@ std::vector<RuleRecord> baseline_records(const ExperimentSetup& setup, const Tes
           score_estimate(max, light.true_map, setup.canonical_light)};
 }
 
-// The same scene in 3-D (Forsyth's CRULE, black in G_c3 or not as configured): its rules' maps
-// scored by their perspective (d1/d3, d2/d3) into rec.rules[3], [4] (and with crule_extended
-// [5] max-trace, [6] the cone mean of F3's perspective image), each worst case over F3.
-void score_crule(const ExperimentSetup& setup, const ExperimentConfig& config, const TestLight& light,
-                 const std::vector<Colour>& image_colours, SceneRecord& rec) {
-  const Crule3d c3 = crule_3d(setup.canonical_surfaces, image_colours, config.crule_black);
+// The same scene in 3-D (Forsyth's CRULE against crule_gamut, G_c3 prepared once with black in it
+// or not as configured): its rules' maps scored by their perspective (d1/d3, d2/d3) into
+// rec.rules[3], [4] (and with crule_extended [5] max-trace, [6] the cone mean of F3's perspective
+// image), each worst case over F3.
+void score_crule(const ExperimentSetup& setup, const ExperimentConfig& config, const CanonicalConstraints3& crule_gamut,
+                 const TestLight& light, const std::vector<Colour>& image_colours, SceneRecord& rec) {
+  const Crule3d c3 = crule_3d(crule_gamut, image_colours);
   const bool truth3_inside = contains(c3.feasible, light.true_diagonal_map);
   // The 3-D map d of a selection, its worst case over F3 given: scored when d3 > 0.
   auto score = [&](std::size_t slot, const Point3& d, double worst_case_deg) {
@@ -143,7 +145,8 @@ void score_crule(const ExperimentSetup& setup, const ExperimentConfig& config, c
 
 // Scenes s_begin <= s < s_end of cell (light_index, n), each with its own generator.
 std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const ExperimentConfig& config,
-                                  const CanonicalConstraints& gamut, const std::vector<Point2>& chromaticities,
+                                  const CanonicalConstraints& gamut, const CanonicalConstraints3* crule_gamut,
+                                  const std::vector<Point2>& chromaticities,
                                   std::size_t light_index, int n, std::uint64_t s_begin, std::uint64_t s_end,
                                   std::atomic<std::uint64_t>& done) {
   const TestLight& light = setup.lights[light_index];
@@ -230,7 +233,7 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
     rec.area = scored.area;
     for (std::size_t r = 0; r < 3; ++r)
       if (scored.rules[r]) rec.rules[r] = record(*scored.rules[r], truth_inside);
-    if (config.crule) score_crule(setup, config, light, image_colours, rec);
+    if (crule_gamut) score_crule(setup, config, *crule_gamut, light, image_colours, rec);
   }
   return records;
 }
@@ -464,6 +467,10 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
   std::vector<std::vector<SceneRecord>> records(jobs.size());
 
   const std::deque<CanonicalConstraints> gamuts = prepared_gamuts(result, config);
+  // G_c3 prepared once for every scene's CRULE (the canonical colours, black in it or not).
+  const std::optional<CanonicalConstraints3> crule_gamut =
+      config.crule ? std::optional<CanonicalConstraints3>(CanonicalConstraints3(setup.canonical_surfaces, config.crule_black))
+                   : std::nullopt;
   const unsigned threads = config.threads ? config.threads : std::max(1u, std::thread::hardware_concurrency());
   const std::vector<std::vector<Point2>> chromaticities = light_chromaticities(setup, config, threads);
   std::atomic<std::size_t> next{0};
@@ -477,7 +484,7 @@ ExperimentResult run_gamut_experiment(const ExperimentSetup& setup, const Experi
         const auto [s_begin, s_end] = shard.of_cell(j);
         const std::size_t l = jobs[j].light;
         records[j] = run_cell(setup, config, gamuts[setup.canonical_chromaticity_sets.empty() ? 0 : setup.lights[l].canonical],
-                              chromaticities[l], l, jobs[j].n, s_begin, s_end, done);
+                              crule_gamut ? &*crule_gamut : nullptr, chromaticities[l], l, jobs[j].n, s_begin, s_end, done);
         if (groups.grouped) continue;  // summarised per group below, once every light's scenes are in
         std::vector<const SceneRecord*> scenes;
         for (const SceneRecord& rec : records[j]) scenes.push_back(&rec);

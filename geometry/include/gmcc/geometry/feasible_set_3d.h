@@ -8,9 +8,16 @@
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/convex_set_3.h>
 
+#include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace gmcc {
+
+namespace internal {
+struct CanonicalPlanes3;
+struct FeasibleSet3Access;
+}  // namespace internal
 
 /// Whether the canonical gamut G_c3 includes black (0, 0, 0).
 enum class CanonicalBlack {
@@ -20,7 +27,51 @@ enum class CanonicalBlack {
   exclude,  ///< Forsyth's hull of the canonical colours alone; F3 may be empty
 };
 
-/// F3, exactly, with its kind (polytope, polygon, segment, point or empty).
+/// G_c3 prepared once for many images (docs/math.md §1b "The prepared route"): its exact
+/// half-spaces a·x <= b (CGAL::convex_hull_3 over Epeck when it is 3-dimensional; for a planar,
+/// collinear or one-point gamut its affine hull as pairs of opposite half-spaces plus its edges
+/// or end caps), each also with integer coefficients and the double copies the filters use, and
+/// its largest channels X. Immutable once built: share one between threads (copies share it too).
+class CanonicalConstraints3 {
+ public:
+  /// Prepares the hull of `canonical` (with black when `black` says so).
+  /// \throws std::invalid_argument if `canonical` is empty or has a negative channel.
+  /// Complexity O(n log n) for n canonical colours (one exact 3-D hull).
+  explicit CanonicalConstraints3(const std::vector<Colour>& canonical,
+                                 CanonicalBlack black = CanonicalBlack::include);
+  /// The dimension of G_c3's affine hull, 0 to 3 (3: the filtered clip applies, docs/math.md §1b).
+  int dimension() const;
+  /// How many half-spaces describe G_c3 (its facets when dimension() is 3).
+  std::size_t half_spaces() const;
+
+ private:
+  std::shared_ptr<const internal::CanonicalPlanes3> planes_;
+  friend struct internal::FeasibleSet3Access;
+};
+
+/// F3 from a prepared canonical gamut: the same exact set, kind and canonical form as
+/// feasible_set_3d(canonical colours, image, black) below, faster (docs/math.md §1b "The
+/// prepared route", docs/performance.md "CRULE in 3-D (issue 16)").
+///
+/// The image hull's vertices are found first (from 64 colours, those certified strictly inside a
+/// small hull of extreme image colours by a double filter with a proven bound are dropped; from
+/// 32, CGAL's exact hull; below 32 every distinct colour is kept, which gives the same set). When G_c3 is 3-dimensional, the box 0 <= d_k <= X_k/P_k is clipped by the
+/// half-spaces (a ⊙ p)·d <= b, integer coefficients, for every canonical facet a·x <= b and image
+/// hull vertex p: vertices kept as triples of planes, every side test the sign of an integer
+/// polynomial decided by a double filter with a proven error bound or else exactly in GMP
+/// integers (docs/derivations.md §4.6). When a half-space leaves no vertex strictly inside but
+/// some on it (F3 is flat), or G_c3 is not 3-dimensional, the exact LP route below decides the
+/// degenerate kind. Every decision is exact.
+/// \param canonical the prepared G_c3. \param image non-empty, channels >= 0.
+/// \throws std::invalid_argument on an empty image or a negative channel; UnboundedFeasibleSet
+///         (from feasible_set.h) when every image colour has some channel 0.
+/// Complexity: the image hull, then O(k·f·v) filtered tests for k image-hull vertices, f canonical
+/// facets and v the largest intermediate vertex count.
+ConvexSet3 feasible_set_3d(const CanonicalConstraints3& canonical, const std::vector<Colour>& image);
+
+/// F3, exactly, with its kind (polytope, polygon, segment, point or empty): the same as
+/// feasible_set_3d(CanonicalConstraints3(canonical, black), image), which it calls; the route
+/// the prepared form keeps for the degenerate kinds is described here.
 ///
 /// G_c3 is written as closed half-spaces a·x <= b: its facets (CGAL::convex_hull_3 over
 /// Epeck) when it is 3-dimensional; for a planar, collinear or one-point gamut its affine hull

@@ -46,4 +46,9 @@ struct Crule3d {
 Crule3d crule_3d(const std::vector<Colour>& canonical, const std::vector<Colour>& image,
                  CanonicalBlack black = CanonicalBlack::include);
 
+/// The same from a canonical gamut prepared once (CanonicalConstraints3, feasible_set_3d.h;
+/// docs/math.md §1b "The prepared route"): what an experiment calls per scene.
+/// \throws as feasible_set_3d.
+Crule3d crule_3d(const CanonicalConstraints3& canonical, const std::vector<Colour>& image);
+
 }  // namespace gmcc

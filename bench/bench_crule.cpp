@@ -1,0 +1,235 @@
+// Forsyth's CRULE in 3-D (issue 16), as Google Benchmark targets on the same scenes in one run:
+//   crule_prepared     feasible_set_3d from a CanonicalConstraints3 prepared once (filtered clip);
+//   crule_lp           the route it replaced (canonical hull per call, image hull, exact LP,
+//                      CGAL half-space intersection), kept as the tests' oracle;
+//   crule_3d_prepared  F3 and both selections (max-volume, centroid) with their worst cases;
+//   feasible_polygon_2d, scene_certified_2d  the 2-D certified route on the same scenes
+//                      (feasible_polygon, then rule_errors as the experiment runs it);
+//   select_3d/N        `gmcc select --space 3d` without file reading: F3 of an image of N colours
+//                      against the Munsell/D55 canonical gamut (1269 colours and black);
+//   crule_experiment   the CRULE feasible sets of the full experiment's 22,000 scenes (4 lights
+//                      × 11 counts × 500 scenes, 1–11 surfaces), on 2 threads (wall time).
+// Scenes: per test light (D75, D100, P2856, P15000), K Munsell chips (--surfaces K, default 11).
+//
+//   bench_crule [--surfaces K] [--scenes N] [--data DIR] [benchmark flags]
+#include <gmcc/geometry/chromaticity.h>
+#include <gmcc/geometry/feasible_polygon.h>
+#include <gmcc/geometry/feasible_set.h>
+#include <gmcc/geometry/feasible_set_3d.h>
+#include <gmcc/selection/crule_3d.h>
+#include <gmcc/selection/rule_errors.h>
+#include <gmcc/validation/gamut_experiment.h>
+#include <gmcc/validation/spectral_table.h>
+#include <gmcc/validation/synthetic_experiment.h>
+
+#include "internal/crule_exact.h"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <atomic>
+#include <ctime>
+#include <cstring>
+#include <memory>
+#include <random>
+#include <string>
+#include <thread>
+#include <vector>
+
+#ifndef GMCC_DATA_DIR
+#define GMCC_DATA_DIR "data"
+#endif
+
+namespace {
+using namespace gmcc;
+
+struct Scene {
+  std::size_t light;
+  std::vector<Colour> colours;
+  std::vector<Point2> chromaticities;
+  std::vector<const Point2*> pointers;
+};
+struct Workload {
+  ExperimentSetup setup;
+  std::unique_ptr<CanonicalConstraints> prepared_2d;
+  std::unique_ptr<CanonicalConstraints3> prepared_3d;
+  std::vector<Scene> scenes;
+  std::vector<std::vector<Colour>> experiment;  // 4 × 11 × 500 scenes, 1–11 surfaces
+};
+std::uint64_t scenes_per_light = 200;
+int surfaces = 11;
+std::string data_dir = GMCC_DATA_DIR;
+
+std::vector<std::size_t> shuffled(std::size_t n, std::mt19937_64& g) {
+  std::vector<std::size_t> pool(n);
+  for (std::size_t i = 0; i < n; ++i) pool[i] = i;
+  std::shuffle(pool.begin(), pool.end(), g);
+  return pool;
+}
+
+const Workload& workload() {
+  static const Workload w = [] {
+    Workload w;
+    w.setup = synthetic_setup(read_spectral_csv(data_dir + "/munsell_matt_1269_joensuu_5nm.csv"),
+                              read_spectral_csv(data_dir + "/cie_daylight_basis_S0_S1_S2.csv"), "D55",
+                              {"D75", "D100", "P2856", "P15000"});
+    w.prepared_2d = std::make_unique<CanonicalConstraints>(canonical_gamut(
+        perspective_chromaticities(w.setup.canonical_surfaces, NonPositiveBluePolicy::drop).points, {}));
+    w.prepared_3d = std::make_unique<CanonicalConstraints3>(w.setup.canonical_surfaces);
+    std::mt19937_64 g(6);
+    for (std::size_t l = 0; l < w.setup.lights.size(); ++l)
+      for (std::uint64_t s = 0; s < scenes_per_light; ++s) {
+        const std::vector<std::size_t> pool = shuffled(w.setup.lights[l].surfaces.size(), g);
+        Scene sc{l, {}, {}, {}};
+        for (int i = 0; i < surfaces; ++i) {
+          const Colour& c = w.setup.lights[l].surfaces[pool[static_cast<std::size_t>(i)]];
+          sc.colours.push_back(c);
+          sc.chromaticities.push_back(perspective_chromaticity(c));
+        }
+        for (const Point2& q : sc.chromaticities) sc.pointers.push_back(&q);
+        w.scenes.push_back(std::move(sc));
+      }
+    std::mt19937_64 e(7);
+    for (std::size_t l = 0; l < w.setup.lights.size(); ++l)
+      for (int n = 1; n <= 11; ++n)
+        for (int s = 0; s < 500; ++s) {
+          const std::vector<std::size_t> pool = shuffled(w.setup.lights[l].surfaces.size(), e);
+          std::vector<Colour> c;
+          for (int i = 0; i < n; ++i) c.push_back(w.setup.lights[l].surfaces[pool[static_cast<std::size_t>(i)]]);
+          w.experiment.push_back(std::move(c));
+        }
+    return w;
+  }();
+  return w;
+}
+
+// N image colours: random mixtures of three Munsell chips under D75 with a random shading,
+// quantised to 16 bits (k/65535 of the brightest channel), all distinct; seeded.
+std::vector<Colour> image_colours(std::size_t n) {
+  const Workload& w = workload();
+  const std::vector<Colour>& s = w.setup.lights[0].surfaces;
+  double top = 0;
+  for (const Colour& c : s) top = std::max({top, to_double_nearest(c.r), to_double_nearest(c.g), to_double_nearest(c.b)});
+  std::mt19937_64 g(8);
+  std::uniform_int_distribution<std::size_t> pick(0, s.size() - 1);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<Colour> out;
+  std::vector<std::array<long, 3>> seen;
+  while (out.size() < n) {
+    const Colour &a = s[pick(g)], &b = s[pick(g)], &c = s[pick(g)];
+    double x = unit(g), y = unit(g);
+    if (x + y > 1) x = 1 - x, y = 1 - y;
+    const double f = 0.2 + 0.8 * unit(g);
+    std::array<long, 3> q;
+    const Colour* cs[3] = {&a, &b, &c};
+    for (int k = 0; k < 3; ++k) {
+      double v = 0;
+      const double wts[3] = {x, y, 1 - x - y};
+      for (int j = 0; j < 3; ++j) {
+        const Rational& ch = k == 0 ? cs[j]->r : k == 1 ? cs[j]->g : cs[j]->b;
+        v += wts[j] * to_double_nearest(ch);
+      }
+      q[k] = std::lround(f * v / top * 65535);
+    }
+    seen.push_back(q);
+    out.push_back({Rational(q[0], 65535), Rational(q[1], 65535), Rational(q[2], 65535)});
+  }
+  // Distinct colours, as an image's colour set: drop repeats (kept order-independent by sorting).
+  std::vector<std::size_t> order(out.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return seen[i] < seen[j]; });
+  std::vector<Colour> unique;
+  for (std::size_t i = 0; i < order.size(); ++i)
+    if (i == 0 || seen[order[i]] != seen[order[i - 1]]) unique.push_back(out[order[i]]);
+  return unique;
+}
+
+void crule_prepared(benchmark::State& state) {
+  const Workload& w = workload();
+  std::size_t i = 0, polytopes = 0;
+  for (auto _ : state)
+    polytopes += feasible_set_3d(*w.prepared_3d, w.scenes[i++ % w.scenes.size()].colours).kind == ConvexKind3::polytope;
+  state.counters["polytope"] = benchmark::Counter(static_cast<double>(polytopes), benchmark::Counter::kAvgIterations);
+}
+void crule_lp(benchmark::State& state) {
+  const Workload& w = workload();
+  std::size_t i = 0, polytopes = 0;
+  for (auto _ : state)
+    polytopes += internal::feasible_set_3d_reference(w.setup.canonical_surfaces, w.scenes[i++ % w.scenes.size()].colours,
+                                                     true).kind == ConvexKind3::polytope;
+  state.counters["polytope"] = benchmark::Counter(static_cast<double>(polytopes), benchmark::Counter::kAvgIterations);
+}
+void crule_3d_prepared(benchmark::State& state) {
+  const Workload& w = workload();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(crule_3d(*w.prepared_3d, w.scenes[i++ % w.scenes.size()].colours).volume);
+}
+void feasible_polygon_2d(benchmark::State& state) {
+  const Workload& w = workload();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(feasible_polygon(*w.prepared_2d, w.scenes[i++ % w.scenes.size()].pointers).kind());
+}
+void scene_certified_2d(benchmark::State& state) {
+  const Workload& w = workload();
+  std::size_t i = 0;
+  double sink = 0;
+  for (auto _ : state) {
+    const Scene& s = w.scenes[i++ % w.scenes.size()];
+    const FeasiblePolygon P = feasible_polygon(*w.prepared_2d, s.pointers);
+    if (P.kind() == ConvexKind::empty) continue;
+    const Point2& truth = w.setup.lights[s.light].true_map;
+    benchmark::DoNotOptimize(P.contains(truth));
+    const auto errors = rule_errors(P, truth, w.setup.canonical_light);
+    if (errors)
+      for (const RuleErrors& e : *errors) sink += e.map_error_deg + e.worst_case_deg;
+  }
+  benchmark::DoNotOptimize(sink);
+}
+void select_3d(benchmark::State& state) {
+  const Workload& w = workload();
+  const std::vector<Colour> image = image_colours(static_cast<std::size_t>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(feasible_set_3d(*w.prepared_3d, image).vertices.size());
+  state.counters["colours"] = static_cast<double>(image.size());
+}
+void crule_experiment(benchmark::State& state) {
+  const Workload& w = workload();
+  const std::clock_t cpu0 = std::clock();  // the process's CPU time, both threads
+  for (auto _ : state) {
+    std::atomic<std::size_t> next{0}, polytopes{0};
+    auto work = [&] {
+      for (std::size_t i; (i = next++) < w.experiment.size();)
+        polytopes += feasible_set_3d(*w.prepared_3d, w.experiment[i]).kind == ConvexKind3::polytope;
+    };
+    std::thread a(work), b(work);
+    a.join(), b.join();
+    state.counters["polytope_share"] = static_cast<double>(polytopes) / static_cast<double>(w.experiment.size());
+  }
+  state.counters["scenes"] = static_cast<double>(w.experiment.size());
+  state.counters["process_cpu_s"] = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
+}
+
+BENCHMARK(crule_prepared)->Unit(benchmark::kMicrosecond);
+BENCHMARK(crule_lp)->Unit(benchmark::kMicrosecond);
+BENCHMARK(crule_3d_prepared)->Unit(benchmark::kMicrosecond);
+BENCHMARK(feasible_polygon_2d)->Unit(benchmark::kMicrosecond);
+BENCHMARK(scene_certified_2d)->Unit(benchmark::kMicrosecond);
+BENCHMARK(select_3d)->Arg(1000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(crule_experiment)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<char*> rest{argv[0]};
+  for (int i = 1; i < argc; ++i) {
+    if (i + 1 < argc && !std::strcmp(argv[i], "--scenes")) scenes_per_light = std::stoull(argv[++i]);
+    else if (i + 1 < argc && !std::strcmp(argv[i], "--surfaces")) surfaces = std::stoi(argv[++i]);
+    else if (i + 1 < argc && !std::strcmp(argv[i], "--data")) data_dir = argv[++i];
+    else rest.push_back(argv[i]);
+  }
+  int n = static_cast<int>(rest.size());
+  benchmark::Initialize(&n, rest.data());
+  workload();  // built before any timing
+  benchmark::AddCustomContext("surfaces", std::to_string(surfaces));
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+}

@@ -1,0 +1,129 @@
+// Fuzz target: Forsyth's CRULE feasible set in 3-D by the prepared route (CanonicalConstraints3,
+// the filtered clip) against the LP route it replaced (internal::feasible_set_3d_reference), on
+// recipes of small, huge, tiny and long rationals, duplicates, coplanar and collinear gamuts,
+// images of scaled canonical colours (F3 a point), zero channels (unbounded) and images large
+// enough for the image-hull prefilter (fuzz/README.md).
+#include <gmcc/geometry/convex_set_3.h>
+#include <gmcc/geometry/feasible_set.h>
+#include <gmcc/geometry/feasible_set_3d.h>
+
+#include "fuzz_support.h"
+#include "internal/crule_exact.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+using namespace gmcc;
+
+namespace {
+
+// A Rational is always in canonical form (docs/conventions.md §1): every value made here from a
+// numerator and a denominator is canonicalised.
+Rational reduced(Rational r) {
+  r.canonicalize();
+  return r;
+}
+
+Rational number(fuzz::ByteReader& in) {
+  const std::uint8_t kind = in.byte();
+  const long v = static_cast<long>(in.byte());
+  switch (kind % 6) {
+    case 0: return Rational(v % 8);
+    case 1: return reduced(Rational(v, 1 + in.byte()));
+    case 2: {  // a power of two, 2^-60 … 2^60, times a small odd number
+      Rational r(1 + 2 * (v % 4));
+      const int e = static_cast<int>(in.byte() % 121) - 60;
+      if (e >= 0) r *= Rational(mpz_class(1) << e);
+      else r /= Rational(mpz_class(1) << -e);
+      return r;
+    }
+    case 3: {  // a long numerator over a long denominator
+      mpz_class n(1 + v), d(1 + in.byte());
+      for (int i = 0; i < 4; ++i) n = n * 257 + in.byte(), d = d * 263 + in.byte();
+      return reduced(Rational(n, d));
+    }
+    case 4: return reduced(Rational(v % 4, 3));
+    default: return Rational(v);
+  }
+}
+
+Colour colour(fuzz::ByteReader& in) { return {number(in), number(in), number(in)}; }
+
+bool same(const ConvexSet3& a, const ConvexSet3& b) { return a == b; }
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  fuzz::ByteReader in(data, size);
+  const std::uint8_t flags = in.byte();
+  const bool black = flags & 1;
+  const int shape = (flags >> 1) % 4;  // 0: free, 1: planar, 2: collinear, 3: one colour
+  const int n = 1 + in.byte() % 12;
+  std::vector<Colour> canonical;
+  const Colour p = colour(in), q = colour(in), r = colour(in);
+  for (int i = 0; i < n; ++i) {
+    if (shape == 0) canonical.push_back(colour(in));
+    else {
+      const Rational s = reduced(Rational(in.byte() % 5, 4)), t = reduced(Rational(shape == 1 ? in.byte() % 5 : 0, 4));
+      // p + s(q - p) + t(r - p), each channel made >= 0 (abs keeps it exact and may unflatten it)
+      Colour c{Rational(p.r + s * (q.r - p.r) + t * (r.r - p.r)), Rational(p.g + s * (q.g - p.g) + t * (r.g - p.g)),
+               Rational(p.b + s * (q.b - p.b) + t * (r.b - p.b))};
+      for (Rational* x : {&c.r, &c.g, &c.b}) *x = abs(*x);
+      canonical.push_back(shape == 3 ? p : c);
+    }
+  }
+  const std::uint8_t image_kind = in.byte();
+  const int m = image_kind % 8 == 7 ? 64 + in.byte() % 64 : 1 + in.byte() % 8;
+  // (1 + n % 7)/(1 + m % 5), the bytes read in order (function arguments are not sequenced).
+  auto ratio = [&in] {
+    const long n = 1 + in.byte() % 7;
+    return reduced(Rational(n, 1 + in.byte() % 5));
+  };
+  const Colour d{ratio(), ratio(), ratio()};
+  std::vector<Colour> image;
+  for (int i = 0; i < m; ++i) {
+    const std::uint8_t how = in.byte() % 4;
+    if (how == 0) image.push_back(colour(in));
+    else {  // a canonical colour under the map 1/d, maybe shaded
+      const Colour& c = canonical[in.byte() % canonical.size()];
+      const Rational f = how == 3 ? reduced(Rational(1 + in.byte() % 16, 16)) : Rational(1);
+      image.push_back({Rational(c.r / d.r * f), Rational(c.g / d.g * f), Rational(c.b / d.b * f)});
+    }
+  }
+  const CanonicalBlack b = black ? CanonicalBlack::include : CanonicalBlack::exclude;
+  std::string old_error, new_error;
+  ConvexSet3 old, now;
+  try {
+    old = internal::feasible_set_3d_reference(canonical, image, black);
+  } catch (const UnboundedFeasibleSet&) {
+    old_error = "unbounded";
+  } catch (const std::invalid_argument&) {
+    old_error = "invalid";
+  }
+  try {
+    now = feasible_set_3d(CanonicalConstraints3(canonical, b), image);
+  } catch (const UnboundedFeasibleSet&) {
+    new_error = "unbounded";
+  } catch (const std::invalid_argument&) {
+    new_error = "invalid";
+  }
+  FUZZ_CHECK(old_error == new_error, "the same error: '" + old_error + "' against '" + new_error + "'");
+  if (!old_error.empty()) return 0;
+  FUZZ_CHECK(same(now, old), "the prepared route gives the LP route's F3 (kind " + to_string(now.kind) + " against " +
+                                 to_string(old.kind) + ")");
+  FUZZ_CHECK(same(canonical_convex_set_3(now.kind, now.vertices, now.faces), now), "F3 in canonical form");
+  // Every vertex of F3 maps every image colour into G_c3 (its half-spaces, exactly).
+  std::vector<Point3> g;
+  for (const Colour& c : canonical) g.push_back({c.r, c.g, c.b});
+  if (black) g.push_back({0, 0, 0});
+  std::sort(g.begin(), g.end());
+  g.erase(std::unique(g.begin(), g.end()), g.end());
+  const std::vector<internal::HalfSpace3> G = internal::hull_half_spaces_3(g);
+  for (const Point3& v : now.vertices)
+    for (const Colour& c : image)
+      for (const internal::HalfSpace3& h : G)
+        FUZZ_CHECK(h.a.x * v.x * c.r + h.a.y * v.y * c.g + h.a.z * v.z * c.b <= h.b, "a vertex of F3 is feasible");
+  return 0;
+}

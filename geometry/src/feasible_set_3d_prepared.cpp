@@ -1,0 +1,208 @@
+// Forsyth's CRULE feasible set in 3-D from a prepared canonical gamut (docs/math.md §1b "The
+// prepared route", docs/derivations.md §4.6): image hull first, then the filtered exact clip of
+// polytope_clip.cpp; the CGAL pieces and the LP route are behind internal/crule_exact.h.
+#include <gmcc/geometry/feasible_set.h>
+#include <gmcc/geometry/feasible_set_3d.h>
+
+#include "internal/crule_exact.h"
+#include "internal/polytope_clip.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace gmcc {
+namespace internal {
+
+struct CanonicalPlanes3 {
+  int dimension = 0;
+  std::vector<HalfSpace3> half_spaces;   // exact, for the LP route
+  ClipFacets integer;                    // the same with integer coefficients (dimension 3)
+  Point3 max{0, 0, 0};                   // X: the largest canonical channels
+};
+
+struct FeasibleSet3Access {
+  static const CanonicalPlanes3& planes(const CanonicalConstraints3& c) { return *c.planes_; }
+};
+
+namespace {
+
+std::vector<Point3> sorted_unique(std::vector<Point3> p) {
+  std::sort(p.begin(), p.end());
+  p.erase(std::unique(p.begin(), p.end()), p.end());
+  return p;
+}
+
+void check_colours(const std::vector<Colour>& cs, const char* what) {
+  if (cs.empty()) throw std::invalid_argument(std::string("feasible_set_3d: no ") + what + " colours");
+  for (const Colour& c : cs)
+    if (sgn(c.r) < 0 || sgn(c.g) < 0 || sgn(c.b) < 0)
+      throw std::invalid_argument(std::string("feasible_set_3d: a negative ") + what + " channel");
+}
+
+// (a·L, b·L) with L the lcm of the denominators of a and b: the same half-space, integers.
+IntegerPlane3 integer_plane(const HalfSpace3& h) {
+  mpz_class l;
+  mpz_lcm(l.get_mpz_t(), h.a.x.get_den_mpz_t(), h.a.y.get_den_mpz_t());
+  mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), h.a.z.get_den_mpz_t());
+  mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), h.b.get_den_mpz_t());
+  auto times = [&l](const Rational& q) { return mpz_class(q.get_num() * (l / q.get_den())); };
+  IntegerPlane3 p{{times(h.a.x), times(h.a.y), times(h.a.z)}, times(h.b)};
+  // Divided by the coefficients' gcd (once per gamut): every row and vertex built from it is
+  // smaller.
+  mpz_class g;
+  mpz_gcd(g.get_mpz_t(), p.a[0].get_mpz_t(), p.a[1].get_mpz_t());
+  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), p.a[2].get_mpz_t());
+  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), p.b.get_mpz_t());
+  if (g > 1)
+    for (mpz_class* z : {&p.a[0], &p.a[1], &p.a[2], &p.b}) mpz_divexact(z->get_mpz_t(), z->get_mpz_t(), g.get_mpz_t());
+  return p;
+}
+
+// --- The image hull, filtered (docs/math.md §1b "The prepared route") --------------------------
+
+// Below this many colours the image hull is left to CGAL's exact hull directly.
+constexpr std::size_t prefilter_from = 64;
+constexpr double u = 0x1p-53;
+
+// The image colours that may be vertices of their hull: a handful of extreme colours (the largest
+// along 26 directions in double) span a polytope Q ⊆ hull; a colour certified strictly inside
+// every facet of Q by a double filter is no vertex and is dropped; all others are kept.
+std::vector<Point3> hull_candidates(const std::vector<Colour>& image) {
+  const std::size_t n = image.size();
+  std::vector<std::array<double, 3>> d(n);
+  for (std::size_t i = 0; i < n; ++i)  // mpq_get_d truncates: relative error below 2u
+    d[i] = {mpq_get_d(image[i].r.get_mpq_t()), mpq_get_d(image[i].g.get_mpq_t()),
+            mpq_get_d(image[i].b.get_mpq_t())};
+  std::vector<std::size_t> extreme;
+  for (int x = -1; x <= 1; ++x)
+    for (int y = -1; y <= 1; ++y)
+      for (int z = -1; z <= 1; ++z) {
+        if (x == 0 && y == 0 && z == 0) continue;
+        std::size_t best = 0;
+        double top = -HUGE_VAL;
+        for (std::size_t i = 0; i < n; ++i) {
+          const double v = x * d[i][0] + y * d[i][1] + z * d[i][2];
+          if (v > top) top = v, best = i;
+        }
+        extreme.push_back(best);
+      }
+  std::vector<Point3> q;
+  for (std::size_t i : extreme) q.push_back({image[i].r, image[i].g, image[i].b});
+  q = sorted_unique(std::move(q));
+  std::vector<std::array<double, 4>> facets;
+  if (affine_dimension(q) == 3)
+    for (const HalfSpace3& h : hull_half_spaces_3(q)) {
+      const IntegerPlane3 p = integer_plane(h);
+      // Scaled by 2^-E as in polytope_clip.cpp: relative error below 2u, coefficients in
+      // [2^-150, 1] or 0; a facet that does not fit is left out (Q's other facets still certify).
+      const mpz_class* z[4] = {&p.a[0], &p.a[1], &p.a[2], &p.b};
+      double m[4];
+      long e[4], top = 0;
+      bool any = false, fits = true;
+      for (int k = 0; k < 4; ++k) {
+        m[k] = mpz_get_d_2exp(&e[k], z[k]->get_mpz_t());
+        if (m[k] != 0) top = any ? std::max(top, e[k]) : e[k], any = true;
+      }
+      std::array<double, 4> f{};
+      for (int k = 0; k < 4; ++k)
+        if (m[k] != 0) {
+          if (e[k] - top < -150) fits = false;
+          f[k] = std::ldexp(m[k], static_cast<int>(e[k] - top));
+        }
+      if (!fits) {
+        facets.clear();
+        break;
+      }
+      facets.push_back(f);
+    }
+  std::vector<Point3> out;
+  for (std::size_t i = 0; i < n; ++i) {
+    bool inside = !facets.empty();
+    for (int k = 0; k < 3 && inside; ++k)  // magnitudes where the relative bound below holds
+      inside = d[i][k] == 0 || (d[i][k] >= 0x1p-500 && d[i][k] <= 0x1p500);
+    for (std::size_t j = 0; j < facets.size() && inside; ++j) {
+      // s = a·p - b; inputs within 2u each, a 4-term dot product: |s~ - s| <= 8.1u·T.
+      const std::array<double, 4>& f = facets[j];
+      const double s = f[0] * d[i][0] + f[1] * d[i][1] + f[2] * d[i][2] - f[3];
+      const double T = std::fabs(f[0] * d[i][0]) + std::fabs(f[1] * d[i][1]) + std::fabs(f[2] * d[i][2]) +
+                       std::fabs(f[3]);
+      inside = s < -16 * u * T;
+    }
+    if (!inside) out.push_back({image[i].r, image[i].g, image[i].b});
+  }
+  return out;
+}
+
+// Below this many colours every distinct colour is kept: a colour that is no hull vertex gives
+// only rows implied by the others (F3 is the same set), and the clip dismisses each such row in
+// one box test or one pass over the vertices, which costs less than an exact hull.
+constexpr std::size_t hull_from = 32;
+
+// The image points that matter: the vertices of their hull (all of them when it is flat), or
+// every distinct colour of a small image.
+std::vector<Point3> image_points(const std::vector<Colour>& image) {
+  check_colours(image, "image");
+  std::vector<Point3> p;
+  if (image.size() >= prefilter_from) p = hull_candidates(image);
+  else
+    for (const Colour& c : image) p.push_back({c.r, c.g, c.b});
+  p = sorted_unique(std::move(p));
+  return image.size() < hull_from ? p : extreme_points_3(p);
+}
+
+}  // namespace
+}  // namespace internal
+
+CanonicalConstraints3::CanonicalConstraints3(const std::vector<Colour>& canonical, CanonicalBlack black) {
+  internal::check_colours(canonical, "canonical");
+  auto c = std::make_shared<internal::CanonicalPlanes3>();
+  std::vector<Point3> pts;
+  for (const Colour& x : canonical) pts.push_back({x.r, x.g, x.b});
+  if (black == CanonicalBlack::include) pts.push_back({0, 0, 0});
+  pts = internal::sorted_unique(std::move(pts));
+  for (const Point3& p : pts) {
+    c->max.x = std::max(c->max.x, p.x);
+    c->max.y = std::max(c->max.y, p.y);
+    c->max.z = std::max(c->max.z, p.z);
+  }
+  c->dimension = internal::affine_dimension(pts);
+  c->half_spaces = internal::hull_half_spaces_3(pts);
+  if (c->dimension == 3) {
+    std::vector<internal::IntegerPlane3> planes;
+    for (const internal::HalfSpace3& h : c->half_spaces) planes.push_back(internal::integer_plane(h));
+    c->integer = internal::clip_facets(std::move(planes));
+  }
+  planes_ = std::move(c);
+}
+
+int CanonicalConstraints3::dimension() const { return planes_->dimension; }
+std::size_t CanonicalConstraints3::half_spaces() const { return planes_->half_spaces.size(); }
+
+ConvexSet3 feasible_set_3d(const CanonicalConstraints3& canonical, const std::vector<Colour>& image) {
+  const internal::CanonicalPlanes3& c = internal::FeasibleSet3Access::planes(canonical);
+  const std::vector<Point3> points = internal::image_points(image);
+  Point3 P{0, 0, 0};
+  for (const Point3& p : points) P.x = std::max(P.x, p.x), P.y = std::max(P.y, p.y), P.z = std::max(P.z, p.z);
+  for (int k = 0; k < 3; ++k)
+    if (sgn(k == 0 ? P.x : k == 1 ? P.y : P.z) == 0)
+      throw UnboundedFeasibleSet(std::string("every image colour has ") + "rgb"[k] +
+                                 " = 0: that map component is unconstrained and the feasible "
+                                 "set is unbounded");
+  if (c.dimension == 3) {
+    const Point3 box{Rational(c.max.x / P.x), Rational(c.max.y / P.y), Rational(c.max.z / P.z)};
+    internal::ClippedPolytope r = internal::clip_polytope(box, c.integer, points);
+    if (r.outcome == internal::ClippedPolytope::Outcome::polytope) return std::move(r.set);
+    if (r.outcome == internal::ClippedPolytope::Outcome::empty) return {};
+  }
+  return internal::feasible_set_3d_lp(c.half_spaces, c.max, points);
+}
+
+ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical, const std::vector<Colour>& image,
+                           CanonicalBlack black) {
+  return feasible_set_3d(CanonicalConstraints3(canonical, black), image);
+}
+
+}  // namespace gmcc

@@ -1,0 +1,44 @@
+#pragma once
+// The exact pieces of Forsyth's CRULE in 3-D that need CGAL (feasible_set_3d.cpp, the library's
+// 3-D CGAL translation unit), behind plain interfaces: the canonical gamut's half-spaces, an
+// exact 3-D hull's vertices, and the LP route for F3 (docs/math.md §1b "The exact LP"), which
+// the prepared route (feasible_set_3d_prepared.cpp) keeps for the degenerate kinds and which the
+// tests use as its oracle. Internal to gmcc::geometry.
+
+#include <gmcc/geometry/colour.h>
+#include <gmcc/geometry/convex_set_3.h>
+
+#include <vector>
+
+namespace gmcc::internal {
+
+// The closed half-space a·x <= b, normalised so the first non-zero |a_k| is 1 (a unique key).
+struct HalfSpace3 {
+  Point3 a;
+  Rational b;
+};
+
+// The dimension of the affine hull of a non-empty point set: 0 to 3.
+int affine_dimension(const std::vector<Point3>& points);
+
+// conv(points) as closed half-spaces, any dimension (an equality as a pair of opposite
+// half-spaces); sorted, without repeats. \pre points non-empty, sorted, without repeats.
+std::vector<HalfSpace3> hull_half_spaces_3(const std::vector<Point3>& points);
+
+// The vertices of conv(points) (CGAL::convex_hull_3 over Epeck), sorted; all of `points` when
+// they are flat. \pre points non-empty, sorted, without repeats.
+std::vector<Point3> extreme_points_3(const std::vector<Point3>& points);
+
+// F3 by the exact LP route: rows (a ⊙ p)·d <= b for every canonical half-space and image point p
+// (any superset of the image hull's vertices), the box 0 <= d_k <= X_k/P_k, the max-slack LP for
+// the equalities, then CGAL::halfspace_intersection_3 or the lower-dimensional constructions.
+// \pre canonical_max: X, the largest canonical channels; image non-empty with every P_k > 0.
+ConvexSet3 feasible_set_3d_lp(const std::vector<HalfSpace3>& canonical, const Point3& canonical_max,
+                              const std::vector<Point3>& image);
+
+// The whole route as it was before the prepared form (canonical hull per call, image hull by
+// CGAL, the LP): the oracle of the tests. Same contract as feasible_set_3d.
+ConvexSet3 feasible_set_3d_reference(const std::vector<Colour>& canonical,
+                                     const std::vector<Colour>& image, bool include_black);
+
+}  // namespace gmcc::internal

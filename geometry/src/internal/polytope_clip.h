@@ -1,0 +1,58 @@
+#pragma once
+// A convex polytope cut from a box by closed half-spaces with integer coefficients, every
+// decision exact and most of them settled by a double filter with a proven error bound
+// (docs/derivations.md §4.6): the full-dimensional route of Forsyth's CRULE feasible set.
+// Internal to gmcc::geometry.
+
+#include <gmcc/geometry/convex_set_3.h>
+
+#include <gmpxx.h>
+
+#include <array>
+#include <vector>
+
+namespace gmcc::internal {
+
+// The closed half-space a·x <= b, integer coefficients.
+struct IntegerPlane3 {
+  mpz_class a[3];
+  mpz_class b;
+};
+
+// How many sign decisions each stage settled (the double filter, else exact integers).
+struct ClipCounts {
+  long filtered = 0;  // settled by the double filter
+  long exact = 0;     // needed the exact integer evaluation
+};
+
+// What clip_polytope found: a 3-dimensional polytope (in `set`, canonical form), the empty set,
+// or a lower-dimensional non-empty set (`flat`: some half-space left no vertex strictly inside;
+// its exact form is for another route, the LP one).
+struct ClippedPolytope {
+  enum class Outcome { polytope, empty, flat } outcome = Outcome::empty;
+  ConvexSet3 set;
+};
+
+// Half-spaces a·x <= b prepared once for many clips: exact, with their filter copies (each
+// coefficient scaled by a common power of 2 and truncated to double, docs/derivations.md §4.6).
+struct ClipFacets {
+  std::vector<IntegerPlane3> planes;
+  std::vector<std::array<double, 4>> filters;  // a0, a1, a2, b scaled; valid where usable
+  std::vector<char> usable;
+};
+ClipFacets clip_facets(std::vector<IntegerPlane3> planes);
+
+// The intersection of the box 0 <= x_k <= box[k] (box[k] > 0) with the half-spaces
+// (a ⊙ p)·x <= b for every point p of `points` (point after point) and every facet a·x <= b.
+// Vertices are kept as triples of planes through them and faces as cycles of vertices
+// counter-clockwise seen from outside; each half-space removes the vertices strictly outside it,
+// cuts the edges that cross it and closes the cut with a new facet. A half-space's exact
+// coefficients are built only when a decision or a final vertex needs them, exact coordinates
+// only for the final vertices. `counts`, when given, adds the decisions per stage.
+ClippedPolytope clip_polytope(const Point3& box, const ClipFacets& facets, const std::vector<Point3>& points,
+                              ClipCounts* counts = nullptr);
+// The same for explicit half-spaces (points = {(1, 1, 1)}).
+ClippedPolytope clip_polytope(const Point3& box, const std::vector<IntegerPlane3>& planes,
+                              ClipCounts* counts = nullptr);
+
+}  // namespace gmcc::internal

@@ -1,0 +1,506 @@
+// A box clipped by integer half-spaces with filtered exact predicates (docs/derivations.md §4.6).
+#include "internal/polytope_clip.h"
+
+#include <gmcc/numerics/internal_check.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <numeric>
+#include <optional>
+#include <utility>
+
+namespace gmcc::internal {
+namespace {
+
+// u = 2^-53, the unit roundoff of double.
+constexpr double u = 0x1p-53;
+
+// A plane's filter copy: a_k·2^-E and b·2^-E (E the largest binary exponent among them), each
+// truncated to 53 bits by mpz_get_d_2exp (relative error below 2u; the scaling by a power of 2 is
+// exact and positive, so every sign below is that of the exact plane's). A clipping row
+// (a ⊙ p)·x <= b multiplies a facet's copy by p's double (below): relative error below 6u per
+// coefficient. A copy is used only when every non-zero coefficient is in [2^-200, 2^200]: products
+// of up to four stay normal, so the relative error bounds hold; otherwise the plane is decided
+// exactly.
+struct Filter {
+  double c[4];  // a0, a1, a2, b
+  bool usable = false;
+};
+constexpr double filter_min = 0x1p-200, filter_max = 0x1p200;
+bool in_range(double x) { return x == 0 || (std::fabs(x) >= filter_min && std::fabs(x) <= filter_max); }
+
+Filter filter_of(const IntegerPlane3& p) {
+  const mpz_class* z[4] = {&p.a[0], &p.a[1], &p.a[2], &p.b};
+  double m[4];
+  long e[4];
+  long top = 0;
+  bool any = false;
+  for (int k = 0; k < 4; ++k) {
+    m[k] = mpz_get_d_2exp(&e[k], z[k]->get_mpz_t());
+    if (m[k] != 0) top = any ? std::max(top, e[k]) : e[k], any = true;
+  }
+  Filter f;
+  for (int k = 0; k < 4; ++k) {
+    if (m[k] == 0) {
+      f.c[k] = 0;
+      continue;
+    }
+    if (e[k] - top < -150) return f;
+    f.c[k] = std::ldexp(m[k], static_cast<int>(e[k] - top));
+  }
+  f.usable = true;
+  return f;
+}
+
+// p·L with L > 0 the lcm of p's denominators: (p·L, L), integers.
+std::array<mpz_class, 4> integer_point(const Point3& p) {
+  mpz_class l;
+  mpz_lcm(l.get_mpz_t(), p.x.get_den_mpz_t(), p.y.get_den_mpz_t());
+  mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), p.z.get_den_mpz_t());
+  return {mpz_class(p.x.get_num() * (l / p.x.get_den())), mpz_class(p.y.get_num() * (l / p.y.get_den())),
+          mpz_class(p.z.get_num() * (l / p.z.get_den())), l};
+}
+
+// p·2^-e (e the largest binary exponent of p's channels) truncated to doubles (mpq_get_d:
+// relative error below 2u), and 2^-e; not usable outside [2^-400, 2^400].
+struct ScaledPoint {
+  double c[3];
+  double scale = 0;
+  bool usable = false;
+};
+ScaledPoint scaled_point(const Point3& p) {
+  ScaledPoint s;
+  const double d[3] = {mpq_get_d(p.x.get_mpq_t()), mpq_get_d(p.y.get_mpq_t()), mpq_get_d(p.z.get_mpq_t())};
+  double top = 0;
+  for (double x : d) {
+    if (x != 0 && (std::fabs(x) < 0x1p-400 || std::fabs(x) > 0x1p400)) return s;
+    top = std::max(top, std::fabs(x));
+  }
+  if (top == 0) return s;
+  int e;
+  std::frexp(top, &e);
+  for (int k = 0; k < 3; ++k) s.c[k] = std::ldexp(d[k], -e);
+  s.scale = std::ldexp(1.0, -e);
+  s.usable = true;
+  return s;
+}
+
+struct Vertex {
+  std::array<int, 3> planes;  // three independent planes through it
+  // Homogeneous coordinates (X, Y, Z, W) of the filter planes' solution, W > 0, each within
+  // err[k] of the exact value (docs/derivations.md §4.6); valid when `filtered`.
+  double h[4];
+  double err[4];
+  bool filtered = false;
+  // Exact homogeneous coordinates of the integer planes' solution (W of either sign), on demand.
+  std::optional<std::array<mpz_class, 4>> exact;
+};
+
+class Clipper {
+ public:
+  Clipper(const Point3& box, const ClipFacets& facets, const std::vector<Point3>& points, ClipCounts* counts)
+      : counts_(counts), facets_(facets), nf_(static_cast<int>(facets.planes.size())) {
+    // The box: planes 0–2 are -x_k <= 0, planes 3–5 are den·x_k <= num.
+    for (int k = 0; k < 3; ++k) {
+      IntegerPlane3 p;
+      p.a[k] = -1;
+      p.b = 0;
+      box_.push_back(p);
+    }
+    for (int k = 0; k < 3; ++k) {
+      const Rational& m = k == 0 ? box.x : k == 1 ? box.y : box.z;
+      IntegerPlane3 p;
+      p.a[k] = m.get_den();
+      p.b = m.get_num();
+      box_.push_back(p);
+    }
+    for (const IntegerPlane3& p : box_) filters_.push_back(filter_of(p));
+    // Row 6 + i·F + f is (a_f ⊙ p_i)·x <= b_f; its filter copy a~_f ⊙ p~_i, b~_f·2^-e.
+    for (const Point3& p : points) {
+      points_.push_back(integer_point(p));
+      signs_.push_back({sgn(p.x), sgn(p.y), sgn(p.z)});
+      const ScaledPoint q = scaled_point(p);
+      for (int f = 0; f < nf_; ++f) {
+        Filter r;
+        const std::array<double, 4>& a = facets.filters[static_cast<std::size_t>(f)];
+        if (q.usable && facets.usable[static_cast<std::size_t>(f)]) {
+          r.c[0] = a[0] * q.c[0], r.c[1] = a[1] * q.c[1], r.c[2] = a[2] * q.c[2], r.c[3] = a[3] * q.scale;
+          r.usable = in_range(r.c[0]) && in_range(r.c[1]) && in_range(r.c[2]) && in_range(r.c[3]);
+        }
+        filters_.push_back(r);
+      }
+    }
+    rows_.resize(filters_.size());
+    // Corner (bx, by, bz) is vertex bx + 2by + 4bz; faces counter-clockwise seen from outside.
+    for (int c = 0; c < 8; ++c)
+      add_vertex({c & 1 ? 3 : 0, c & 2 ? 4 : 1, c & 4 ? 5 : 2});
+    faces_ = {{0, {0, 4, 6, 2}}, {3, {1, 3, 7, 5}}, {1, {0, 1, 5, 4}},
+              {4, {2, 6, 7, 3}}, {2, {0, 2, 3, 1}}, {5, {4, 5, 7, 6}}};
+    live_ = {0, 1, 2, 3, 4, 5, 6, 7};
+    pack();
+    // The rows in a fixed pseudo-random order (a multiplicative permutation): the set is the same
+    // in any order, and a random order keeps the intermediate polytopes small (in point-major
+    // order the first point alone gives a copy of G_c3 with all its vertices).
+    const std::size_t n = filters_.size() - 6;
+    order_.resize(n);
+    std::size_t step = 2654435761u % (n ? n : 1);
+    while (n && std::gcd(step, n) != 1) ++step;
+    for (std::size_t k = 0, j = 0; k < n; ++k, j = (j + step) % n) order_[k] = 6 + j;
+  }
+
+  // The live vertices' doubles, packed for the all-inside pass: h[0..3], then α and β with
+  // E + 16u(T + E) <= max_k |a_k|·α + |b|·β for any plane (a, b) (side() has T and E).
+  void pack() {
+    packed_.clear();
+    all_filtered_ = true;
+    for (int v : live_) {
+      const Vertex& x = vertices_[static_cast<std::size_t>(v)];
+      all_filtered_ = all_filtered_ && x.filtered;
+      for (int k = 0; k < 4; ++k) packed_.push_back(x.h[k]);
+      const double a = std::fabs(x.h[0]) + std::fabs(x.h[1]) + std::fabs(x.h[2]), e = x.err[0] + x.err[1] + x.err[2];
+      packed_.push_back(e + 16 * u * (a + e));
+      packed_.push_back(x.err[3] + 16 * u * (std::fabs(x.h[3]) + x.err[3]));
+    }
+    // An upper bound of every coordinate over the polytope (its vertices'; all are >= 0, the box
+    // rows): (h_k + err_k)/(h_3 - err_3) bounds x_k = X/W from above when X~ + err_k >= 0 and
+    // W~ > err_3 (both settled when the vertex was made); 1 + 8u covers the two roundings.
+    top_ = {0, 0, 0};
+    box_ok_ = all_filtered_;
+    for (std::size_t k = 0; k < packed_.size() && box_ok_; k += 6) {
+      const Vertex& x = vertices_[static_cast<std::size_t>(live_[k / 6])];
+      const double w = x.h[3] - x.err[3];
+      if (!(w > 0)) {
+        box_ok_ = false;
+        break;
+      }
+      for (int c = 0; c < 3; ++c) top_[c] = std::max(top_[c], std::max(0.0, (x.h[c] + x.err[c]) / w * (1 + 8 * u)));
+    }
+  }
+
+  // True when plane i holds on the box [0, top_] ⊇ the polytope: Σ max(a_k, 0)·top_k <= b, with
+  // the filter copy's coefficients within 6u of the exact ones (scaled) and the sum's roundings
+  // covered by 1 + 16u on the left and 1 - 16u on the right.
+  bool box_inside(int i) const {
+    const Filter& f = filters_[static_cast<std::size_t>(i)];
+    if (!f.usable || !box_ok_) return false;
+    const double* a = f.c;
+    const double lhs = (std::max(a[0], 0.0) * top_[0] + std::max(a[1], 0.0) * top_[1] + std::max(a[2], 0.0) * top_[2]) *
+                       (1 + 16 * u);
+    return lhs <= a[3] * (1 - 16 * u);
+  }
+
+  // True when the filter shows no live vertex strictly outside plane i (each strictly inside, or
+  // exactly on it with a zero bound): s < -bound with the
+  // bound of side() enlarged as in pack() (and 1 + 64u for its evaluation, 1 + 16u more for α, β).
+  bool none_outside(int i) const {
+    const Filter& f = filters_[static_cast<std::size_t>(i)];
+    if (!f.usable || !all_filtered_) return false;
+    const double* a = f.c;
+    const double m = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])}) * (1 + 128 * u);
+    const double b = std::fabs(a[3]) * (1 + 128 * u);
+    for (std::size_t k = 0; k < packed_.size(); k += 6) {
+      const double* h = &packed_[k];
+      const double v = a[0] * h[0] + a[1] * h[1] + a[2] * h[2] - a[3] * h[3], bound = m * h[4] + b * h[5];
+      // A zero bound: every term exactly zero (see filtered_sign), the vertex exactly on the plane.
+      if (!(v < -bound || (bound == 0 && v == 0))) return false;
+    }
+    return true;
+  }
+
+  ClippedPolytope run() {
+    for (std::size_t i : order_) {
+      // A row with a ⊙ p = 0 reads 0 <= b: true, or no map at all.
+      const int f = static_cast<int>((i - 6) % static_cast<std::size_t>(nf_));
+      const std::array<int, 3>& s = signs_[(i - 6) / static_cast<std::size_t>(nf_)];
+      const IntegerPlane3& a = facets_.planes[static_cast<std::size_t>(f)];
+      if (sgn(a.a[0]) * s[0] == 0 && sgn(a.a[1]) * s[1] == 0 && sgn(a.a[2]) * s[2] == 0) {
+        if (sgn(a.b) < 0) return {ClippedPolytope::Outcome::empty, {}};
+        continue;
+      }
+      const ClippedPolytope::Outcome o = clip(static_cast<int>(i));
+      if (o != ClippedPolytope::Outcome::polytope) return {o, {}};
+    }
+    return {ClippedPolytope::Outcome::polytope, result()};
+  }
+
+  // The sign of a 3×3 determinant-like value from the filter, or nothing when the bound is hit.
+  static int filtered_sign(double value, double bound) {
+    if (value > bound) return 1;
+    if (value < -bound) return -1;
+    // A zero bound means every term was exactly zero (non-negative sums of products of normal
+    // numbers vanish only then), so the value is exact: 0 here.
+    if (bound == 0) return 0;
+    return 2;  // undecided
+  }
+
+  // Plane i's exact coefficients, built on first use.
+  const IntegerPlane3& plane(int i) {
+    if (i < 6) return box_[static_cast<std::size_t>(i)];
+    std::unique_ptr<IntegerPlane3>& row = rows_[static_cast<std::size_t>(i)];
+    if (!row) {
+      const std::size_t k = static_cast<std::size_t>(i - 6);
+      const IntegerPlane3& a = facets_.planes[k % static_cast<std::size_t>(nf_)];
+      const std::array<mpz_class, 4>& q = points_[k / static_cast<std::size_t>(nf_)];
+      row = std::make_unique<IntegerPlane3>(IntegerPlane3{
+          {mpz_class(a.a[0] * q[0]), mpz_class(a.a[1] * q[1]), mpz_class(a.a[2] * q[2])}, mpz_class(a.b * q[3])});
+    }
+    return *row;
+  }
+
+  std::array<mpz_class, 4> exact_homogeneous(const std::array<int, 3>& t) {
+    const IntegerPlane3 &p = plane(t[0]), &q = plane(t[1]), &r = plane(t[2]);
+    // c_qr = a_q × a_r etc.; W = a_p·c_qr, (X, Y, Z) = b_p c_qr + b_q c_rp + b_r c_pq.
+    auto cross = [](const IntegerPlane3& s, const IntegerPlane3& t2) {
+      return std::array<mpz_class, 3>{mpz_class(s.a[1] * t2.a[2] - s.a[2] * t2.a[1]),
+                                      mpz_class(s.a[2] * t2.a[0] - s.a[0] * t2.a[2]),
+                                      mpz_class(s.a[0] * t2.a[1] - s.a[1] * t2.a[0])};
+    };
+    const auto cqr = cross(q, r), crp = cross(r, p), cpq = cross(p, q);
+    std::array<mpz_class, 4> h;
+    for (int k = 0; k < 3; ++k) h[k] = p.b * cqr[k] + q.b * crp[k] + r.b * cpq[k];
+    h[3] = p.a[0] * cqr[0] + p.a[1] * cqr[1] + p.a[2] * cqr[2];
+    return h;
+  }
+
+  int add_vertex(const std::array<int, 3>& t) {
+    Vertex v;
+    v.planes = t;
+    const Filter &p = filters_[t[0]], &q = filters_[t[1]], &r = filters_[t[2]];
+    if (p.usable && q.usable && r.usable) {
+      // Each of X, Y, Z, W is a sum of six products of three filter coefficients, evaluated with
+      // five roundings after the inputs' own (below 6u each): its error is at most 24u times the
+      // sum of the products' magnitudes (`perm`, evaluated here with the same care); 32u leaves
+      // room (docs/derivations.md §4.6).
+      double c[3][3], ca[3][3];  // c_qr, c_rp, c_pq and their magnitudes' versions
+      const Filter* s[3][2] = {{&q, &r}, {&r, &p}, {&p, &q}};
+      for (int i = 0; i < 3; ++i) {
+        const double* x = s[i][0]->c;
+        const double* y = s[i][1]->c;
+        c[i][0] = x[1] * y[2] - x[2] * y[1], ca[i][0] = std::fabs(x[1] * y[2]) + std::fabs(x[2] * y[1]);
+        c[i][1] = x[2] * y[0] - x[0] * y[2], ca[i][1] = std::fabs(x[2] * y[0]) + std::fabs(x[0] * y[2]);
+        c[i][2] = x[0] * y[1] - x[1] * y[0], ca[i][2] = std::fabs(x[0] * y[1]) + std::fabs(x[1] * y[0]);
+      }
+      const double b[3] = {p.c[3], q.c[3], r.c[3]};
+      for (int k = 0; k < 3; ++k) {
+        v.h[k] = b[0] * c[0][k] + b[1] * c[1][k] + b[2] * c[2][k];
+        v.err[k] = 32 * u * (std::fabs(b[0]) * ca[0][k] + std::fabs(b[1]) * ca[1][k] + std::fabs(b[2]) * ca[2][k]);
+      }
+      v.h[3] = p.c[0] * c[0][0] + p.c[1] * c[0][1] + p.c[2] * c[0][2];
+      v.err[3] = 32 * u * (std::fabs(p.c[0]) * ca[0][0] + std::fabs(p.c[1]) * ca[0][1] + std::fabs(p.c[2]) * ca[0][2]);
+      const int w = filtered_sign(v.h[3], v.err[3]);
+      if (w != 2) {
+        count(true);
+        if (w < 0)
+          for (double& x : v.h) x = -x;
+        v.filtered = true;
+        GMCC_CHECK(w != 0, "clip_polytope: a vertex's three planes are independent");
+      }
+    }
+    if (!v.filtered) {
+      count(false);
+      v.exact = exact_homogeneous(t);
+      GMCC_CHECK(sgn((*v.exact)[3]) != 0, "clip_polytope: a vertex's three planes are independent");
+    }
+    vertices_.push_back(std::move(v));
+    return static_cast<int>(vertices_.size()) - 1;
+  }
+
+  // sign(a·v - b) for plane i and vertex v, exactly.
+  int side(int i, Vertex& v) {
+    const Filter& f = filters_[i];
+    if (f.usable && v.filtered) {
+      // s = a·(X, Y, Z) - b·W; with T = Σ|a_k||X_k| + |b||W| and E = Σ|a_k| err_k + |b| err_W,
+      // |s~ - s| <= E + (γ4 + 6.1u)(T + E) <= E + 16u(T + E); the bound's own evaluation (sums
+      // and products of non-negative numbers) is covered by the factor 1 + 64u.
+      const double* a = f.c;
+      const double s = a[0] * v.h[0] + a[1] * v.h[1] + a[2] * v.h[2] - a[3] * v.h[3];
+      const double T = std::fabs(a[0] * v.h[0]) + std::fabs(a[1] * v.h[1]) + std::fabs(a[2] * v.h[2]) +
+                       std::fabs(a[3] * v.h[3]);
+      const double E = std::fabs(a[0]) * v.err[0] + std::fabs(a[1]) * v.err[1] +
+                       std::fabs(a[2]) * v.err[2] + std::fabs(a[3]) * v.err[3];
+      const int sign = filtered_sign(s, (E + 16 * u * (T + E)) * (1 + 64 * u));
+      if (sign != 2) {
+        count(true);
+        return sign;
+      }
+    }
+    count(false);
+    if (!v.exact) v.exact = exact_homogeneous(v.planes);
+    const auto& h = *v.exact;
+    const IntegerPlane3& p = plane(i);
+    const mpz_class s = p.a[0] * h[0] + p.a[1] * h[1] + p.a[2] * h[2] - p.b * h[3];
+    return sgn(s) * sgn(h[3]);
+  }
+
+  void count(bool filtered) {
+    if (counts_) ++(filtered ? counts_->filtered : counts_->exact);
+  }
+
+  ClippedPolytope::Outcome clip(int i) {
+    if (box_inside(i)) {
+      return ClippedPolytope::Outcome::polytope;
+    }
+    if (none_outside(i)) {
+      if (counts_) counts_->filtered += static_cast<long>(live_.size());
+      return ClippedPolytope::Outcome::polytope;
+    }
+    if (sign_.size() < vertices_.size()) sign_.resize(vertices_.size() + 64);
+    int in = 0, out = 0;
+    for (int v : live_) {
+      const int s = side(i, vertices_[v]);
+      sign_[v] = s;
+      in += s < 0, out += s > 0;
+    }
+    if (out == 0) return ClippedPolytope::Outcome::polytope;  // nothing to cut
+    if (in == 0)
+      return live_.size() == static_cast<std::size_t>(out) ? ClippedPolytope::Outcome::empty
+                                                           : ClippedPolytope::Outcome::flat;
+    // Every edge crossing the plane strictly lies on exactly two faces; the new vertex is where
+    // their planes meet plane i (independent: the edge crosses plane i transversally).
+    struct Cut {
+      int u, w, faces[2], n, vertex;
+    };
+    std::vector<Cut> cuts;
+    auto find = [&cuts](int a, int b) -> Cut* {
+      if (a > b) std::swap(a, b);
+      for (Cut& c : cuts)
+        if (c.u == a && c.w == b) return &c;
+      return nullptr;
+    };
+    for (const Face& f : faces_)
+      for (std::size_t k = 0; k < f.cycle.size(); ++k) {
+        const int a = f.cycle[k], b = f.cycle[(k + 1) % f.cycle.size()];
+        if (sign_[a] * sign_[b] >= 0) continue;
+        Cut* c = find(a, b);
+        if (!c) cuts.push_back({std::min(a, b), std::max(a, b), {f.plane, -1}, 1, -1});
+        else {
+          GMCC_CHECK(c->n == 1, "clip_polytope: an edge lies on two faces");
+          c->faces[1] = f.plane, c->n = 2;
+        }
+      }
+    for (Cut& c : cuts) {
+      GMCC_CHECK(c.n == 2, "clip_polytope: an edge lies on two faces");
+      c.vertex = add_vertex({c.faces[0], c.faces[1], i});
+      if (sign_.size() < vertices_.size()) sign_.resize(vertices_.size() + 64);
+      sign_[c.vertex] = 0;
+    }
+    // Faces with no vertex strictly outside are kept as they are; the others are cut.
+    kept_.clear();
+    next_on_cap_.assign(vertices_.size(), -1);
+    int cap_edges = 0, cap_start = -1;
+    for (Face& f : faces_) {
+      bool cut = false;
+      for (int a : f.cycle) cut = cut || sign_[a] > 0;
+      Face g{f.plane, {}};
+      if (!cut) g = std::move(f);
+      else {
+        g.cycle.reserve(f.cycle.size() + 1);
+        for (std::size_t k = 0; k < f.cycle.size(); ++k) {
+          const int a = f.cycle[k], b = f.cycle[(k + 1) % f.cycle.size()];
+          if (sign_[a] <= 0) g.cycle.push_back(a);
+          if (sign_[a] * sign_[b] < 0) g.cycle.push_back(find(a, b)->vertex);
+        }
+        if (g.cycle.size() < 3) continue;
+      }
+      // An edge of the face in plane i is an edge of the cut facet, traversed the other way.
+      for (std::size_t k = 0; k < g.cycle.size(); ++k) {
+        const int a = g.cycle[k], b = g.cycle[(k + 1) % g.cycle.size()];
+        if (sign_[a] == 0 && sign_[b] == 0) {
+          GMCC_CHECK(next_on_cap_[b] == -1, "clip_polytope: the cut facet is a simple cycle");
+          next_on_cap_[b] = a, ++cap_edges, cap_start = b;
+        }
+      }
+      kept_.push_back(std::move(g));
+    }
+    Face cap{i, {}};
+    for (int v = cap_start; v != -1 && static_cast<int>(cap.cycle.size()) <= cap_edges &&
+                            (cap.cycle.empty() || v != cap_start);
+         v = next_on_cap_[v])
+      cap.cycle.push_back(v);
+    GMCC_CHECK(cap.cycle.size() >= 3 && static_cast<int>(cap.cycle.size()) == cap_edges,
+               "clip_polytope: a plane with vertices strictly on both sides cuts a facet");
+    kept_.push_back(std::move(cap));
+    std::swap(faces_, kept_);
+    live_.clear();
+    seen_.assign(vertices_.size(), 0);
+    for (const Face& f : faces_)
+      for (int v : f.cycle)
+        if (!seen_[v]) seen_[v] = 1, live_.push_back(v);
+    pack();
+    return ClippedPolytope::Outcome::polytope;
+  }
+
+  ConvexSet3 result() {
+    std::vector<int> index(vertices_.size(), -1);
+    std::vector<Point3> points;
+    for (int v : live_) {
+      Vertex& x = vertices_[v];
+      if (!x.exact) x.exact = exact_homogeneous(x.planes);
+      const auto& h = *x.exact;
+      Point3 p{Rational(h[0], h[3]), Rational(h[1], h[3]), Rational(h[2], h[3])};
+      p.x.canonicalize(), p.y.canonicalize(), p.z.canonicalize();
+      index[v] = static_cast<int>(points.size());
+      points.push_back(std::move(p));
+    }
+    std::vector<std::vector<std::size_t>> faces;
+    for (const Face& f : faces_) {
+      std::vector<std::size_t> c;
+      for (int v : f.cycle) c.push_back(static_cast<std::size_t>(index[v]));
+      faces.push_back(std::move(c));
+    }
+    return canonical_convex_set_3(ConvexKind3::polytope, std::move(points), std::move(faces));
+  }
+
+  struct Face {
+    int plane;
+    std::vector<int> cycle;
+  };
+  ClipCounts* counts_;
+  const ClipFacets& facets_;
+  int nf_;
+  std::vector<IntegerPlane3> box_;
+  std::vector<std::array<mpz_class, 4>> points_;  // the points as (p·L, L)
+  std::vector<std::array<int, 3>> signs_;         // their channels' signs
+  std::vector<Filter> filters_;                   // every plane's, box first
+  std::vector<std::unique_ptr<IntegerPlane3>> rows_;  // exact rows, on demand
+  std::vector<Vertex> vertices_;
+  std::vector<Face> faces_;
+  std::vector<int> live_;
+  std::vector<Face> kept_;       // scratch for clip()
+  std::vector<int> next_on_cap_;  // scratch for clip()
+  std::vector<char> seen_;        // scratch for clip()
+  std::vector<double> packed_;  // per live vertex: h[0..3], err[0..3]
+  bool all_filtered_ = true;
+  std::array<double, 3> top_{};  // coordinates' upper bounds over the polytope (pack())
+  bool box_ok_ = false;
+  std::vector<std::size_t> order_;  // the rows, in clipping order
+  std::vector<int> sign_;
+};
+
+}  // namespace
+
+ClipFacets clip_facets(std::vector<IntegerPlane3> planes) {
+  ClipFacets out;
+  for (const IntegerPlane3& p : planes) {
+    const Filter f = filter_of(p);
+    out.filters.push_back({f.c[0], f.c[1], f.c[2], f.c[3]});
+    out.usable.push_back(f.usable);
+  }
+  out.planes = std::move(planes);
+  return out;
+}
+
+ClippedPolytope clip_polytope(const Point3& box, const ClipFacets& facets, const std::vector<Point3>& points,
+                              ClipCounts* counts) {
+  if (facets.planes.empty() || points.empty()) return Clipper(box, facets, {}, counts).run();
+  return Clipper(box, facets, points, counts).run();
+}
+
+ClippedPolytope clip_polytope(const Point3& box, const std::vector<IntegerPlane3>& planes, ClipCounts* counts) {
+  const ClipFacets facets = clip_facets(planes);
+  return clip_polytope(box, facets, {Point3{1, 1, 1}}, counts);
+}
+
+}  // namespace gmcc::internal

@@ -1,0 +1,228 @@
+// Forsyth's CRULE feasible set in 3-D from a prepared canonical gamut (the filtered clip) against
+// the LP route it replaced (internal::feasible_set_3d_reference, the oracle): the same canonical
+// ConvexSet3 on hundreds of seeded scenes — Munsell-like random gamuts with and without black,
+// planar, collinear and one-colour gamuts, images with zero channels, empty F3, F3 a point, a
+// segment or a polygon, integer grids where many planes meet (the exact stage decides), and
+// images large enough for the filtered image-hull prefilter.
+#include "../test_support.h"
+
+#include <gmcc/geometry/convex_set_3.h>
+#include <gmcc/geometry/feasible_set.h>
+#include <gmcc/geometry/feasible_set_3d.h>
+
+#include "internal/crule_exact.h"
+#include "internal/polytope_clip.h"
+
+#include <boost/test/unit_test.hpp>
+
+#include <stdexcept>
+#include <thread>
+
+using namespace gmcc;
+using gmcc::test::Rng;
+using R = Rational;
+
+namespace {
+
+struct Tally {
+  int polytope = 0, polygon = 0, segment = 0, point = 0, empty = 0, unbounded = 0;
+};
+
+// New route (prepared, and through the old signature) against the oracle; both throw alike.
+void agree(const std::vector<Colour>& canonical, const std::vector<Colour>& image, bool black, Tally& t) {
+  const CanonicalBlack b = black ? CanonicalBlack::include : CanonicalBlack::exclude;
+  ConvexSet3 old;
+  try {
+    old = internal::feasible_set_3d_reference(canonical, image, black);
+  } catch (const UnboundedFeasibleSet&) {
+    ++t.unbounded;
+    BOOST_CHECK_THROW(feasible_set_3d(CanonicalConstraints3(canonical, b), image), UnboundedFeasibleSet);
+    return;
+  }
+  const ConvexSet3 now = feasible_set_3d(CanonicalConstraints3(canonical, b), image);
+  BOOST_TEST((now == old));
+  BOOST_TEST((feasible_set_3d(canonical, image, b) == old));
+  switch (old.kind) {
+    case ConvexKind3::polytope: ++t.polytope; break;
+    case ConvexKind3::polygon: ++t.polygon; break;
+    case ConvexKind3::segment: ++t.segment; break;
+    case ConvexKind3::point: ++t.point; break;
+    case ConvexKind3::empty: ++t.empty; break;
+  }
+}
+
+Colour random_colour(Rng& rng, long hi, long den) {
+  return {test::random_rational(rng, 0, hi, den), test::random_rational(rng, 0, hi, den),
+          test::random_rational(rng, 0, hi, den)};
+}
+
+// The image of `surfaces` under the illuminant's diagonal map 1/d, each scaled by a shading factor.
+std::vector<Colour> image_of(Rng& rng, const std::vector<Colour>& surfaces, const Colour& d, int n, bool shade) {
+  std::vector<Colour> out;
+  std::uniform_int_distribution<std::size_t> pick(0, surfaces.size() - 1);
+  for (int i = 0; i < n; ++i) {
+    const Colour& s = surfaces[pick(rng)];
+    const R f = shade ? test::random_rational(rng, 1, 10, 10) / 10 : R(1);
+    out.push_back({R(s.r / d.r * f), R(s.g / d.g * f), R(s.b / d.b * f)});
+  }
+  return out;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(feasible_set_3d_prepared)
+
+BOOST_AUTO_TEST_CASE(munsell_like_random_gamuts_agree_with_the_lp_route) {
+  Rng rng(20260);
+  Tally t;
+  for (int trial = 0; trial < 240; ++trial) {
+    std::vector<Colour> canonical;
+    const int n = 5 + trial % 25;
+    // Munsell-like: reflectance-ish rationals with up to 6-digit denominators.
+    for (int i = 0; i < n; ++i) canonical.push_back(random_colour(rng, 1000, trial % 3 == 0 ? 999983 : 64));
+    const Colour d{test::random_rational(rng, 1, 9, 4), test::random_rational(rng, 1, 9, 4),
+                   test::random_rational(rng, 1, 9, 4)};
+    std::vector<Colour> image = image_of(rng, canonical, d, 1 + trial % 11, trial % 4 == 1);
+    if (trial % 7 == 3) image.push_back(random_colour(rng, 3000, 16));  // noise: F3 may be empty
+    agree(canonical, image, trial % 2 == 0, t);
+  }
+  BOOST_TEST(t.polytope > 80);
+  BOOST_TEST(t.empty + t.point + t.segment + t.polygon > 0);
+}
+
+BOOST_AUTO_TEST_CASE(integer_grids_where_many_planes_meet_agree) {
+  // Small integer coordinates: coplanar canonical facets, image colours on the same planes,
+  // vertices of F3 where more than three planes meet, ties the filters cannot settle.
+  Rng rng(77);
+  Tally t;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<Colour> canonical;
+    for (int i = 0; i < 4 + trial % 9; ++i) canonical.push_back(random_colour(rng, 3, 1));
+    std::vector<Colour> image;
+    for (int i = 0; i < 1 + trial % 5; ++i) image.push_back(random_colour(rng, 3, 1 + trial % 2));
+    try {
+      agree(canonical, image, trial % 3 != 0, t);
+    } catch (const std::invalid_argument&) {
+      BOOST_TEST(false);  // channels are >= 0 and lists non-empty
+    }
+  }
+  BOOST_TEST(t.polytope > 20);
+  BOOST_TEST(t.polygon + t.segment + t.point > 10);
+  BOOST_TEST(t.unbounded > 0);
+  BOOST_TEST(t.empty > 0);
+}
+
+BOOST_AUTO_TEST_CASE(flat_canonical_gamuts_agree) {
+  Rng rng(1990);
+  Tally t;
+  for (int trial = 0; trial < 90; ++trial) {
+    std::vector<Colour> canonical;
+    const int kind = trial % 3;  // 0: planar, 1: collinear, 2: one colour
+    const Colour p = random_colour(rng, 20, 3), q = random_colour(rng, 20, 3), r = random_colour(rng, 20, 3);
+    for (int i = 0; i < (kind == 2 ? 1 : 6); ++i) {
+      const R s = test::random_rational(rng, 0, 4, 4), w = kind == 0 ? test::random_rational(rng, 0, 4, 4) : R(0);
+      canonical.push_back({R(p.r + s * (q.r - p.r) + w * (r.r - p.r)), R(p.g + s * (q.g - p.g) + w * (r.g - p.g)),
+                           R(p.b + s * (q.b - p.b) + w * (r.b - p.b))});
+    }
+    for (Colour& c : canonical)  // keep channels >= 0
+      for (R* x : {&c.r, &c.g, &c.b})
+        if (sgn(*x) < 0) *x = -*x;
+    const Colour d{test::random_rational(rng, 1, 5, 3), test::random_rational(rng, 1, 5, 3),
+                   test::random_rational(rng, 1, 5, 3)};
+    agree(canonical, image_of(rng, canonical, d, 1 + trial % 4, false), trial % 2 == 0, t);
+  }
+  BOOST_TEST(t.polytope + t.polygon + t.segment + t.point > 60);
+}
+
+BOOST_AUTO_TEST_CASE(hand_cases_every_kind) {
+  const std::vector<Colour> cube{{1, 1, 1}, {2, 1, 1}, {1, 2, 1}, {1, 1, 2},
+                                 {2, 2, 1}, {2, 1, 2}, {1, 2, 2}, {2, 2, 2}};
+  Tally t;
+  agree(cube, {{1, 1, 1}}, false, t);                    // polytope
+  agree(cube, {{1, 1, 1}, {2, 1, 1}}, false, t);         // polygon
+  agree(cube, {{1, 1, 1}, {2, 2, 1}}, false, t);         // segment
+  agree(cube, {{1, 1, 1}, {2, 2, 2}}, false, t);         // point
+  agree(cube, {{1, 1, 1}, {4, 1, 1}}, false, t);         // empty
+  agree(cube, {{1, 1, 1}, {4, 1, 1}}, true, t);          // black: never empty
+  agree(cube, {{0, 1, 1}}, true, t);                     // unbounded
+  agree(cube, {{0, 1, 1}, {1, 0, 1}, {1, 1, 0}}, true, t);  // zero channels, bounded
+  BOOST_TEST(t.polytope == 1);
+  BOOST_TEST(t.polygon == 1);
+  BOOST_TEST(t.segment == 2);  // with black, {(1,1,1), (4,1,1)} leaves a segment from 0
+  BOOST_TEST(t.point == 2);    // with black, one zero channel per colour leaves only 0
+  BOOST_TEST(t.empty == 1);
+  BOOST_TEST(t.unbounded == 1);
+  BOOST_CHECK_THROW(CanonicalConstraints3({}), std::invalid_argument);
+  BOOST_CHECK_THROW(feasible_set_3d(CanonicalConstraints3(cube), {}), std::invalid_argument);
+  BOOST_CHECK_THROW(feasible_set_3d(CanonicalConstraints3(cube), {{1, -1, 1}}), std::invalid_argument);
+  BOOST_TEST(CanonicalConstraints3(cube).dimension() == 3);
+  BOOST_TEST(CanonicalConstraints3(cube, CanonicalBlack::exclude).half_spaces() == 6u);
+  BOOST_TEST(CanonicalConstraints3({{1, 2, 3}}, CanonicalBlack::exclude).dimension() == 0);
+}
+
+BOOST_AUTO_TEST_CASE(large_images_through_the_hull_prefilter_agree) {
+  Rng rng(4242);
+  Tally t;
+  for (int trial = 0; trial < 12; ++trial) {
+    std::vector<Colour> canonical;
+    for (int i = 0; i < 12; ++i) canonical.push_back(random_colour(rng, 1000, 97));
+    const Colour d{test::random_rational(rng, 1, 9, 4), test::random_rational(rng, 1, 9, 4),
+                   test::random_rational(rng, 1, 9, 4)};
+    // 64 to 600 colours, shaded: most strictly inside the hull of the rest. From 4 of the 12
+    // surfaces F3 is a polytope; from all 12 (every third trial) with black, the segment [0, d].
+    const std::vector<Colour> seen(canonical.begin(), canonical.begin() + (trial % 3 == 2 ? 12 : 4));
+    std::vector<Colour> image = image_of(rng, seen, d, 64 + 50 * trial, true);
+    if (trial % 4 == 3)  // flat image: every colour on one plane through the origin
+      for (Colour& c : image) c.b = c.r;
+    agree(canonical, image, trial % 2 == 0, t);
+  }
+  BOOST_TEST(t.polytope >= 3);
+  BOOST_TEST(t.polytope + t.polygon + t.segment + t.point + t.empty == 12);
+}
+
+BOOST_AUTO_TEST_CASE(one_prepared_gamut_shared_by_threads) {
+  Rng rng(5);
+  std::vector<Colour> canonical;
+  for (int i = 0; i < 20; ++i) canonical.push_back(random_colour(rng, 1000, 97));
+  const CanonicalConstraints3 prepared(canonical);
+  std::vector<std::vector<Colour>> images;
+  for (int i = 0; i < 16; ++i) images.push_back(image_of(rng, canonical, {2, 3, R(1, 2)}, 8, true));
+  std::vector<ConvexSet3> a(images.size()), b(images.size());
+  auto run = [&](std::vector<ConvexSet3>& out) {
+    for (std::size_t i = 0; i < images.size(); ++i) out[i] = feasible_set_3d(prepared, images[i]);
+  };
+  std::thread one(run, std::ref(a)), two(run, std::ref(b));
+  one.join(), two.join();
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    BOOST_TEST((a[i] == b[i]));
+    BOOST_TEST((a[i] == internal::feasible_set_3d_reference(canonical, images[i], true)));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(clip_decides_ties_exactly) {
+  // The unit cube cut by x + y + z <= 1 and by planes through its vertices: every new plane
+  // passes through existing vertices (side exactly 0), which the filter cannot settle.
+  std::vector<internal::IntegerPlane3> planes;
+  auto plane = [](long a, long b, long c, long d) {
+    return internal::IntegerPlane3{{mpz_class(a), mpz_class(b), mpz_class(c)}, mpz_class(d)};
+  };
+  planes.push_back(plane(1, 1, 1, 1));   // the corner simplex
+  planes.push_back(plane(1, 1, 0, 1));   // through three of its vertices: changes nothing
+  planes.push_back(plane(1, -1, 0, 0));  // x <= y, through the origin and (0, 0, 1)
+  internal::ClipCounts counts;
+  const internal::ClippedPolytope r = internal::clip_polytope({1, 1, 1}, planes, &counts);
+  BOOST_TEST((r.outcome == internal::ClippedPolytope::Outcome::polytope));
+  const std::vector<Point3> want{{0, 0, 0}, {0, 0, 1}, {0, 1, 0}, {R(1, 2), R(1, 2), 0}};
+  BOOST_TEST((r.set.vertices == want));
+  BOOST_TEST(r.set.faces.size() == 4u);
+  BOOST_TEST(volume(r.set) == R(1, 12));
+  BOOST_TEST(counts.exact > 0);
+  BOOST_TEST(counts.filtered > 0);
+  // A plane that leaves only a face: flat; one that leaves nothing: empty.
+  planes.push_back(plane(-1, -1, -1, -1));
+  BOOST_TEST((internal::clip_polytope({1, 1, 1}, planes).outcome == internal::ClippedPolytope::Outcome::flat));
+  planes.back() = plane(-1, -1, -1, -2);
+  BOOST_TEST((internal::clip_polytope({1, 1, 1}, planes).outcome == internal::ClippedPolytope::Outcome::empty));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
