@@ -26,6 +26,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "bench_support.h"
+
 #include <algorithm>
 #include <atomic>
 #include <ctime>
@@ -70,9 +72,7 @@ std::vector<std::size_t> shuffled(std::size_t n, std::mt19937_64& g) {
 const Workload& workload() {
   static const Workload w = [] {
     Workload w;
-    w.setup = synthetic_setup(read_spectral_csv(data_dir + "/munsell_matt_1269_joensuu_5nm.csv"),
-                              read_spectral_csv(data_dir + "/cie_daylight_basis_S0_S1_S2.csv"), "D55",
-                              {"D75", "D100", "P2856", "P15000"});
+    w.setup = gmcc::bench::paper_setup(data_dir);
     w.prepared_2d = std::make_unique<CanonicalConstraints>(canonical_gamut(
         perspective_chromaticities(w.setup.canonical_surfaces, NonPositiveBluePolicy::drop).points, {}));
     w.prepared_3d = std::make_unique<CanonicalConstraints3>(w.setup.canonical_surfaces);
@@ -219,15 +219,7 @@ BENCHMARK(crule_experiment)->Unit(benchmark::kMillisecond)->UseRealTime()->Itera
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<char*> rest{argv[0]};
-  for (int i = 1; i < argc; ++i) {
-    if (i + 1 < argc && !std::strcmp(argv[i], "--scenes")) scenes_per_light = std::stoull(argv[++i]);
-    else if (i + 1 < argc && !std::strcmp(argv[i], "--surfaces")) surfaces = std::stoi(argv[++i]);
-    else if (i + 1 < argc && !std::strcmp(argv[i], "--data")) data_dir = argv[++i];
-    else rest.push_back(argv[i]);
-  }
-  int n = static_cast<int>(rest.size());
-  benchmark::Initialize(&n, rest.data());
+  gmcc::bench::initialise(argc, argv, {&scenes_per_light, &surfaces, &data_dir});
   workload();  // built before any timing
   benchmark::AddCustomContext("surfaces", std::to_string(surfaces));
   benchmark::RunSpecifiedBenchmarks();

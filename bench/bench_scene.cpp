@@ -26,6 +26,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "bench_support.h"
+
 #include "../tests/baseline/double_pipeline.h"
 
 #include <algorithm>
@@ -204,9 +206,7 @@ std::string data_dir = GMCC_DATA_DIR;
 const Workload& workload() {
   static const Workload w = [] {
     Workload w;
-    w.setup = synthetic_setup(read_spectral_csv(data_dir + "/munsell_matt_1269_joensuu_5nm.csv"),
-                              read_spectral_csv(data_dir + "/cie_daylight_basis_S0_S1_S2.csv"), "D55",
-                              {"D75", "D100", "P2856", "P15000"});
+    w.setup = gmcc::bench::paper_setup(data_dir);
     const ConvexSet2 G = canonical_gamut(
         perspective_chromaticities(w.setup.canonical_surfaces, NonPositiveBluePolicy::drop).points, {});
     w.prepared = std::make_unique<CanonicalConstraints>(G);
@@ -296,16 +296,7 @@ BENCHMARK(whole_experiment)->Unit(benchmark::kMillisecond)->UseRealTime();
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Our flags first (removed from argv), then Google Benchmark's.
-  std::vector<char*> rest{argv[0]};
-  for (int i = 1; i < argc; ++i) {
-    if (i + 1 < argc && !std::strcmp(argv[i], "--scenes")) scenes_per_light = std::stoull(argv[++i]);
-    else if (i + 1 < argc && !std::strcmp(argv[i], "--surfaces")) surfaces = std::stoi(argv[++i]);
-    else if (i + 1 < argc && !std::strcmp(argv[i], "--data")) data_dir = argv[++i];
-    else rest.push_back(argv[i]);
-  }
-  int n = static_cast<int>(rest.size());
-  benchmark::Initialize(&n, rest.data());
+  gmcc::bench::initialise(argc, argv, {&scenes_per_light, &surfaces, &data_dir});
   workload();  // built before any timing
   benchmark::AddCustomContext("surfaces", surfaces > 0 ? std::to_string(surfaces) : "1-11");
   benchmark::AddCustomContext("canonical_vertices", std::to_string(workload().dgamut.size()));

@@ -28,6 +28,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "bench_support.h"
+
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/resource.h>
@@ -270,13 +272,7 @@ BENCHMARK_CAPTURE(part_step, truth_errors_3_rules, 4)->Unit(benchmark::kMicrosec
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<char*> rest{argv[0]};
-  for (int i = 1; i < argc; ++i) {
-    if (i + 1 < argc && !std::strcmp(argv[i], "--scenes")) scene_count = std::stoull(argv[++i]);
-    else rest.push_back(argv[i]);
-  }
-  int n = static_cast<int>(rest.size());
-  benchmark::Initialize(&n, rest.data());
+  gmcc::bench::initialise(argc, argv, {&scene_count, nullptr, nullptr});
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   // The work folder and its files.

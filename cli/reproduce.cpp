@@ -105,6 +105,42 @@ std::string data_file(const ReproduceOptions& o, const char* name) {
   return (o.data_dir.empty() ? std::string(GMCC_DATA_DIR) : o.data_dir) + "/" + name;
 }
 
+// A non-negative option written as an exact decimal or fraction, at most `max` (or below it),
+// as the nearest double (a positive value too small for one is refused); `range` says the rule.
+double bounded_option(const char* name, const std::string& text, long max, bool max_allowed, const char* range) {
+  try {
+    const Rational q = parse_rational(text);
+    if (sgn(q) < 0 || (max_allowed ? q > max : q >= max)) throw std::invalid_argument(range);
+    const double d = to_double_nearest(q);
+    if (sgn(q) > 0 && d <= 0) throw std::invalid_argument("too small to be a double");
+    return d;
+  } catch (const std::invalid_argument& e) {
+    throw InputError(name, 0, e.what());
+  }
+}
+
+// --shard K/N: this run's part, which needs --scenes-out and refuses the whole run's tables.
+void set_shard(const ReproduceOptions& o, ExperimentConfig& c) {
+  const std::string& t = o.shard;
+  const std::size_t slash = t.find('/');
+  const std::string why = "expected K/N with 1 <= K <= N <= 1000000 (part K of N), e.g. 2/8; got " + quoted_text(t);
+  auto digits = [](const std::string& x) {
+    return !x.empty() && x.size() <= 7 && x.find_first_not_of("0123456789") == std::string::npos;
+  };
+  if (slash == std::string::npos || !digits(t.substr(0, slash)) || !digits(t.substr(slash + 1)))
+    throw InputError("--shard", 0, why);
+  c.shard_index = std::stoull(t.substr(0, slash));
+  c.shard_count = std::stoull(t.substr(slash + 1));
+  if (c.shard_index < 1 || c.shard_index > c.shard_count || c.shard_count > 1000000)
+    throw InputError("--shard", 0, why);
+  if (o.scenes_out_path.empty())
+    throw InputError("--shard", 0, "a shard needs --scenes-out FILE: gmcc merge combines the shards' files");
+  for (const auto& [path, option] : {std::pair{&o.csv_path, "--csv"}, {&o.json_path, "--json"}, {&o.plot_dir, "--plot"}})
+    if (!path->empty())
+      throw InputError(option, 0, "not with --shard: a shard's statistics cover only its part; write "
+                                  "--scenes-out and run gmcc merge on the shards' files for the whole tables");
+}
+
 ExperimentConfig config_from(const ReproduceOptions& o) {
   ExperimentConfig c;
   c.scenes = integer_option("--scenes", o.scenes, 1, 1000000);  // docs/cli.md "Resource limits"
@@ -121,60 +157,16 @@ ExperimentConfig config_from(const ReproduceOptions& o) {
   } catch (const std::invalid_argument& e) {
     throw InputError("--expand", 0, e.what());
   }
-  try {
-    const Rational noise = parse_rational(o.noise);
-    if (sgn(noise) < 0 || noise > 1) throw std::invalid_argument("must be from 0 to 1");
-    c.noise = to_double_nearest(noise);
-  } catch (const std::invalid_argument& e) {
-    throw InputError("--noise", 0, e.what());
-  }
+  c.noise = bounded_option("--noise", o.noise, 1, true, "must be from 0 to 1");
   c.crule = o.crule;
-  try {
-    const Rational shading = parse_rational(o.shading);
-    if (sgn(shading) < 0 || shading >= 1) throw std::invalid_argument("must be from 0 to below 1");
-    c.shading = to_double_nearest(shading);
-  } catch (const std::invalid_argument& e) {
-    throw InputError("--shading", 0, e.what());
-  }
+  c.shading = bounded_option("--shading", o.shading, 1, false, "must be from 0 to below 1");
   c.crule_black = o.crule_black == "exclude" ? CanonicalBlack::exclude : CanonicalBlack::include;
   c.crule_extended = o.crule_extended;
   if ((c.crule_extended || c.crule_black == CanonicalBlack::exclude) && !c.crule)
     throw InputError(c.crule_extended ? "--crule-extended" : "--crule-black", 0, "needs --crule");
-  try {
-    const Rational specular = parse_rational(o.specular);
-    if (sgn(specular) < 0 || specular > 100) throw std::invalid_argument("must be from 0 to 100");
-    c.specular = to_double_nearest(specular);
-  } catch (const std::invalid_argument& e) {
-    throw InputError("--specular", 0, e.what());
-  }
-  try {
-    const Rational intensity = parse_rational(o.intensity);
-    if (sgn(intensity) < 0 || intensity > 100) throw std::invalid_argument("must be from 0 to 100");
-    c.intensity = to_double_nearest(intensity);
-    if (sgn(intensity) > 0 && c.intensity <= 0) throw std::invalid_argument("too small to be a double");
-  } catch (const std::invalid_argument& e) {
-    throw InputError("--intensity", 0, e.what());
-  }
-  if (!o.shard.empty()) {
-    const std::string& t = o.shard;
-    const std::size_t slash = t.find('/');
-    const std::string why = "expected K/N with 1 <= K <= N <= 1000000 (part K of N), e.g. 2/8; got " + quoted_text(t);
-    auto digits = [](const std::string& x) {
-      return !x.empty() && x.size() <= 7 && x.find_first_not_of("0123456789") == std::string::npos;
-    };
-    if (slash == std::string::npos || !digits(t.substr(0, slash)) || !digits(t.substr(slash + 1)))
-      throw InputError("--shard", 0, why);
-    c.shard_index = std::stoull(t.substr(0, slash));
-    c.shard_count = std::stoull(t.substr(slash + 1));
-    if (c.shard_index < 1 || c.shard_index > c.shard_count || c.shard_count > 1000000)
-      throw InputError("--shard", 0, why);
-    if (o.scenes_out_path.empty())
-      throw InputError("--shard", 0, "a shard needs --scenes-out FILE: gmcc merge combines the shards' files");
-    for (const auto& [path, option] : {std::pair{&o.csv_path, "--csv"}, {&o.json_path, "--json"}, {&o.plot_dir, "--plot"}})
-      if (!path->empty())
-        throw InputError(option, 0, "not with --shard: a shard's statistics cover only its part; write "
-                                    "--scenes-out and run gmcc merge on the shards' files for the whole tables");
-  }
+  c.specular = bounded_option("--specular", o.specular, 100, true, "must be from 0 to 100");
+  c.intensity = bounded_option("--intensity", o.intensity, 100, true, "must be from 0 to 100");
+  if (!o.shard.empty()) set_shard(o, c);
   c.keep_scenes = !o.scenes_out_path.empty();
   if (::isatty(STDERR_FILENO))
     c.progress = [](std::uint64_t done, std::uint64_t total) {

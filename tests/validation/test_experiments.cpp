@@ -63,17 +63,16 @@ BOOST_AUTO_TEST_CASE(the_true_map_lies_in_every_feasible_set_and_the_paper_claim
   BOOST_TEST(gain_few > gain_many);  // "the gap narrows as surfaces are added"
 }
 
-// The certified fast route (rule_errors.h) and the exact route for every scene give the same
-// statistics within the fast route's accuracy (means of angles, each within 2^-36(1 + θ)).
-BOOST_AUTO_TEST_CASE(fast_and_exact_routes_agree) {
-  ExperimentConfig config;
-  config.scenes = 25;
-  config.seed = 7;
+// One experiment run by the certified and by the exact route: the same empty scenes and truth-in-F
+// counts, and every statistic within the certified route's accuracy (means of angles, each
+// within 2^-36(1 + θ)).
+void check_routes_agree(ExperimentConfig config) {
   const ExperimentResult fast = run_gamut_experiment(paper_setup(), config);
   config.certified_fast_route = false;
   const ExperimentResult exact = run_gamut_experiment(paper_setup(), config);
   BOOST_REQUIRE(fast.cells.size() == exact.cells.size());
-  for (std::size_t i = 0; i < fast.cells.size(); ++i)
+  for (std::size_t i = 0; i < fast.cells.size(); ++i) {
+    BOOST_TEST(fast.cells[i].empty == exact.cells[i].empty);
     for (std::size_t r = 0; r < 3; ++r) {
       const RuleStats &a = fast.cells[i].rules[r], &b = exact.cells[i].rules[r];
       BOOST_TEST(a.truth_in_feasible_set == b.truth_in_feasible_set);
@@ -83,6 +82,16 @@ BOOST_AUTO_TEST_CASE(fast_and_exact_routes_agree) {
                           {a.reproduction.mean, b.reproduction.mean}})
         BOOST_TEST(std::fabs(x - y) <= 1e-9 * (1 + std::fabs(y)), "cell " << i << " rule " << r << ": " << x << " vs " << y);
     }
+  }
+}
+
+// The certified fast route (rule_errors.h) and the exact route for every scene give the same
+// statistics within the fast route's accuracy.
+BOOST_AUTO_TEST_CASE(fast_and_exact_routes_agree) {
+  ExperimentConfig config;
+  config.scenes = 25;
+  config.seed = 7;
+  check_routes_agree(config);
 }
 
 // With Finlayson's illumination constraint F ∩ C is a thin band along the daylight locus: the
@@ -94,19 +103,7 @@ BOOST_AUTO_TEST_CASE(fast_and_exact_routes_agree_with_the_illumination_constrain
   config.constraint =
       illumination_constraint(read_colour_csv(std::string(GMCC_DATA_DIR) + "/samples/plausible_lights_610_540_450.csv").colours,
                               paper_setup().canonical_light);
-  const ExperimentResult fast = run_gamut_experiment(paper_setup(), config);
-  config.certified_fast_route = false;
-  const ExperimentResult exact = run_gamut_experiment(paper_setup(), config);
-  for (std::size_t i = 0; i < fast.cells.size(); ++i)
-    for (std::size_t r = 0; r < 3; ++r) {
-      const RuleStats &a = fast.cells[i].rules[r], &b = exact.cells[i].rules[r];
-      BOOST_TEST(a.truth_in_feasible_set == b.truth_in_feasible_set);
-      BOOST_TEST(fast.cells[i].empty == exact.cells[i].empty);
-      for (auto [x, y] : {std::pair{a.error.mean, b.error.mean}, {a.error.max, b.error.max},
-                          {a.worst_case.mean, b.worst_case.mean},
-                          {a.illuminant.mean, b.illuminant.mean}})
-        BOOST_TEST(std::fabs(x - y) <= 1e-9 * (1 + std::fabs(y)), "cell " << i << " rule " << r << ": " << x << " vs " << y);
-    }
+  check_routes_agree(config);
 }
 
 BOOST_AUTO_TEST_CASE(a_seed_gives_the_same_bytes_whatever_the_thread_count) {
@@ -161,15 +158,25 @@ BOOST_AUTO_TEST_CASE(shading_leaves_the_2d_rules_unchanged) {
     for (int k = 0; k < 3; ++k) BOOST_TEST(a.cells[i].rules[k].error.mean == b.cells[i].rules[k].error.mean);
 }
 
-// Without shading the diagonal model holds exactly, so the true 3-D map lies in CRULE's F3.
-BOOST_AUTO_TEST_CASE(crule_contains_the_true_diagonal_map_without_shading) {
+// The paper's setup with its first test light only, and a small CRULE run on it (2 scenes per
+// count, 1–3 surfaces).
+ExperimentSetup one_light_setup() {
   ExperimentSetup one = paper_setup();
   one.lights.resize(1);
+  return one;
+}
+ExperimentConfig small_crule_config() {
   ExperimentConfig c;
   c.scenes = 2;
   c.max_surfaces = 3;
   c.crule = true;
-  const ExperimentResult r = run_gamut_experiment(one, c);
+  return c;
+}
+
+// Without shading the diagonal model holds exactly, so the true 3-D map lies in CRULE's F3.
+BOOST_AUTO_TEST_CASE(crule_contains_the_true_diagonal_map_without_shading) {
+  const ExperimentSetup one = one_light_setup();
+  const ExperimentResult r = run_gamut_experiment(one, small_crule_config());
   BOOST_REQUIRE(r.rules.size() == 5u);
   BOOST_TEST(r.rules[3] == "crule_max_volume");
   for (const ExperimentCell& cell : r.cells)
@@ -185,12 +192,8 @@ BOOST_AUTO_TEST_CASE(crule_contains_the_true_diagonal_map_without_shading) {
 // never moves the 2-D rules; highlights move the chromaticities, hence the 2-D rules; the
 // extended selections are recorded and written out; the run is the same on any thread count.
 BOOST_AUTO_TEST_CASE(seed_claim_conditions) {
-  ExperimentSetup one = paper_setup();
-  one.lights.resize(1);
-  ExperimentConfig c;
-  c.scenes = 2;
-  c.max_surfaces = 3;
-  c.crule = true;
+  const ExperimentSetup one = one_light_setup();
+  ExperimentConfig c = small_crule_config();
   c.crule_extended = true;
   c.keep_scenes = true;
   const ExperimentResult plain = run_gamut_experiment(one, c);

@@ -144,6 +144,35 @@ void score_crule(const ExperimentSetup& setup, const ExperimentConfig& config, c
 }
 
 // Scenes s_begin <= s < s_end of cell (light_index, n), each with its own generator.
+// One surface as the scene shows it: its colour under the light, with the configured noise,
+// shading factor and highlight drawn from g in that order ("Scene generator", docs/reproduction.md).
+Colour observed_colour(const ExperimentSetup& setup, const ExperimentConfig& config, const TestLight& light,
+                       std::size_t surface, Generator& g) {
+  Colour c = light.surfaces[surface];
+  if (config.noise > 0)
+    for (Rational* x : {&c.r, &c.g, &c.b})
+      *x *= rational_from_double(std::max(0.0, 1 + config.noise * normal(g)));
+  if (config.shading > 0) {
+    const Rational scale = rational_from_double(config.shading + (1 - config.shading) * uniform01(g));
+    for (Rational* x : {&c.r, &c.g, &c.b}) *x *= scale;
+  }
+  if (config.specular > 0) {  // + s·e, e = c ⊘ d the test light's colour
+    const Rational s_k = rational_from_double(config.specular * uniform01(g));
+    const Colour& cl = setup.canonical_light;
+    const Point3& d = light.true_diagonal_map;
+    c.r += s_k * cl.r / d.x, c.g += s_k * cl.g / d.y, c.b += s_k * cl.b / d.z;
+  }
+  return c;
+}
+
+// The whole scene scaled by one factor from U[min(K, 1), max(K, 1)], drawn last.
+void scale_scene(double intensity, std::vector<Colour>& image_colours, Generator& g) {
+  const double lo = std::min(intensity, 1.0), hi = std::max(intensity, 1.0);
+  const Rational k = rational_from_double(lo + (hi - lo) * uniform01(g));
+  for (Colour& c : image_colours)
+    for (Rational* x : {&c.r, &c.g, &c.b}) *x *= k;
+}
+
 std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const ExperimentConfig& config,
                                   const CanonicalConstraints& gamut, const CanonicalConstraints3* crule_gamut,
                                   const std::vector<Point2>& chromaticities,
@@ -197,29 +226,11 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
         if (sgn(light.surfaces[surface].b) > 0) image.push_back(&chromaticities[surface]);
         continue;
       }
-      Colour c = light.surfaces[surface];
-      if (config.noise > 0)
-        for (Rational* x : {&c.r, &c.g, &c.b})
-          *x *= rational_from_double(std::max(0.0, 1 + config.noise * normal(g)));
-      if (config.shading > 0) {
-        const Rational scale = rational_from_double(config.shading + (1 - config.shading) * uniform01(g));
-        for (Rational* x : {&c.r, &c.g, &c.b}) *x *= scale;
-      }
-      if (config.specular > 0) {  // + s·e, e = c ⊘ d the test light's colour
-        const Rational s_k = rational_from_double(config.specular * uniform01(g));
-        const Colour& cl = setup.canonical_light;
-        const Point3& d = light.true_diagonal_map;
-        c.r += s_k * cl.r / d.x, c.g += s_k * cl.g / d.y, c.b += s_k * cl.b / d.z;
-      }
+      Colour c = observed_colour(setup, config, light, surface, g);
       if (sgn(c.b) > 0) own.push_back(perspective_chromaticity(c)), image.push_back(&own.back());
       image_colours.push_back(std::move(c));
     }
-    if (config.intensity > 0 && !image_colours.empty()) {  // one factor for the scene, drawn last
-      const double lo = std::min(config.intensity, 1.0), hi = std::max(config.intensity, 1.0);
-      const Rational k = rational_from_double(lo + (hi - lo) * uniform01(g));
-      for (Colour& c : image_colours)
-        for (Rational* x : {&c.r, &c.g, &c.b}) *x *= k;
-    }
+    if (config.intensity > 0 && !image_colours.empty()) scale_scene(config.intensity, image_colours, g);
     if (setup.baselines) rec.baselines = baseline_records(setup, light, pool, n, image_colours);
     if (image.empty()) continue;
     const FeasiblePolygon P = feasible_polygon(gamut, image);
