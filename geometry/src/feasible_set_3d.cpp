@@ -39,6 +39,7 @@ using internal::coord;
 using internal::cross;
 using internal::dot;
 using internal::is_zero;
+using internal::sorted_unique;
 using internal::sub;
 using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 using KPoint3 = Kernel::Point_3;
@@ -80,12 +81,6 @@ std::vector<Point3> affine_frame(const std::vector<Point3>& pts) {
     }
   }
   return f;
-}
-
-std::vector<Point3> sorted_unique(std::vector<Point3> p) {
-  std::sort(p.begin(), p.end());
-  p.erase(std::unique(p.begin(), p.end()), p.end());
-  return p;
 }
 
 /// The vertices of the 3-D hull of a full-dimensional point set (CGAL::convex_hull_3, exact).
@@ -161,13 +156,9 @@ std::vector<Point3> extreme_points(const std::vector<Point3>& pts) {
 }
 
 std::vector<Point3> colours_to_points(const std::vector<Colour>& cs, const char* what) {
-  if (cs.empty()) throw std::invalid_argument(std::string("feasible_set_3d: no ") + what + " colours");
+  internal::check_colours(cs, what);
   std::vector<Point3> p;
-  for (const Colour& c : cs) {
-    if (sgn(c.r) < 0 || sgn(c.g) < 0 || sgn(c.b) < 0)
-      throw std::invalid_argument(std::string("feasible_set_3d: a negative ") + what + " channel");
-    p.push_back({c.r, c.g, c.b});
-  }
+  for (const Colour& c : cs) p.push_back({c.r, c.g, c.b});
   return p;
 }
 

@@ -27,8 +27,6 @@ struct FeasibleSet3Access {
   static const CanonicalPlanes3& planes(const CanonicalConstraints3& c) { return *c.planes_; }
 };
 
-namespace {
-
 std::vector<Point3> sorted_unique(std::vector<Point3> p) {
   std::sort(p.begin(), p.end());
   p.erase(std::unique(p.begin(), p.end()), p.end());
@@ -41,6 +39,8 @@ void check_colours(const std::vector<Colour>& cs, const char* what) {
     if (sgn(c.r) < 0 || sgn(c.g) < 0 || sgn(c.b) < 0)
       throw std::invalid_argument(std::string("feasible_set_3d: a negative ") + what + " channel");
 }
+
+namespace {
 
 // (a·L, b·L) with L the lcm of the denominators of a and b: the same half-space, integers.
 IntegerPlane3 integer_plane(const HalfSpace3& h) {
@@ -95,28 +95,14 @@ std::vector<Point3> hull_candidates(const std::vector<Colour>& image) {
   std::vector<std::array<double, 4>> facets;
   if (affine_dimension(q) == 3)
     for (const HalfSpace3& h : hull_half_spaces_3(q)) {
-      const IntegerPlane3 p = integer_plane(h);
-      // Scaled by 2^-E as in polytope_clip.cpp: relative error below 2u, coefficients in
-      // [2^-150, 1] or 0; a facet that does not fit is left out (Q's other facets still certify).
-      const mpz_class* z[4] = {&p.a[0], &p.a[1], &p.a[2], &p.b};
-      double m[4];
-      long e[4], top = 0;
-      bool any = false, fits = true;
-      for (int k = 0; k < 4; ++k) {
-        m[k] = mpz_get_d_2exp(&e[k], z[k]->get_mpz_t());
-        if (m[k] != 0) top = any ? std::max(top, e[k]) : e[k], any = true;
-      }
-      std::array<double, 4> f{};
-      for (int k = 0; k < 4; ++k)
-        if (m[k] != 0) {
-          if (e[k] - top < -150) fits = false;
-          f[k] = std::ldexp(m[k], static_cast<int>(e[k] - top));
-        }
-      if (!fits) {
+      // Scaled as the clip's planes (plane_filter): relative error below 2u, coefficients in
+      // [2^-150, 1] or 0; if a facet does not fit, Q certifies nothing and every colour is kept.
+      const std::optional<std::array<double, 4>> f = plane_filter(integer_plane(h));
+      if (!f) {
         facets.clear();
         break;
       }
-      facets.push_back(f);
+      facets.push_back(*f);
     }
   std::vector<Point3> out;
   for (std::size_t i = 0; i < n; ++i) {

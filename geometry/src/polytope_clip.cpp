@@ -32,25 +32,11 @@ constexpr double filter_min = 0x1p-200, filter_max = 0x1p200;
 bool in_range(double x) { return x == 0 || (std::fabs(x) >= filter_min && std::fabs(x) <= filter_max); }
 
 Filter filter_of(const IntegerPlane3& p) {
-  const mpz_class* z[4] = {&p.a[0], &p.a[1], &p.a[2], &p.b};
-  double m[4];
-  long e[4];
-  long top = 0;
-  bool any = false;
-  for (int k = 0; k < 4; ++k) {
-    m[k] = mpz_get_d_2exp(&e[k], z[k]->get_mpz_t());
-    if (m[k] != 0) top = any ? std::max(top, e[k]) : e[k], any = true;
-  }
   Filter f;
-  for (int k = 0; k < 4; ++k) {
-    if (m[k] == 0) {
-      f.c[k] = 0;
-      continue;
-    }
-    if (e[k] - top < -150) return f;
-    f.c[k] = std::ldexp(m[k], static_cast<int>(e[k] - top));
+  if (const auto c = plane_filter(p)) {
+    for (int k = 0; k < 4; ++k) f.c[k] = (*c)[static_cast<std::size_t>(k)];
+    f.usable = true;
   }
-  f.usable = true;
   return f;
 }
 
@@ -480,6 +466,25 @@ class Clipper {
 };
 
 }  // namespace
+
+std::optional<std::array<double, 4>> plane_filter(const IntegerPlane3& p) {
+  const mpz_class* z[4] = {&p.a[0], &p.a[1], &p.a[2], &p.b};
+  double m[4];
+  long e[4];
+  long top = 0;
+  bool any = false;
+  for (int k = 0; k < 4; ++k) {
+    m[k] = mpz_get_d_2exp(&e[k], z[k]->get_mpz_t());
+    if (m[k] != 0) top = any ? std::max(top, e[k]) : e[k], any = true;
+  }
+  std::array<double, 4> c{};
+  for (int k = 0; k < 4; ++k) {
+    if (m[k] == 0) continue;
+    if (e[k] - top < -150) return std::nullopt;
+    c[static_cast<std::size_t>(k)] = std::ldexp(m[k], static_cast<int>(e[k] - top));
+  }
+  return c;
+}
 
 ClipFacets clip_facets(std::vector<IntegerPlane3> planes) {
   ClipFacets out;

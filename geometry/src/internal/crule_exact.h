@@ -18,6 +18,13 @@ struct HalfSpace3 {
   Rational b;
 };
 
+// The points sorted (lexicographically), without repeats.
+std::vector<Point3> sorted_unique(std::vector<Point3> p);
+
+// std::invalid_argument naming the `what` colours (canonical, image) when there are none or a
+// channel is negative: feasible_set_3d's input checks. Defined with the prepared route.
+void check_colours(const std::vector<Colour>& cs, const char* what);
+
 // The dimension of the affine hull of a non-empty point set: 0 to 3.
 int affine_dimension(const std::vector<Point3>& points);
 

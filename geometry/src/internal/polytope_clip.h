@@ -9,6 +9,7 @@
 #include <gmpxx.h>
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace gmcc::internal {
@@ -32,6 +33,11 @@ struct ClippedPolytope {
   enum class Outcome { polytope, empty, flat } outcome = Outcome::empty;
   ConvexSet3 set;
 };
+
+// A plane's filter copy: a_k·2^-E and b·2^-E (E the largest binary exponent among them), each
+// truncated to 53 bits (relative error below 2u; the power-of-2 scaling keeps every sign);
+// nothing when a non-zero coefficient falls below 2^-150 of the largest (docs/derivations.md §4.6).
+std::optional<std::array<double, 4>> plane_filter(const IntegerPlane3& p);
 
 // Half-spaces a·x <= b prepared once for many clips: exact, with their filter copies (each
 // coefficient scaled by a common power of 2 and truncated to double, docs/derivations.md §4.6).
