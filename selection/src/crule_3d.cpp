@@ -3,12 +3,43 @@
 
 #include "internal/angle.h"
 
+#include <gmcc/geometry/enclosure.h>
+
+#include <cstddef>
+#include <limits>
 #include <stdexcept>
 
 namespace gmcc {
 namespace {
 Rational dot(const Point3& a, const Point3& b) { return Rational(a.x * b.x + a.y * b.y + a.z * b.z); }
 bool is_zero(const Point3& a) { return sgn(a.x) == 0 && sgn(a.y) == 0 && sgn(a.z) == 0; }
+
+// The filter of worst_case_map_deg_3d: (m·v)²/|v|² (cos² times |m|²) of every non-zero vertex in
+// double enclosures (numerics/enclosure.h); the vertices whose value may reach the least upper
+// end, in order (the smallest cos² is among them). All non-zero vertices where an enclosure is
+// not finite.
+std::vector<std::size_t> worst_case_contenders(const ConvexSet3& F, const Point3& m) {
+  std::vector<std::size_t> nonzero;
+  std::vector<Enclosure> value;
+  const Enclosure mx = enclose_rational(m.x), my = enclose_rational(m.y), mz = enclose_rational(m.z);
+  bool finite = mx.finite() && my.finite() && mz.finite();
+  double least_upper = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < F.vertices.size(); ++i) {
+    const Point3& v = F.vertices[i];
+    if (is_zero(v)) continue;
+    nonzero.push_back(i);
+    const Enclosure x = enclose_rational(v.x), y = enclose_rational(v.y), z = enclose_rational(v.z);
+    const Enclosure mv = mx * x + my * y + mz * z, vv = x * x + y * y + z * z;
+    value.push_back(vv.positive() ? mv * mv / vv : Enclosure{0, Enclosure::unbounded});
+    finite = finite && value.back().finite();
+    if (finite) least_upper = std::min(least_upper, value.back().hi());
+  }
+  if (!finite) return nonzero;
+  std::vector<std::size_t> out;
+  for (std::size_t k = 0; k < nonzero.size(); ++k)
+    if (value[k].lo() <= least_upper) out.push_back(nonzero[k]);
+  return out;
+}
 
 Selection3 with_worst_case(const ConvexSet3& F, MapEstimate3 e) {
   const Point3 m = measured_map(e);
@@ -28,10 +59,11 @@ double diagonal_map_angular_error_deg(const Point3& u, const Point3& v) {
 
 double worst_case_map_deg_3d(const ConvexSet3& F, const Point3& m) {
   // Largest angle = smallest cos² = (m·v)²/(|m|²|v|²); m·v >= 0 on the octant, so compare
-  // (m·v)²·|w|² against (m·w)²·|v|² exactly.
+  // (m·v)²·|w|² against (m·w)²·|v|² exactly, among the filter's contenders (in vertex order, so
+  // that ties go to the first vertex as over all of them).
   const Point3* worst = nullptr;
-  for (const Point3& v : F.vertices) {
-    if (is_zero(v)) continue;
+  for (std::size_t i : worst_case_contenders(F, m)) {
+    const Point3& v = F.vertices[i];
     if (!worst) {
       worst = &v;
       continue;

@@ -2,8 +2,14 @@
 #include <gmcc/numerics/internal_check.h>
 
 #include "internal/interval.h"
+#include "internal/max_volume_route.h"
+
+#include <gmcc/geometry/enclosure.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -61,19 +67,20 @@ int compare_with(const Interval& x, const Rational& q) {  // −1: x < q surely,
   return 0;
 }
 
-// The candidates for the maximum of d1·d2·d3 on F: rational ones (vertices, facet stationary
-// points, rational edge roots) and the edges' irrational roots.
+// The candidates for the maximum of d1·d2·d3 on F among `which`: rational ones (vertices, facet
+// stationary points, rational edge roots) and the edges' irrational roots.
 struct Candidates {
   std::vector<Point3> rational;
   std::vector<EdgeRoot> irrational;
 };
-Candidates candidates(const ConvexSet3& F) {
+Candidates candidates(const ConvexSet3& F, const internal::MaxVolumeCandidates& which) {
   const auto& v = F.vertices;
-  Candidates out{{v.begin(), v.end()}, {}};
+  Candidates out;
   std::vector<Point3>& rational = out.rational;
   std::vector<EdgeRoot>& irrational = out.irrational;
-  std::vector<std::vector<std::size_t>> planes = F.faces;  // polytope facets, or the polygon
-  for (const auto& f : planes) {
+  for (std::size_t i : which.vertices) rational.push_back(v[i]);
+  for (std::size_t face : which.faces) {  // polytope facets, or the polygon
+    const auto& f = F.faces[face];
     const Point3 n = cross(sub(v[f[1]], v[f[0]]), sub(v[f[2]], v[f[0]]));
     const Rational k = dot(n, v[f[0]]);
     if (sgn(n.x) == 0 || sgn(n.y) == 0 || sgn(n.z) == 0) continue;
@@ -81,12 +88,7 @@ Candidates candidates(const ConvexSet3& F) {
     const Point3 d{Rational(k / (3 * n.x)), Rational(k / (3 * n.y)), Rational(k / (3 * n.z))};
     if (contains(F, d)) rational.push_back(d);
   }
-  std::set<std::pair<std::size_t, std::size_t>> edges;
-  for (const auto& f : F.faces)
-    for (std::size_t i = 0; i < f.size(); ++i)
-      edges.insert(std::minmax(f[i], f[(i + 1) % f.size()]));
-  if (F.kind == ConvexKind3::segment) edges.insert({0, 1});
-  for (const auto& [i, j] : edges) {
+  for (const auto& [i, j] : which.edges) {
     const Point3& p = v[i];
     const Point3 u = sub(v[j], p);
     // f(t) = A t³ + B t² + C t + D; f'(t) = 3A t² + 2B t + C.
@@ -132,12 +134,199 @@ MapEstimate3 edge_root_estimate(const EdgeRoot& e, mpfr_prec_t bits) {
   return out;
 }
 
+// The filter's arithmetic: double enclosures (numerics/enclosure.h) of exact coordinates.
+struct E3 {
+  Enclosure x, y, z;
+};
+E3 enclose(const Point3& p) { return {enclose_rational(p.x), enclose_rational(p.y), enclose_rational(p.z)}; }
+E3 sub(const E3& a, const E3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+E3 cross(const E3& a, const E3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+Enclosure dot(const E3& a, const E3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+Enclosure product(const E3& d) { return d.x * d.y * d.z; }
+bool finite(const E3& a) { return a.x.finite() && a.y.finite() && a.z.finite(); }
+// A certain upper end of |x|.
+double magnitude(const Enclosure& x) { return std::max(std::fabs(x.lo()), std::fabs(x.hi())); }
+
+// One candidate as the filter sees it: where it is and how large its value can be. `valid`: it
+// is certainly a point of F (a vertex, a stationary point certainly inside, an edge root certainly
+// within its edge), so its value's lower end is attained; `unplaced`: a sign the filter could not
+// decide, so only `upper` (a bound over the whole facet or edge) is known.
+enum class Slot { vertex, face, edge };
+struct Seen {
+  Slot slot;
+  std::size_t index;  // into vertices, faces or the edge list
+  double lower, upper;
+  bool valid, unplaced;
+};
+
+// An upper end of d1·d2·d3 on the convex hull of `points`: each |d_k| is at most its largest |d_k|
+// there. For a candidate the filter cannot place.
+template <class Indices>
+double hull_bound(const std::vector<E3>& e, const Indices& points) {
+  double m[3] = {0, 0, 0};
+  for (std::size_t i : points) {
+    const Enclosure* c[3] = {&e[i].x, &e[i].y, &e[i].z};
+    for (int k = 0; k < 3; ++k) m[k] = std::max(m[k], magnitude(*c[k]));
+  }
+  return Enclosure::round_up(m[0] * m[1] * m[2]);
+}
+
+// Each facet's outward plane n·d <= k (faces counter-clockwise seen from outside), enclosed.
+struct Plane {
+  E3 n;
+  Enclosure k;
+};
+
+// A facet's stationary point d = k/(3n) (docs/derivations.md §2.4) as the filter sees it, not yet
+// placed against the other facets; nothing when it is certainly no candidate (some k·n_k <= 0).
+std::optional<Seen> face_candidate(const std::vector<E3>& e, const std::vector<std::size_t>& f,
+                                   const Plane& h, std::size_t index, E3& point) {
+  const Seen unplaced{Slot::face, index, 0, hull_bound(e, f), false, true};
+  const Enclosure* c[4] = {&h.n.x, &h.n.y, &h.n.z, &h.k};
+  for (const Enclosure* x : c)
+    if (x->uncertain_sign()) return unplaced;
+  for (int k = 0; k < 3; ++k)
+    if (c[k]->positive() != h.k.positive()) return std::nullopt;
+  const Enclosure three = Enclosure::exact(3);
+  point = {h.k / (three * h.n.x), h.k / (three * h.n.y), h.k / (three * h.n.z)};
+  const Enclosure value = product(point);
+  if (!value.finite()) return unplaced;
+  return Seen{Slot::face, index, value.lo(), value.hi(), false, false};
+}
+
+// 0: the point is certainly inside every facet but `self`; -1: certainly outside one; 1: unsure.
+int placed(const std::vector<Plane>& planes, std::size_t self, const E3& d) {
+  int unsure = 0;
+  for (std::size_t g = 0; g < planes.size(); ++g) {
+    if (g == self) continue;
+    const Enclosure s = dot(planes[g].n, d) - planes[g].k;
+    if (s.positive()) return -1;
+    if (!s.negative()) unsure = 1;
+  }
+  return unsure;
+}
+
+// An edge p + t·u's roots of f'(t) = a t² + b t + c in (0, 1) as the filter sees them (see
+// candidates()); one unplaced entry bounding the whole edge where a sign is unsure.
+void edge_candidates(const std::vector<E3>& e, std::size_t index, std::size_t i, std::size_t j,
+                     std::vector<Seen>& out) {
+  const E3& p = e[i];
+  const E3 u = sub(e[j], p);
+  const Enclosure three = Enclosure::exact(3), two = Enclosure::exact(2), four = Enclosure::exact(4);
+  const Enclosure a = three * (u.x * u.y * u.z);
+  const Enclosure b = two * (p.x * u.y * u.z + u.x * p.y * u.z + u.x * u.y * p.z);
+  const Enclosure c = p.x * p.y * u.z + p.x * u.y * p.z + u.x * p.y * p.z;
+  const Enclosure disc = b * b - four * a * c;
+  const Seen unplaced{Slot::edge, index, 0, hull_bound(e, std::array<std::size_t, 2>{i, j}), false, true};
+  if (a.uncertain_sign() || !disc.finite()) return out.push_back(unplaced);
+  if (disc.negative()) return;  // no real root
+  if (!disc.positive()) return out.push_back(unplaced);
+  const Enclosure root = sqrt(disc), zero = Enclosure::exact(0), one = Enclosure::exact(1);
+  for (const Enclosure& t : {(zero - b + root) / (two * a), (zero - b - root) / (two * a)}) {
+    if (!t.finite()) return out.push_back(unplaced);
+    if (!t.positive() && !t.negative()) return out.push_back(unplaced);  // t at 0 unsure
+    if (t.negative()) continue;
+    const Enclosure beyond = t - one;
+    if (beyond.positive()) continue;
+    if (!beyond.negative()) return out.push_back(unplaced);
+    const Enclosure value = product({p.x + t * u.x, p.y + t * u.y, p.z + t * u.z});
+    if (!value.finite()) return out.push_back(unplaced);
+    out.push_back({Slot::edge, index, value.lo(), value.hi(), true, false});
+  }
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> edges_of(const ConvexSet3& F) {
+  std::set<std::pair<std::size_t, std::size_t>> edges;
+  for (const auto& f : F.faces)
+    for (std::size_t i = 0; i < f.size(); ++i) edges.insert(std::minmax(f[i], f[(i + 1) % f.size()]));
+  if (F.kind == ConvexKind3::segment) edges.insert({0, 1});
+  return {edges.begin(), edges.end()};
+}
+
+internal::StageCounts& counts() {
+  static internal::StageCounts c;
+  return c;
+}
+
 }  // namespace
 
-MapEstimate3 max_volume(const ConvexSet3& F) {
-  if (F.kind == ConvexKind3::empty) throw std::invalid_argument("max_volume: empty feasible set");
+namespace internal {
 
-  Candidates c = candidates(F);
+MaxVolumeCandidates all_max_volume_candidates(const ConvexSet3& F) {
+  MaxVolumeCandidates all;
+  for (std::size_t i = 0; i < F.vertices.size(); ++i) all.vertices.push_back(i);
+  for (std::size_t f = 0; f < F.faces.size(); ++f) all.faces.push_back(f);
+  all.edges = edges_of(F);
+  return all;
+}
+
+std::optional<MaxVolumeCandidates> max_volume_contenders(const ConvexSet3& F) {
+  if (F.kind != ConvexKind3::polytope) return std::nullopt;
+  std::vector<E3> e;
+  e.reserve(F.vertices.size());
+  for (const Point3& v : F.vertices) {
+    e.push_back(enclose(v));
+    if (!finite(e.back())) return std::nullopt;
+  }
+  std::vector<Seen> seen;
+  double best = -std::numeric_limits<double>::infinity();  // the largest value certainly attained
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    const Enclosure value = product(e[i]);
+    if (!value.finite()) return std::nullopt;
+    seen.push_back({Slot::vertex, i, value.lo(), value.hi(), true, false});
+    best = std::max(best, value.lo());
+  }
+  const auto edges = edges_of(F);
+  for (std::size_t k = 0; k < edges.size(); ++k) edge_candidates(e, k, edges[k].first, edges[k].second, seen);
+  for (const Seen& s : seen)
+    if (s.valid) best = std::max(best, s.lower);
+  // Facets: the outward planes, then each stationary point whose value could win, placed.
+  std::vector<Plane> planes;
+  for (const auto& f : F.faces) {
+    const E3 n = cross(sub(e[f[1]], e[f[0]]), sub(e[f[2]], e[f[0]]));
+    planes.push_back({n, dot(n, e[f[0]])});
+  }
+  std::vector<std::pair<Seen, E3>> faces;
+  for (std::size_t f = 0; f < F.faces.size(); ++f) {
+    E3 point{};
+    const std::optional<Seen> s = face_candidate(e, F.faces[f], planes[f], f, point);
+    if (s && s->upper >= best) faces.push_back({*s, point});
+  }
+  for (auto& [s, point] : faces) {  // `best` grows as facets are placed
+    if (s.upper < best) continue;
+    if (s.unplaced) {  // the exact stage decides
+      seen.push_back(s);
+      continue;
+    }
+    const int where = placed(planes, s.index, point);
+    if (where < 0) continue;
+    s.valid = where == 0;
+    if (s.valid) best = std::max(best, s.lower);
+    seen.push_back(s);
+  }
+  // The contenders: every candidate whose value may reach `best`, and a vertex for the exact
+  // stage to start from.
+  MaxVolumeCandidates out;
+  std::size_t start = 0;  // the vertex of largest certain value (seen[i] is vertex i)
+  for (std::size_t i = 0; i < e.size(); ++i)
+    if (seen[i].lower > seen[start].lower) start = i;
+  for (const Seen& s : seen) {
+    if (s.upper < best) continue;
+    if (s.slot == Slot::vertex) out.vertices.push_back(s.index);
+    if (s.slot == Slot::face) out.faces.push_back(s.index);
+    if (s.slot == Slot::edge) out.edges.push_back(edges[s.index]);
+  }
+  out.vertices.push_back(start);
+  for (auto* list : {&out.vertices, &out.faces}) {
+    std::sort(list->begin(), list->end());
+    list->erase(std::unique(list->begin(), list->end()), list->end());
+  }
+  out.edges.erase(std::unique(out.edges.begin(), out.edges.end()), out.edges.end());
+  return out;
+}
+
+MapEstimate3 max_volume_over(const ConvexSet3& F, const MaxVolumeCandidates& which) {
+  Candidates c = candidates(F, which);
   std::vector<Point3>& rational = c.rational;
   std::vector<EdgeRoot>& irrational = c.irrational;
 
@@ -182,6 +371,28 @@ MapEstimate3 max_volume(const ConvexSet3& F) {
     }
   }
   return exact_map_estimate_3("max_volume", best);
+}
+
+const StageCounts& max_volume_stage_counts() { return counts(); }
+
+}  // namespace internal
+
+MapEstimate3 max_volume(const ConvexSet3& F) {
+  if (F.kind == ConvexKind3::empty) throw std::invalid_argument("max_volume: empty feasible set");
+  const std::optional<internal::MaxVolumeCandidates> contenders = internal::max_volume_contenders(F);
+  return internal::staged(
+      counts(),
+      [&]() -> std::optional<MapEstimate3> {  // one vertex left: it is the maximiser
+        if (!contenders || !contenders->faces.empty() || !contenders->edges.empty() ||
+            contenders->vertices.size() != 1)
+          return std::nullopt;
+        return exact_map_estimate_3("max_volume", F.vertices[contenders->vertices.front()]);
+      },
+      [&]() -> std::optional<MapEstimate3> {
+        if (!contenders) return std::nullopt;
+        return internal::max_volume_over(F, *contenders);
+      },
+      [&] { return internal::max_volume_over(F, internal::all_max_volume_candidates(F)); });
 }
 
 }  // namespace gmcc

@@ -1,0 +1,170 @@
+// CRULE's filtered selections (issue 16): max_volume's double-enclosure filter and the filter of
+// worst_case_map_deg_3d give the answers of their exact routes, map for map and bit for bit, on
+// hundreds of seeded F3s (Munsell-like random gamuts with shading and highlights, with and without
+// black) and on polytopes built so that a facet's stationary point lies exactly on an edge or a
+// vertex, an edge's root exactly at its end, and vertices tie in angle (the exact stage decides
+// there). The worst case's oracle is written here: every non-zero vertex's cos² compared in ℚ.
+#include "../test_support.h"
+
+#include <gmcc/geometry/feasible_set_3d.h>
+#include <gmcc/selection/crule_3d.h>
+#include <gmcc/selection/max_volume.h>
+
+#include "internal/max_volume_route.h"
+
+#include <boost/test/unit_test.hpp>
+
+using namespace gmcc;
+using gmcc::test::Rng;
+using R = Rational;
+
+namespace {
+
+R dot(const Point3& a, const Point3& b) { return R(a.x * b.x + a.y * b.y + a.z * b.z); }
+bool is_zero(const Point3& a) { return sgn(a.x) == 0 && sgn(a.y) == 0 && sgn(a.z) == 0; }
+
+// The oracle: the first non-zero vertex of least cos²(m, v) = (m·v)²/(|m|²|v|²), in ℚ.
+double worst_case_oracle(const ConvexSet3& F, const Point3& m) {
+  const Point3* worst = nullptr;
+  R least;
+  for (const Point3& v : F.vertices) {
+    if (is_zero(v)) continue;
+    const R mv = dot(m, v);
+    const R cos2 = R(mv * mv / (dot(m, m) * dot(v, v)));
+    if (!worst || cos2 < least) worst = &v, least = cos2;
+  }
+  return diagonal_map_angular_error_deg(m, *worst);
+}
+
+void same_estimate(const MapEstimate3& a, const MapEstimate3& b) {
+  BOOST_TEST(a.rule == b.rule);
+  BOOST_TEST(a.method == b.method);
+  for (int k = 0; k < 3; ++k) {
+    BOOST_TEST(a.map[k] == b.map[k]);
+    BOOST_TEST(a.enclosure[k][0] == b.enclosure[k][0]);
+    BOOST_TEST(a.enclosure[k][1] == b.enclosure[k][1]);
+  }
+  BOOST_TEST(a.error_bound == b.error_bound);
+  BOOST_TEST(a.exact.has_value() == b.exact.has_value());
+  if (a.exact && b.exact) BOOST_TEST((*a.exact == *b.exact));
+  BOOST_TEST(a.edge_root.has_value() == b.edge_root.has_value());
+  if (a.edge_root && b.edge_root) {
+    BOOST_TEST((a.edge_root->from == b.edge_root->from));
+    BOOST_TEST((a.edge_root->to == b.edge_root->to));
+    BOOST_TEST(a.edge_root->sign == b.edge_root->sign);
+  }
+}
+
+std::size_t size(const internal::MaxVolumeCandidates& c) {
+  return c.vertices.size() + c.faces.size() + c.edges.size();
+}
+
+// How many candidates the filter left to the exact stage, of how many.
+struct Kept {
+  std::size_t contenders = 0, candidates = 0;
+};
+
+// Both selections against their exact routes on F, and the worst case from several maps.
+void agree(const ConvexSet3& F, Rng& rng, Kept& kept) {
+  if (F.kind == ConvexKind3::empty) return;
+  const MapEstimate3 staged = max_volume(F);
+  const internal::MaxVolumeCandidates all = internal::all_max_volume_candidates(F);
+  same_estimate(staged, internal::max_volume_over(F, all));
+  if (const auto c = internal::max_volume_contenders(F)) {  // the contenders hold the answer
+    same_estimate(staged, internal::max_volume_over(F, *c));
+    kept.contenders += size(*c);
+    kept.candidates += size(all);
+  }
+  bool nonzero = false;
+  for (const Point3& v : F.vertices) nonzero = nonzero || !is_zero(v);
+  if (!nonzero) return;
+  std::vector<Point3> maps{measured_map(staged), centroid(F), F.vertices.back(), test::random_point3(rng, 1, 9, 7)};
+  for (const Point3& m : maps)
+    if (!is_zero(m)) BOOST_TEST(worst_case_map_deg_3d(F, m) == worst_case_oracle(F, m));
+}
+
+Colour random_colour(Rng& rng, long hi, long den) {
+  return {test::random_rational(rng, 1, hi, den), test::random_rational(rng, 1, hi, den),
+          test::random_rational(rng, 1, hi, den)};
+}
+
+// The convex hull of `colours` as F3 (the image white: F3 is the canonical gamut itself).
+ConvexSet3 gamut(const std::vector<Colour>& colours, CanonicalBlack black = CanonicalBlack::exclude) {
+  return feasible_set_3d(colours, {{1, 1, 1}}, black);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(crule_filters)
+
+BOOST_AUTO_TEST_CASE(random_scenes_agree_with_the_exact_routes) {
+  Rng rng(16016);
+  const internal::StageCounts& counts = internal::max_volume_stage_counts();
+  const std::uint64_t filtered0 = counts[0], contenders0 = counts[1];
+  int polytopes = 0;
+  Kept kept;
+  for (int trial = 0; trial < 150; ++trial) {
+    std::vector<Colour> canonical;
+    for (int i = 0; i < 8 + trial % 20; ++i) canonical.push_back(random_colour(rng, 40, 1 + trial % 9));
+    const CanonicalBlack black = trial % 2 ? CanonicalBlack::include : CanonicalBlack::exclude;
+    const CanonicalConstraints3 G(canonical, black);
+    const Point3 d = test::random_point3(rng, 1, 5, 4);
+    std::vector<Colour> image;
+    for (int i = 0; i < 1 + trial % 11; ++i) {
+      Colour c = test::divided(canonical[static_cast<std::size_t>(rng() % canonical.size())], d);
+      const R shade = trial % 3 == 0 ? test::random_rational(rng, 3, 10, 1) / 10 : R(1);
+      const R highlight = trial % 5 == 0 ? test::random_rational(rng, 0, 3, 7) : R(0);
+      for (R* x : {&c.r, &c.g, &c.b}) *x = *x * shade + highlight;
+      image.push_back(c);
+    }
+    const ConvexSet3 F = feasible_set_3d(G, image);
+    polytopes += F.kind == ConvexKind3::polytope;
+    agree(F, rng, kept);
+  }
+  BOOST_TEST(polytopes > 60);
+  // Every polytope was filtered: a vertex won outright, or the exact stage saw only the
+  // contenders, a few per cent of the candidates.
+  BOOST_TEST(counts[0] + counts[1] == filtered0 + contenders0 + polytopes);
+  BOOST_TEST(counts[0] > filtered0 + 10);
+  BOOST_TEST(counts[1] > contenders0 + 10);
+  BOOST_TEST(kept.contenders * 20 < kept.candidates);
+}
+
+BOOST_AUTO_TEST_CASE(exact_ties_and_touching_candidates) {
+  Rng rng(1990);
+  Kept kept;
+  // The simplex d >= 0, d1 + d2 + d3 <= 3 cut by d1 <= c: for c = 1 the facet's stationary point
+  // (1, 1, 1) lies exactly on the cut's edge; for c = 3/2 inside the facet; for c = 1/2 outside.
+  for (const R c : {R(1), R(3, 2), R(1, 2)}) {
+    const std::vector<Colour> cut{{0, 0, 0}, {c, 0, 0}, {0, 3, 0}, {0, 0, 3}, {c, R(3 - c), 0}, {c, 0, R(3 - c)}};
+    agree(gamut(cut), rng, kept);
+  }
+  // Boxes and cubes: the far corner wins, every corner ties in angle with its mirror image.
+  std::vector<Colour> cube;
+  for (int i = 0; i < 8; ++i) cube.push_back({R(1 + (i & 1)), R(1 + (i >> 1 & 1)), R(1 + (i >> 2 & 1))});
+  agree(gamut(cube), rng, kept);
+  agree(gamut(cube, CanonicalBlack::include), rng, kept);
+  // An octahedron about (2, 2, 2): its vertices (2 ± 1, 2, 2) etc.; the stationary point of the
+  // facet through (3, 2, 2), (2, 3, 2), (2, 2, 3), d = (7/3)·(1, 1, 1), is the facet's centroid.
+  std::vector<Colour> octahedron;
+  for (int k = 0; k < 3; ++k)
+    for (int s : {-1, 1}) {
+      Colour v{2, 2, 2};
+      (k == 0 ? v.r : k == 1 ? v.g : v.b) += s;
+      octahedron.push_back(v);
+    }
+  agree(gamut(octahedron), rng, kept);
+  // Integer grids: many vertices, many equal products and angles.
+  for (int trial = 0; trial < 40; ++trial) {
+    std::vector<Colour> grid;
+    for (int i = 0; i < 6 + trial % 10; ++i)
+      grid.push_back({R(1 + rng() % 4), R(1 + rng() % 4), R(1 + rng() % 4)});
+    agree(gamut(grid, trial % 2 ? CanonicalBlack::include : CanonicalBlack::exclude), rng, kept);
+  }
+  // Lower-dimensional F3 (polygon, segment, point) take the exact route.
+  agree(gamut({{1, 1, 1}, {2, 1, 1}, {1, 2, 1}}), rng, kept);
+  agree(gamut({{1, 4, 1}, {4, 1, 2}}), rng, kept);
+  agree(gamut({{1, 2, 3}}), rng, kept);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
