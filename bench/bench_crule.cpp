@@ -2,7 +2,14 @@
 //   crule_prepared     feasible_set_3d from a CanonicalConstraints3 prepared once (filtered clip);
 //   crule_lp           the route it replaced (canonical hull per call, image hull, exact LP,
 //                      CGAL half-space intersection), kept as the tests' oracle;
-//   crule_3d_prepared  F3 and both selections (max-volume, centroid) with their worst cases;
+//   crule_3d_prepared  F3 and both selections (max-volume, centroid) with their worst cases, the
+//                      exact route (exact volume and centroid: `gmcc select --space 3d`);
+//   crule_3d_certified the same on the certified route the experiments take (centroid certified,
+//                      no volume);
+//   max_volume_filtered / max_volume_unfiltered, centroid_exact / centroid_certified
+//                      one selection on the scenes' F3s (built once): the staged max_volume
+//                      against its exact stage over every candidate; the exact centroid against
+//                      the certified one;
 //   feasible_polygon_2d, scene_certified_2d  the 2-D certified route on the same scenes
 //                      (feasible_polygon, then rule_errors as the experiment runs it);
 //   select_3d/N        `gmcc select --space 3d` without file reading: F3 of an image of N colours
@@ -16,13 +23,16 @@
 #include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
+#include <gmcc/selection/centroid_3.h>
 #include <gmcc/selection/crule_3d.h>
+#include <gmcc/selection/max_volume.h>
 #include <gmcc/selection/rule_errors.h>
 #include <gmcc/validation/gamut_experiment.h>
 #include <gmcc/validation/spectral_table.h>
 #include <gmcc/validation/synthetic_experiment.h>
 
 #include "internal/crule_exact.h"
+#include "internal/max_volume_route.h"
 
 #include <benchmark/benchmark.h>
 
@@ -164,6 +174,43 @@ void crule_3d_prepared(benchmark::State& state) {
   std::size_t i = 0;
   for (auto _ : state) benchmark::DoNotOptimize(crule_3d(*w.prepared_3d, w.scenes[i++ % w.scenes.size()].colours).volume);
 }
+void crule_3d_certified(benchmark::State& state) {
+  const Workload& w = workload();
+  std::size_t i = 0;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        crule_3d(*w.prepared_3d, w.scenes[i++ % w.scenes.size()].colours, Crule3dRoute::certified).centroid);
+}
+// The scenes' non-empty F3s, built once.
+const std::vector<ConvexSet3>& feasible_sets() {
+  static const std::vector<ConvexSet3> sets = [] {
+    std::vector<ConvexSet3> out;
+    for (const Scene& s : workload().scenes) {
+      ConvexSet3 F = feasible_set_3d(*workload().prepared_3d, s.colours);
+      if (F.kind != ConvexKind3::empty) out.push_back(std::move(F));
+    }
+    return out;
+  }();
+  return sets;
+}
+template <class Select>
+void on_feasible_sets(benchmark::State& state, Select select) {
+  const std::vector<ConvexSet3>& sets = feasible_sets();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(select(sets[i++ % sets.size()]).map);
+}
+void max_volume_filtered(benchmark::State& state) { on_feasible_sets(state, [](const ConvexSet3& F) { return max_volume(F); }); }
+void max_volume_unfiltered(benchmark::State& state) {
+  on_feasible_sets(state, [](const ConvexSet3& F) {
+    return internal::max_volume_over(F, internal::all_max_volume_candidates(F));
+  });
+}
+void centroid_exact(benchmark::State& state) {
+  on_feasible_sets(state, [](const ConvexSet3& F) { return centroid_3(F, Crule3dRoute::exact); });
+}
+void centroid_certified(benchmark::State& state) {
+  on_feasible_sets(state, [](const ConvexSet3& F) { return centroid_3(F, Crule3dRoute::certified); });
+}
 void feasible_polygon_2d(benchmark::State& state) {
   const Workload& w = workload();
   std::size_t i = 0;
@@ -211,6 +258,11 @@ void crule_experiment(benchmark::State& state) {
 BENCHMARK(crule_prepared)->Unit(benchmark::kMicrosecond);
 BENCHMARK(crule_lp)->Unit(benchmark::kMicrosecond);
 BENCHMARK(crule_3d_prepared)->Unit(benchmark::kMicrosecond);
+BENCHMARK(crule_3d_certified)->Unit(benchmark::kMicrosecond);
+BENCHMARK(max_volume_filtered)->Unit(benchmark::kMicrosecond);
+BENCHMARK(max_volume_unfiltered)->Unit(benchmark::kMicrosecond);
+BENCHMARK(centroid_exact)->Unit(benchmark::kMicrosecond);
+BENCHMARK(centroid_certified)->Unit(benchmark::kMicrosecond);
 BENCHMARK(feasible_polygon_2d)->Unit(benchmark::kMicrosecond);
 BENCHMARK(scene_certified_2d)->Unit(benchmark::kMicrosecond);
 BENCHMARK(select_3d)->Arg(1000)->Arg(1000000)->Unit(benchmark::kMillisecond);

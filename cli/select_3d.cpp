@@ -67,8 +67,8 @@ int run_select_3d(const SelectOptions& o) {
       f["vertices_approx"].push_back(approx3(v));
     }
     f["faces"] = r.feasible.faces;
-    f["volume"] = to_string(r.volume);
-    f["volume_approx"] = to_double_nearest(r.volume);
+    f["volume"] = to_string(*r.volume);
+    f["volume_approx"] = to_double_nearest(*r.volume);
     j["feasible_set"] = f;
     Json sel = Json::object();
     if (r.max_volume) sel["max_volume"] = selection_json(*r.max_volume);
@@ -84,7 +84,7 @@ int run_select_3d(const SelectOptions& o) {
     out << "3-D feasible set of diagonal maps (CRULE; canonical gamut "
         << (black == CanonicalBlack::include ? "with" : "without") << " black): "
         << to_string(r.feasible.kind) << ", " << r.feasible.vertices.size() << " vertices, "
-        << r.feasible.faces.size() << " faces, volume " << fmt(to_double_nearest(r.volume)) << "\n";
+        << r.feasible.faces.size() << " faces, volume " << fmt(to_double_nearest(*r.volume)) << "\n";
     if (r.feasible.kind == ConvexKind3::empty)
       out << "no diagonal map takes every image colour into the canonical gamut\n";
     auto line = [&out](const char* name, const Selection3& s) {

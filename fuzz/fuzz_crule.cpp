@@ -2,13 +2,19 @@
 // the filtered clip) against the LP route it replaced (internal::feasible_set_3d_reference), on
 // recipes of small, huge, tiny and long rationals, duplicates, coplanar and collinear gamuts,
 // images of scaled canonical colours (F3 a point), zero channels (unbounded) and images large
-// enough for the image-hull prefilter (fuzz/README.md).
+// enough for the image-hull prefilter (fuzz/README.md). Then the filtered selections on F3:
+// max_volume's staged answer is its exact stage's over every candidate, the certified centroid
+// encloses the exact one, and contains() agrees with every facet's plane in ℚ.
 #include <gmcc/geometry/convex_set_3.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
 
+#include <gmcc/selection/centroid_3.h>
+#include <gmcc/selection/max_volume.h>
+
 #include "fuzz_support.h"
 #include "internal/crule_exact.h"
+#include "internal/max_volume_route.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -52,6 +58,41 @@ Rational number(fuzz::ByteReader& in) {
 Colour colour(fuzz::ByteReader& in) { return {number(in), number(in), number(in)}; }
 
 bool same(const ConvexSet3& a, const ConvexSet3& b) { return a == b; }
+
+// The filtered selections against their exact routes (docs/math.md §1b).
+void check_selections(const ConvexSet3& F) {
+  if (F.kind == ConvexKind3::empty) return;
+  const MapEstimate3 staged = max_volume(F);
+  const MapEstimate3 exact = internal::max_volume_over(F, internal::all_max_volume_candidates(F));
+  FUZZ_CHECK(staged.method == exact.method && staged.map == exact.map && staged.exact.has_value() == exact.exact.has_value() &&
+                 (!staged.exact || *staged.exact == *exact.exact),
+             "max_volume's filter gives its exact stage's answer");
+  const Point3 c = centroid(F);
+  const MapEstimate3 certified = centroid_3(F, Crule3dRoute::certified);
+  const Rational* ck[3] = {&c.x, &c.y, &c.z};
+  for (std::size_t k = 0; k < 3; ++k)
+    FUZZ_CHECK(certified.method == "exact" ? certified.exact && *certified.exact == c
+                                           : rational_from_double(certified.enclosure[k][0]) <= *ck[k] &&
+                                                 *ck[k] <= rational_from_double(certified.enclosure[k][1]),
+               "the certified centroid encloses the exact one");
+  if (F.kind != ConvexKind3::polytope) return;
+  // contains(): the centroid and points a hair beyond each vertex, against the facets in ℚ.
+  auto inside = [&](const Point3& p) {
+    for (const auto& f : F.faces) {
+      const Point3 &o = F.vertices[f[0]], &a = F.vertices[f[1]], &b = F.vertices[f[2]];
+      const Rational ax = a.x - o.x, ay = a.y - o.y, az = a.z - o.z, bx = b.x - o.x, by = b.y - o.y, bz = b.z - o.z;
+      const Rational side = (ay * bz - az * by) * (p.x - o.x) + (az * bx - ax * bz) * (p.y - o.y) + (ax * by - ay * bx) * (p.z - o.z);
+      if (sgn(side) > 0) return false;
+    }
+    return true;
+  };
+  FUZZ_CHECK(contains(F, c), "the centroid is in F3");
+  const Rational hair = reduced(Rational(1, 1000000007));
+  for (const Point3& v : F.vertices) {
+    const Point3 out{Rational(v.x * (1 + hair)), Rational(v.y * (1 + hair)), Rational(v.z * (1 - hair))};
+    FUZZ_CHECK(contains(F, out) == inside(out), "contains() agrees with the facets in ℚ");
+  }
+}
 
 }  // namespace
 
@@ -125,5 +166,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const Colour& c : image)
       for (const internal::HalfSpace3& h : G)
         FUZZ_CHECK(h.a.x * v.x * c.r + h.a.y * v.y * c.g + h.a.z * v.z * c.b <= h.b, "a vertex of F3 is feasible");
+  check_selections(now);
   return 0;
 }

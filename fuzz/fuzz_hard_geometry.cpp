@@ -187,7 +187,7 @@ void check_3d(const std::vector<Point2>& canonical, const std::vector<Point2>& i
       gmcc::crule_3d(c3, i3, include_black ? gmcc::CanonicalBlack::include : gmcc::CanonicalBlack::exclude);
   const gmcc::ConvexSet3& F3 = r.feasible;
   FUZZ_CHECK(gmcc::canonical_convex_set_3(F3.kind, F3.vertices, F3.faces) == F3, "F3 not in canonical form");
-  FUZZ_CHECK(r.volume == gmcc::volume(F3) && sgn(r.volume) >= 0, "F3's volume");
+  FUZZ_CHECK(r.volume && *r.volume == gmcc::volume(F3) && sgn(*r.volume) >= 0, "F3's volume");
   FUZZ_CHECK(!include_black || F3.kind != gmcc::ConvexKind3::empty, "F3 empty though black is canonical");
   FUZZ_CHECK((F3.kind == gmcc::ConvexKind3::empty) == !r.max_volume && !r.max_volume == !r.centroid,
              "3-D selections present iff F3 is not empty");

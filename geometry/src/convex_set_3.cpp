@@ -1,9 +1,13 @@
 #include <gmcc/geometry/convex_set_3.h>
 
+#include <gmcc/geometry/enclosure.h>
+
 #include "internal/vector3.h"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 
 namespace gmcc {
@@ -12,6 +16,27 @@ using internal::dot;
 using internal::sub;
 namespace {
 Rational det(const Point3& a, const Point3& b, const Point3& c) { return dot(a, cross(b, c)); }
+
+// contains()'s filter for a polytope: each facet's outward n·(p − v0) in double enclosures
+// (geometry/enclosure.h). False as soon as one is certainly positive, true when all are certainly
+// negative, nothing otherwise (p on or near a facet: the exact test decides).
+std::optional<bool> contains_filtered(const ConvexSet3& s, const Point3& p) {
+  using E3 = std::array<Enclosure, 3>;
+  auto enclose = [](const Point3& q) -> E3 { return {enclose_rational(q.x), enclose_rational(q.y), enclose_rational(q.z)}; };
+  auto minus = [](const E3& a, const E3& b) -> E3 { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
+  const E3 q = enclose(p);
+  bool all_inside = true;
+  for (const auto& f : s.faces) {
+    const E3 o = enclose(s.vertices[f[0]]);
+    const E3 a = minus(enclose(s.vertices[f[1]]), o), b = minus(enclose(s.vertices[f[2]]), o), d = minus(q, o);
+    const Enclosure side = (a[1] * b[2] - a[2] * b[1]) * d[0] + (a[2] * b[0] - a[0] * b[2]) * d[1] +
+                           (a[0] * b[1] - a[1] * b[0]) * d[2];
+    if (side.positive()) return false;
+    all_inside = all_inside && side.negative();
+  }
+  if (all_inside) return true;
+  return std::nullopt;
+}
 }  // namespace
 
 std::string to_string(ConvexKind3 kind) {
@@ -131,6 +156,7 @@ bool contains(const ConvexSet3& s, const Point3& p) {
       return true;
     }
     case ConvexKind3::polytope:
+      if (const std::optional<bool> inside = contains_filtered(s, p)) return *inside;
       for (const auto& f : s.faces) {
         const Point3 n = cross(sub(v[f[1]], v[f[0]]), sub(v[f[2]], v[f[0]]));  // outward
         if (sgn(dot(n, sub(p, v[f[0]]))) > 0) return false;

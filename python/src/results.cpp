@@ -395,12 +395,12 @@ void bind_crule(py::module_& m) {
       });
   py::class_<Crule3d>(m, "Crule3d", "Forsyth's CRULE in 3-D: F3, its volume and two selections.")
       .def_readonly("feasible_set", &Crule3d::feasible)
-      .def_property_readonly("volume", [](const Crule3d& c) { return to_fraction(c.volume); })
+      .def_property_readonly("volume", [](const Crule3d& c) { return to_fraction(c.volume.value()); })
       .def_readonly("max_volume", &Crule3d::max_volume)
       .def_readonly("centroid", &Crule3d::centroid)
       .def("__repr__", [](const Crule3d& c) {
         return "Crule3d(" + to_string(c.feasible.kind) + ", " + std::to_string(c.feasible.vertices.size()) +
-               " vertices, volume≈" + g10(to_double_nearest(c.volume)) + ")";
+               " vertices, volume≈" + g10(to_double_nearest(c.volume.value())) + ")";
       });
 }
 

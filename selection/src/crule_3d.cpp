@@ -80,13 +80,13 @@ Crule3d crule_3d(const std::vector<Colour>& canonical, const std::vector<Colour>
   return crule_3d(CanonicalConstraints3(canonical, black), image);
 }
 
-Crule3d crule_3d(const CanonicalConstraints3& canonical, const std::vector<Colour>& image) {
+Crule3d crule_3d(const CanonicalConstraints3& canonical, const std::vector<Colour>& image, Crule3dRoute route) {
   Crule3d r;
   r.feasible = feasible_set_3d(canonical, image);
-  r.volume = volume(r.feasible);
+  if (route == Crule3dRoute::exact) r.volume = volume(r.feasible);
   if (r.feasible.kind == ConvexKind3::empty) return r;
   r.max_volume = with_worst_case(r.feasible, max_volume(r.feasible));
-  r.centroid = with_worst_case(r.feasible, exact_map_estimate_3("centroid", centroid(r.feasible)));
+  r.centroid = with_worst_case(r.feasible, centroid_3(r.feasible, route));
   return r;
 }
 

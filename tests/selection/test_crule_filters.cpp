@@ -1,18 +1,25 @@
 // CRULE's filtered selections (issue 16): max_volume's double-enclosure filter and the filter of
-// worst_case_map_deg_3d give the answers of their exact routes, map for map and bit for bit, on
+// worst_case_map_deg_3d give the answers of their exact routes, map for map and bit for bit; the
+// certified centroid encloses the exact one; contains()'s filter answers as the exact test; on
 // hundreds of seeded F3s (Munsell-like random gamuts with shading and highlights, with and without
 // black) and on polytopes built so that a facet's stationary point lies exactly on an edge or a
 // vertex, an edge's root exactly at its end, and vertices tie in angle (the exact stage decides
-// there). The worst case's oracle is written here: every non-zero vertex's cos² compared in ℚ.
+// there). The oracles of the worst case and of containment are written here: every non-zero
+// vertex's cos² compared in ℚ, every facet's plane evaluated in ℚ.
 #include "../test_support.h"
 
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/selection/crule_3d.h>
+#include <gmcc/selection/centroid_3.h>
 #include <gmcc/selection/max_volume.h>
 
+#include "internal/centroid_3_route.h"
 #include "internal/max_volume_route.h"
 
 #include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
 
 using namespace gmcc;
 using gmcc::test::Rng;
@@ -34,6 +41,38 @@ double worst_case_oracle(const ConvexSet3& F, const Point3& m) {
     if (!worst || cos2 < least) worst = &v, least = cos2;
   }
   return diagonal_map_angular_error_deg(m, *worst);
+}
+
+// The oracle: p on the inner side of every facet's plane (outward normal from its first three
+// vertices), in ℚ.
+bool contains_oracle(const ConvexSet3& F, const Point3& p) {
+  const auto& v = F.vertices;
+  for (const auto& f : F.faces) {
+    const Point3 a{R(v[f[1]].x - v[f[0]].x), R(v[f[1]].y - v[f[0]].y), R(v[f[1]].z - v[f[0]].z)};
+    const Point3 b{R(v[f[2]].x - v[f[0]].x), R(v[f[2]].y - v[f[0]].y), R(v[f[2]].z - v[f[0]].z)};
+    const Point3 n{R(a.y * b.z - a.z * b.y), R(a.z * b.x - a.x * b.z), R(a.x * b.y - a.y * b.x)};
+    if (sgn(dot(n, {R(p.x - v[f[0]].x), R(p.y - v[f[0]].y), R(p.z - v[f[0]].z)})) > 0) return false;
+  }
+  return true;
+}
+
+// The certified centroid holds the exact one within its enclosure and its bound.
+void centroid_enclosed(const ConvexSet3& F) {
+  const Point3 exact = centroid(F);
+  const MapEstimate3 c = centroid_3(F, Crule3dRoute::certified);
+  BOOST_TEST(c.rule == "centroid");
+  if (c.method == "exact") {
+    BOOST_TEST((*c.exact == exact));
+    return;
+  }
+  BOOST_TEST(c.method == "certified");
+  const R* e[3] = {&exact.x, &exact.y, &exact.z};
+  for (int k = 0; k < 3; ++k) {
+    BOOST_TEST(rational_from_double(c.enclosure[k][0]) <= *e[k]);
+    BOOST_TEST(*e[k] <= rational_from_double(c.enclosure[k][1]));
+    BOOST_TEST(abs(R(*e[k] - rational_from_double(c.map[k]))) <= rational_from_double(c.error_bound));
+  }
+  BOOST_TEST(c.error_bound <= 0x1p-40 * std::max({std::fabs(c.map[0]), std::fabs(c.map[1]), std::fabs(c.map[2])}));
 }
 
 void same_estimate(const MapEstimate3& a, const MapEstimate3& b) {
@@ -75,6 +114,16 @@ void agree(const ConvexSet3& F, Rng& rng, Kept& kept) {
     kept.contenders += size(*c);
     kept.candidates += size(all);
   }
+  centroid_enclosed(F);
+  // Containment of a polytope: the vertices (on the boundary), the centroid, points just beyond
+  // a vertex.
+  const R nudge(1, 1000000000);
+  for (const Point3& v : F.vertices) {
+    BOOST_TEST(contains(F, v));
+    const Point3 out{R(v.x * (1 + nudge)), R(v.y * (1 + nudge)), R(v.z * (1 - nudge))};
+    if (F.kind == ConvexKind3::polytope) BOOST_TEST(contains(F, out) == contains_oracle(F, out));
+  }
+  if (F.kind == ConvexKind3::polytope) BOOST_TEST(contains(F, centroid(F)));
   bool nonzero = false;
   for (const Point3& v : F.vertices) nonzero = nonzero || !is_zero(v);
   if (!nonzero) return;
@@ -101,6 +150,7 @@ BOOST_AUTO_TEST_CASE(random_scenes_agree_with_the_exact_routes) {
   Rng rng(16016);
   const internal::StageCounts& counts = internal::max_volume_stage_counts();
   const std::uint64_t filtered0 = counts[0], contenders0 = counts[1];
+  const std::uint64_t certified0 = internal::certified_centroid_stage_counts()[0];
   int polytopes = 0;
   Kept kept;
   for (int trial = 0; trial < 150; ++trial) {
@@ -128,6 +178,8 @@ BOOST_AUTO_TEST_CASE(random_scenes_agree_with_the_exact_routes) {
   BOOST_TEST(counts[0] > filtered0 + 10);
   BOOST_TEST(counts[1] > contenders0 + 10);
   BOOST_TEST(kept.contenders * 20 < kept.candidates);
+  // Nearly every polytope's centroid is certified in doubles.
+  BOOST_TEST(10 * (internal::certified_centroid_stage_counts()[0] - certified0) >= 9u * static_cast<unsigned>(polytopes));
 }
 
 BOOST_AUTO_TEST_CASE(exact_ties_and_touching_candidates) {

@@ -116,10 +116,11 @@ std::vector<RuleRecord> baseline_records(const ExperimentSetup& setup, const Tes
 // The same scene in 3-D (Forsyth's CRULE against crule_gamut, G_c3 prepared once with black in it
 // or not as configured): its rules' maps scored by their perspective (d1/d3, d2/d3) into
 // rec.rules[3], [4] (and with crule_extended [5] max-trace, [6] the cone mean of F3's perspective
-// image), each worst case over F3.
+// image), each worst case over F3. CRULE's certified route (crule_3d.h): F3, max-volume and
+// max-trace exact, the centroid certified (its double map, taken exactly, is what is scored).
 void score_crule(const ExperimentSetup& setup, const ExperimentConfig& config, const CanonicalConstraints3& crule_gamut,
                  const TestLight& light, const std::vector<Colour>& image_colours, SceneRecord& rec) {
-  const Crule3d c3 = crule_3d(crule_gamut, image_colours);
+  const Crule3d c3 = crule_3d(crule_gamut, image_colours, Crule3dRoute::certified);
   const bool truth3_inside = contains(c3.feasible, light.true_diagonal_map);
   // The 3-D map d of a selection, its worst case over F3 given: scored when d3 > 0.
   auto score = [&](std::size_t slot, const Point3& d, double worst_case_deg) {

@@ -6,6 +6,7 @@
 
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/feasible_set_3d.h>
+#include <gmcc/selection/centroid_3.h>
 #include <gmcc/selection/map_estimate_3.h>
 
 #include <optional>
@@ -33,22 +34,26 @@ struct Selection3 {
 /// CRULE in 3-D: F3 and its selections (absent when F3 is empty).
 struct Crule3d {
   ConvexSet3 feasible;  ///< F3, exactly (feasible_set_3d)
-  Rational volume;      ///< F3's exact volume (0 unless F3 is a polytope)
+  /// F3's exact volume (0 unless F3 is a polytope); absent on the certified route, which does
+  /// not need it.
+  std::optional<Rational> volume;
   /// CRULE-MV (argmax d1·d2·d3, max_volume.h) and CRULE-AVE (F3's centroid); absent when F3 is empty.
   ///@{
   std::optional<Selection3> max_volume, centroid;
   ///@}
 };
 
-/// feasible_set_3d(canonical, image, black), then max_volume and the exact centroid, each with
-/// worst_case_map_deg_3d (an irrational map is measured from its double map, taken exactly).
-/// \throws as feasible_set_3d.
+/// feasible_set_3d(canonical, image, black), then max_volume and the centroid (centroid_3, exact),
+/// each with worst_case_map_deg_3d (a map that is not rational, or only certified, is measured
+/// from its double map, taken exactly). \throws as feasible_set_3d.
 Crule3d crule_3d(const std::vector<Colour>& canonical, const std::vector<Colour>& image,
                  CanonicalBlack black = CanonicalBlack::include);
 
 /// The same from a canonical gamut prepared once (CanonicalConstraints3, feasible_set_3d.h;
-/// docs/math.md §1b "The prepared route"): what an experiment calls per scene.
+/// docs/math.md §1b "The prepared route"): what an experiment calls per scene, there with
+/// `route` certified (the centroid certified, no volume; F3 and max-volume exact as always).
 /// \throws as feasible_set_3d.
-Crule3d crule_3d(const CanonicalConstraints3& canonical, const std::vector<Colour>& image);
+Crule3d crule_3d(const CanonicalConstraints3& canonical, const std::vector<Colour>& image,
+                 Crule3dRoute route = Crule3dRoute::exact);
 
 }  // namespace gmcc

@@ -1,0 +1,23 @@
+#pragma once
+// centroid_3's certified route, reachable for the tests that compare it with the exact centroid
+// (docs/derivations.md §2.4). Internal to gmcc::selection.
+
+#include <gmcc/geometry/convex_set_3.h>
+#include <gmcc/selection/map_estimate_3.h>
+
+#include "internal/staged.h"
+
+#include <optional>
+
+namespace gmcc::internal {
+
+/// The filter: F3's tetrahedral centroid sum in double enclosures, method `certified`; nothing
+/// when F3 is not a polytope, the volume is not certainly positive or a component's enclosure is
+/// wider than 2^-40 of it.
+std::optional<MapEstimate3> certified_centroid_filtered(const ConvexSet3& F3);
+
+/// How often each stage answered centroid_3's certified route, since the start (0: the filter,
+/// 1: the exact centroid).
+const StageCounts& certified_centroid_stage_counts();
+
+}  // namespace gmcc::internal
