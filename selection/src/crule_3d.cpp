@@ -1,9 +1,8 @@
+#include <gmcc/geometry/enclosure.h>
 #include <gmcc/selection/crule_3d.h>
 #include <gmcc/selection/max_volume.h>
 
 #include "internal/angle.h"
-
-#include <gmcc/geometry/enclosure.h>
 
 #include <cstddef>
 #include <limits>

@@ -1,10 +1,9 @@
-#include <gmcc/selection/max_volume.h>
+#include <gmcc/geometry/enclosure.h>
 #include <gmcc/numerics/internal_check.h>
+#include <gmcc/selection/max_volume.h>
 
 #include "internal/interval.h"
 #include "internal/max_volume_route.h"
-
-#include <gmcc/geometry/enclosure.h>
 
 #include <algorithm>
 #include <array>
