@@ -32,6 +32,7 @@
 #include <gmcc/validation/synthetic_experiment.h>
 
 #include "internal/crule_exact.h"
+#include "internal/centroid_3_route.h"
 #include "internal/max_volume_route.h"
 
 #include <benchmark/benchmark.h>
@@ -209,7 +210,10 @@ void centroid_exact(benchmark::State& state) {
   on_feasible_sets(state, [](const ConvexSet3& F) { return centroid_3(F, Crule3dRoute::exact); });
 }
 void centroid_certified(benchmark::State& state) {
+  const std::uint64_t exact0 = internal::certified_centroid_stage_counts()[1];
   on_feasible_sets(state, [](const ConvexSet3& F) { return centroid_3(F, Crule3dRoute::certified); });
+  state.counters["exact_share"] = benchmark::Counter(
+      static_cast<double>(internal::certified_centroid_stage_counts()[1] - exact0), benchmark::Counter::kAvgIterations);
 }
 void feasible_polygon_2d(benchmark::State& state) {
   const Workload& w = workload();

@@ -50,7 +50,7 @@ std::optional<MapEstimate3> certified_centroid_filtered(const ConvexSet3& F) {
   const Enclosure four_w = Enclosure::exact(4) * w_sum;
   for (int k = 0; k < 3; ++k) {
     const Enclosure c = acc[k] / four_w;
-    if (!c.finite() || !(c.rad <= std::fabs(c.mid) * 0x1p-40)) return std::nullopt;
+    if (!c.finite() || !(c.rad <= std::fabs(c.mid) * certified_centroid_relative_bound)) return std::nullopt;
     e.map[static_cast<std::size_t>(k)] = c.mid;
     e.enclosure[static_cast<std::size_t>(k)] = {c.lo(), c.hi()};
     e.error_bound = std::max(e.error_bound, std::max(c.mid - c.lo(), c.hi() - c.mid));

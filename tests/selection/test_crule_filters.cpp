@@ -72,7 +72,8 @@ void centroid_enclosed(const ConvexSet3& F) {
     BOOST_TEST(*e[k] <= rational_from_double(c.enclosure[k][1]));
     BOOST_TEST(abs(R(*e[k] - rational_from_double(c.map[k]))) <= rational_from_double(c.error_bound));
   }
-  BOOST_TEST(c.error_bound <= 0x1p-40 * std::max({std::fabs(c.map[0]), std::fabs(c.map[1]), std::fabs(c.map[2])}));
+  BOOST_TEST(c.error_bound <= internal::certified_centroid_relative_bound *
+                                 std::max({std::fabs(c.map[0]), std::fabs(c.map[1]), std::fabs(c.map[2])}));
 }
 
 void same_estimate(const MapEstimate3& a, const MapEstimate3& b) {

@@ -11,9 +11,14 @@
 
 namespace gmcc::internal {
 
+/// The largest bound the certified centroid accepts, relative to each component: 2^-32 (the
+/// enclosures come out near 10^-12 relative; a map off by 2^-32 moves an angular error by about
+/// 10^-8 degrees).
+inline constexpr double certified_centroid_relative_bound = 0x1p-32;
+
 /// The filter: F3's tetrahedral centroid sum in double enclosures, method `certified`; nothing
-/// when F3 is not a polytope, the volume is not certainly positive or a component's enclosure is
-/// wider than 2^-40 of it.
+/// when F3 is not a polytope, the volume is not certainly positive or a component's bound exceeds
+/// certified_centroid_relative_bound of it.
 std::optional<MapEstimate3> certified_centroid_filtered(const ConvexSet3& F3);
 
 /// How often each stage answered centroid_3's certified route, since the start (0: the filter,
