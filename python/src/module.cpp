@@ -334,20 +334,9 @@ py::dict records_columns(const ExperimentResult& r) {
   return cols;
 }
 
-}  // namespace
-
-}  // namespace gmcc::python
-
-PYBIND11_MODULE(_core, m) {
-  using namespace gmcc;
-  using namespace gmcc::python;
-  m.doc() = "gmcc._core: the compiled half of the Python module gmcc (docs/python.md).";
-  m.attr("__version__") = std::string(gmcc_version());
-  m.attr("__commit__") = std::string(gmcc_commit());
-  m.attr("__commit_date__") = std::string(gmcc_commit_date());
-  m.attr("__data_dir__") = std::string(GMCC_DATA_DIR);  // the source tree's data/, at build time
-  bind_results(m);
-
+// The scene pipeline: the canonical side, one scene's selections, its feasible set and the rules
+// applied together.
+void bind_scene(py::module_& m) {
   m.def("prepare_canonical", &prepare, py::arg("canonical"), py::kw_only(), GMCC_OPTION_ARGS,
         "The canonical side prepared once (prepare_canonical.h; Finlayson & Hordley 1999 eq. 10). Public: gmcc.prepare_canonical.");
 
@@ -400,7 +389,10 @@ PYBIND11_MODULE(_core, m) {
       py::arg("order") = 12, py::arg("samples") = 1000000, py::arg("seed") = 1,
       py::arg("canonical_illuminant") = py::none(),
         "The three selection rules with worst cases (select_maps.h; §3, §4). Public: gmcc.select_maps.");
+}
 
+// Each rule, worst case and angular error on its own.
+void bind_rules(py::module_& m) {
   m.def("max_area", [](const ConvexSet2& F) {
     nonempty(F, "max_area");
     return released([&] { return max_area(F); });
@@ -464,6 +456,10 @@ PYBIND11_MODULE(_core, m) {
   }, py::arg("estimate"), py::arg("truth"),
         "reproduction_angular_error_deg (angular_error.h).");
 
+}
+
+// Lights as maps, the illumination constraint and CRULE in 3-D.
+void bind_lights_and_crule(py::module_& m) {
   m.def("illuminant_map", [](py::handle light, py::handle c) {
     return to_fraction_pair(illuminant_map(light_from(light, "light"), light_from(c, "canonical_illuminant")));
   }, py::arg("light"), py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1),
@@ -491,7 +487,10 @@ PYBIND11_MODULE(_core, m) {
     }
   }, py::arg("canonical"), py::arg("image"), py::kw_only(), py::arg("black") = "include",
         "crule_3d (crule_3d.h): Forsyth's CRULE in 3-D.");
+}
 
+// Error statistics.
+void bind_statistics(py::module_& m) {
   m.def("error_statistics", [](py::handle values) {
     const py::array_t<double, py::array::c_style | py::array::forcecast> a =
         py::module_::import("numpy").attr("asarray")(values, "float64").attr("ravel")();
@@ -504,6 +503,10 @@ PYBIND11_MODULE(_core, m) {
   }, py::arg("values"),
         "error_statistics (error_statistics.h; docs/reproduction.md \"Statistics\").");
 
+}
+
+// The benchmark's C++ loop and the experiments with their per-scene records.
+void bind_benchmark_and_experiments(py::module_& m) {
   // For bench/python_overhead.py only: the same scenes through select_scene in a C++ loop (the
   // inputs converted first, outside the clock), seconds per call, to compare a call from Python
   // with the C++ call in one run.
@@ -579,4 +582,24 @@ PYBIND11_MODULE(_core, m) {
       py::arg("canonical_surfaces"), py::arg("min_surfaces"), py::arg("max_surfaces"), py::arg("scenes"),
       py::arg("seed"), py::arg("expand"), py::arg("expand_policy"), py::arg("crule"), py::arg("threads"),
         "run_gamut_experiment on synthetic_setup or camera_setup, with every scene's record (gamut_experiment.h).");
+}
+
+}  // namespace
+
+}  // namespace gmcc::python
+
+PYBIND11_MODULE(_core, m) {
+  using namespace gmcc;
+  using namespace gmcc::python;
+  m.doc() = "gmcc._core: the compiled half of the Python module gmcc (docs/python.md).";
+  m.attr("__version__") = std::string(gmcc_version());
+  m.attr("__commit__") = std::string(gmcc_commit());
+  m.attr("__commit_date__") = std::string(gmcc_commit_date());
+  m.attr("__data_dir__") = std::string(GMCC_DATA_DIR);  // the source tree's data/, at build time
+  bind_results(m);
+  bind_scene(m);
+  bind_rules(m);
+  bind_lights_and_crule(m);
+  bind_statistics(m);
+  bind_benchmark_and_experiments(m);
 }
