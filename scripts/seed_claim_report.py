@@ -130,15 +130,18 @@ def main(argv):
     if paired_rows:
         lines.append("")
         lines.extend(paired_rows)
+        lines.append("")
+        lines.extend(paired_by_light(directory, present, setup["lights"]))
     with open(os.path.join(directory, "seed-claim.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
     write_figure(directory, runs, present)
 
 
-def paired(directory, condition, black, rule, against="mean_3d"):
+def paired(directory, condition, black, rule, against="mean_3d", light=None):
     """Mean and standard error of the per-scene difference error(rule) - error(against), over the
-    scenes of the records DIR/<condition>-<black>.jsonl where both gave a map; None without them."""
+    scenes of the records DIR/<condition>-<black>.jsonl where both gave a map (under `light` only,
+    when given); None without them."""
     path = os.path.join(directory, "%s-%s.jsonl" % (condition, black))
     if not os.path.exists(path):
         return None
@@ -149,12 +152,30 @@ def paired(directory, condition, black, rule, against="mean_3d"):
             rules = x.get("rules")
             if "scene" not in x or not rules or not rules.get(rule) or not rules.get(against):
                 continue
+            if light is not None and x.get("light") != light:
+                continue
             d.append(rules[rule]["error_deg"] - rules[against]["error_deg"])
     if not d:
         return None
     mean = sum(d) / len(d)
     se = (sum((v - mean) ** 2 for v in d) / (len(d) - 1) / len(d)) ** 0.5 if len(d) > 1 else float("nan")
     return mean, se, len(d)
+
+
+def paired_by_light(directory, present, lights, rule="crule_max_volume", black="include"):
+    """Rows of the paired-difference table of one CRULE rule per test light."""
+    rows = ["The same paired difference for %s, %s, per test light:" % (
+                TITLES[rule], "with black" if black == "include" else "without black"), "",
+            "| light | " + " | ".join(t for _, t in present) + " |", "|---|" + "---|" * len(present)]
+    any_records = False
+    for light in lights:
+        row = "| %s |" % light
+        for c, _ in present:
+            p = paired(directory, c, black, rule, light=light)
+            any_records = any_records or p is not None
+            row += " |" if p is None else " %s ± %s (%d) |" % (fmt(p[0]), fmt(p[1]), p[2])
+        rows.append(row)
+    return rows if any_records else []
 
 
 def paired_table(directory, present):

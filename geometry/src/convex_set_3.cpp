@@ -18,24 +18,25 @@ namespace {
 Rational det(const Point3& a, const Point3& b, const Point3& c) { return dot(a, cross(b, c)); }
 
 // contains()'s filter for a polytope: each facet's outward n·(p − v0) in double enclosures
-// (geometry/enclosure.h). False as soon as one is certainly positive, true when all are certainly
-// negative, nothing otherwise (p on or near a facet: the exact test decides).
-std::optional<bool> contains_filtered(const ConvexSet3& s, const Point3& p) {
+// (geometry/enclosure.h). False as soon as one is certainly positive; otherwise the facets whose
+// sign it could not decide (p on or near them), which the exact test then takes in ℚ (none: p is
+// inside).
+std::optional<std::vector<std::size_t>> facets_left_by_filter(const ConvexSet3& s, const Point3& p) {
   using E3 = std::array<Enclosure, 3>;
   auto enclose = [](const Point3& q) -> E3 { return {enclose_rational(q.x), enclose_rational(q.y), enclose_rational(q.z)}; };
   auto minus = [](const E3& a, const E3& b) -> E3 { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
   const E3 q = enclose(p);
-  bool all_inside = true;
-  for (const auto& f : s.faces) {
+  std::vector<std::size_t> unsure;
+  for (std::size_t k = 0; k < s.faces.size(); ++k) {
+    const auto& f = s.faces[k];
     const E3 o = enclose(s.vertices[f[0]]);
     const E3 a = minus(enclose(s.vertices[f[1]]), o), b = minus(enclose(s.vertices[f[2]]), o), d = minus(q, o);
     const Enclosure side = (a[1] * b[2] - a[2] * b[1]) * d[0] + (a[2] * b[0] - a[0] * b[2]) * d[1] +
                            (a[0] * b[1] - a[1] * b[0]) * d[2];
-    if (side.positive()) return false;
-    all_inside = all_inside && side.negative();
+    if (side.positive()) return std::nullopt;
+    if (!side.negative()) unsure.push_back(k);
   }
-  if (all_inside) return true;
-  return std::nullopt;
+  return unsure;
 }
 }  // namespace
 
@@ -155,13 +156,16 @@ bool contains(const ConvexSet3& s, const Point3& p) {
       }
       return true;
     }
-    case ConvexKind3::polytope:
-      if (const std::optional<bool> inside = contains_filtered(s, p)) return *inside;
-      for (const auto& f : s.faces) {
+    case ConvexKind3::polytope: {
+      const std::optional<std::vector<std::size_t>> unsure = facets_left_by_filter(s, p);
+      if (!unsure) return false;
+      for (std::size_t k : *unsure) {
+        const auto& f = s.faces[k];
         const Point3 n = cross(sub(v[f[1]], v[f[0]]), sub(v[f[2]], v[f[0]]));  // outward
         if (sgn(dot(n, sub(p, v[f[0]]))) > 0) return false;
       }
       return true;
+    }
   }
   return false;
 }

@@ -10,7 +10,8 @@
 namespace gmcc {
 
 /// argmax_{d ∈ F3} d1 + d2 + d3, exactly (docs/math.md §1c). A linear function attains its
-/// maximum over a polytope at a vertex, so the vertices are compared in ℚ; of tied vertices
+/// maximum over a polytope at a vertex, so the vertices are compared in ℚ (those a double-enclosure
+/// filter of their traces cannot rule out); of tied vertices
 /// (the maximum on an edge or facet of F3) the lexicographically smallest is returned. Method
 /// `exact`, rule `max_trace`.
 /// \pre F3 not empty. \throws std::invalid_argument if it is. O(|F3| vertices).
