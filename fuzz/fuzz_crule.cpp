@@ -3,13 +3,16 @@
 // recipes of small, huge, tiny and long rationals, duplicates, coplanar and collinear gamuts,
 // images of scaled canonical colours (F3 a point), zero channels (unbounded) and images large
 // enough for the image-hull prefilter (fuzz/README.md). Then the filtered selections on F3:
-// max_volume's staged answer is its exact stage's over every candidate, the certified centroid
-// encloses the exact one, and contains() agrees with every facet's plane in ℚ.
+// max_volume's staged answer is its exact stage's over every candidate, max_trace and the worst
+// case are the vertices' best in ℚ, the certified centroid encloses the exact one, and contains()
+// agrees with every facet's plane in ℚ (points 10^-9 and 2^-80 beyond each vertex).
 #include <gmcc/geometry/convex_set_3.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
 
 #include <gmcc/selection/centroid_3.h>
+#include <gmcc/selection/crule_3d.h>
+#include <gmcc/selection/max_trace.h>
 #include <gmcc/selection/max_volume.h>
 
 #include "fuzz_support.h"
@@ -64,9 +67,17 @@ void check_selections(const ConvexSet3& F) {
   if (F.kind == ConvexKind3::empty) return;
   const MapEstimate3 staged = max_volume(F);
   const MapEstimate3 exact = internal::max_volume_over(F, internal::all_max_volume_candidates(F));
-  FUZZ_CHECK(staged.method == exact.method && staged.map == exact.map && staged.exact.has_value() == exact.exact.has_value() &&
-                 (!staged.exact || *staged.exact == *exact.exact),
+  FUZZ_CHECK(staged.method == exact.method && staged.map == exact.map && staged.enclosure == exact.enclosure &&
+                 staged.error_bound == exact.error_bound && staged.exact.has_value() == exact.exact.has_value() &&
+                 (!staged.exact || *staged.exact == *exact.exact) && staged.edge_root.has_value() == exact.edge_root.has_value() &&
+                 (!staged.edge_root || (staged.edge_root->from == exact.edge_root->from &&
+                                        staged.edge_root->to == exact.edge_root->to && staged.edge_root->sign == exact.edge_root->sign)),
              "max_volume's filter gives its exact stage's answer");
+  // max_trace and the worst case from the centroid against every vertex in ℚ.
+  const Point3* trace = &F.vertices.front();
+  for (const Point3& v : F.vertices)
+    if (v.x + v.y + v.z > trace->x + trace->y + trace->z) trace = &v;
+  FUZZ_CHECK(*max_trace(F).exact == *trace, "max_trace is the first vertex of largest trace");
   const Point3 c = centroid(F);
   const MapEstimate3 certified = centroid_3(F, Crule3dRoute::certified);
   const Rational* ck[3] = {&c.x, &c.y, &c.z};
@@ -87,11 +98,23 @@ void check_selections(const ConvexSet3& F) {
     return true;
   };
   FUZZ_CHECK(contains(F, c), "the centroid is in F3");
-  const Rational hair = reduced(Rational(1, 1000000007));
-  for (const Point3& v : F.vertices) {
-    const Point3 out{Rational(v.x * (1 + hair)), Rational(v.y * (1 + hair)), Rational(v.z * (1 - hair))};
-    FUZZ_CHECK(contains(F, out) == inside(out), "contains() agrees with the facets in ℚ");
+  if (sgn(c.x) != 0 || sgn(c.y) != 0 || sgn(c.z) != 0) {
+    auto dot = [](const Point3& a, const Point3& b) { return Rational(a.x * b.x + a.y * b.y + a.z * b.z); };
+    const Point3* worst = nullptr;
+    Rational least;
+    for (const Point3& v : F.vertices) {
+      if (sgn(v.x) == 0 && sgn(v.y) == 0 && sgn(v.z) == 0) continue;
+      const Rational cv = dot(c, v), cos2 = cv * cv / dot(v, v);
+      if (!worst || cos2 < least) worst = &v, least = cos2;
+    }
+    FUZZ_CHECK(worst_case_map_deg_3d(F, c) == diagonal_map_angular_error_deg(c, *worst),
+               "the worst case from the centroid is the vertex of least cos² in ℚ");
   }
+  for (const Rational& hair : {reduced(Rational(1, 1000000007)), Rational(1, mpz_class(1) << 80)})
+    for (const Point3& v : F.vertices) {
+      const Point3 out{Rational(v.x * (1 + hair)), Rational(v.y * (1 + hair)), Rational(v.z * (1 - hair))};
+      FUZZ_CHECK(contains(F, out) == inside(out), "contains() agrees with the facets in ℚ");
+    }
 }
 
 }  // namespace

@@ -22,15 +22,16 @@ Rational det(const Point3& a, const Point3& b, const Point3& c) { return dot(a, 
 // sign it could not decide (p on or near them), which the exact test then takes in ℚ (none: p is
 // inside).
 std::optional<std::vector<std::size_t>> facets_left_by_filter(const ConvexSet3& s, const Point3& p) {
-  using E3 = std::array<Enclosure, 3>;
-  auto enclose = [](const Point3& q) -> E3 { return {enclose_rational(q.x), enclose_rational(q.y), enclose_rational(q.z)}; };
-  auto minus = [](const E3& a, const E3& b) -> E3 { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
-  const E3 q = enclose(p);
+  auto minus = [](const Enclosure3& a, const Enclosure3& b) -> Enclosure3 {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+  };
+  const Enclosure3 q = enclose_point(p);
   std::vector<std::size_t> unsure;
   for (std::size_t k = 0; k < s.faces.size(); ++k) {
     const auto& f = s.faces[k];
-    const E3 o = enclose(s.vertices[f[0]]);
-    const E3 a = minus(enclose(s.vertices[f[1]]), o), b = minus(enclose(s.vertices[f[2]]), o), d = minus(q, o);
+    const Enclosure3 o = enclose_point(s.vertices[f[0]]);
+    const Enclosure3 a = minus(enclose_point(s.vertices[f[1]]), o), b = minus(enclose_point(s.vertices[f[2]]), o),
+                     d = minus(q, o);
     const Enclosure side = (a[1] * b[2] - a[2] * b[1]) * d[0] + (a[2] * b[0] - a[0] * b[2]) * d[1] +
                            (a[0] * b[1] - a[1] * b[0]) * d[2];
     if (side.positive()) return std::nullopt;

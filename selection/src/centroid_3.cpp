@@ -12,9 +12,8 @@
 namespace gmcc {
 namespace internal {
 namespace {
-using E3 = std::array<Enclosure, 3>;
+using E3 = Enclosure3;
 
-E3 enclose(const Point3& p) { return {enclose_rational(p.x), enclose_rational(p.y), enclose_rational(p.z)}; }
 E3 sub(const E3& a, const E3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 Enclosure det(const E3& a, const E3& b, const E3& c) {
   return a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
@@ -30,7 +29,7 @@ std::optional<MapEstimate3> certified_centroid_filtered(const ConvexSet3& F) {
   if (F.kind != ConvexKind3::polytope) return std::nullopt;
   std::vector<E3> v;
   v.reserve(F.vertices.size());
-  for (const Point3& p : F.vertices) v.push_back(enclose(p));
+  for (const Point3& p : F.vertices) v.push_back(enclose_point(p));
   const E3& o = v[0];
   Enclosure w_sum = Enclosure::exact(0);
   E3 acc{Enclosure::exact(0), Enclosure::exact(0), Enclosure::exact(0)};

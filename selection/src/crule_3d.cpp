@@ -20,15 +20,16 @@ bool is_zero(const Point3& a) { return sgn(a.x) == 0 && sgn(a.y) == 0 && sgn(a.z
 std::vector<std::size_t> worst_case_contenders(const ConvexSet3& F, const Point3& m) {
   std::vector<std::size_t> nonzero;
   std::vector<Enclosure> value;
-  const Enclosure mx = enclose_rational(m.x), my = enclose_rational(m.y), mz = enclose_rational(m.z);
-  bool finite = mx.finite() && my.finite() && mz.finite();
+  const Enclosure3 em = enclose_point(m);
+  bool finite = em[0].finite() && em[1].finite() && em[2].finite();
   double least_upper = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < F.vertices.size(); ++i) {
     const Point3& v = F.vertices[i];
     if (is_zero(v)) continue;
     nonzero.push_back(i);
-    const Enclosure x = enclose_rational(v.x), y = enclose_rational(v.y), z = enclose_rational(v.z);
-    const Enclosure mv = mx * x + my * y + mz * z, vv = x * x + y * y + z * z;
+    const Enclosure3 ev = enclose_point(v);
+    const Enclosure mv = em[0] * ev[0] + em[1] * ev[1] + em[2] * ev[2];
+    const Enclosure vv = ev[0] * ev[0] + ev[1] * ev[1] + ev[2] * ev[2];
     value.push_back(vv.positive() ? mv * mv / vv : Enclosure{0, Enclosure::unbounded});
     finite = finite && value.back().finite();
     if (finite) least_upper = std::min(least_upper, value.back().hi());

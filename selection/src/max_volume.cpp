@@ -9,7 +9,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <set>
 #include <stdexcept>
 
 namespace gmcc {
@@ -133,29 +132,30 @@ MapEstimate3 edge_root_estimate(const EdgeRoot& e, mpfr_prec_t bits) {
   return out;
 }
 
-// The filter's arithmetic: double enclosures (numerics/enclosure.h) of exact coordinates.
-struct E3 {
-  Enclosure x, y, z;
-};
-E3 enclose(const Point3& p) { return {enclose_rational(p.x), enclose_rational(p.y), enclose_rational(p.z)}; }
-E3 sub(const E3& a, const E3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-E3 cross(const E3& a, const E3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-Enclosure dot(const E3& a, const E3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Enclosure product(const E3& d) { return d.x * d.y * d.z; }
-bool finite(const E3& a) { return a.x.finite() && a.y.finite() && a.z.finite(); }
+// The filter's arithmetic: double enclosures (geometry/enclosure.h) of exact coordinates.
+using E3 = Enclosure3;
+E3 sub(const E3& a, const E3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+E3 cross(const E3& a, const E3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Enclosure dot(const E3& a, const E3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Enclosure product(const E3& d) { return d[0] * d[1] * d[2]; }
+bool finite(const E3& a) { return a[0].finite() && a[1].finite() && a[2].finite(); }
 // A certain upper end of |x|.
 double magnitude(const Enclosure& x) { return std::max(std::fabs(x.lo()), std::fabs(x.hi())); }
 
-// One candidate as the filter sees it: where it is and how large its value can be. `valid`: it
-// is certainly a point of F (a vertex, a stationary point certainly inside, an edge root certainly
-// within its edge), so its value's lower end is attained; `unplaced`: a sign the filter could not
-// decide, so only `upper` (a bound over the whole facet or edge) is known.
+// One candidate as the filter sees it: where it is, how large its value can be, and what is known:
+// `in_f3`, certainly a point of F (a vertex, a stationary point certainly inside, an edge root
+// certainly within its edge), so its value's lower end is attained; `maybe_in_f3`, its value
+// enclosed but not whether it lies in F; `bound_only`, a sign the filter could not decide, so
+// only `upper` (a bound over the whole facet or edge) is known and the exact stage decides.
 enum class Slot { vertex, face, edge };
+enum class Known { in_f3, maybe_in_f3, bound_only };
 struct Seen {
   Slot slot;
   std::size_t index;  // into vertices, faces or the edge list
   double lower, upper;
-  bool valid, unplaced;
+  Known known;
 };
 
 // An upper end of d1·d2·d3 on the convex hull of `points`: each |d_k| is at most its largest |d_k|
@@ -164,8 +164,7 @@ template <class Indices>
 double hull_bound(const std::vector<E3>& e, const Indices& points) {
   double m[3] = {0, 0, 0};
   for (std::size_t i : points) {
-    const Enclosure* c[3] = {&e[i].x, &e[i].y, &e[i].z};
-    for (int k = 0; k < 3; ++k) m[k] = std::max(m[k], magnitude(*c[k]));
+    for (int k = 0; k < 3; ++k) m[k] = std::max(m[k], magnitude(e[i][static_cast<std::size_t>(k)]));
   }
   return Enclosure::round_up(m[0] * m[1] * m[2]);
 }
@@ -180,17 +179,17 @@ struct Plane {
 // placed against the other facets; nothing when it is certainly no candidate (some k·n_k <= 0).
 std::optional<Seen> face_candidate(const std::vector<E3>& e, const std::vector<std::size_t>& f,
                                    const Plane& h, std::size_t index, E3& point) {
-  const Seen unplaced{Slot::face, index, 0, hull_bound(e, f), false, true};
-  const Enclosure* c[4] = {&h.n.x, &h.n.y, &h.n.z, &h.k};
+  const Seen unplaced{Slot::face, index, 0, hull_bound(e, f), Known::bound_only};
+  const Enclosure* c[4] = {&h.n[0], &h.n[1], &h.n[2], &h.k};
   for (const Enclosure* x : c)
     if (x->uncertain_sign()) return unplaced;
   for (int k = 0; k < 3; ++k)
     if (c[k]->positive() != h.k.positive()) return std::nullopt;
   const Enclosure three = Enclosure::exact(3);
-  point = {h.k / (three * h.n.x), h.k / (three * h.n.y), h.k / (three * h.n.z)};
+  point = {h.k / (three * h.n[0]), h.k / (three * h.n[1]), h.k / (three * h.n[2])};
   const Enclosure value = product(point);
   if (!value.finite()) return unplaced;
-  return Seen{Slot::face, index, value.lo(), value.hi(), false, false};
+  return Seen{Slot::face, index, value.lo(), value.hi(), Known::maybe_in_f3};
 }
 
 // 0: the point is certainly inside every facet but `self`; -1: certainly outside one; 1: unsure.
@@ -206,40 +205,43 @@ int placed(const std::vector<Plane>& planes, std::size_t self, const E3& d) {
 }
 
 // An edge p + t·u's roots of f'(t) = a t² + b t + c in (0, 1) as the filter sees them (see
-// candidates()); one unplaced entry bounding the whole edge where a sign is unsure.
-void edge_candidates(const std::vector<E3>& e, std::size_t index, std::size_t i, std::size_t j,
-                     std::vector<Seen>& out) {
+// candidates()): each root certainly inside, or else one bound_only entry for the whole edge.
+std::vector<Seen> edge_candidates(const std::vector<E3>& e, std::size_t index, std::size_t i, std::size_t j) {
   const E3& p = e[i];
   const E3 u = sub(e[j], p);
   const Enclosure three = Enclosure::exact(3), two = Enclosure::exact(2), four = Enclosure::exact(4);
-  const Enclosure a = three * (u.x * u.y * u.z);
-  const Enclosure b = two * (p.x * u.y * u.z + u.x * p.y * u.z + u.x * u.y * p.z);
-  const Enclosure c = p.x * p.y * u.z + p.x * u.y * p.z + u.x * p.y * p.z;
+  const Enclosure a = three * (u[0] * u[1] * u[2]);
+  const Enclosure b = two * (p[0] * u[1] * u[2] + u[0] * p[1] * u[2] + u[0] * u[1] * p[2]);
+  const Enclosure c = p[0] * p[1] * u[2] + p[0] * u[1] * p[2] + u[0] * p[1] * p[2];
   const Enclosure disc = b * b - four * a * c;
-  const Seen unplaced{Slot::edge, index, 0, hull_bound(e, std::array<std::size_t, 2>{i, j}), false, true};
-  if (a.uncertain_sign() || !disc.finite()) return out.push_back(unplaced);
-  if (disc.negative()) return;  // no real root
-  if (!disc.positive()) return out.push_back(unplaced);
-  const Enclosure root = sqrt(disc), zero = Enclosure::exact(0), one = Enclosure::exact(1);
-  for (const Enclosure& t : {(zero - b + root) / (two * a), (zero - b - root) / (two * a)}) {
-    if (!t.finite()) return out.push_back(unplaced);
-    if (!t.positive() && !t.negative()) return out.push_back(unplaced);  // t at 0 unsure
+  const std::vector<Seen> unplaced{{Slot::edge, index, 0, hull_bound(e, std::array<std::size_t, 2>{i, j}), Known::bound_only}};
+  if (a.uncertain_sign() || !disc.finite()) return unplaced;
+  if (disc.negative()) return {};  // no real root
+  if (!disc.positive()) return unplaced;
+  std::vector<Seen> out;
+  const Enclosure root = sqrt(disc), one = Enclosure::exact(1);
+  for (const Enclosure& t : {(-b + root) / (two * a), (-b - root) / (two * a)}) {
+    if (!t.finite() || t.uncertain_sign()) return unplaced;  // t at 0 unsure
     if (t.negative()) continue;
     const Enclosure beyond = t - one;
     if (beyond.positive()) continue;
-    if (!beyond.negative()) return out.push_back(unplaced);
-    const Enclosure value = product({p.x + t * u.x, p.y + t * u.y, p.z + t * u.z});
-    if (!value.finite()) return out.push_back(unplaced);
-    out.push_back({Slot::edge, index, value.lo(), value.hi(), true, false});
+    if (!beyond.negative()) return unplaced;  // t at 1 unsure
+    const Enclosure value = product({p[0] + t * u[0], p[1] + t * u[1], p[2] + t * u[2]});
+    if (!value.finite()) return unplaced;
+    out.push_back({Slot::edge, index, value.lo(), value.hi(), Known::in_f3});
   }
+  return out;
 }
 
+// F's edges, each (smaller index, larger), sorted.
 std::vector<std::pair<std::size_t, std::size_t>> edges_of(const ConvexSet3& F) {
-  std::set<std::pair<std::size_t, std::size_t>> edges;
+  std::vector<std::pair<std::size_t, std::size_t>> edges;
   for (const auto& f : F.faces)
-    for (std::size_t i = 0; i < f.size(); ++i) edges.insert(std::minmax(f[i], f[(i + 1) % f.size()]));
-  if (F.kind == ConvexKind3::segment) edges.insert({0, 1});
-  return {edges.begin(), edges.end()};
+    for (std::size_t i = 0; i < f.size(); ++i) edges.push_back(std::minmax(f[i], f[(i + 1) % f.size()]));
+  if (F.kind == ConvexKind3::segment) edges.push_back({0, 1});
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
 }
 
 internal::StageCounts& counts() {
@@ -264,7 +266,7 @@ std::optional<MaxVolumeCandidates> max_volume_contenders(const ConvexSet3& F) {
   std::vector<E3> e;
   e.reserve(F.vertices.size());
   for (const Point3& v : F.vertices) {
-    e.push_back(enclose(v));
+    e.push_back(enclose_point(v));
     if (!finite(e.back())) return std::nullopt;
   }
   std::vector<Seen> seen;
@@ -272,13 +274,15 @@ std::optional<MaxVolumeCandidates> max_volume_contenders(const ConvexSet3& F) {
   for (std::size_t i = 0; i < e.size(); ++i) {
     const Enclosure value = product(e[i]);
     if (!value.finite()) return std::nullopt;
-    seen.push_back({Slot::vertex, i, value.lo(), value.hi(), true, false});
+    seen.push_back({Slot::vertex, i, value.lo(), value.hi(), Known::in_f3});
     best = std::max(best, value.lo());
   }
   const auto edges = edges_of(F);
-  for (std::size_t k = 0; k < edges.size(); ++k) edge_candidates(e, k, edges[k].first, edges[k].second, seen);
-  for (const Seen& s : seen)
-    if (s.valid) best = std::max(best, s.lower);
+  for (std::size_t k = 0; k < edges.size(); ++k)
+    for (const Seen& s : edge_candidates(e, k, edges[k].first, edges[k].second)) {
+      if (s.known == Known::in_f3) best = std::max(best, s.lower);
+      seen.push_back(s);
+    }
   // Facets: the outward planes, then each stationary point whose value could win, placed.
   std::vector<Plane> planes;
   for (const auto& f : F.faces) {
@@ -293,14 +297,13 @@ std::optional<MaxVolumeCandidates> max_volume_contenders(const ConvexSet3& F) {
   }
   for (auto& [s, point] : faces) {  // `best` grows as facets are placed
     if (s.upper < best) continue;
-    if (s.unplaced) {  // the exact stage decides
+    if (s.known == Known::bound_only) {  // the exact stage decides
       seen.push_back(s);
       continue;
     }
     const int where = placed(planes, s.index, point);
     if (where < 0) continue;
-    s.valid = where == 0;
-    if (s.valid) best = std::max(best, s.lower);
+    if (where == 0) s.known = Known::in_f3, best = std::max(best, s.lower);
     seen.push_back(s);
   }
   // The contenders: every candidate whose value may reach `best`, and a vertex for the exact
@@ -320,7 +323,7 @@ std::optional<MaxVolumeCandidates> max_volume_contenders(const ConvexSet3& F) {
     std::sort(list->begin(), list->end());
     list->erase(std::unique(list->begin(), list->end()), list->end());
   }
-  out.edges.erase(std::unique(out.edges.begin(), out.edges.end()), out.edges.end());
+  out.edges.erase(std::unique(out.edges.begin(), out.edges.end()), out.edges.end());  // in edges_of's order
   return out;
 }
 

@@ -2,9 +2,10 @@
 // worst_case_map_deg_3d give the answers of their exact routes, map for map and bit for bit; the
 // certified centroid encloses the exact one; contains()'s filter answers as the exact test; on
 // hundreds of seeded F3s (Munsell-like random gamuts with shading and highlights, with and without
-// black) and on polytopes built so that a facet's stationary point lies exactly on an edge or a
-// vertex, an edge's root exactly at its end, and vertices tie in angle (the exact stage decides
-// there). The oracles of the worst case and of containment are written here: every non-zero
+// black) and on polytopes built so that a facet's stationary point lies exactly on an edge or
+// 2^-70 inside or outside it, edges' roots fall exactly at their ends (the cube with black), and
+// vertices tie in angle (the exact stage decides there); containment also of points 2^-80 beyond
+// each vertex, which only the exact test can place. The oracles of the worst case and of containment are written here: every non-zero
 // vertex's cos² compared in ℚ, every facet's plane evaluated in ℚ.
 #include "../test_support.h"
 
@@ -110,19 +111,22 @@ void agree(const ConvexSet3& F, Rng& rng, Kept& kept) {
   const MapEstimate3 staged = max_volume(F);
   const internal::MaxVolumeCandidates all = internal::all_max_volume_candidates(F);
   same_estimate(staged, internal::max_volume_over(F, all));
-  if (const auto c = internal::max_volume_contenders(F)) {  // the contenders hold the answer
-    same_estimate(staged, internal::max_volume_over(F, *c));
+  if (const auto c = internal::max_volume_contenders(F)) {  // how much the filter left
     kept.contenders += size(*c);
     kept.candidates += size(all);
   }
   centroid_enclosed(F);
-  // Containment of a polytope: the vertices (on the boundary), the centroid, points just beyond
-  // a vertex.
-  const R nudge(1, 1000000000);
+  // Containment of a polytope: the vertices (on the boundary), the centroid, points 10^-9 beyond
+  // a vertex (the filter decides) and 2^-80 beyond it (only the exact test can).
+  const R far(1, 1000000000), near(1, mpz_class(1) << 80);
   for (const Point3& v : F.vertices) {
     BOOST_TEST(contains(F, v));
-    const Point3 out{R(v.x * (1 + nudge)), R(v.y * (1 + nudge)), R(v.z * (1 - nudge))};
-    if (F.kind == ConvexKind3::polytope) BOOST_TEST(contains(F, out) == contains_oracle(F, out));
+    if (F.kind != ConvexKind3::polytope) continue;
+    for (const R& nudge : {far, near})
+      for (int sign : {1, -1}) {
+        const Point3 p{R(v.x * (1 + sign * nudge)), R(v.y * (1 + sign * nudge)), R(v.z * (1 - sign * nudge))};
+        BOOST_TEST(contains(F, p) == contains_oracle(F, p));
+      }
   }
   if (F.kind == ConvexKind3::polytope) BOOST_TEST(contains(F, centroid(F)));
   bool nonzero = false;
@@ -187,8 +191,10 @@ BOOST_AUTO_TEST_CASE(exact_ties_and_touching_candidates) {
   Rng rng(1990);
   Kept kept;
   // The simplex d >= 0, d1 + d2 + d3 <= 3 cut by d1 <= c: for c = 1 the facet's stationary point
-  // (1, 1, 1) lies exactly on the cut's edge; for c = 3/2 inside the facet; for c = 1/2 outside.
-  for (const R c : {R(1), R(3, 2), R(1, 2)}) {
+  // (1, 1, 1) lies exactly on the cut's edge, for c = 1 ± 2^-70 a hair inside or outside it (the
+  // filter cannot place it); for c = 3/2 inside the facet; for c = 1/2 outside.
+  const R hair(1, mpz_class(1) << 70);
+  for (const R c : {R(1), R(1 + hair), R(1 - hair), R(3, 2), R(1, 2)}) {
     const std::vector<Colour> cut{{0, 0, 0}, {c, 0, 0}, {0, 3, 0}, {0, 0, 3}, {c, R(3 - c), 0}, {c, 0, R(3 - c)}};
     agree(gamut(cut), rng, kept);
   }

@@ -3,9 +3,11 @@
 /// Geometry's names for the enclosure family (numerics/enclosure.h): Enclosure in doubles,
 /// LongEnclosure in x87 extended precision, and an exact rational as a double enclosure.
 
+#include <gmcc/geometry/convex_set_3.h>
 #include <gmcc/geometry/rational.h>
 #include <gmcc/numerics/enclosure.h>
 
+#include <array>
 #include <cmath>
 
 namespace gmcc {
@@ -25,6 +27,15 @@ inline Enclosure enclose_rational(const Rational& q) {
                     static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
   if (bits < -138 || bits > 138) return {0, Enclosure::unbounded};
   return Enclosure::relative(mpq_get_d(q.get_mpq_t()), 2 * Enclosure::u);
+}
+
+/// A point of space (a map d or a colour) as double enclosures of its exact coordinates, in the
+/// order x, y, z: what the 3-D filters (CRULE's selections, containment) compute with.
+using Enclosure3 = std::array<Enclosure, 3>;
+
+/// enclose_rational of each coordinate of p.
+inline Enclosure3 enclose_point(const Point3& p) {
+  return {enclose_rational(p.x), enclose_rational(p.y), enclose_rational(p.z)};
 }
 
 }  // namespace gmcc

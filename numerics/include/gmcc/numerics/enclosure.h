@@ -21,8 +21,11 @@
 /// within u·|mid| of that exact result; the radius adds this to the propagated radii and is
 /// evaluated in at most seven rounded operations on non-negative numbers, each of which loses at
 /// most a factor (1 − u); the final factor (1 + 16u) makes up for all of them, and the smallest
-/// normal number for any underflow. Overflow is not guarded: gmcc's fast paths use it on
-/// magnitudes within 2^±300 and fall back otherwise. LDInterval's: every operation is done in the
+/// normal number for any underflow. Overflow is not guarded as such: an overflowing operation
+/// leaves an infinite midpoint or radius (or NaN), for which finite() is false and positive(),
+/// negative() are false (no sign certain), so every filter then falls back. The 2-D fast paths
+/// keep their magnitudes within 2^±300; CRULE's filters reach about 2^±840 (edge discriminants)
+/// and rely on that fallback beyond. LDInterval's: every operation is done in the
 /// default round-to-nearest mode and its ends are pushed outward by a relative 2^-63 (the
 /// rounding error is at most 2^-64 relative, and the push itself rounds back by at most 2^-64)
 /// plus the smallest normal number (for underflow); atanl/atan2l on x86_64 glibc use the fpatan

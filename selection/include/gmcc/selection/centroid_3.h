@@ -18,8 +18,9 @@ enum class Crule3dRoute { exact, certified };
 /// - `exact`: centroid() in ℚ, method `exact`.
 /// - `certified`, F3 a polytope: the same tetrahedral sum (the facets fan-triangulated and coned
 ///   from the first vertex) in double enclosures of the exact vertices (numerics/enclosure.h),
-///   method `certified` with map = the enclosure's midpoints, error_bound its radius (at most
-///   2^-32 relative, or the exact route answers) and the enclosure; the exact route for the
+///   method `certified` with map = the enclosure's midpoints (not necessarily the nearest
+///   doubles), error_bound a bound on |map − exact| (the radius is at most 2^-32 of |map|, or the
+///   exact route answers) and the enclosure; the exact route for the
 ///   lower-dimensional kinds and wherever the volume's sign or a range cannot be certified.
 /// \pre F3 not empty. \throws std::invalid_argument if it is. O(total facet size).
 MapEstimate3 centroid_3(const ConvexSet3& F3, Crule3dRoute route = Crule3dRoute::exact);
