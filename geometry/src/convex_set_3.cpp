@@ -1,6 +1,7 @@
 #include <gmcc/geometry/convex_set_3.h>
 
 #include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/polytope_moments.h>
 
 #include "internal/vector3.h"
 
@@ -15,7 +16,13 @@ using internal::cross;
 using internal::dot;
 using internal::sub;
 namespace {
-Rational det(const Point3& a, const Point3& b, const Point3& c) { return dot(a, cross(b, c)); }
+// The vertices as coordinate arrays, for polytope_moments.
+std::vector<std::array<Rational, 3>> rational_points(const ConvexSet3& s) {
+  std::vector<std::array<Rational, 3>> out;
+  out.reserve(s.vertices.size());
+  for (const Point3& p : s.vertices) out.push_back({p.x, p.y, p.z});
+  return out;
+}
 
 // contains()'s filter for a polytope: each facet's outward n·(p − v0) in double enclosures
 // (geometry/enclosure.h). False as soon as one is certainly positive; otherwise the facets whose
@@ -80,14 +87,7 @@ ConvexSet3 canonical_convex_set_3(ConvexKind3 kind, std::vector<Point3> vertices
 
 Rational volume(const ConvexSet3& s) {
   if (s.kind != ConvexKind3::polytope) return 0;
-  const Point3& o = s.vertices[0];
-  Rational six = 0;
-  for (const auto& f : s.faces) {
-    if (f[0] == 0) continue;  // facets through the apex add nothing
-    for (std::size_t i = 1; i + 1 < f.size(); ++i)
-      six += det(sub(s.vertices[f[0]], o), sub(s.vertices[f[i]], o), sub(s.vertices[f[i + 1]], o));
-  }
-  return Rational(six / 6);
+  return Rational(polytope_moments(rational_points(s), s.faces, false).six_volume / 6);
 }
 
 Point3 centroid(const ConvexSet3& s) {
@@ -117,20 +117,9 @@ Point3 centroid(const ConvexSet3& s) {
     }
     case ConvexKind3::polytope: break;
   }
-  const Point3& o = v[0];
-  Rational w_sum = 0;
-  Point3 acc{0, 0, 0};
-  for (const auto& f : s.faces) {
-    if (f[0] == 0) continue;
-    for (std::size_t i = 1; i + 1 < f.size(); ++i) {
-      const Point3 &a = v[f[0]], &b = v[f[i]], &c = v[f[i + 1]];
-      const Rational w = det(sub(a, o), sub(b, o), sub(c, o));
-      w_sum += w;
-      acc = {Rational(acc.x + w * (o.x + a.x + b.x + c.x)), Rational(acc.y + w * (o.y + a.y + b.y + c.y)),
-             Rational(acc.z + w * (o.z + a.z + b.z + c.z))};
-    }
-  }
-  return {Rational(acc.x / (4 * w_sum)), Rational(acc.y / (4 * w_sum)), Rational(acc.z / (4 * w_sum))};
+  const PolytopeMoments<Rational> m = polytope_moments(rational_points(s), s.faces, true);
+  const Rational four_w = 4 * m.six_volume;
+  return {Rational(m.weighted[0] / four_w), Rational(m.weighted[1] / four_w), Rational(m.weighted[2] / four_w)};
 }
 
 bool contains(const ConvexSet3& s, const Point3& p) {
