@@ -24,25 +24,20 @@ std::vector<std::array<Rational, 3>> rational_points(const ConvexSet3& s) {
   return out;
 }
 
-// contains()'s filter for a polytope: each facet's outward n·(p − v0) in double enclosures
-// (geometry/enclosure.h). False as soon as one is certainly positive; otherwise the facets whose
-// sign it could not decide (p on or near them), which the exact test then takes in ℚ (none: p is
+// contains()'s filter for a polytope: p against each facet's enclosed outward plane
+// (geometry/enclosure.h). False as soon as p is certainly outside one; otherwise the facets whose
+// side it could not decide (p on or near them), which the exact test then takes in ℚ (none: p is
 // inside).
 std::optional<std::vector<std::size_t>> facets_left_by_filter(const ConvexSet3& s, const Point3& p) {
-  auto minus = [](const Enclosure3& a, const Enclosure3& b) -> Enclosure3 {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-  };
+  std::vector<Enclosure3> e;
+  e.reserve(s.vertices.size());
+  for (const Point3& v : s.vertices) e.push_back(enclose_point(v));
   const Enclosure3 q = enclose_point(p);
   std::vector<std::size_t> unsure;
   for (std::size_t k = 0; k < s.faces.size(); ++k) {
-    const auto& f = s.faces[k];
-    const Enclosure3 o = enclose_point(s.vertices[f[0]]);
-    const Enclosure3 a = minus(enclose_point(s.vertices[f[1]]), o), b = minus(enclose_point(s.vertices[f[2]]), o),
-                     d = minus(q, o);
-    const Enclosure side = (a[1] * b[2] - a[2] * b[1]) * d[0] + (a[2] * b[0] - a[0] * b[2]) * d[1] +
-                           (a[0] * b[1] - a[1] * b[0]) * d[2];
-    if (side.positive()) return std::nullopt;
-    if (!side.negative()) unsure.push_back(k);
+    const Enclosure d = side(enclosed_facet_plane(e, s.faces[k]), q);
+    if (d.positive()) return std::nullopt;
+    if (!d.negative()) unsure.push_back(k);
   }
   return unsure;
 }

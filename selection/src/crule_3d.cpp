@@ -3,9 +3,9 @@
 #include <gmcc/selection/max_volume.h>
 
 #include "internal/angle.h"
+#include "internal/may_be_largest.h"
 
 #include <cstddef>
-#include <limits>
 #include <stdexcept>
 
 namespace gmcc {
@@ -13,31 +13,22 @@ namespace {
 Rational dot(const Point3& a, const Point3& b) { return Rational(a.x * b.x + a.y * b.y + a.z * b.z); }
 bool is_zero(const Point3& a) { return sgn(a.x) == 0 && sgn(a.y) == 0 && sgn(a.z) == 0; }
 
-// The filter of worst_case_map_deg_3d: (m·v)²/|v|² (cos² times |m|²) of every non-zero vertex in
-// double enclosures (numerics/enclosure.h); the vertices whose value may reach the least upper
-// end, in order (the smallest cos² is among them). All non-zero vertices where an enclosure is
-// not finite.
+// The filter of worst_case_map_deg_3d: the non-zero vertices whose cos² to m (as −(m·v)²/|v|²,
+// cos² times −|m|², in double enclosures) may be the least, in vertex order.
 std::vector<std::size_t> worst_case_contenders(const ConvexSet3& F, const Point3& m) {
   std::vector<std::size_t> nonzero;
-  std::vector<Enclosure> value;
+  std::vector<Enclosure> minus_cos2;
   const Enclosure3 em = enclose_point(m);
-  bool finite = em[0].finite() && em[1].finite() && em[2].finite();
-  double least_upper = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < F.vertices.size(); ++i) {
     const Point3& v = F.vertices[i];
     if (is_zero(v)) continue;
     nonzero.push_back(i);
     const Enclosure3 ev = enclose_point(v);
-    const Enclosure mv = em[0] * ev[0] + em[1] * ev[1] + em[2] * ev[2];
-    const Enclosure vv = ev[0] * ev[0] + ev[1] * ev[1] + ev[2] * ev[2];
-    value.push_back(vv.positive() ? mv * mv / vv : Enclosure{0, Enclosure::unbounded});
-    finite = finite && value.back().finite();
-    if (finite) least_upper = std::min(least_upper, value.back().hi());
+    const Enclosure mv = gmcc::dot(em, ev), vv = gmcc::dot(ev, ev);
+    minus_cos2.push_back(vv.positive() ? -(mv * mv / vv) : Enclosure{0, Enclosure::unbounded});
   }
-  if (!finite) return nonzero;
   std::vector<std::size_t> out;
-  for (std::size_t k = 0; k < nonzero.size(); ++k)
-    if (value[k].lo() <= least_upper) out.push_back(nonzero[k]);
+  for (std::size_t k : internal::may_be_largest(minus_cos2)) out.push_back(nonzero[k]);
   return out;
 }
 

@@ -1,28 +1,20 @@
 #include <gmcc/geometry/enclosure.h>
 #include <gmcc/selection/max_trace.h>
 
-#include <algorithm>
+#include "internal/may_be_largest.h"
+
 #include <cstddef>
-#include <limits>
 #include <stdexcept>
 #include <vector>
 
 namespace gmcc {
 namespace {
-// The vertices whose trace d1 + d2 + d3, enclosed in doubles (numerics/enclosure.h), may reach
-// the largest lower end, in vertex order (the maximum is among them); all of them where an
-// enclosure is not finite.
+// The vertices whose trace d1 + d2 + d3, enclosed in doubles, may be the largest, in vertex order.
 std::vector<std::size_t> contenders(const ConvexSet3& F) {
   std::vector<Enclosure> trace;
-  double best = -std::numeric_limits<double>::infinity();
-  for (const Point3& v : F.vertices) {
+  for (const Point3& v : F.vertices)
     trace.push_back(enclose_rational(v.x) + enclose_rational(v.y) + enclose_rational(v.z));
-    best = std::max(best, trace.back().lo());
-  }
-  std::vector<std::size_t> out;
-  for (std::size_t i = 0; i < trace.size(); ++i)
-    if (!trace[i].finite() || trace[i].hi() >= best) out.push_back(i);
-  return out;
+  return internal::may_be_largest(trace);
 }
 }  // namespace
 

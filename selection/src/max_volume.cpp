@@ -134,11 +134,6 @@ MapEstimate3 edge_root_estimate(const EdgeRoot& e, mpfr_prec_t bits) {
 
 // The filter's arithmetic: double enclosures (geometry/enclosure.h) of exact coordinates.
 using E3 = Enclosure3;
-E3 sub(const E3& a, const E3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-E3 cross(const E3& a, const E3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Enclosure dot(const E3& a, const E3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 Enclosure product(const E3& d) { return d[0] * d[1] * d[2]; }
 bool finite(const E3& a) { return a[0].finite() && a[1].finite() && a[2].finite(); }
 // A certain upper end of |x|.
@@ -169,16 +164,10 @@ double hull_bound(const std::vector<E3>& e, const Indices& points) {
   return Enclosure::round_up(m[0] * m[1] * m[2]);
 }
 
-// Each facet's outward plane n·d <= k (faces counter-clockwise seen from outside), enclosed.
-struct Plane {
-  E3 n;
-  Enclosure k;
-};
-
 // A facet's stationary point d = k/(3n) (docs/derivations.md §2.4) as the filter sees it, not yet
 // placed against the other facets; nothing when it is certainly no candidate (some k·n_k <= 0).
 std::optional<Seen> face_candidate(const std::vector<E3>& e, const std::vector<std::size_t>& f,
-                                   const Plane& h, std::size_t index, E3& point) {
+                                   const EnclosedPlane& h, std::size_t index, E3& point) {
   const Seen unplaced{Slot::face, index, 0, hull_bound(e, f), Known::bound_only};
   const Enclosure* c[4] = {&h.n[0], &h.n[1], &h.n[2], &h.k};
   for (const Enclosure* x : c)
@@ -193,11 +182,11 @@ std::optional<Seen> face_candidate(const std::vector<E3>& e, const std::vector<s
 }
 
 // 0: the point is certainly inside every facet but `self`; -1: certainly outside one; 1: unsure.
-int placed(const std::vector<Plane>& planes, std::size_t self, const E3& d) {
+int placed(const std::vector<EnclosedPlane>& planes, std::size_t self, const E3& d) {
   int unsure = 0;
   for (std::size_t g = 0; g < planes.size(); ++g) {
     if (g == self) continue;
-    const Enclosure s = dot(planes[g].n, d) - planes[g].k;
+    const Enclosure s = side(planes[g], d);
     if (s.positive()) return -1;
     if (!s.negative()) unsure = 1;
   }
@@ -208,7 +197,7 @@ int placed(const std::vector<Plane>& planes, std::size_t self, const E3& d) {
 // candidates()): each root certainly inside, or else one bound_only entry for the whole edge.
 std::vector<Seen> edge_candidates(const std::vector<E3>& e, std::size_t index, std::size_t i, std::size_t j) {
   const E3& p = e[i];
-  const E3 u = sub(e[j], p);
+  const E3 u = e[j] - p;
   const Enclosure three = Enclosure::exact(3), two = Enclosure::exact(2), four = Enclosure::exact(4);
   const Enclosure a = three * (u[0] * u[1] * u[2]);
   const Enclosure b = two * (p[0] * u[1] * u[2] + u[0] * p[1] * u[2] + u[0] * u[1] * p[2]);
@@ -284,11 +273,8 @@ std::optional<MaxVolumeCandidates> max_volume_contenders(const ConvexSet3& F) {
       seen.push_back(s);
     }
   // Facets: the outward planes, then each stationary point whose value could win, placed.
-  std::vector<Plane> planes;
-  for (const auto& f : F.faces) {
-    const E3 n = cross(sub(e[f[1]], e[f[0]]), sub(e[f[2]], e[f[0]]));
-    planes.push_back({n, dot(n, e[f[0]])});
-  }
+  std::vector<EnclosedPlane> planes;
+  for (const auto& f : F.faces) planes.push_back(enclosed_facet_plane(e, f));
   std::vector<std::pair<Seen, E3>> faces;
   for (std::size_t f = 0; f < F.faces.size(); ++f) {
     E3 point{};

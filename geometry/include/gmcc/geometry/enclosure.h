@@ -9,6 +9,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 namespace gmcc {
 
@@ -37,5 +39,33 @@ using Enclosure3 = std::array<Enclosure, 3>;
 inline Enclosure3 enclose_point(const Point3& p) {
   return {enclose_rational(p.x), enclose_rational(p.y), enclose_rational(p.z)};
 }
+
+/// \name Vector arithmetic on enclosed points
+///@{
+/// a − b.
+inline Enclosure3 operator-(const Enclosure3& a, const Enclosure3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+/// a · b.
+inline Enclosure dot(const Enclosure3& a, const Enclosure3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+/// a × b.
+inline Enclosure3 cross(const Enclosure3& a, const Enclosure3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+///@}
+
+/// A facet's plane n·d = k, enclosed: n = (v1 − v0) × (v2 − v0) from its first three vertices,
+/// outward for a facet counter-clockwise seen from outside (ConvexSet3), and k = n·v0.
+struct EnclosedPlane {
+  Enclosure3 n;  ///< the outward normal
+  Enclosure k;   ///< n·v0
+};
+
+/// The plane of `face` (indices into `vertices`, a ConvexSet3 facet) from enclosed vertices.
+inline EnclosedPlane enclosed_facet_plane(const std::vector<Enclosure3>& vertices, const std::vector<std::size_t>& face) {
+  const Enclosure3 n = cross(vertices[face[1]] - vertices[face[0]], vertices[face[2]] - vertices[face[0]]);
+  return {n, dot(n, vertices[face[0]])};
+}
+
+/// n·p − k: certainly positive when p is strictly outside the facet's half-space.
+inline Enclosure side(const EnclosedPlane& h, const Enclosure3& p) { return dot(h.n, p) - h.k; }
 
 }  // namespace gmcc
