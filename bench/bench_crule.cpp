@@ -28,7 +28,7 @@
 #include <gmcc/selection/max_volume.h>
 #include <gmcc/selection/rule_errors.h>
 #include <gmcc/validation/gamut_experiment.h>
-#include <gmcc/validation/spectral_table.h>
+#include <gmcc/input/spectral_table.h>
 #include <gmcc/validation/synthetic_experiment.h>
 
 #include "internal/crule_exact.h"

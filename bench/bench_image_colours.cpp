@@ -3,9 +3,9 @@
 // the PNG, the pixel rules with the exact hull colour set, and, as a baseline in the same run,
 // the same distinct colours' chromaticity hull in plain doubles (no exactness: a near-collinear
 // triple may be decided wrongly). Reported as ratios in docs/performance.md "Images".
-#include <gmcc/validation/colour_csv.h>
-#include <gmcc/validation/image_file.h>
-#include <gmcc/validation/image_pixels.h>
+#include <gmcc/input/colour_csv.h>
+#include <gmcc/input/image_file.h>
+#include <gmcc/input/image_pixels.h>
 #include <gmcc/validation/mondrian.h>
 
 #include <benchmark/benchmark.h>

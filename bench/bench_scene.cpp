@@ -20,7 +20,7 @@
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/rule_errors.h>
 #include <gmcc/selection/select_maps.h>
-#include <gmcc/validation/spectral_table.h>
+#include <gmcc/input/spectral_table.h>
 #include <gmcc/validation/gamut_experiment.h>
 #include <gmcc/validation/synthetic_experiment.h>
 

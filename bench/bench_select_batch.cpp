@@ -24,7 +24,7 @@
 #include <gmcc/selection/truth_errors.h>
 #include <gmcc/selection/worst_case.h>
 #include <gmcc/selection/select_scene.h>
-#include <gmcc/validation/colour_csv.h>
+#include <gmcc/input/colour_csv.h>
 
 #include <benchmark/benchmark.h>
 

@@ -4,7 +4,7 @@
 // benchmark does not have, a null pointer below, is left to Google Benchmark), and the paper's
 // synthetic setup.
 
-#include <gmcc/validation/spectral_table.h>
+#include <gmcc/input/spectral_table.h>
 #include <gmcc/validation/synthetic_experiment.h>
 
 #include <benchmark/benchmark.h>

@@ -8,7 +8,7 @@
 #include "write_stdout.h"
 
 #include <gmcc/validation/accuracy_study.h>
-#include <gmcc/validation/input_error.h>
+#include <gmcc/input/input_error.h>
 
 #include <unistd.h>
 

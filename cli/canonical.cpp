@@ -2,10 +2,10 @@
 
 #include <gmcc/geometry/convex_hull.h>
 #include <gmcc/geometry/rational.h>
-#include <gmcc/validation/input_error.h>
-#include <gmcc/validation/colour_csv.h>
-#include <gmcc/validation/image_lights.h>
-#include <gmcc/validation/text_file.h>
+#include <gmcc/input/input_error.h>
+#include <gmcc/input/colour_csv.h>
+#include <gmcc/input/image_lights.h>
+#include <gmcc/input/text_file.h>
 
 #include <filesystem>
 #include <map>

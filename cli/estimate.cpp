@@ -4,9 +4,9 @@
 #include <gmcc/geometry/illumination_constraint.h>
 #include <gmcc/selection/prepare_canonical.h>
 #include <gmcc/selection/select_scene.h>
-#include <gmcc/validation/colour_csv.h>
-#include <gmcc/validation/image_file.h>
-#include <gmcc/validation/image_lights.h>
+#include <gmcc/input/colour_csv.h>
+#include <gmcc/input/image_file.h>
+#include <gmcc/input/image_lights.h>
 
 #include <cmath>
 #include <cstdio>

@@ -1,7 +1,7 @@
 #include "integer_option.h"
 
 #include <gmcc/geometry/rational.h>
-#include <gmcc/validation/colour_csv.h>
+#include <gmcc/input/colour_csv.h>
 
 #include <stdexcept>
 

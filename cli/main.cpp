@@ -16,7 +16,7 @@
 #include "time_limit.h"
 #include "write_stdout.h"
 
-#include <gmcc/validation/colour_csv.h>
+#include <gmcc/input/colour_csv.h>
 
 #include <CLI/CLI.hpp>
 

@@ -2,7 +2,7 @@
 
 #include "limit_exit.h"
 
-#include <gmcc/validation/input_error.h>
+#include <gmcc/input/input_error.h>
 
 #include <gmp.h>
 #include <sys/resource.h>

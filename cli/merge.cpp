@@ -3,8 +3,8 @@
 #include "limit_exit.h"
 #include "reproduce.h"
 
-#include <gmcc/validation/input_error.h>
-#include <gmcc/validation/text_file.h>
+#include <gmcc/input/input_error.h>
+#include <gmcc/input/text_file.h>
 
 #include <nlohmann/json.hpp>
 

@@ -3,8 +3,8 @@
 #include "exit_cleanup.h"
 #include "limit_exit.h"
 
-#include <gmcc/validation/input_error.h>
-#include <gmcc/validation/text_file.h>
+#include <gmcc/input/input_error.h>
+#include <gmcc/input/text_file.h>
 
 #include <fcntl.h>
 #include <linux/magic.h>

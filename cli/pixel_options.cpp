@@ -1,7 +1,7 @@
 #include "pixel_options.h"
 
 #include <gmcc/geometry/rational.h>
-#include <gmcc/validation/input_error.h>
+#include <gmcc/input/input_error.h>
 
 #include "integer_option.h"
 

@@ -2,8 +2,8 @@
 // The image pre-processing options shared by `gmcc estimate` and `gmcc canonical --from-images`
 // (docs/conventions.md §8; docs/cli.md "gmcc estimate").
 
-#include <gmcc/validation/image_file.h>
-#include <gmcc/validation/image_pixels.h>
+#include <gmcc/input/image_file.h>
+#include <gmcc/input/image_pixels.h>
 
 #include <CLI/CLI.hpp>
 

@@ -2,8 +2,8 @@
 
 #include "citation_template.h"
 
-#include <gmcc/validation/build_info.h>
-#include <gmcc/validation/file_digest.h>
+#include <gmcc/input/build_info.h>
+#include <gmcc/input/file_digest.h>
 
 #include <set>
 

@@ -8,9 +8,9 @@
 
 #include <gmcc/geometry/illumination_constraint.h>
 #include <gmcc/validation/camera_experiment.h>
-#include <gmcc/validation/colour_csv.h>
+#include <gmcc/input/colour_csv.h>
 #include <gmcc/validation/experiment_report.h>
-#include <gmcc/validation/gehler_shi.h>
+#include <gmcc/input/gehler_shi.h>
 #include <gmcc/validation/gehler_shi_experiment.h>
 #include <gmcc/validation/gehler_shi_report.h>
 #include <gmcc/validation/synthetic_experiment.h>

@@ -6,7 +6,7 @@
 #include "select_batch.h"
 #include "write_stdout.h"
 
-#include <gmcc/validation/colour_csv.h>
+#include <gmcc/input/colour_csv.h>
 
 #include <iostream>
 

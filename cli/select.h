@@ -5,7 +5,7 @@
 
 #include <gmcc/selection/prepare_canonical.h>
 #include <gmcc/selection/select_scene.h>
-#include <gmcc/validation/colour_csv.h>
+#include <gmcc/input/colour_csv.h>
 
 #include <CLI/CLI.hpp>
 

@@ -4,7 +4,7 @@
 
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/selection/crule_3d.h>
-#include <gmcc/validation/colour_csv.h>
+#include <gmcc/input/colour_csv.h>
 
 #include <nlohmann/json.hpp>
 

@@ -3,7 +3,7 @@
 #include "json_output.h"
 #include "write_stdout.h"
 
-#include <gmcc/validation/text_file.h>
+#include <gmcc/input/text_file.h>
 
 #include <cstdio>
 #include <iostream>

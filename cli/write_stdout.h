@@ -2,7 +2,7 @@
 // Writing a command's whole output to stdout, with the failure reported: a full disk or a closed
 // pipe must not pass for success with the output cut short.
 
-#include <gmcc/validation/colour_csv.h>
+#include <gmcc/input/colour_csv.h>
 
 #include <cerrno>
 #include <cstring>

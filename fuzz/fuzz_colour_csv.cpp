@@ -6,7 +6,7 @@
 
 #include "fuzz_support.h"
 
-#include <gmcc/validation/colour_csv.h>
+#include <gmcc/input/colour_csv.h>
 
 #include <algorithm>
 #include <string>

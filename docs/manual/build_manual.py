@@ -43,7 +43,8 @@ import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-PUBLIC_INCLUDE = ["numerics/include", "geometry/include", "selection/include", "validation/include"]
+PUBLIC_INCLUDE = ["numerics/include", "geometry/include", "selection/include", "input/include",
+                  "validation/include"]
 
 FENCE = re.compile(r"^\s*(```|~~~)")
 HEADING = re.compile(r"^(#{1,6})\s+(.*?)\s*#*\s*$")

@@ -13,11 +13,11 @@
 #include <gmcc/selection/mean_2d.h>
 #include <gmcc/selection/worst_case.h>
 #include <gmcc/selection/worst_case_illuminant.h>
-#include <gmcc/validation/build_info.h>
+#include <gmcc/input/build_info.h>
 #include <gmcc/validation/camera_experiment.h>
 #include <gmcc/validation/error_statistics.h>
 #include <gmcc/validation/gamut_experiment.h>
-#include <gmcc/validation/spectral_table.h>
+#include <gmcc/input/spectral_table.h>
 #include <gmcc/validation/synthetic_experiment.h>
 
 #include <pybind11/stl.h>

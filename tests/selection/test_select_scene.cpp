@@ -10,7 +10,7 @@
 #include <gmcc/geometry/illumination_constraint.h>
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/select_scene.h>
-#include <gmcc/validation/colour_csv.h>
+#include <gmcc/input/colour_csv.h>
 
 #include "internal/worst_case_illuminant_route.h"
 

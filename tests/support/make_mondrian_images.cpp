@@ -5,8 +5,8 @@
 // holds the exact colours of the chips the cells show (lines of the sample file, each once).
 //   make_mondrian_images DATA_DIR OUT_DIR [WIDTH HEIGHT [NOISE]]   (default 120 90 0; a larger,
 //   noisy image for timing, as in docs/performance.md "Images")
-#include <gmcc/validation/colour_csv.h>
-#include <gmcc/validation/image_file.h>
+#include <gmcc/input/colour_csv.h>
+#include <gmcc/input/image_file.h>
 #include <gmcc/validation/mondrian.h>
 
 #include <fstream>

@@ -2,7 +2,7 @@
 // reduced run, and byte-identical results for a seed whatever the thread count.
 #include <gmcc/geometry/illumination_constraint.h>
 #include <gmcc/validation/camera_experiment.h>
-#include <gmcc/validation/colour_csv.h>
+#include <gmcc/input/colour_csv.h>
 #include <gmcc/validation/experiment_report.h>
 #include <gmcc/validation/synthetic_experiment.h>
 

@@ -1,6 +1,6 @@
 // Spectral data, CIE daylight and Planckian lights against published values.
 #include <gmcc/validation/illuminants.h>
-#include <gmcc/validation/spectral_table.h>
+#include <gmcc/input/spectral_table.h>
 #include <gmcc/validation/synthetic_experiment.h>
 
 #include <boost/test/unit_test.hpp>

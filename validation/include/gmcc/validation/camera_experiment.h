@@ -4,7 +4,7 @@
 /// DXC-930 sensitivities, the 24 Macbeth chart reflectances, SFU lab lights.
 
 #include <gmcc/validation/gamut_experiment.h>
-#include <gmcc/validation/spectral_table.h>
+#include <gmcc/input/spectral_table.h>
 
 #include <string>
 #include <vector>

@@ -7,7 +7,7 @@
 
 #include <gmcc/geometry/rational.h>
 #include <gmcc/validation/gamut_experiment.h>
-#include <gmcc/validation/gehler_shi.h>
+#include <gmcc/input/gehler_shi.h>
 
 #include <cstddef>
 #include <cstdint>

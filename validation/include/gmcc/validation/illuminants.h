@@ -3,7 +3,7 @@
 /// Illuminant spectra for the experiments: CIE daylight from its basis (CIE 15:2004 §3.1) and
 /// Planckian radiators, as exact relative spectral power distributions.
 
-#include <gmcc/validation/spectral_table.h>
+#include <gmcc/input/spectral_table.h>
 
 namespace gmcc {
 

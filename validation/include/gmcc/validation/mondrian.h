@@ -6,7 +6,7 @@
 /// black level, with a few saturated pixels.
 
 #include <gmcc/geometry/colour.h>
-#include <gmcc/validation/image_file.h>
+#include <gmcc/input/image_file.h>
 
 #include <cstddef>
 #include <cstdint>

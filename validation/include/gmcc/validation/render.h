@@ -4,7 +4,7 @@
 /// 1999 eq. 1), exactly.
 
 #include <gmcc/geometry/colour.h>
-#include <gmcc/validation/spectral_table.h>
+#include <gmcc/input/spectral_table.h>
 
 #include <array>
 

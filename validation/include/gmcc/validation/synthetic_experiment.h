@@ -5,7 +5,7 @@
 /// lights D75, D100, a yellowish Planckian (2856 K) and a bluish one (15000 K).
 
 #include <gmcc/validation/gamut_experiment.h>
-#include <gmcc/validation/spectral_table.h>
+#include <gmcc/input/spectral_table.h>
 
 #include <array>
 #include <string>

@@ -1,5 +1,5 @@
-#include <gmcc/validation/gehler_shi.h>
-#include <gmcc/validation/text_file.h>
+#include <gmcc/input/gehler_shi.h>
+#include <gmcc/input/text_file.h>
 
 #include "csv_fields.h"
 

@@ -1,6 +1,6 @@
-#include <gmcc/validation/text_file.h>
+#include <gmcc/input/text_file.h>
 
-#include <gmcc/validation/file_digest.h>
+#include <gmcc/input/file_digest.h>
 
 #include <fcntl.h>
 #include <poll.h>

@@ -1,7 +1,7 @@
 // The Gehler–Shi chart reader (gehler_shi.h): hand-checked rows of the shipped
 // files, the counts their provenance states (data/SOURCES.md), and a clear
 // error for each kind of bad row.
-#include <gmcc/validation/gehler_shi.h>
+#include <gmcc/input/gehler_shi.h>
 
 #include <boost/test/unit_test.hpp>
 #include <string>

@@ -1,4 +1,4 @@
-#include <gmcc/validation/file_digest.h>
+#include <gmcc/input/file_digest.h>
 #include <nettle/sha2.h>
 
 #include <mutex>

@@ -1,6 +1,6 @@
 #include <gmcc/geometry/rational.h>
-#include <gmcc/validation/image_lights.h>
-#include <gmcc/validation/text_file.h>
+#include <gmcc/input/image_lights.h>
+#include <gmcc/input/text_file.h>
 
 #include <filesystem>
 #include <string_view>

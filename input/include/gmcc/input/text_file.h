@@ -7,7 +7,7 @@
 /// program writes is reported instead of blocking the run (docs/cli.md, "Files, special
 /// paths, signals and time limits").
 
-#include <gmcc/validation/input_error.h>
+#include <gmcc/input/input_error.h>
 
 #include <cstddef>
 #include <string>

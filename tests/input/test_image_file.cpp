@@ -2,8 +2,8 @@
 // through the project's own encoders and libpng's, samples read as stored (no
 // gamma), a clear message for each kind of bad file, and the pixel rules
 // against hand-computed counts and an independent point-in-polygon test.
-#include <gmcc/validation/image_file.h>
-#include <gmcc/validation/image_pixels.h>
+#include <gmcc/input/image_file.h>
+#include <gmcc/input/image_pixels.h>
 #include <gmcc/validation/mondrian.h>
 #include <png.h>
 #include <tiffio.h>

@@ -5,7 +5,7 @@
 /// and its light's RGB as the camera sees it.
 
 #include <gmcc/geometry/colour.h>
-#include <gmcc/validation/input_error.h>
+#include <gmcc/input/input_error.h>
 
 #include <map>
 #include <string>

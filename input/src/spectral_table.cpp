@@ -1,6 +1,6 @@
-#include <gmcc/validation/colour_csv.h>
-#include <gmcc/validation/spectral_table.h>
-#include <gmcc/validation/text_file.h>
+#include <gmcc/input/colour_csv.h>
+#include <gmcc/input/spectral_table.h>
+#include <gmcc/input/text_file.h>
 
 #include <algorithm>
 #include <sstream>

@@ -3,7 +3,7 @@
 /// Reading colour files: one linear RGB per line, numbers read exactly (docs/cli.md "Input files").
 
 #include <gmcc/geometry/colour.h>
-#include <gmcc/validation/input_error.h>
+#include <gmcc/input/input_error.h>
 
 #include <cstddef>
 #include <string>

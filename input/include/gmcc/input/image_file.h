@@ -6,7 +6,7 @@
 /// the camera's linear responses (docs/conventions.md §8). Writing returns
 /// the bytes; the command line puts them in place whole.
 
-#include <gmcc/validation/input_error.h>
+#include <gmcc/input/input_error.h>
 
 #include <cstddef>
 #include <cstdint>

@@ -1,5 +1,5 @@
-#include <gmcc/validation/colour_csv.h>
-#include <gmcc/validation/text_file.h>
+#include <gmcc/input/colour_csv.h>
+#include <gmcc/input/text_file.h>
 
 #include "csv_fields.h"
 

@@ -1,4 +1,4 @@
-#include <gmcc/validation/colour_csv.h>
+#include <gmcc/input/colour_csv.h>
 
 #include <boost/test/unit_test.hpp>
 

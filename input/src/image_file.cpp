@@ -1,5 +1,5 @@
-#include <gmcc/validation/image_file.h>
-#include <gmcc/validation/text_file.h>
+#include <gmcc/input/image_file.h>
+#include <gmcc/input/text_file.h>
 #include <png.h>
 #include <tiffio.h>
 

@@ -17,7 +17,7 @@
 
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/point.h>
-#include <gmcc/validation/image_file.h>
+#include <gmcc/input/image_file.h>
 
 #include <cstdint>
 #include <optional>

@@ -4,7 +4,7 @@
 /// sensor sensitivities), read exactly (data/SOURCES.md gives provenance and units).
 
 #include <gmcc/geometry/rational.h>
-#include <gmcc/validation/input_error.h>
+#include <gmcc/input/input_error.h>
 
 #include <cstddef>
 #include <string>

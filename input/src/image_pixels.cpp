@@ -1,7 +1,7 @@
-#include <gmcc/validation/image_pixels.h>
+#include <gmcc/input/image_pixels.h>
 
 #include <gmcc/geometry/chromaticity_hull.h>
-#include <gmcc/validation/colour_csv.h>
+#include <gmcc/input/colour_csv.h>
 
 #include <algorithm>
 #include <cmath>

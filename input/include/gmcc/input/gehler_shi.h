@@ -8,7 +8,7 @@
 /// several lights in the same way.
 
 #include <gmcc/geometry/colour.h>
-#include <gmcc/validation/input_error.h>
+#include <gmcc/input/input_error.h>
 
 #include <array>
 #include <cstddef>
