@@ -1,6 +1,7 @@
 // Forsyth's CRULE feasible set in 3-D from a prepared canonical gamut (docs/math.md §1b "The
 // prepared route", docs/derivations.md §4.6): image hull first, then the filtered exact clip of
 // polytope_clip.cpp; the CGAL pieces and the LP route are behind internal/crule_exact.h.
+#include <gmcc/geometry/colour_hull_3.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
 
@@ -139,6 +140,19 @@ std::vector<Point3> image_points(const std::vector<Colour>& image) {
   return image.size() < hull_from ? p : extreme_points_3(p);
 }
 
+// The hull's vertices always (colour_hull_vertices): the same filter, then the exact hull.
+std::vector<Point3> hull_vertices(const std::vector<Colour>& colours) {
+  if (colours.empty()) throw std::invalid_argument("colour_hull_vertices: no colours");
+  for (const Colour& c : colours)
+    if (sgn(c.r) < 0 || sgn(c.g) < 0 || sgn(c.b) < 0)
+      throw std::invalid_argument("colour_hull_vertices: a negative channel");
+  std::vector<Point3> p;
+  if (colours.size() >= prefilter_from) p = hull_candidates(colours);
+  else
+    for (const Colour& c : colours) p.push_back({c.r, c.g, c.b});
+  return extreme_points_3(sorted_unique(std::move(p)));
+}
+
 }  // namespace
 }  // namespace internal
 
@@ -184,6 +198,12 @@ ConvexSet3 feasible_set_3d(const CanonicalConstraints3& canonical, const std::ve
     if (r.outcome == internal::ClippedPolytope::Outcome::empty) return {};
   }
   return internal::feasible_set_3d_lp(c.half_spaces, c.max, points);
+}
+
+std::vector<Colour> colour_hull_vertices(const std::vector<Colour>& colours) {
+  std::vector<Colour> out;
+  for (Point3& p : internal::hull_vertices(colours)) out.push_back({std::move(p.x), std::move(p.y), std::move(p.z)});
+  return out;
 }
 
 ConvexSet3 feasible_set_3d(const std::vector<Colour>& canonical, const std::vector<Colour>& image,

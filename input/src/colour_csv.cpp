@@ -7,11 +7,13 @@
 namespace gmcc {
 namespace {
 
-bool is_header(std::string_view line) {
+// The header line's meaning: 0 none, 1 `r,g,b` (pixel colours), 2 `r/b,g/b,1` (chromaticity
+// lifts).
+int header_kind(std::string_view line) {
   std::string compact;
   for (char c : line)
     if (c != ' ' && c != '\t') compact += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return compact == "r,g,b";
+  return compact == "r,g,b" ? 1 : compact == "r/b,g/b,1" ? 2 : 0;
 }
 
 std::string location(const std::string& file, std::size_t line) {
@@ -36,17 +38,20 @@ ColourTable parse_colour_csv(const std::string& text, const std::string& file) {
     rest = end == std::string_view::npos ? std::string_view() : rest.substr(end + 1);
     if (raw.find('\0') != std::string_view::npos)
       throw InputError(file, number, "binary data (a NUL byte): expected text lines r,g,b");
+    const std::string_view line = internal::trim(raw);
+    // A comment may be long (provenance listing many inputs); the file's size bounds it.
+    if (line.empty() || line.front() == '#') {
+      if (rest.empty()) break;
+      continue;
+    }
     if (raw.size() > max_colour_line_bytes)
       throw InputError(file, number,
                        "line of " + std::to_string(raw.size()) + " bytes, longer than the " +
                            std::to_string(max_colour_line_bytes) +
                            "-byte limit: expected text lines r,g,b");
-    const std::string_view line = internal::trim(raw);
-    if (line.empty() || line.front() == '#') {
-      if (rest.empty()) break;
-      continue;
-    }
-    if (first_content && is_header(line)) {
+    if (first_content && header_kind(line)) {
+      table.chromaticity_lifts = header_kind(line) == 2;
+      table.header_line = number;
       first_content = false;
       continue;
     }

@@ -1,6 +1,7 @@
 #include <gmcc/input/image_pixels.h>
 
 #include <gmcc/geometry/chromaticity_hull.h>
+#include <gmcc/geometry/colour_hull_3.h>
 #include <gmcc/input/colour_csv.h>
 
 #include <algorithm>
@@ -134,9 +135,23 @@ ImageColours colours_of_pixels(std::vector<std::uint64_t>& keys, ColourSet colou
       const auto c = channels(key);
       colours.push_back({std::uint16_t(c[0]), std::uint16_t(c[1]), std::uint16_t(c[2])});
     }
+    out.set = ColourSet::hull;
     const ChromaticityHull hull = chromaticity_hull_of_pixels(colours);
     out.counts.no_chromaticity = hull.dropped;
     for (const Point2& p : hull.hull.vertices) out.colours.push_back({p.x, p.y, Rational(1)});
+    out.counts.hull_vertices = out.colours.size();
+    return out;
+  }
+  if (colour_set == ColourSet::hull_3d) {
+    out.set = ColourSet::hull_3d;
+    if (keys.empty()) return out;
+    std::vector<Colour> colours;
+    colours.reserve(keys.size());
+    for (std::uint64_t key : keys) {
+      const auto c = channels(key);
+      colours.push_back({Rational(c[0]), Rational(c[1]), Rational(c[2])});
+    }
+    out.colours = colour_hull_vertices(colours);
     out.counts.hull_vertices = out.colours.size();
     return out;
   }
@@ -154,16 +169,88 @@ ImageColours colours_of_pixels(std::vector<std::uint64_t>& keys, ColourSet colou
 
 }  // namespace
 
-ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
-  if (rules.bin == 0) throw std::invalid_argument("the binning block size must be at least 1");
+std::string to_string(ColourSet set) {
+  switch (set) {
+    case ColourSet::distinct: return "distinct";
+    case ColourSet::hull: return "hull";
+    case ColourSet::hull_3d: return "hull-3d";
+  }
+  return "?";
+}
+
+PixelRules gijsenij_pixel_rules(PixelRules base) {
+  base.dark_below_fraction = Rational(5, 255);
+  base.bright_above_fraction = Rational(245, 255);
+  return base;
+}
+
+KeptPixels kept_pixels(const RgbImage& image, const PixelRules& rules) {
   const std::size_t w = image.width, h = image.height;
   if (!rules.keep.empty() && rules.keep.size() != w * h)
     throw std::invalid_argument("the mask has " + std::to_string(rules.keep.size()) +
                                 " pixels, the image " + std::to_string(w * h));
+  for (const std::optional<Rational>* f : {&rules.dark_below_fraction, &rules.bright_above_fraction})
+    if (*f && (sgn(**f) < 0 || **f > 1))
+      throw std::invalid_argument("a dark or bright fraction must lie in [0, 1], not " + to_string(**f));
   const std::vector<bool> excluded = excluded_pixels(rules, w, h);
+  auto level = [&](std::uint32_t v) { return v > rules.black_level ? v - rules.black_level : 0; };
+  // M, the largest channel after the black level over the pixels the mask keeps, and step 4's
+  // integer thresholds: v < f·M iff v < ceil(f·M); v > f·M iff v > floor(f·M) (v an integer).
+  std::uint32_t M = 0;
+  for (std::size_t i = 0; i < w * h; ++i)
+    if (!excluded[i])
+      for (int c = 0; c < 3; ++c) M = std::max(M, level(image.samples[3 * i + static_cast<std::size_t>(c)]));
+  std::uint64_t dark = rules.dark_below.value_or(0);
+  if (rules.dark_below_fraction)
+    dark = std::max<std::uint64_t>(dark, static_cast<std::uint64_t>(ceil_of(*rules.dark_below_fraction * M)));
+  std::optional<std::uint64_t> bright;
+  if (rules.bright_above_fraction)
+    bright = static_cast<std::uint64_t>(floor_of(*rules.bright_above_fraction * M));
+
+  KeptPixels out;
+  out.kept.assign(w * h, false);
+  out.counts.pixels = static_cast<std::uint64_t>(w) * h;
+  for (std::size_t i = 0; i < w * h; ++i) {
+    if (excluded[i]) {
+      ++out.counts.masked;
+      continue;
+    }
+    std::uint32_t v[3];
+    bool saturated = false;
+    for (int c = 0; c < 3; ++c) {
+      v[c] = image.samples[3 * i + static_cast<std::size_t>(c)];
+      if (rules.saturation && v[c] >= *rules.saturation) saturated = true;
+    }
+    if (saturated) {
+      ++out.counts.saturated;
+      continue;
+    }
+    bool is_dark = false, is_bright = false;
+    for (std::uint32_t c : v) {
+      is_dark = is_dark || level(c) < dark;
+      is_bright = is_bright || (bright && level(c) > *bright);
+    }
+    if (is_dark) {
+      ++out.counts.dark;
+      continue;
+    }
+    if (is_bright) {
+      ++out.counts.bright;
+      continue;
+    }
+    ++out.counts.kept;
+    out.kept[i] = true;
+  }
+  return out;
+}
+
+ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
+  if (rules.bin == 0) throw std::invalid_argument("the binning block size must be at least 1");
+  const std::size_t w = image.width, h = image.height;
+  KeptPixels kept = kept_pixels(image, rules);
 
   ImageColours out;
-  out.counts.pixels = static_cast<std::uint64_t>(w) * h;
+  out.counts = kept.counts;
   const std::uint32_t b = rules.bin;
   const std::size_t bw = (w + b - 1) / b, bh = (h + b - 1) / b;
   // Per block: the sums of the kept pixels' channels (exact integers) and their
@@ -174,26 +261,16 @@ ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
   };
   std::vector<Block> blocks(b == 1 ? 0 : bw * bh);
   std::vector<std::uint64_t> keys;  // b = 1: every kept pixel as r·2^32 + g·2^16 + b
-  if (b == 1) keys.reserve(static_cast<std::size_t>(out.counts.pixels));
+  if (b == 1) keys.reserve(static_cast<std::size_t>(out.counts.kept));
   for (std::size_t y = 0; y < h; ++y)
     for (std::size_t x = 0; x < w; ++x) {
       const std::size_t i = y * w + x;
-      if (excluded[i]) {
-        ++out.counts.masked;
-        continue;
-      }
+      if (!kept.kept[i]) continue;
       std::uint32_t v[3];
-      bool saturated = false;
       for (int c = 0; c < 3; ++c) {
         v[c] = image.samples[3 * i + static_cast<std::size_t>(c)];
-        if (rules.saturation && v[c] >= *rules.saturation) saturated = true;
+        v[c] = v[c] > rules.black_level ? v[c] - rules.black_level : 0;
       }
-      if (saturated) {
-        ++out.counts.saturated;
-        continue;
-      }
-      ++out.counts.kept;
-      for (std::uint32_t& c : v) c = c > rules.black_level ? c - rules.black_level : 0;
       if (b == 1) {
         keys.push_back((std::uint64_t(v[0]) << 32) | (std::uint64_t(v[1]) << 16) | v[2]);
       } else {
@@ -218,6 +295,11 @@ ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
     for (const auto& mean : distinct) out.colours.push_back({mean[0], mean[1], mean[2]});
   }
   out.counts.colours = out.colours.size();
+  if (rules.colour_set == ColourSet::hull_3d && !out.colours.empty()) {
+    out.set = ColourSet::hull_3d;
+    out.colours = colour_hull_vertices(out.colours);
+    out.counts.hull_vertices = out.colours.size();
+  }
   return out;
 }
 
@@ -278,6 +360,7 @@ ImageColours image_colours(const FloatRgbImage& image, const FloatPixelRules& ru
   std::sort(kept.begin(), kept.end());
   kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
   out.counts.colours = kept.size();
+  out.set = ColourSet::hull;
   const ChromaticityHull hull = chromaticity_hull(kept);
   out.counts.no_chromaticity = hull.dropped;  // distinct colours with b = 0, as for integer images
   for (const Point2& p : hull.hull.vertices) out.colours.push_back({p.x, p.y, Rational(1)});

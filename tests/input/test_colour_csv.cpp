@@ -83,6 +83,10 @@ BOOST_AUTO_TEST_CASE(lines_are_limited_in_length) {
   const std::string message = error_of(std::string(1 << 20, '7'));
   BOOST_TEST(message.find("c.csv:1: line of 1048576 bytes, longer than the 65536-byte limit") == 0u);
   BOOST_TEST(message.size() < 200u);
+  // A comment is not a colour: one far past the limit (a provenance line listing 10,000 inputs
+  // with their checksums) is skipped, and the file reads back.
+  const std::string provenance = "# inputs:" + std::string(800000, 'x') + "\n";
+  BOOST_TEST(parse_colour_csv(provenance + "r,g,b\n1,2,3\n", "c.csv").colours.size() == 1u);
   // Long numbers within a line are refused by parse_rational, and quoted briefly.
   const std::string long_number = error_of("1,2," + std::string(500, '3') + "\n");
   BOOST_TEST(long_number.find("c.csv:1: channel b: '3333") == 0u);
@@ -138,3 +142,17 @@ BOOST_AUTO_TEST_CASE(colours_are_limited_in_number) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// The header says what the colours are: `r,g,b` pixel colours, `r/b,g/b,1` chromaticity lifts
+// (gmcc canonical's 2-D gamut), which the 3-D route refuses.
+BOOST_AUTO_TEST_CASE(the_header_marks_chromaticity_lifts) {
+  const ColourTable plain = parse_colour_csv("# c\nr,g,b\n1,2,3\n", "c.csv");
+  BOOST_TEST(!plain.chromaticity_lifts);
+  BOOST_TEST(plain.header_line == 2u);
+  const ColourTable lifts = parse_colour_csv("R/B, G/B, 1\n1/2,3,1\n", "c.csv");
+  BOOST_TEST(lifts.chromaticity_lifts);
+  BOOST_TEST(lifts.header_line == 1u);
+  BOOST_TEST(parse_colour_csv("1,2,3\n", "c.csv").header_line == 0u);
+  // Only as the first content line: later, it is a malformed colour.
+  BOOST_TEST(error_of("1,2,3\nr/b,g/b,1\n").find("c.csv:2:") == 0u);
+}

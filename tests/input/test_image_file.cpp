@@ -9,6 +9,7 @@
 #include <tiffio.h>
 
 #include <boost/test/unit_test.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -365,3 +366,96 @@ BOOST_AUTO_TEST_CASE(float_images_follow_the_integer_rules) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// Step 4 (image_pixels.h): dark and too-bright pixels, absolute and relative to the image's
+// largest value M, by hand on a small image, then Gijsenij's preset against its own wording
+// (rescaled to a maximum of 255, a channel below 5 or above 245 dropped) on random images.
+BOOST_AUTO_TEST_CASE(dark_and_bright_pixels) {
+  RgbImage im;
+  im.width = 3;
+  im.height = 2;
+  // After black level 10: (0,90,90) (1,1,1) (1000,490,490) / (50,50,50) (980,980,980)
+  // (890,891,40); M = 1000.
+  im.samples = {10, 100, 100,   11, 11, 11,   1010, 500, 500,    // row 0
+                60, 60, 60,     990, 990, 990, 900, 901, 50};    // row 1
+  PixelRules rules;
+  rules.black_level = 10;
+  rules.dark_below = 2;  // (0,0): r = 0 < 2; (1,0): 1 < 2
+  KeptPixels k = kept_pixels(im, rules);
+  BOOST_TEST(k.counts.dark == 2u);
+  BOOST_TEST(k.counts.kept == 4u);
+  BOOST_TEST(!k.kept[0]);
+  BOOST_TEST(k.kept[2]);
+  rules.dark_below.reset();
+  rules.dark_below_fraction = Rational(1, 20);    // below 50: (0,0), (1,0), (2,1) with b = 40
+  rules.bright_above_fraction = Rational(9, 10);  // above 900: (2,0) r = 1000, (1,1) 980
+  k = kept_pixels(im, rules);
+  BOOST_TEST(k.counts.dark == 3u);
+  BOOST_TEST(k.counts.bright == 2u);
+  BOOST_TEST(k.counts.kept == 1u);  // (0,1): 50 is not below 50
+  BOOST_TEST(k.kept[3]);
+  // M is taken over the pixels the mask keeps: masking (2,0) makes M = 980.
+  rules.keep.assign(6, true);
+  rules.keep[2] = false;
+  k = kept_pixels(im, rules);
+  BOOST_TEST(k.counts.masked == 1u);
+  BOOST_TEST(k.counts.dark == 3u);    // below ceil(980/20) = 49: (0,0), (1,0), (2,1)
+  BOOST_TEST(k.counts.bright == 1u);  // above floor(9/10 · 980) = 882: (1,1) only
+  rules.keep.clear();
+  rules.bright_above_fraction = Rational(11, 10);
+  BOOST_CHECK_THROW(kept_pixels(im, rules), std::invalid_argument);
+
+  std::mt19937 rng(26);
+  for (int trial = 0; trial < 20; ++trial) {
+    RgbImage r = ramp(17, 9, 16);
+    std::uniform_int_distribution<int> v(0, trial % 2 ? 65535 : 3000);
+    for (auto& s : r.samples) s = static_cast<std::uint16_t>(v(rng));
+    const KeptPixels g = kept_pixels(r, gijsenij_pixel_rules());
+    std::uint64_t M = 0;
+    for (auto s : r.samples) M = std::max<std::uint64_t>(M, s);
+    std::uint64_t kept = 0;
+    for (std::size_t p = 0; p < 17 * 9; ++p) {
+      bool keep = true;
+      for (int c = 0; c < 3; ++c) {
+        const std::uint64_t x = r.samples[3 * p + c];
+        keep = keep && !(255 * x < 5 * M) && !(255 * x > 245 * M);
+      }
+      BOOST_TEST(g.kept[p] == keep);
+      kept += keep;
+    }
+    BOOST_TEST(g.counts.kept == kept);
+    BOOST_TEST(g.counts.dark + g.counts.bright + g.counts.kept == g.counts.pixels);
+  }
+}
+
+// ColourSet::hull_3d: the pixel colours on the exact 3-D hull: a subset of the distinct colours
+// containing every extreme one (each colour largest along some direction is kept), and ImageColours
+// says which set it holds.
+BOOST_AUTO_TEST_CASE(hull_3d_colour_set) {
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<int> v(0, 400);
+  RgbImage im = ramp(20, 20, 16);
+  for (auto& s : im.samples) s = static_cast<std::uint16_t>(v(rng));
+  PixelRules rules;
+  rules.colour_set = ColourSet::distinct;
+  const ImageColours all = image_colours(im, rules);
+  rules.colour_set = ColourSet::hull_3d;
+  const ImageColours hull = image_colours(im, rules);
+  BOOST_TEST((all.set == ColourSet::distinct));
+  BOOST_TEST((hull.set == ColourSet::hull_3d));
+  BOOST_TEST(pixel_colours(hull.set));
+  BOOST_TEST(hull.counts.hull_vertices == hull.colours.size());
+  BOOST_TEST(hull.colours.size() < all.colours.size());
+  for (const Colour& c : hull.colours)
+    BOOST_TEST((std::find(all.colours.begin(), all.colours.end(), c) != all.colours.end()));
+  const int dirs[4][3] = {{1, 0, 0}, {0, 1, 0}, {1, -1, 1}, {-1, -1, -1}};
+  for (const auto& d : dirs) {
+    Rational best = -1000000;
+    for (const Colour& c : all.colours) best = std::max(best, Rational(d[0] * c.r + d[1] * c.g + d[2] * c.b));
+    bool found = false;
+    for (const Colour& c : hull.colours) found = found || Rational(d[0] * c.r + d[1] * c.g + d[2] * c.b) == best;
+    BOOST_TEST(found);
+  }
+  rules.colour_set = ColourSet::hull;
+  BOOST_TEST(!pixel_colours(image_colours(im, rules).set));
+}

@@ -25,17 +25,22 @@ struct ColourTable {
   std::string file;  ///< the file's name as given, for messages
   std::vector<Colour> colours;  ///< the colours in file order, exact
   std::vector<std::size_t> lines;  ///< 1-based source line of each colour
+  /// True when the header is `r/b,g/b,1`: the colours are chromaticity lifts (x, y, 1), as
+  /// `gmcc canonical` writes a 2-D gamut, usable by the 2-D perspective route only.
+  bool chromaticity_lifts = false;
+  std::size_t header_line = 0;  ///< 1-based line of the header, 0 without one
 };
 
 /// Parse colour-file text. Format: one colour per line as `r,g,b`; an optional header line
-/// `r,g,b`; blank lines and lines whose first non-blank character is `#` are ignored; CRLF
+/// `r,g,b`, or `r/b,g/b,1` for chromaticity lifts (ColourTable::chromaticity_lifts); blank lines
+/// and lines whose first non-blank character is `#` (of any length) are ignored; CRLF
 /// line ends, a UTF-8 byte-order mark and spaces or tabs around numbers are accepted. Numbers
 /// are decimals or `p/q`, read exactly (parse_rational). Channels must be finite and >= 0.
 /// \param text  the file's content (UTF-8 or ASCII).
 /// \param file  the name used in messages.
 /// \throws InputError naming the file and line: malformed or non-finite numbers (including
 ///         numbers longer than max_number_digits), negative channels, a wrong number of
-///         columns, NUL bytes, lines longer than max_colour_line_bytes, more than max_colours
+///         columns, NUL bytes, lines other than comments longer than max_colour_line_bytes, more than max_colours
 ///         colours, no colour at all.
 ColourTable parse_colour_csv(const std::string& text, const std::string& file);
 

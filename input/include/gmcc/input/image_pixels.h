@@ -7,13 +7,22 @@
 ///   2. saturation: a pixel with any channel at or above the threshold (raw value, before the
 ///      black level) is dropped, since its true colour is unknown;
 ///   3. black level: subtracted from every channel, negative results clamped to 0;
-///   4. binning (optional): the kept pixels of each b×b block are averaged, exactly, into one
+///   4. dark pixels: a pixel with a channel below an absolute threshold, or below a fraction of
+///      the image's largest value M, is dropped (noise dominates its ratios); too bright: a
+///      pixel with a channel above a fraction of M is dropped (a margin below clipping). M is
+///      the largest channel, after the black level, of the pixels step 1 keeps. Gijsenij,
+///      Gevers & van de Weijer (2010)'s rule is the preset gijsenij_pixel_rules(): the image
+///      rescaled to a maximum of 255, a channel below 5 or above 245 dropped;
+///   5. binning (optional): the kept pixels of each b×b block are averaged, exactly, into one
 ///      colour;
-///   5. the distinct colours are returned (their convex hull is what the gamut method uses, so
-///      repeated colours add nothing) or, with ColourSet::hull, only those whose perspective
-///      chromaticities are vertices of the exact chromaticity hull (chromaticity_hull.h), which
-///      is all the 2-D feasible set depends on: a 10-megapixel image then costs the geometry a
-///      few dozen colours.
+///   6. the colours passed on (ColourSet): every distinct colour (their convex hull is what a
+///      gamut method uses, so repeated colours add nothing); or only the vertices of their exact
+///      3-D hull (colour_hull_3.h: all the 3-D feasible set depends on); or, for the 2-D
+///      perspective route, the chromaticity lifts (x, y, 1) of the vertices of the exact
+///      chromaticity hull (chromaticity_hull.h), which is all the 2-D feasible set depends on: a
+///      10-megapixel image then costs the geometry a few dozen colours. Lifts are not pixel
+///      colours: ImageColours::set says which the colours are, and every 3-D entry point refuses
+///      lifts (docs/conventions.md §8).
 
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/point.h>
@@ -21,17 +30,27 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace gmcc {
 
-/// How pixels become colours.
-/// What step 5 returns.
+/// What step 6 returns.
 enum class ColourSet {
-  distinct,  ///< every distinct colour, in increasing (r, g, b) order
-  hull,      ///< without binning: one colour (x, y, 1) per vertex of the hull of the
-             ///< chromaticities (x, y) = (r/b, g/b), counter-clockwise (b = 0 has none)
+  distinct,  ///< every distinct colour, in increasing (r, g, b) order: pixel colours
+  hull,      ///< without binning: one chromaticity lift (x, y, 1) per vertex of the hull of
+             ///< the chromaticities (x, y) = (r/b, g/b), counter-clockwise (b = 0 has none):
+             ///< not pixel colours, for the 2-D perspective route only
+  hull_3d,   ///< the distinct colours (binned or not) that are vertices of their exact 3-D
+             ///< convex hull, sorted (colour_hull_vertices): pixel colours
 };
+
+/// `distinct`, `hull` or `hull-3d` (the command line's names).
+std::string to_string(ColourSet set);
+
+/// True when the set's colours are pixel colours (distinct or hull_3d), false for the
+/// chromaticity lifts of ColourSet::hull.
+inline bool pixel_colours(ColourSet set) { return set != ColourSet::hull; }
 
 /// Which pixels become colours, and how (docs/conventions.md §8; `gmcc estimate`'s options).
 struct PixelRules {
@@ -44,6 +63,12 @@ struct PixelRules {
   std::vector<std::vector<Point2>> exclude_polygons;
   /// Per pixel (row-major, width · height), false to exclude; empty for none.
   std::vector<bool> keep;
+  /// Step 4: drop a pixel with a channel (after the black level) below this; absent: none.
+  std::optional<std::uint32_t> dark_below;
+  /// Step 4: drop a pixel with a channel below this fraction of M (0 to 1); absent: none.
+  std::optional<Rational> dark_below_fraction;
+  /// Step 4: drop a pixel with a channel above this fraction of M (0 to 1); absent: none.
+  std::optional<Rational> bright_above_fraction;
   std::uint32_t bin = 1;  ///< block size b for binning; 1: every kept pixel is a colour
   /// With bin > 1 the binned colours are always returned as ColourSet::distinct.
   ColourSet colour_set = ColourSet::distinct;
@@ -54,23 +79,41 @@ struct PixelCounts {
   std::uint64_t pixels = 0;     ///< width · height
   std::uint64_t masked = 0;     ///< excluded by a polygon or the mask image
   std::uint64_t saturated = 0;  ///< of the rest, dropped for a channel >= saturation
+  std::uint64_t dark = 0;       ///< of the rest, dropped as dark (step 4)
+  std::uint64_t bright = 0;     ///< of the rest, dropped as too bright (step 4)
   std::uint64_t kept = 0;       ///< the rest
   std::uint64_t colours = 0;    ///< distinct colours (after binning)
-  std::uint64_t hull_vertices = 0;    ///< ColourSet::hull: vertices returned
+  std::uint64_t hull_vertices = 0;    ///< ColourSet::hull or hull_3d: vertices returned
   std::uint64_t no_chromaticity = 0;  ///< ColourSet::hull: distinct colours with b = 0
 };
 
 /// What image_colours returns: the colours for the geometry and how each pixel was accounted for.
 struct ImageColours {
-  std::vector<Colour> colours;  ///< distinct, in order of first appearance (row-major)
+  std::vector<Colour> colours;  ///< in the order ColourSet describes
+  ColourSet set = ColourSet::distinct;  ///< what `colours` are: pixel colours or chromaticity lifts
   PixelCounts counts;  ///< what happened to the pixels
 };
+
+/// Gijsenij, Gevers & van de Weijer (2010)'s pixel rule as step 4's fractions: with the image
+/// rescaled so that its largest value is 255, a pixel with a channel below 5 or above 245 is
+/// dropped (dark_below_fraction 5/255, bright_above_fraction 245/255); the other fields as in
+/// `base`.
+PixelRules gijsenij_pixel_rules(PixelRules base = {});
+
+/// Which pixels the rules keep (steps 1 to 4), row-major, with the counts of those steps: the
+/// pixels every method of an image sees, the gamut methods and the statistics alike.
+/// 	hrows std::invalid_argument as image_colours.
+struct KeptPixels {
+  std::vector<bool> kept;  ///< per pixel, row-major: true if steps 1 to 4 keep it
+  PixelCounts counts;      ///< pixels, masked, saturated, dark, bright and kept filled
+};
+KeptPixels kept_pixels(const RgbImage& image, const PixelRules& rules);
 
 /// Apply the rules to `image`.
 /// \throws std::length_error for ColourSet::distinct with more than max_colours (colour_csv.h)
 ///         distinct colours; std::invalid_argument if bin is 0, `keep` is neither empty nor width
-/// · height long, or
-///         a polygon has fewer than 3 vertices.
+///         · height long, a polygon has fewer than 3 vertices, or a fraction of step 4 is
+///         outside [0, 1].
 ImageColours image_colours(const RgbImage& image, const PixelRules& rules);
 
 /// A linear camera image of floating-point samples (as a Python or MATLAB reader returns it):

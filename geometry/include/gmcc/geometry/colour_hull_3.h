@@ -1,0 +1,23 @@
+#pragma once
+/// \file colour_hull_3.h
+/// The colours that are vertices of the convex hull of a set of colours in 3-D (RGB space): all a
+/// 3-D gamut method depends on, since the hull of the vertices is the hull of the set
+/// (Forsyth 1990 §3: only the image gamut's extreme points constrain the diagonal maps;
+/// docs/math.md §1b "The prepared route").
+
+#include <gmcc/geometry/colour.h>
+
+#include <vector>
+
+namespace gmcc {
+
+/// The vertices of conv(colours), exactly, sorted lexicographically (r, g, b), without repeats;
+/// every distinct colour when the colours are flat (affinely at most 2-dimensional). A double
+/// filter with a proven bound first drops colours certified strictly inside a small hull of
+/// extreme colours; CGAL's exact 3-D hull (Epeck) decides the rest (the same image-hull step
+/// as feasible_set_3d's prepared route).
+/// \throws std::invalid_argument if `colours` is empty or has a negative channel.
+/// Complexity O(n) filtered tests, then O(m log m) for the m colours the filter keeps.
+std::vector<Colour> colour_hull_vertices(const std::vector<Colour>& colours);
+
+}  // namespace gmcc

@@ -1,0 +1,80 @@
+#pragma once
+/// \file estimate_3d.h
+/// 3-D gamut mapping on a photograph (Forsyth 1990's CRULE on pixel colours; Gijsenij, Gevers &
+/// van de Weijer 2010 §3): the exact feasible set F3 of diagonal maps from the image's pixel
+/// colours into a prepared canonical gamut, and the three 3-D rules on it, each with the light
+/// it implies (docs/photographs.md §3 "3-D gamut mapping on images").
+///
+/// The rules: max-volume (CRULE-MV, argmax d1·d2·d3, max_volume.h), the centroid (CRULE-AVE,
+/// centroid_3.h) and max-trace (argmax d1 + d2 + d3, max_trace.h: the selection of Gijsenij et
+/// al.'s pixel, edge and intersection gamut mapping). A map d takes the image to the canonical
+/// light c, so the light it implies is e = c ⊘ d (docs/conventions.md §2).
+
+#include <gmcc/geometry/colour.h>
+#include <gmcc/geometry/feasible_set_3d.h>
+#include <gmcc/input/image_pixels.h>
+#include <gmcc/selection/crule_3d.h>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gmcc {
+
+/// The 3-D rules, in the order every report lists them.
+enum class Rule3 { max_volume, centroid, max_trace };
+/// Every 3-D rule, in order.
+inline constexpr std::array<Rule3, 3> all_rules_3 = {Rule3::max_volume, Rule3::centroid,
+                                                    Rule3::max_trace};
+/// `max_volume`, `centroid` or `max_trace`.
+std::string to_string(Rule3 rule);
+/// The inverse of to_string (also `max-volume`, `max-trace`). \throws std::invalid_argument.
+Rule3 rule_3_from_string(const std::string& text);
+
+/// One 3-D rule's answer on an image: the map, its worst case in F3, and the light it implies.
+struct ImageSelection3 {
+  Selection3 selection;  ///< the map d and its map-space worst case (crule_3d.h)
+  /// e = c ⊘ d with unit length, from the map as measured (measured_map); absent when d has a
+  /// zero component (F3 = {0} or a face of it on a coordinate plane: no light)
+  std::optional<std::array<double, 3>> light;
+};
+
+/// F3 of one image and the rules asked for. Absent rules were not asked for, or F3 is empty.
+struct ImageEstimate3 {
+  ConvexSet3 feasible;  ///< F3, exactly
+  std::optional<ImageSelection3> max_volume, centroid, max_trace;  ///< the rules' answers
+  /// The answer of `rule` (an absent one when not asked for or F3 is empty).
+  const std::optional<ImageSelection3>& operator[](Rule3 rule) const;
+};
+
+/// What estimate_3d computes.
+struct Estimate3Options {
+  std::vector<Rule3> rules{all_rules_3.begin(), all_rules_3.end()};  ///< the rules to apply
+  /// `certified`: the centroid as a certified double (what a benchmark needs); `exact`: in ℚ.
+  /// F3, max-volume and max-trace are exact on either route.
+  Crule3dRoute route = Crule3dRoute::certified;
+  Colour canonical_light{Rational(1), Rational(1), Rational(1)};  ///< c, every channel > 0
+};
+
+/// Gamut mapping in 3-D on one image's colours.
+/// \param canonical the canonical gamut, prepared once (feasible_set_3d.h).
+/// \param image the image's pixel colours (image_pixels.h, ColourSet distinct or hull_3d).
+/// \throws std::invalid_argument if `image` holds chromaticity lifts (ColourSet::hull: they are
+///         not pixel colours, and F3 from them would be meaningless), has no colour, or the
+///         canonical light has a channel <= 0; UnboundedFeasibleSet (feasible_set.h) when every
+///         colour has some channel 0.
+ImageEstimate3 estimate_3d(const CanonicalConstraints3& canonical, const ImageColours& image,
+                           const Estimate3Options& options = {});
+
+/// The light a 3-D map implies, e = c ⊘ d, with unit length (docs/conventions.md §2); absent
+/// when a component of d is 0. O(1).
+std::optional<std::array<double, 3>> light_of_map_3(const Point3& d, const Colour& canonical_light);
+
+/// The recovery angular error (degrees) between a light estimate and the true light: the angle
+/// between them as 3-vectors (Hordley & Finlayson 2006), computed as every angle in gmcc
+/// (angular_error.h) from the exact truth and the estimate taken exactly. \throws
+/// std::invalid_argument if either is 0.
+double recovery_angular_error_deg(const std::array<double, 3>& estimate, const Colour& truth);
+
+}  // namespace gmcc

@@ -1,0 +1,91 @@
+#include <gmcc/photo/learn_canonical.h>
+
+#include <gmcc/geometry/colour_hull_3.h>
+#include <gmcc/geometry/convex_hull.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace gmcc {
+namespace {
+
+void check_light(const Colour& e) {
+  if (sgn(e.r) <= 0 || sgn(e.g) <= 0 || sgn(e.b) <= 0)
+    throw std::invalid_argument("a training light needs every channel > 0");
+}
+
+// Re-hull once the new candidates outnumber the last hull's vertices (and at least this many):
+// the work stays linear in what is added, the memory in the gamut's size.
+constexpr std::size_t compact_from = 4096;
+
+}  // namespace
+
+std::string to_string(CanonicalIntensity intensity) {
+  return intensity == CanonicalIntensity::max ? "max" : "none";
+}
+
+CanonicalIntensity canonical_intensity_from_string(const std::string& text) {
+  if (text == "max") return CanonicalIntensity::max;
+  if (text == "none") return CanonicalIntensity::none;
+  throw std::invalid_argument("\"" + text + "\" is not one of max, none");
+}
+
+CanonicalLearner3::CanonicalLearner3(CanonicalIntensity intensity) : intensity_(intensity) {}
+
+void CanonicalLearner3::add(const std::vector<Colour>& colours, const Colour& light) {
+  check_light(light);
+  ++images_;
+  if (colours.empty()) return;
+  // Only the image's hull vertices can be vertices of the union; the diagonal map and the
+  // scaling keep them vertices.
+  std::vector<Colour> v = colour_hull_vertices(colours);
+  Rational top = 0;
+  for (Colour& c : v) {
+    c = {c.r / light.r, c.g / light.g, c.b / light.b};
+    top = std::max({top, c.r, c.g, c.b});
+  }
+  if (sgn(top) == 0) return;  // only black: nothing a hull with black lacks
+  if (intensity_ == CanonicalIntensity::max)
+    for (Colour& c : v) c = {c.r / top, c.g / top, c.b / top};
+  ++contributing_;
+  points_.insert(points_.end(), std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
+  if (points_.size() - hulled_ > std::max(hulled_, compact_from)) compact();
+}
+
+void CanonicalLearner3::compact() const {
+  if (hulled_ == points_.size()) return;
+  points_ = colour_hull_vertices(points_);
+  hulled_ = points_.size();
+}
+
+std::vector<Colour> CanonicalLearner3::gamut() const {
+  if (points_.empty()) return {};
+  compact();
+  return points_;
+}
+
+void CanonicalLearner2::add(const std::vector<Colour>& colours, const Colour& light) {
+  check_light(light);
+  ++images_;
+  // Under the white light (r/e_r)/(b/e_b) = x·e_b/e_r, with x = r/b.
+  const Rational fx = light.b / light.r, fy = light.b / light.g;
+  for (const Colour& c : colours) {
+    if (sgn(c.b) <= 0) continue;
+    points_.push_back({c.r / c.b * fx, c.g / c.b * fy});
+  }
+  if (points_.size() - hulled_ > std::max(hulled_, compact_from)) compact();
+}
+
+void CanonicalLearner2::compact() const {
+  if (hulled_ == points_.size()) return;
+  points_ = convex_hull(points_).vertices;
+  hulled_ = points_.size();
+}
+
+std::vector<Point2> CanonicalLearner2::gamut() const {
+  if (points_.empty()) return {};
+  compact();
+  return points_;
+}
+
+}  // namespace gmcc
