@@ -6,6 +6,7 @@
 #include <gmcc/input/colour_csv.h>
 #include <gmcc/input/image_lights.h>
 #include <gmcc/input/text_file.h>
+#include <gmcc/photo/learn_canonical.h>
 
 #include <filesystem>
 #include <map>
@@ -33,28 +34,50 @@ CLI::App* add_canonical_command(CLI::App& app, CanonicalOptions& o) {
   add_images_argument(*cmd, o.images);
   add_truths_option(*cmd, o.truths_path, "")->required();
   cmd->add_option("--out", o.out_path, "write the colour file here (default: stdout)");
+  cmd->add_option("--space", o.space,
+                  "2d: the hull of the white-balanced chromaticities, written as chromaticity "
+                  "lifts r/b,g/b,1 (the perspective route); 3d: the hull of the white-balanced "
+                  "pixel colours, written as r,g,b (3-D gamut mapping, estimate --space 3d)")
+      ->check(CLI::IsMember({"2d", "3d"}))
+      ->capture_default_str();
+  cmd->add_option("--intensity", o.intensity,
+                  "3d: max (each image scaled so that its largest white-balanced channel is 1) "
+                  "or none")
+      ->check(CLI::IsMember({"max", "none"}))
+      ->capture_default_str();
   add_pixel_options(*cmd, o.pixels);
   return cmd;
 }
 
 int run_canonical(const CanonicalOptions& o) {
-  const PixelSettings settings = pixel_settings(o.pixels);
+  const bool space_3d = o.space == "3d";
+  PixelOptions pixel_options = o.pixels;
+  if (space_3d) {
+    if (o.pixels.command && o.pixels.command->count("--colour-set") && o.pixels.colour_set == "hull")
+      throw InputError("--colour-set", 0, "hull passes chromaticity lifts; --space 3d learns from pixel colours (hull-3d or distinct)");
+    if (!(o.pixels.command && o.pixels.command->count("--colour-set"))) pixel_options.colour_set = "hull-3d";
+  } else if (o.pixels.command && o.pixels.command->count("--intensity")) {
+    throw InputError("--intensity", 0, "applies to --space 3d (chromaticities have no intensity)");
+  }
+  const PixelSettings settings = pixel_settings(pixel_options);
   const std::map<std::string, Colour> truths = read_image_lights(o.truths_path);
   std::optional<PendingFile> out;
   if (!o.out_path.empty()) out.emplace(o.out_path);
-  const bool hull = settings.rules.colour_set == ColourSet::hull && settings.rules.bin == 1;
-  std::vector<Point2> points;     // hull: canonical chromaticities
-  std::set<std::array<Rational, 3>> colours;  // otherwise: canonical colours, distinct
+  const bool lifts = !space_3d && settings.rules.colour_set == ColourSet::hull && settings.rules.bin == 1;
+  CanonicalLearner2 learner2;
+  CanonicalLearner3 learner3(canonical_intensity_from_string(o.intensity));
+  std::set<std::array<Rational, 3>> colours;  // 2-D with distinct colours: every one
   std::uint64_t pixels = 0;
   for (const std::string& path : o.images) {
     const Colour& e = light_of_image(truths, path, o.truths_path);
     const ImageColours c = image_colours_of(path, settings);
     pixels += c.counts.kept;
-    for (const Colour& p : c.colours) {
-      if (hull) {
-        // (x, y, 1) with x = r/b, y = g/b: under a white light (r/e_r)/(b/e_b) = x·e_b/e_r.
-        points.push_back({p.r * e.b / e.r, p.g * e.b / e.g});
-      } else {
+    if (space_3d) {
+      learner3.add(c.colours, e);
+    } else if (lifts) {
+      learner2.add(c.colours, e);
+    } else {
+      for (const Colour& p : c.colours) {
         colours.insert({p.r / e.r, p.g / e.g, p.b / e.b});
         if (colours.size() > max_colours)
           throw InputError(path, 0, "more than " + std::to_string(max_colours) +
@@ -66,11 +89,14 @@ int run_canonical(const CanonicalOptions& o) {
   text += "# gmcc canonical --from-images: " + std::to_string(o.images.size()) + " images, " +
           std::to_string(pixels) + " pixels kept, each divided by its image's light (the "
           "canonical light is white, 1,1,1)";
-  if (hull) {
-    const ConvexSet2 g = convex_hull(points);
-    text += "; the vertices of the hull of their chromaticities, as r/b,g/b,1\n";
-    text += "r,g,b\n";
-    for (const Point2& v : g.vertices) text += exact(v.x) + "," + exact(v.y) + ",1\n";
+  if (space_3d) {
+    text += o.intensity == "max" ? ", each image scaled so that its largest channel is 1" : "";
+    text += "; the vertices of the hull of their colours (3-D)\nr,g,b\n";
+    for (const Colour& c : learner3.gamut()) text += exact(c.r) + "," + exact(c.g) + "," + exact(c.b) + "\n";
+  } else if (lifts) {
+    text += "; the vertices of the hull of their chromaticities, as chromaticity lifts r/b,g/b,1\n";
+    text += "r/b,g/b,1\n";
+    for (const Point2& v : learner2.gamut()) text += exact(v.x) + "," + exact(v.y) + ",1\n";
   } else {
     text += "; every distinct colour\nr,g,b\n";
     for (const auto& c : colours) text += exact(c[0]) + "," + exact(c[1]) + "," + exact(c[2]) + "\n";

@@ -7,6 +7,7 @@
 #include <gmcc/input/colour_csv.h>
 #include <gmcc/input/image_file.h>
 #include <gmcc/input/image_lights.h>
+#include <gmcc/photo/estimate_3d.h>
 
 #include <cmath>
 #include <cstdio>
@@ -68,13 +69,13 @@ std::array<double, 3> light_of(const std::array<double, 2>& m, const Colour& c) 
   return {e[0] / n, e[1] / n, e[2] / n};
 }
 
-// The white-balanced image under map m: every kept channel (black level removed) times d_k,
-// d = (m1, m2, 1) scaled so that its largest component is 1 (no channel grows past its code
-// range); pixels dropped as saturated stay at the largest code.
+// The white-balanced image under the diagonal map m (2-D: (m1, m2, 1)): every kept channel
+// (black level removed) times d_k, d = m scaled so that its largest component is 1 (no channel
+// grows past its code range); pixels dropped as saturated stay at the largest code.
 RgbImage corrected(const RgbImage& image, const PixelRules& rules, std::uint32_t saturation,
-                   const std::array<double, 2>& m) {
-  const double big = std::max({m[0], m[1], 1.0});
-  const double d[3] = {m[0] / big, m[1] / big, 1.0 / big};
+                   const std::array<double, 3>& m) {
+  const double big = std::max({m[0], m[1], m[2]});
+  const double d[3] = {m[0] / big, m[1] / big, m[2] / big};
   RgbImage out = image;
   out.bits = 16;
   const double scale = image.bits == 8 ? 257.0 : 1.0;  // 8-bit codes to 16-bit
@@ -132,22 +133,33 @@ Json image_record(const std::string& path, const RgbImage& image, const ImageCol
   record["height"] = image.height;
   record["bits"] = image.bits;
   record["pixels"] = {{"total", colours.counts.pixels},     {"masked", colours.counts.masked},
-                      {"saturated", colours.counts.saturated}, {"kept", colours.counts.kept},
+                      {"saturated", colours.counts.saturated}, {"dark", colours.counts.dark},
+                      {"bright", colours.counts.bright},       {"kept", colours.counts.kept},
                       {"colours", colours.counts.colours},
                       {"hull_vertices", colours.counts.hull_vertices},
                       {"no_chromaticity", colours.counts.no_chromaticity}};
   return record;
 }
 
+// The summary's first line on an image: its size and what became of its pixels.
+void describe_pixels(std::ostream& text, const std::string& path, const RgbImage& image,
+                     const ImageColours& colours, const PixelRules& rules) {
+  text << path << ": " << image.width << "x" << image.height << " (" << image.bits
+       << "-bit), " << colours.counts.masked << " pixels masked, " << colours.counts.saturated
+       << " saturated, ";
+  if (colours.counts.dark || rules.dark_below || rules.dark_below_fraction)
+    text << colours.counts.dark << " dark, ";
+  if (colours.counts.bright || rules.bright_above_fraction) text << colours.counts.bright << " bright, ";
+  text << colours.counts.kept << " kept, " << colours.counts.colours << " distinct colours";
+  if (colours.set == ColourSet::hull && rules.bin == 1)
+    text << ", " << colours.counts.hull_vertices << " on the chromaticity hull";
+  if (colours.set == ColourSet::hull_3d) text << ", " << colours.counts.hull_vertices << " on the 3-D hull";
+}
+
 // The summary's lines on an image's pixels and its feasible set.
 void describe_image(std::ostream& text, const std::string& path, const RgbImage& image, const ImageColours& colours,
                     const PixelRules& rules, const SceneResult& result) {
-  text << path << ": " << image.width << "x" << image.height << " (" << image.bits
-       << "-bit), " << colours.counts.masked << " pixels masked, " << colours.counts.saturated
-       << " saturated, " << colours.counts.kept << " kept, " << colours.counts.colours
-       << " distinct colours";
-  if (rules.colour_set == ColourSet::hull && rules.bin == 1)
-    text << ", " << colours.counts.hull_vertices << " on the chromaticity hull";
+  describe_pixels(text, path, image, colours, rules);
   text << "\n  feasible set: " << to_string(result.feasible.kind) << ", "
        << result.feasible.vertices.size() << " vertices\n";
 }
@@ -187,10 +199,141 @@ CLI::App* add_estimate_command(CLI::App& app, EstimateOptions& o) {
   cmd->add_option("--corrected", o.corrected_dir,
                   "write DIR/<image>_<rule>.png, the image white-balanced by each rule's map "
                   "(16-bit)");
+  cmd->add_option("--space", o.space,
+                  "2d: the perspective route (chromaticities, max-area, 2-D mean, 3-D mean); "
+                  "3d: Forsyth's CRULE on the pixel colours against a 3-D canonical gamut "
+                  "(gmcc canonical --space 3d), with max-volume, centroid and max-trace")
+      ->check(CLI::IsMember({"2d", "3d"}))
+      ->capture_default_str();
+  cmd->add_option("--rules", o.rules_3d,
+                  "3d: the rules to apply, of max-volume, centroid, max-trace (default all)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"max-volume", "centroid", "max-trace"}));
+  cmd->add_option("--black", o.black, "3d: include or exclude black (0,0,0) in the canonical gamut")
+      ->check(CLI::IsMember({"include", "exclude"}))
+      ->capture_default_str();
+  cmd->add_option("--centroid", o.centroid,
+                  "3d: the centroid certified (a double with a rigorous bound) or exact (in Q)")
+      ->check(CLI::IsMember({"certified", "exact"}))
+      ->capture_default_str();
   return cmd;
 }
 
+namespace {
+
+// `gmcc estimate --space 3d`: CRULE on each image's pixel colours against the prepared 3-D
+// canonical gamut (gmcc/photo/estimate_3d.h).
+int run_estimate_3d(const EstimateOptions& o) {
+  const CLI::App* cmd = o.pixels.command;
+  for (const char* name : {"--expand", "--expand-policy", "--on-empty", "--illuminant-worst-case"})
+    if (cmd && cmd->count(name))
+      throw InputError(name, 0, "applies to the 2-D perspective route, not --space 3d");
+  PixelOptions pixel_options = o.pixels;
+  if (cmd && cmd->count("--colour-set")) {
+    if (o.pixels.colour_set == "hull")
+      throw InputError("--colour-set", 0,
+                       "hull passes chromaticity lifts, not pixel colours; --space 3d takes "
+                       "hull-3d (the default) or distinct");
+  } else {
+    pixel_options.colour_set = "hull-3d";
+  }
+  Settings s;
+  {
+    EstimateOptions plain = o;
+    plain.pixels = pixel_options;
+    s = settings_of(plain);
+  }
+  Estimate3Options options;
+  options.canonical_light = s.scene.canonical_illuminant;
+  options.route = o.centroid == "exact" ? Crule3dRoute::exact : Crule3dRoute::certified;
+  if (!o.rules_3d.empty()) {
+    options.rules.clear();
+    for (const std::string& r : o.rules_3d) options.rules.push_back(rule_3_from_string(r));
+  }
+  const ColourTable canonical = read_colour_csv(o.canonical_path);
+  require_pixel_colours(canonical, "--space 3d");
+  const CanonicalBlack black = o.black == "exclude" ? CanonicalBlack::exclude : CanonicalBlack::include;
+  const CanonicalConstraints3 prepared(canonical.colours, black);
+  if (!o.corrected_dir.empty()) ensure_directory(o.corrected_dir);
+
+  Json images = Json::array();
+  std::ostringstream text;
+  std::vector<std::pair<std::filesystem::path, std::string>> outputs;
+  for (const std::string& path : o.images) {
+    RgbImage image;
+    PixelRules rules;
+    const ImageColours colours = image_colours_of(path, s.pixels, &image, &rules);
+    const std::optional<Colour> truth =
+        s.truths.empty() ? s.truth : std::optional<Colour>(light_of_image(s.truths, path, o.truths_path));
+    ImageEstimate3 r;
+    try {
+      r = estimate_3d(prepared, colours, options);
+    } catch (const UnboundedFeasibleSet& e) {
+      throw InputError(path, 0, e.what());
+    }
+    Json record = image_record(path, image, colours);
+    record["space"] = "3d";
+    record["feasible_set"] = {{"kind", to_string(r.feasible.kind)}, {"vertices", r.feasible.vertices.size()}};
+    Json estimates = Json::object();
+    describe_pixels(text, path, image, colours, rules);
+    text << "\n  feasible set (3-D): " << to_string(r.feasible.kind) << ", " << r.feasible.vertices.size()
+         << " vertices\n";
+    for (Rule3 rule : options.rules) {
+      const std::optional<ImageSelection3>& sel = r[rule];
+      if (!sel) continue;
+      const MapEstimate3& m = sel->selection.estimate;
+      Json j = {{"map", m.map}, {"method", m.method}, {"error_bound", m.error_bound}};
+      if (sel->selection.worst_case_deg) j["worst_case_deg"] = *sel->selection.worst_case_deg;
+      text << "  " << to_string(rule);
+      if (sel->light) {
+        const std::array<double, 3>& e = *sel->light;
+        j["light"] = e;
+        text << "  light (" << fixed(e[0], 6) << ", " << fixed(e[1], 6) << ", " << fixed(e[2], 6) << ")";
+        if (truth) {
+          const double error = recovery_angular_error_deg(e, *truth);
+          j["recovery_error_deg"] = error;
+          text << "  recovery error " << fixed(error, 3) << " deg";
+        }
+      } else {
+        text << "  no light (a map component is 0)";
+      }
+      if (sel->selection.worst_case_deg) text << "  worst case " << fixed(*sel->selection.worst_case_deg, 3) << " deg";
+      text << "\n";
+      estimates[to_string(rule)] = std::move(j);
+      if (!o.corrected_dir.empty() && sel->light) {
+        const std::string stem = std::filesystem::path(path).stem().string();
+        outputs.emplace_back(std::filesystem::path(o.corrected_dir) / (stem + "_" + to_string(rule) + ".png"),
+                             encode_png16(corrected(image, rules, rules.saturation.value_or(65536), m.map)));
+      }
+    }
+    if (r.feasible.kind == ConvexKind3::empty)
+      text << "  no estimate: no diagonal map takes every kept colour into the canonical gamut\n";
+    record["estimates"] = std::move(estimates);
+    images.push_back(std::move(record));
+  }
+  for (const auto& [file, bytes] : outputs) PendingFile(file).commit(bytes);
+  if (o.json) {
+    Json document;
+    document["space"] = "3d";
+    document["canonical_gamut"] = {{"colours", canonical.colours.size()},
+                                   {"black", o.black},
+                                   {"half_spaces", prepared.half_spaces()}};
+    document["images"] = std::move(images);
+    finish_document(document);
+    write_stdout(document.dump(2) + "\n");
+  } else {
+    write_stdout(text.str());
+  }
+  return 0;
+}
+
+}  // namespace
+
 int run_estimate(const EstimateOptions& o) {
+  if (o.space == "3d") return run_estimate_3d(o);
+  const CLI::App* cmd = o.pixels.command;
+  for (const char* name : {"--rules", "--black", "--centroid"})
+    if (cmd && cmd->count(name)) throw InputError(name, 0, "applies to --space 3d");
   const Settings s = settings_of(o);
   const ColourTable canonical = read_colour_csv(o.canonical_path);
   const PreparedCanonical prepared = [&] {
@@ -233,7 +376,7 @@ int run_estimate(const EstimateOptions& o) {
         const std::string stem = std::filesystem::path(path).stem().string();
         outputs.emplace_back(std::filesystem::path(o.corrected_dir) / (stem + "_" + kRules[k] + ".png"),
                              encode_png16(corrected(image, rules, rules.saturation.value_or(65536),
-                                                    sel->estimate.map)));
+                                                    {sel->estimate.map[0], sel->estimate.map[1], 1.0})));
       }
     }
     if (result.feasible.kind == ConvexKind::empty) text << "  no estimate: " << result.empty_reason << "\n";

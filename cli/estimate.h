@@ -1,7 +1,8 @@
 #pragma once
 // `gmcc estimate`: gamut mapping on linear camera images (PNG, TIFF), each image's pixels made
-// into colours by explicit pre-processing (docs/conventions.md §8), then the select pipeline of
-// gmcc/selection/select_scene.h against one canonical gamut (docs/cli.md "gmcc estimate").
+// into colours by explicit pre-processing (docs/conventions.md §8), then, against one canonical
+// gamut, the select pipeline of gmcc/selection/select_scene.h (--space 2d) or 3-D gamut mapping
+// on the pixel colours, gmcc/photo/estimate_3d.h (--space 3d) (docs/cli.md "gmcc estimate").
 
 #include <CLI/CLI.hpp>
 
@@ -25,6 +26,10 @@ struct EstimateOptions {
   std::string illuminant_worst_case = "on";
   bool json = false;
   std::string corrected_dir;
+  std::string space = "2d";            // 2d: the perspective route; 3d: CRULE on pixel colours
+  std::vector<std::string> rules_3d;   // 3d: which rules (default all)
+  std::string black = "include";       // 3d: whether black joins the canonical gamut
+  std::string centroid = "certified";  // 3d: the centroid certified or exact
 };
 
 /// Register the subcommand and its options on `app`; returns the subcommand.

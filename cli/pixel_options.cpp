@@ -30,6 +30,20 @@ std::vector<Point2> polygon(const std::string& text) {
   return p;
 }
 
+// A fraction in [0, 1], read exactly; empty text keeps `given`.
+std::optional<Rational> fraction_option(const char* name, const std::string& text,
+                                        std::optional<Rational> given) {
+  if (text.empty()) return given;
+  Rational f;
+  try {
+    f = parse_rational(text);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(name, 0, quoted_text(text) + ": " + e.what());
+  }
+  if (sgn(f) < 0 || f > 1) throw InputError(name, 0, quoted_text(text) + ": expected a fraction from 0 to 1");
+  return f;
+}
+
 }  // namespace
 
 void add_images_argument(CLI::App& cmd, std::vector<std::string>& images) {
@@ -56,14 +70,30 @@ void add_pixel_options(CLI::App& cmd, PixelOptions& o) {
   cmd.add_option("--mask", o.mask_path,
                  "a PNG or TIFF of the image's size: pixels where it is 0 in every channel are "
                  "excluded");
+  cmd.add_option("--dark", o.dark,
+                 "drop pixels with a channel below this after the black level, 0 to 65535")
+      ->capture_default_str();
+  cmd.add_option("--dark-fraction", o.dark_fraction,
+                 "drop pixels with a channel below this fraction (0 to 1, e.g. 5/255) of the "
+                 "image's largest value after the black level");
+  cmd.add_option("--bright-fraction", o.bright_fraction,
+                 "drop pixels with a channel above this fraction (0 to 1, e.g. 245/255) of the "
+                 "image's largest value after the black level");
+  cmd.add_option("--pixel-rule", o.pixel_rule,
+                 "none, or gijsenij: Gijsenij et al. (2010)'s rule, the image rescaled to a "
+                 "maximum of 255 and pixels with a channel below 5 or above 245 dropped "
+                 "(--dark-fraction 5/255 --bright-fraction 245/255)")
+      ->check(CLI::IsMember({"none", "gijsenij"}))
+      ->capture_default_str();
   cmd.add_option("--bin", o.bin,
                  "average the kept pixels of each BxB block into one colour, 1 to 4096")
       ->capture_default_str();
   cmd.add_option("--colour-set", o.colour_set,
                  "the colours passed on: hull (the pixels whose chromaticities are vertices of "
-                 "the exact chromaticity hull: all the 2-D feasible set depends on) or distinct "
-                 "(every distinct colour, at most 10^6)")
-      ->check(CLI::IsMember({"hull", "distinct"}))
+                 "the exact chromaticity hull: all the 2-D feasible set depends on, passed as "
+                 "chromaticity lifts), distinct (every distinct colour, at most 10^6) or hull-3d "
+                 "(the colours on their exact 3-D hull: all the 3-D feasible set depends on)")
+      ->check(CLI::IsMember({"hull", "distinct", "hull-3d"}))
       ->capture_default_str();
 }
 
@@ -78,7 +108,18 @@ PixelSettings pixel_settings(const PixelOptions& o) {
   }
   for (const std::string& text : o.exclude_polygons) r.exclude_polygons.push_back(polygon(text));
   r.bin = static_cast<std::uint32_t>(integer_option("--bin", o.bin, 1, 4096));
-  r.colour_set = o.colour_set == "distinct" ? ColourSet::distinct : ColourSet::hull;
+  r.colour_set = o.colour_set == "distinct" ? ColourSet::distinct
+                 : o.colour_set == "hull-3d" ? ColourSet::hull_3d
+                                             : ColourSet::hull;
+  if (const auto dark = integer_option("--dark", o.dark, 0, 65535)) r.dark_below = static_cast<std::uint32_t>(dark);
+  if (o.pixel_rule == "gijsenij") {
+    for (const char* name : {"--dark-fraction", "--bright-fraction"})
+      if (o.command && o.command->count(name))
+        throw InputError(name, 0, "--pixel-rule gijsenij sets it (5/255 and 245/255); give one or the other");
+    r = gijsenij_pixel_rules(std::move(r));
+  }
+  r.dark_below_fraction = fraction_option("--dark-fraction", o.dark_fraction, r.dark_below_fraction);
+  r.bright_above_fraction = fraction_option("--bright-fraction", o.bright_fraction, r.bright_above_fraction);
   if (r.bin > 1 && o.command && o.command->count("--colour-set"))
     throw InputError("--colour-set", 0,
                      "with --bin the binned colours are passed as they are (their hull is taken "
@@ -111,9 +152,11 @@ ImageColours image_colours_of(const std::string& path, const PixelSettings& s, R
   }
   if (colours.colours.empty())
     throw InputError(path, 0,
-                     "no usable pixel after the mask and saturation (" +
+                     "no usable pixel after the mask, saturation and dark or bright rules (" +
                          std::to_string(colours.counts.masked) + " masked, " +
-                         std::to_string(colours.counts.saturated) + " saturated" +
+                         std::to_string(colours.counts.saturated) + " saturated, " +
+                         std::to_string(colours.counts.dark) + " dark, " +
+                         std::to_string(colours.counts.bright) + " bright" +
                          (colours.counts.no_chromaticity
                               ? ", " + std::to_string(colours.counts.no_chromaticity) +
                                     " distinct colours with b = 0"

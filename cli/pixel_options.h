@@ -18,8 +18,11 @@ struct PixelOptions {
   std::string saturation = "max";  // max (2^bits - 1), none, or a value
   std::vector<std::string> exclude_polygons;
   std::string mask_path;
+  std::string dark = "0";                 // absolute dark threshold, after the black level
+  std::string dark_fraction, bright_fraction;  // of the image's largest value; empty: none
+  std::string pixel_rule = "none";        // none | gijsenij
   std::string bin = "1";
-  std::string colour_set = "hull";  // hull | distinct
+  std::string colour_set = "hull";  // hull | distinct | hull-3d
   const CLI::App* command = nullptr;
 };
 
@@ -30,7 +33,8 @@ void add_images_argument(CLI::App& command, std::vector<std::string>& images);
 /// its help text (what the command does with them).
 CLI::Option* add_truths_option(CLI::App& command, std::string& path, const std::string& use);
 
-/// Register --black-level, --saturation, --exclude-polygon, --mask, --bin, --colour-set.
+/// Register --black-level, --saturation, --exclude-polygon, --mask, --dark, --dark-fraction,
+/// --bright-fraction, --pixel-rule, --bin, --colour-set.
 void add_pixel_options(CLI::App& command, PixelOptions& options);
 
 /// The rules those options give, checked (the mask image is read by image_colours_of).

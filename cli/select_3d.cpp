@@ -47,6 +47,8 @@ int run_select_3d(const SelectOptions& o) {
   const CanonicalBlack black = o.black == "exclude" ? CanonicalBlack::exclude : CanonicalBlack::include;
   const ColourTable canonical = read_colour_csv(o.canonical_path);
   const ColourTable image = read_colour_csv(o.image_path);
+  require_pixel_colours(canonical, "select --space 3d");
+  require_pixel_colours(image, "select --space 3d");
   Crule3d r;
   try {
     r = crule_3d(canonical.colours, image.colours, black);

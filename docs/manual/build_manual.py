@@ -43,7 +43,7 @@ import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-PUBLIC_INCLUDE = ["numerics/include", "geometry/include", "selection/include", "input/include",
+PUBLIC_INCLUDE = ["numerics/include", "geometry/include", "selection/include", "input/include", "photo/include",
                   "validation/include"]
 
 FENCE = re.compile(r"^\s*(```|~~~)")

@@ -89,6 +89,14 @@ ColourTable parse_colour_csv(const std::string& text, const std::string& file) {
   return table;
 }
 
+void require_pixel_colours(const ColourTable& table, const std::string& use) {
+  if (table.chromaticity_lifts)
+    throw InputError(table.file, table.header_line,
+                     "the header r/b,g/b,1 marks chromaticity lifts (a 2-D perspective gamut, as "
+                     "gmcc canonical writes by default), not pixel colours: " + use +
+                         " needs colours r,g,b (learn a 3-D gamut with gmcc canonical --space 3d)");
+}
+
 ColourTable read_colour_csv(const std::string& path) {
   return parse_colour_csv(
       read_text_file(path, {max_colour_file_bytes, "colour file", "text lines r,g,b"}), path);

@@ -19,12 +19,17 @@ import os as _os
 from . import _core
 from ._core import (  # noqa: F401  (re-exported result classes)
     Canonical,
+    Canonical3,
+    CanonicalLearner2,
+    CanonicalLearner3,
     ConvexSet,
     ConvexSet3,
     Constraint,
     Crule3d,
     ErrorStatistics,
+    Estimate3,
     ImageColours,
+    ImageSelection3,
     MapEstimate,
     Recovery,
     SceneResult,
@@ -41,13 +46,15 @@ __commit_date__: str = _core.__commit_date__
 
 __all__ = [
     "__version__", "__commit__", "__commit_date__",
-    "Canonical", "ConvexSet", "ConvexSet3", "Constraint", "Crule3d", "ErrorStatistics",
-    "ImageColours", "MapEstimate", "Recovery", "SceneResult", "Selection", "Selection3", "Truth",
+    "Canonical", "Canonical3", "CanonicalLearner2", "CanonicalLearner3", "ConvexSet", "ConvexSet3",
+    "Constraint", "Crule3d", "ErrorStatistics", "Estimate3", "ImageColours", "ImageSelection3",
+    "MapEstimate", "Recovery", "SceneResult", "Selection", "Selection3", "Truth",
     "TruthErrors",
     "prepare_canonical", "canonical_gamut", "feasible_set", "select", "image_colours",
     "select_maps", "max_area", "mean_2d", "mean_3d", "worst_case_map_deg",
     "worst_case_illuminant_deg", "map_angular_error_deg", "illuminant_angular_error_deg",
     "reproduction_angular_error_deg", "illuminant_map", "illumination_constraint", "crule_3d",
+    "prepare_canonical_3d", "estimate_3d",
     "error_statistics", "summarise", "reproduce_synthetic", "reproduce_camera", "data_dir",
 ]
 
@@ -95,8 +102,8 @@ def canonical_gamut(canonical, *, expand=0, expand_policy="none",
                                    nonpositive_blue=nonpositive_blue).gamut
 
 
-def select(canonical, image, truth=None, *, mask=None, black_level=0, saturation=None,
-           **options) -> SceneResult:
+def select(canonical, image, truth=None, *, mask=None, black_level=0, saturation=None, dark=0,
+           dark_fraction=None, bright_fraction=None, pixel_rule="none", **options) -> SceneResult:
     """The select pipeline on one image (select_scene.h; ``gmcc select``): the feasible set F
     of perspective diagonal maps (Finlayson & Hordley 1999 eqs. 7–9; ∩ C with
     ``illuminants``), the recovery policy when F is empty, the three selection rules (§3) with
@@ -106,34 +113,64 @@ def select(canonical, image, truth=None, *, mask=None, black_level=0, saturation
     with the options of prepare_canonical. ``image``: an N×3 array or rows r,g,b of colours, or
     an H×W×3 image array (integer samples 0..65535, or floats) with the pixel rules ``mask``
     (bool H×W, True for pixels to use), ``black_level`` (subtracted, clamped at 0) and
-    ``saturation`` (pixels with a raw channel >= it are dropped; docs/conventions.md §8).
+    ``saturation`` (pixels with a raw channel >= it are dropped), and the dark and bright rules
+    of image_colours (``dark``, ``dark_fraction``, ``bright_fraction``, ``pixel_rule``;
+    docs/conventions.md §8).
 
     An empty or degenerate F is a result (``result.kind``), not an exception.
     """
     return _core.select_prepared(_prepared(canonical, options), image, truth, mask, black_level,
-                                 saturation)
+                                 saturation, dark, dark_fraction, bright_fraction, pixel_rule)
 
 
-def feasible_set(canonical, image, *, mask=None, black_level=0, saturation=None,
+def feasible_set(canonical, image, *, mask=None, black_level=0, saturation=None, dark=0,
+                 dark_fraction=None, bright_fraction=None, pixel_rule="none",
                  **options) -> ConvexSet:
     """The feasible set F of perspective diagonal maps alone (Finlayson & Hordley 1999 eqs.
     7–9 in perspective; feasible_set.h), ∩ C with ``illuminants``, with the recovery policy
     ``on_empty``: an exact ConvexSet (polygon, segment, point or empty). Arguments as select."""
     scene = _core.feasible_prepared(_prepared(canonical, options), image, mask, black_level,
-                                    saturation)
+                                    saturation, dark, dark_fraction, bright_fraction, pixel_rule)
     return scene.feasible_set
 
 
-def image_colours(image, *, mask=None, black_level=0, saturation=None) -> ImageColours:
+def image_colours(image, *, mask=None, black_level=0, saturation=None, dark=0,
+                  dark_fraction=None, bright_fraction=None, pixel_rule="none",
+                  colour_set="hull") -> ImageColours:
     """The colours the geometry takes from a linear camera image (image_pixels.h;
-    docs/conventions.md §8): pixels outside ``mask`` (bool H×W, True to use) and saturated
-    pixels (a raw channel >= ``saturation``) are dropped, ``black_level`` is subtracted
-    (clamped at 0), and only colours whose chromaticities are vertices of the exact
-    chromaticity hull are kept (all the 2-D feasible set depends on). Integer images (8- or
-    16-bit samples, any integer dtype with values 0..65535) take the exact integer hull; float
-    images the exact filtered hull of the doubles, where each sample minus the black level
-    must be exact in double (else ValueError)."""
-    return _core.image_colours(image, mask, black_level, saturation)
+    docs/conventions.md §8).
+
+    Parameters
+    ----------
+    image : numpy.ndarray, shape (H, W, 3)
+        Linear samples: integers 0..65535 (the exact integer route), or floats, where each
+        sample minus the black level must be exact in double (else ValueError).
+    mask : numpy.ndarray of bool, shape (H, W), optional
+        True for the pixels to use.
+    black_level : int or float
+        Subtracted from every channel, clamped at 0.
+    saturation : int or float, optional
+        Pixels with a raw channel >= it are dropped.
+    dark : int or float
+        Pixels with a channel (after the black level) below it are dropped.
+    dark_fraction, bright_fraction : number, optional
+        Pixels with a channel below ``dark_fraction``·M, or above ``bright_fraction``·M, are
+        dropped; M is the image's largest value after the black level (exact fractions,
+        e.g. ``Fraction(5, 255)``).
+    pixel_rule : {'none', 'gijsenij'}
+        ``'gijsenij'``: Gijsenij et al. (2010)'s rule, fractions 5/255 and 245/255.
+    colour_set : {'hull', 'distinct', 'hull-3d'}
+        ``'hull'``: the chromaticity lifts (x, y, 1) of the chromaticity hull's vertices, all
+        the 2-D route depends on (read them as ``.chromaticity_lifts``; ``.colours`` refuses
+        them, since they are not pixel colours); ``'distinct'``: every distinct pixel colour;
+        ``'hull-3d'``: the pixel colours on their exact 3-D hull.
+
+    Returns
+    -------
+    ImageColours
+        The colours, what they are (``colour_set``) and the pixel counts."""
+    return _core.image_colours(image, mask, black_level, saturation, dark, dark_fraction,
+                               bright_fraction, pixel_rule, colour_set)
 
 
 def select_maps(feasible_set, *, mean3d="analytic", precision=0, order=12, samples=1000000,
@@ -213,6 +250,62 @@ def crule_3d(canonical, image, *, black="include") -> Crule3d:
     (d1, d2, d3), its volume, and the max-volume and centroid selections with their worst cases.
     ``black``: ``include`` (0 in the canonical gamut, the default) or ``exclude``."""
     return _core.crule_3d(canonical, image, black=black)
+
+
+def prepare_canonical_3d(canonical, *, black="include") -> Canonical3:
+    """A 3-D canonical gamut G_c3 prepared once for many images (feasible_set_3d.h;
+    Forsyth 1990 §3).
+
+    Parameters
+    ----------
+    canonical : array_like of shape (n, 3), or ImageColours
+        Pixel colours under the canonical light (e.g. ``CanonicalLearner3.gamut()``). An
+        ImageColours of chromaticity lifts is refused (ValueError).
+    black : {'include', 'exclude'}
+        Whether black (0, 0, 0) joins the hull (with it F3 is never empty).
+
+    Returns
+    -------
+    Canonical3
+    """
+    return _core.prepare_canonical_3d(canonical, black=black)
+
+
+def estimate_3d(canonical, image, truth=None, *, rules=None, centroid="certified",
+                canonical_illuminant=(1, 1, 1), mask=None, black_level=0, saturation=None,
+                dark=0, dark_fraction=None, bright_fraction=None, pixel_rule="none",
+                colour_set="hull-3d") -> Estimate3:
+    """3-D gamut mapping on one image (estimate_3d.h; Forsyth 1990, Gijsenij et al. 2010):
+    the exact feasible set F3 of diagonal maps taking the image's pixel colours into the
+    canonical gamut, and the rules max-volume, centroid and max-trace with the light each
+    implies (docs/photographs.md §3).
+
+    Parameters
+    ----------
+    canonical : Canonical3
+        From prepare_canonical_3d or CanonicalLearner3.prepare.
+    image : numpy.ndarray (H, W, 3), ImageColours, or array_like (n, 3)
+        An image goes through the pixel rules (arguments as image_colours; ``colour_set``
+        'hull-3d' or 'distinct'); an ImageColours must hold pixel colours (chromaticity lifts
+        are refused); colours are taken as they are.
+    truth : array_like of 3 numbers, optional
+        The true light: each rule's ``recovery_error_deg``.
+    rules : iterable of str, optional
+        Of 'max_volume', 'centroid', 'max_trace' (default all).
+    centroid : {'certified', 'exact'}
+        The centroid as a certified double, or in Q (max-volume and max-trace are exact).
+    canonical_illuminant : array_like of 3 numbers
+        The canonical light c; a map d implies the light c ⊘ d.
+
+    Returns
+    -------
+    Estimate3
+    """
+    return _core.estimate_3d(canonical, image, truth, rules=rules, centroid=centroid,
+                             canonical_illuminant=canonical_illuminant, mask=mask,
+                             black_level=black_level, saturation=saturation, dark=dark,
+                             dark_fraction=dark_fraction, bright_fraction=bright_fraction,
+                             pixel_rule=pixel_rule, colour_set=colour_set)
 
 
 def error_statistics(values) -> ErrorStatistics:

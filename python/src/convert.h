@@ -45,6 +45,18 @@ Colour light_from(py::handle x, const std::string& argument);
 Point2 map_from(py::handle x, const std::string& argument);
 
 /// A float numpy array of shape (rows, cols) from row-major doubles.
+/// An int argument within [lo, hi] (not a bool), as a T. \throws TypeError, ValueError naming it.
+template <class T>
+T integer_in(py::handle x, const char* name, unsigned long long lo, unsigned long long hi) {
+  if (PyBool_Check(x.ptr()) || !py::isinstance(x, py::module_::import("numbers").attr("Integral")))
+    throw py::type_error(std::string(name) + ": expected an int, got " +
+                         std::string(py::str(py::type::handle_of(x).attr("__name__"))));
+  const py::int_ i(py::reinterpret_borrow<py::object>(x));
+  if (i < py::int_(lo) || i > py::int_(hi))
+    throw py::value_error(std::string(name) + ": must be from " + std::to_string(lo) + " to " + std::to_string(hi));
+  return i.cast<T>();
+}
+
 py::array_t<double> float_array(const std::vector<double>& values, std::size_t rows, std::size_t cols);
 
 }  // namespace gmcc::python

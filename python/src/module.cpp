@@ -5,6 +5,8 @@
 /// (results.h). No geometry or selection is done here.
 
 #include "convert.h"
+#include "photo.h"
+#include "pixels.h"
 #include "results.h"
 
 #include <gmcc/geometry/illumination_constraint.h>
@@ -32,17 +34,6 @@ namespace gmcc::python {
 namespace {
 
 // ---- options (the command line's checks, with the Python argument names) ----
-
-template <class T>
-T integer_in(py::handle x, const char* name, unsigned long long lo, unsigned long long hi) {
-  if (PyBool_Check(x.ptr()) || !py::isinstance(x, py::module_::import("numbers").attr("Integral")))
-    throw py::type_error(std::string(name) + ": expected an int, got " +
-                         std::string(py::str(py::type::handle_of(x).attr("__name__"))));
-  const py::int_ i(py::reinterpret_borrow<py::object>(x));
-  if (i < py::int_(lo) || i > py::int_(hi))
-    throw py::value_error(std::string(name) + ": must be from " + std::to_string(lo) + " to " + std::to_string(hi));
-  return i.cast<T>();
-}
 
 // The expansion of the canonical gamut (`expand`, `expand_policy`), checked as the command line
 // checks --expand and --expand-policy.
@@ -138,120 +129,6 @@ std::shared_ptr<PreparedCanonical> prepare(py::handle canonical, py::handle expa
   return released([&] { return std::make_shared<PreparedCanonical>(prepare_canonical(colours, options)); });
 }
 
-// ---- images: H×W×3 arrays through the pixel rules (image_pixels.h) ----
-
-struct PixelArgs {
-  py::object mask = py::none();
-  py::object black_level = py::int_(0);
-  py::object saturation = py::none();
-};
-
-std::string shape_of(const py::array& a) {
-  std::string s = "(";
-  for (py::ssize_t d = 0; d < a.ndim(); ++d) s += (d ? ", " : "") + std::to_string(a.shape(d));
-  return s + (a.ndim() == 1 ? ",)" : ")");
-}
-
-PyImageColours run_pixel_rules(const RgbImage& img, std::vector<bool> keep, const PixelArgs& args);
-
-// The library's pixel rules on an image, with the GIL released; its input errors as ValueError.
-template <class Image, class Rules>
-PyImageColours colours_by_rules(const Image& img, const Rules& rules) {
-  PyImageColours out;
-  try {
-    py::gil_scoped_release nogil;
-    ImageColours c = image_colours(img, rules);
-    out.colours = std::move(c.colours);
-    out.counts = c.counts;
-  } catch (const std::invalid_argument& e) {
-    throw py::value_error(std::string("image: ") + e.what());
-  }
-  return out;
-}
-
-PyImageColours image_colours_of(py::handle image_obj, const PixelArgs& args) {
-  py::module_ np = py::module_::import("numpy");
-  if (!py::isinstance<py::array>(image_obj))
-    throw py::type_error("image: expected a numpy array of shape (H, W, 3), got " +
-                         std::string(py::str(py::type::handle_of(image_obj).attr("__name__"))));
-  py::array image = py::reinterpret_borrow<py::array>(image_obj);
-  if (image.ndim() != 3 || image.shape(2) != 3)
-    throw py::value_error("image: expected an array of shape (H, W, 3), got " + shape_of(image));
-  const char kind = image.dtype().kind();
-  if (kind == 'b' || (kind != 'f' && kind != 'u' && kind != 'i'))
-    throw py::type_error("image: dtype " + std::string(py::str(image.dtype())) +
-                         " is not a real number type (expected unsigned integers or floats)");
-  if (kind == 'f' && image.itemsize() > 8)
-    throw py::type_error("image: dtype " + std::string(py::str(image.dtype())) + " has no exact double value");
-  const std::size_t h = static_cast<std::size_t>(image.shape(0)), w = static_cast<std::size_t>(image.shape(1));
-  std::vector<bool> keep;
-  if (!args.mask.is_none()) {
-    if (!py::isinstance<py::array>(args.mask))
-      throw py::type_error("mask: expected a boolean numpy array of shape (H, W)");
-    py::array mask = py::reinterpret_borrow<py::array>(args.mask);
-    if (mask.dtype().kind() != 'b') throw py::type_error("mask: expected dtype bool, got " + std::string(py::str(mask.dtype())));
-    if (mask.ndim() != 2 || mask.shape(0) != image.shape(0) || mask.shape(1) != image.shape(1))
-      throw py::value_error("mask: shape " + shape_of(mask) + " does not match the image's (" + std::to_string(h) +
-                            ", " + std::to_string(w) + ")");
-    const py::array_t<bool, py::array::c_style> m = np.attr("ascontiguousarray")(mask);
-    keep.assign(m.data(), m.data() + h * w);
-  }
-  if (kind == 'f') {
-    FloatRgbImage img;
-    img.width = w;
-    img.height = h;
-    const py::array_t<double, py::array::c_style> a = np.attr("ascontiguousarray")(image, "float64");
-    img.samples.assign(a.data(), a.data() + h * w * 3);
-    FloatPixelRules rules;
-    rules.keep = std::move(keep);
-    const Rational black = number_from(args.black_level, "black_level");
-    if (sgn(black) < 0) throw py::value_error("black_level: must be >= 0");
-    rules.black_level = to_double_nearest(black);
-    if (Rational(rules.black_level) != black)  // exact: every double is a rational
-      throw py::value_error("black_level: must be a double exactly for a float image");
-    if (!args.saturation.is_none()) {
-      const Rational s = number_from(args.saturation, "saturation");
-      rules.saturation = to_double_nearest(s);
-      if (sgn(s) < 0 || Rational(*rules.saturation) != s)
-        throw py::value_error("saturation: must be >= 0 and a double exactly for a float image");
-    }
-    return colours_by_rules(img, rules);
-  }
-  // Integer samples: the library's 16-bit route (exact integer hull).
-  RgbImage img;
-  img.width = w;
-  img.height = h;
-  img.bits = 16;
-  img.samples.resize(h * w * 3);
-  if (kind == 'u' && image.itemsize() <= 2) {  // uint8, uint16: every value fits
-    const py::array_t<std::uint16_t, py::array::c_style> a = np.attr("ascontiguousarray")(image, "uint16");
-    if (!img.samples.empty()) std::memcpy(img.samples.data(), a.data(), img.samples.size() * sizeof(std::uint16_t));
-    return run_pixel_rules(img, std::move(keep), args);
-  }
-  const py::array_t<std::int64_t, py::array::c_style> a = np.attr("ascontiguousarray")(image, "int64");
-  const std::int64_t* p = a.data();
-  for (std::size_t i = 0; i < h * w * 3; ++i) {
-    if (p[i] < 0 || p[i] > 65535) {
-      const std::size_t px = i / 3;
-      throw py::value_error("image: pixel (row " + std::to_string(px / w) + ", column " + std::to_string(px % w) +
-                            ") channel " + "rgb"[i % 3] + ": " + std::to_string(p[i]) +
-                            " is outside 0..65535 (integer images are 8- or 16-bit linear samples)");
-    }
-    img.samples[i] = static_cast<std::uint16_t>(p[i]);
-  }
-  return run_pixel_rules(img, std::move(keep), args);
-}
-
-PyImageColours run_pixel_rules(const RgbImage& img, std::vector<bool> keep, const PixelArgs& args) {
-  PixelRules rules;
-  rules.keep = std::move(keep);
-  rules.colour_set = ColourSet::hull;
-  rules.black_level = integer_in<std::uint32_t>(args.black_level, "black_level", 0, 65535);
-  if (!args.saturation.is_none()) rules.saturation = integer_in<std::uint32_t>(args.saturation, "saturation", 0, 65536);
-  return colours_by_rules(img, rules);
-}
-
-bool is_image(py::handle x) { return py::isinstance<py::array>(x) && py::reinterpret_borrow<py::array>(x).ndim() == 3; }
 
 Scene run_scene(const std::shared_ptr<PreparedCanonical>& canonical, py::handle image, py::handle truth,
                 const PixelArgs& pixels, bool select) {
@@ -265,9 +142,9 @@ Scene run_scene(const std::shared_ptr<PreparedCanonical>& canonical, py::handle 
     if (colours.empty())
       throw py::value_error("image: no usable pixel (every pixel masked, saturated or with b = 0)");
   } else {
-    if (!pixels.mask.is_none() || !pixels.saturation.is_none() ||
-        !(py::isinstance<py::int_>(pixels.black_level) && pixels.black_level.cast<long long>() == 0))
-      throw py::value_error("mask, black_level and saturation apply to an image of shape (H, W, 3), not to colours");
+    if (!pixels.plain())
+      throw py::value_error("mask, black_level, saturation and the dark and bright rules apply to an image of shape "
+                            "(H, W, 3), not to colours");
     colours = colours_from(image, "image");
   }
   std::optional<Colour> t;
@@ -343,29 +220,40 @@ void bind_scene(py::module_& m) {
   m.def(
       "select_prepared",
       [](const std::shared_ptr<PreparedCanonical>& canonical, py::handle image, py::handle truth, py::object mask,
-         py::object black_level, py::object saturation) {
-        return run_scene(canonical, image, truth, {mask, black_level, saturation}, true);
+         py::object black_level, py::object saturation, py::object dark, py::object dark_fraction,
+         py::object bright_fraction, const std::string& pixel_rule) {
+        return run_scene(canonical, image, truth,
+                         {mask, black_level, saturation, dark, dark_fraction, bright_fraction, pixel_rule}, true);
       },
       py::arg("canonical"), py::arg("image"), py::arg("truth") = py::none(), py::arg("mask") = py::none(),
-      py::arg("black_level") = 0, py::arg("saturation") = py::none(),
+      py::arg("black_level") = 0, py::arg("saturation") = py::none(), py::arg("dark") = 0,
+      py::arg("dark_fraction") = py::none(), py::arg("bright_fraction") = py::none(), py::arg("pixel_rule") = "none",
         "select_scene (select_scene.h) on colours or an H×W×3 image. Public: gmcc.select.");
 
   m.def(
       "feasible_prepared",
       [](const std::shared_ptr<PreparedCanonical>& canonical, py::handle image, py::object mask,
-         py::object black_level, py::object saturation) {
-        return run_scene(canonical, image, py::none(), {mask, black_level, saturation}, false);
+         py::object black_level, py::object saturation, py::object dark, py::object dark_fraction,
+         py::object bright_fraction, const std::string& pixel_rule) {
+        return run_scene(canonical, image, py::none(),
+                         {mask, black_level, saturation, dark, dark_fraction, bright_fraction, pixel_rule}, false);
       },
       py::arg("canonical"), py::arg("image"), py::arg("mask") = py::none(), py::arg("black_level") = 0,
-      py::arg("saturation") = py::none(),
+      py::arg("saturation") = py::none(), py::arg("dark") = 0, py::arg("dark_fraction") = py::none(),
+      py::arg("bright_fraction") = py::none(), py::arg("pixel_rule") = "none",
         "scene_feasible_set (select_scene.h): F alone. Public: gmcc.feasible_set.");
 
   m.def(
       "image_colours",
-      [](py::handle image, py::object mask, py::object black_level, py::object saturation) {
-        return image_colours_of(image, {mask, black_level, saturation});
+      [](py::handle image, py::object mask, py::object black_level, py::object saturation, py::object dark,
+         py::object dark_fraction, py::object bright_fraction, const std::string& pixel_rule,
+         const std::string& colour_set) {
+        return image_colours_of(image, {mask, black_level, saturation, dark, dark_fraction, bright_fraction,
+                                        pixel_rule, colour_set});
       },
       py::arg("image"), py::arg("mask") = py::none(), py::arg("black_level") = 0, py::arg("saturation") = py::none(),
+      py::arg("dark") = 0, py::arg("dark_fraction") = py::none(), py::arg("bright_fraction") = py::none(),
+      py::arg("pixel_rule") = "none", py::arg("colour_set") = "hull",
         "The pixel rules (image_pixels.h; docs/conventions.md §8). Public: gmcc.image_colours.");
 
   m.def(
@@ -476,7 +364,14 @@ void bind_lights_and_crule(py::module_& m) {
         "illumination_constraint (illumination_constraint.h; Finlayson 1996 §5).");
 
   m.def("crule_3d", [](py::handle canonical, py::handle image, const std::string& black) {
-    const std::vector<Colour> c = colours_from(canonical, "canonical"), i = colours_from(image, "image");
+    // An ImageColours passes its pixel colours; chromaticity lifts are refused, not taken as colours.
+    auto colours = [](py::handle x, const char* what) {
+      if (!py::isinstance<PyImageColours>(x)) return colours_from(x, what);
+      const PyImageColours& c = x.cast<const PyImageColours&>();
+      require_pixel_colours(c, what);
+      return c.colours;
+    };
+    const std::vector<Colour> c = colours(canonical, "canonical"), i = colours(image, "image");
     if (black != "include" && black != "exclude")
       throw py::value_error("black: " + quoted_text(black) + " is not one of include, exclude");
     const CanonicalBlack b = black == "include" ? CanonicalBlack::include : CanonicalBlack::exclude;
@@ -600,6 +495,7 @@ PYBIND11_MODULE(_core, m) {
   bind_scene(m);
   bind_rules(m);
   bind_lights_and_crule(m);
+  bind_photo(m);
   bind_statistics(m);
   bind_benchmark_and_experiments(m);
 }

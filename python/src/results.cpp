@@ -8,7 +8,6 @@
 #include <cstdio>
 
 namespace gmcc::python {
-namespace {
 
 std::string g10(double x) {
   char buf[64];
@@ -19,6 +18,16 @@ std::string g10(double x) {
 py::object optional_double(const std::optional<double>& x) {
   return x ? py::object(py::float_(*x)) : py::object(py::none());
 }
+
+py::object colour_tuple(const Colour& c) {
+  return py::make_tuple(to_fraction(c.r), to_fraction(c.g), to_fraction(c.b));
+}
+
+py::object point3_tuple(const Point3& p) {
+  return py::make_tuple(to_fraction(p.x), to_fraction(p.y), to_fraction(p.z));
+}
+
+namespace {
 
 py::array_t<double> vertices_float(const ConvexSet2& s) {
   std::vector<double> v;
@@ -116,19 +125,13 @@ py::object pixel_counts(const PixelCounts& c) {
   d["pixels"] = c.pixels;
   d["masked"] = c.masked;
   d["saturated"] = c.saturated;
+  d["dark"] = c.dark;
+  d["bright"] = c.bright;
   d["kept"] = c.kept;
   d["colours"] = c.colours;
   d["hull_vertices"] = c.hull_vertices;
   d["no_chromaticity"] = c.no_chromaticity;
   return std::move(d);
-}
-
-py::object colour_tuple(const Colour& c) {
-  return py::make_tuple(to_fraction(c.r), to_fraction(c.g), to_fraction(c.b));
-}
-
-py::object point3_tuple(const Point3& p) {
-  return py::make_tuple(to_fraction(p.x), to_fraction(p.y), to_fraction(p.z));
 }
 
 // The 2-D feasible set and gamut type.
@@ -327,23 +330,34 @@ void bind_scene(py::module_& m) {
         return r + ")";
       });
   py::class_<PyImageColours>(m, "ImageColours",
-                             "The colours the pixel rules kept (docs/conventions.md §8), with counts.")
+                             "The colours the pixel rules kept (docs/conventions.md §8), with counts: pixel "
+                             "colours (colour_set 'distinct' or 'hull-3d') or, for the 2-D perspective route, "
+                             "chromaticity lifts (colour_set 'hull').")
+      .def_property_readonly("colour_set", [](const PyImageColours& c) { return to_string(c.set); },
+                             "What the colours are: 'distinct', 'hull-3d' (pixel colours) or 'hull' (lifts).")
       .def_property_readonly("colours", [](const PyImageColours& c) {
+        require_pixel_colours(c, "colours");
         py::list l;
         for (const Colour& x : c.colours) l.append(colour_tuple(x));
         return l;
-      }, "Exact colours, a list of (Fraction, Fraction, Fraction).")
+      }, "Exact pixel colours, a list of (Fraction, Fraction, Fraction); ValueError for chromaticity lifts.")
       .def_property_readonly("colours_float", [](const PyImageColours& c) {
-        std::vector<double> v;
-        for (const Colour& x : c.colours)
-          for (const Rational* q : {&x.r, &x.g, &x.b}) v.push_back(to_double_nearest(*q));
-        return float_array(v, c.colours.size(), 3);
-      }, "The colours as the nearest doubles, shape (n, 3).")
+        require_pixel_colours(c, "colours_float");
+        return colours_array(c.colours);
+      }, "The pixel colours as the nearest doubles, shape (n, 3); ValueError for chromaticity lifts.")
+      .def_property_readonly("chromaticity_lifts", [](const PyImageColours& c) {
+        if (pixel_colours(c.set))
+          throw py::value_error("chromaticity_lifts: these are pixel colours (colour_set '" + to_string(c.set) +
+                                "'); use .colours");
+        py::list l;
+        for (const Colour& x : c.colours) l.append(colour_tuple(x));
+        return l;
+      }, "colour_set 'hull': the lifts (x, y, 1) of the chromaticity hull's vertices, exact, counter-clockwise.")
       .def_property_readonly("counts", [](const PyImageColours& c) { return pixel_counts(c.counts); })
       .def("__len__", [](const PyImageColours& c) { return c.colours.size(); })
       .def("__repr__", [](const PyImageColours& c) {
-        return "ImageColours(" + std::to_string(c.colours.size()) + " colours of " +
-               std::to_string(c.counts.pixels) + " pixels, " + std::to_string(c.counts.kept) + " kept)";
+        return "ImageColours(" + std::to_string(c.colours.size()) + (pixel_colours(c.set) ? " colours" : " chromaticity lifts") +
+               " of " + std::to_string(c.counts.pixels) + " pixels, " + std::to_string(c.counts.kept) + " kept)";
       });
 }
 
@@ -433,6 +447,21 @@ void bind_statistics(py::module_& m) {
 }
 
 }  // namespace
+
+void require_pixel_colours(const PyImageColours& c, const char* what) {
+  if (!pixel_colours(c.set))
+    throw py::value_error(std::string(what) + ": these are chromaticity lifts (x, y, 1) of the 2-D hull colour set, "
+                          "not pixel colours; a 3-D method given them returns a meaningless feasible set. Use "
+                          ".chromaticity_lifts for the 2-D route, or colour_set='distinct' or 'hull-3d' for pixel colours");
+}
+
+py::array_t<double> colours_array(const std::vector<Colour>& colours) {
+  std::vector<double> v;
+  for (const Colour& x : colours)
+    for (const Rational* q : {&x.r, &x.g, &x.b}) v.push_back(to_double_nearest(*q));
+  return float_array(v, colours.size(), 3);
+}
+
 
 void bind_results(py::module_& m) {
   bind_convex_set(m);

@@ -27,8 +27,25 @@ struct Scene {
 /// gmcc.ImageColours: the colours the pixel rules kept, with their counts.
 struct PyImageColours {
   std::vector<Colour> colours;
+  ColourSet set = ColourSet::hull;  ///< pixel colours, or the chromaticity lifts of the 2-D hull
   PixelCounts counts;
 };
+
+/// A double with 10 significant digits, for __repr__.
+std::string g10(double x);
+/// A float, or None when absent.
+py::object optional_double(const std::optional<double>& x);
+/// A colour or a 3-D point as a tuple of three Fractions.
+///@{
+py::object colour_tuple(const Colour& c);
+py::object point3_tuple(const Point3& p);
+///@}
+
+/// ValueError unless `c` holds pixel colours (not chromaticity lifts); `what` names the use.
+void require_pixel_colours(const PyImageColours& c, const char* what);
+
+/// Exact colours as an (n, 3) array of the nearest doubles.
+py::array_t<double> colours_array(const std::vector<Colour>& colours);
 
 /// The Python classes of every result type, added to `m`.
 void bind_results(py::module_& m);

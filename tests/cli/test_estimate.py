@@ -107,7 +107,7 @@ def main():
             expect(rc == 0 and out == "", f"exit {rc}: {err}")
             with open(learned) as f:
                 lines = [x for x in f.read().splitlines() if not x.startswith("#")]
-            expect(lines[0] == "r,g,b", lines[:1])
+            expect(lines[0] == "r/b,g/b,1", lines[:1])  # chromaticity lifts, marked as such
             got = [tuple(Fraction(v) for v in x.split(",")) for x in lines[1:]]
             # Independently: the hull of the shown chips' chromaticities under a white light.
             e = [Fraction(v) for v in D75.split(",")]

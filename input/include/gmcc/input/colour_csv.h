@@ -44,6 +44,13 @@ struct ColourTable {
 ///         colours, no colour at all.
 ColourTable parse_colour_csv(const std::string& text, const std::string& file);
 
+/// Refuse a table of chromaticity lifts where pixel colours are meant (every 3-D route): lifts
+/// (x, y, 1) taken as colours give a feasible set of maps that means nothing, with no error.
+/// \param table the colours read. \param use what needs pixel colours, for the message (e.g.
+/// "the 3-D route").
+/// \throws InputError naming the file and its header line.
+void require_pixel_colours(const ColourTable& table, const std::string& use);
+
 /// Read and parse a colour file (read_text_file, then parse_colour_csv): a regular file, a FIFO
 /// or pipe, or a device, each read with the limits applied while reading.
 /// \throws InputError if the file cannot be read, is larger than max_colour_file_bytes, holds

@@ -100,13 +100,15 @@ struct ImageColours {
 /// `base`.
 PixelRules gijsenij_pixel_rules(PixelRules base = {});
 
-/// Which pixels the rules keep (steps 1 to 4), row-major, with the counts of those steps: the
-/// pixels every method of an image sees, the gamut methods and the statistics alike.
-/// 	hrows std::invalid_argument as image_colours.
+/// The pixels steps 1 to 4 keep, and the counts of those steps.
 struct KeptPixels {
   std::vector<bool> kept;  ///< per pixel, row-major: true if steps 1 to 4 keep it
   PixelCounts counts;      ///< pixels, masked, saturated, dark, bright and kept filled
 };
+
+/// Which pixels the rules keep (steps 1 to 4), row-major, with the counts of those steps: the
+/// pixels every method of an image sees, the gamut methods and the statistics alike.
+/// \throws std::invalid_argument as image_colours.
 KeptPixels kept_pixels(const RgbImage& image, const PixelRules& rules);
 
 /// Apply the rules to `image`.
@@ -124,19 +126,23 @@ struct FloatRgbImage {
   std::vector<double> samples;  ///< width · height · 3
 };
 
-/// The pixel rules of a floating-point image: `keep` (steps 1), saturation (2) and black level
-/// (3) as for integer images; no binning, and always ColourSet::hull (the colours are
-/// (x, y, 1) for the hull's vertices, counter-clockwise).
+/// The pixel rules of a floating-point image: `keep` (step 1), saturation (2), black level (3)
+/// and dark and bright pixels (4) as for integer images, compared exactly; no binning.
 struct FloatPixelRules {
   double black_level = 0;            ///< subtracted from every channel (>= 0, finite)
   std::optional<double> saturation;  ///< drop pixels with a raw channel >= this
   std::vector<bool> keep;            ///< per pixel (row-major), false to exclude; empty for none
+  std::optional<double> dark_below;  ///< step 4: drop a pixel with a channel below this
+  std::optional<Rational> dark_below_fraction;    ///< step 4, as PixelRules
+  std::optional<Rational> bright_above_fraction;  ///< step 4, as PixelRules
+  ColourSet colour_set = ColourSet::hull;  ///< step 6 (the default: chromaticity lifts)
 };
 
 /// Apply the rules to a floating-point image, exactly: each v − black_level must be exact in
 /// double (it is for float32 data and whenever v <= 2·black_level; Sterbenz), checked by an
 /// error-free transformation (Knuth's TwoSum), so the hull is that of the exact differences;
-/// a channel at or below the black level becomes 0. The hull is chromaticity_hull's (exact).
+/// a channel at or below the black level becomes 0. Step 4 compares each channel with f·M in ℚ.
+/// The chromaticity hull is chromaticity_hull's, the 3-D hull colour_hull_vertices' (exact).
 /// counts.colours is the number of distinct kept colours.
 /// \throws std::invalid_argument naming the pixel (row, column) and channel for a NaN, an
 ///         infinity or a negative sample, a subtraction that is not exact, a black level or

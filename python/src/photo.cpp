@@ -1,0 +1,338 @@
+/// \file photo.cpp
+/// gmcc._core's whole-image gamut mapping (gmcc/photo/; docs/photographs.md): 3-D canonical gamuts
+/// prepared once, 3-D gamut mapping on an image with every 3-D rule, and the canonical gamuts
+/// learned image by image. Conversions only; the work is the library's, with the GIL released.
+
+#include "photo.h"
+
+#include "convert.h"
+#include "pixels.h"
+#include "results.h"
+
+#include <gmcc/photo/estimate_3d.h>
+#include <gmcc/photo/learn_canonical.h>
+
+#include <pybind11/stl.h>
+
+#include <memory>
+
+namespace gmcc::python {
+namespace {
+
+// A library call with the GIL released (its exceptions propagate once the GIL is back).
+template <class F>
+auto released(F f) {
+  py::gil_scoped_release nogil;
+  return f();
+}
+
+// gmcc.Canonical3: a 3-D canonical gamut prepared once.
+struct Canonical3 {
+  std::shared_ptr<const CanonicalConstraints3> constraints;
+  std::size_t colours = 0;
+  CanonicalBlack black = CanonicalBlack::include;
+};
+
+// One 3-D rule's answer on an image, with its error against the truth when one was given.
+struct PySelection3 {
+  ImageSelection3 s;
+  std::string rule;
+  std::optional<double> recovery_error_deg;
+};
+
+// gmcc.Estimate3: F3 of one image and the rules' answers.
+struct PyEstimate3 {
+  ConvexSet3 feasible;
+  std::optional<PySelection3> max_volume, centroid, max_trace;
+  std::optional<PixelCounts> pixels;
+  std::size_t colours = 0;
+};
+
+CanonicalBlack black_from(const std::string& black) {
+  if (black == "include") return CanonicalBlack::include;
+  if (black == "exclude") return CanonicalBlack::exclude;
+  throw py::value_error("black: " + quoted_text(black) + " is not one of include, exclude");
+}
+
+// The pixel colours of `x`: an ImageColours of pixel colours, an H×W×3 image through the pixel
+// rules (colour set hull-3d unless asked otherwise), or colours (n×3). Lifts are refused.
+std::vector<Colour> pixel_colours_of(py::handle x, PixelArgs args, const char* what,
+                                     std::optional<PixelCounts>* counts = nullptr) {
+  if (py::isinstance<PyImageColours>(x)) {
+    const PyImageColours& c = x.cast<const PyImageColours&>();
+    require_pixel_colours(c, what);
+    if (counts) *counts = c.counts;
+    return c.colours;
+  }
+  if (is_image(x)) {
+    if (args.colour_set == "hull")
+      throw py::value_error(std::string(what) + ": colour_set 'hull' gives chromaticity lifts, not pixel colours; "
+                            "use 'hull-3d' or 'distinct'");
+    PyImageColours c = image_colours_of(x, args);
+    if (c.colours.empty()) throw py::value_error(std::string(what) + ": no usable pixel");
+    if (counts) *counts = c.counts;
+    return std::move(c.colours);
+  }
+  if (!args.plain())
+    throw py::value_error("mask, black_level, saturation and the dark and bright rules apply to an image of shape "
+                          "(H, W, 3), not to colours");
+  return colours_from(x, what);
+}
+
+Colour positive_light(py::handle x, const char* what) {
+  const Colour e = light_from(x, what);
+  if (sgn(e.r) <= 0 || sgn(e.g) <= 0 || sgn(e.b) <= 0)
+    throw py::value_error(std::string(what) + ": every channel must be > 0");
+  return e;
+}
+
+PixelArgs pixel_args(py::object mask, py::object black_level, py::object saturation, py::object dark,
+                     py::object dark_fraction, py::object bright_fraction, std::string pixel_rule,
+                     std::string colour_set) {
+  return {std::move(mask), std::move(black_level), std::move(saturation), std::move(dark), std::move(dark_fraction),
+          std::move(bright_fraction), std::move(pixel_rule), std::move(colour_set)};
+}
+
+#define GMCC_PIXEL_ARGS                                                                               \
+  py::arg("mask") = py::none(), py::arg("black_level") = 0, py::arg("saturation") = py::none(),       \
+  py::arg("dark") = 0, py::arg("dark_fraction") = py::none(), py::arg("bright_fraction") = py::none(), \
+  py::arg("pixel_rule") = "none", py::arg("colour_set") = "hull-3d"
+
+void bind_classes(py::module_& m) {
+  py::class_<Canonical3>(m, "Canonical3",
+                         "A 3-D canonical gamut G_c3 prepared once (feasible_set_3d.h CanonicalConstraints3): its "
+                         "exact half-spaces, for many images.")
+      .def_property_readonly("dimension", [](const Canonical3& c) { return c.constraints->dimension(); },
+                             "The dimension of G_c3's affine hull, 0 to 3.")
+      .def_property_readonly("half_spaces", [](const Canonical3& c) { return c.constraints->half_spaces(); },
+                             "How many half-spaces describe G_c3 (its facets when 3-dimensional).")
+      .def_property_readonly("colours", [](const Canonical3& c) { return c.colours; },
+                             "How many colours it was prepared from.")
+      .def_property_readonly("black", [](const Canonical3& c) {
+        return c.black == CanonicalBlack::include ? "include" : "exclude";
+      })
+      .def("__repr__", [](const Canonical3& c) {
+        return "Canonical3(" + std::to_string(c.colours) + " colours, " + std::to_string(c.constraints->half_spaces()) +
+               " half-spaces, black " + (c.black == CanonicalBlack::include ? "included" : "excluded") + ")";
+      });
+
+  py::class_<PySelection3>(m, "ImageSelection3",
+                           "One 3-D rule's answer on an image (estimate_3d.h): the map d, its worst case in F3, "
+                           "the light c ⊘ d it implies and, with a truth, the recovery error.")
+      .def_property_readonly("rule", [](const PySelection3& s) { return s.rule; })
+      .def_property_readonly("method", [](const PySelection3& s) { return s.s.selection.estimate.method; },
+                             "`exact` (rational) or `certified` (a double with a rigorous bound).")
+      .def_property_readonly("map", [](const PySelection3& s) {
+        const auto& d = s.s.selection.estimate.map;
+        return py::make_tuple(d[0], d[1], d[2]);
+      }, "The map (d1, d2, d3) as doubles.")
+      .def_property_readonly("exact", [](const PySelection3& s) -> py::object {
+        const auto& e = s.s.selection.estimate.exact;
+        return e ? point3_tuple(*e) : py::object(py::none());
+      }, "The exact map where it is rational, else None.")
+      .def_property_readonly("error_bound", [](const PySelection3& s) { return s.s.selection.estimate.error_bound; })
+      .def_property_readonly("worst_case_deg", [](const PySelection3& s) { return optional_double(s.s.selection.worst_case_deg); },
+                             "The largest angle from the map to a map of F3, degrees.")
+      .def_property_readonly("light", [](const PySelection3& s) -> py::object {
+        if (!s.s.light) return py::none();
+        return py::make_tuple((*s.s.light)[0], (*s.s.light)[1], (*s.s.light)[2]);
+      }, "The light c ⊘ d with unit length; None when a component of d is 0.")
+      .def_property_readonly("recovery_error_deg", [](const PySelection3& s) { return optional_double(s.recovery_error_deg); },
+                             "With a truth: the angle between the light and the true light, degrees.")
+      .def("__repr__", [](const PySelection3& s) {
+        const auto& d = s.s.selection.estimate.map;
+        return "ImageSelection3(" + s.rule + " (" + g10(d[0]) + ", " + g10(d[1]) + ", " + g10(d[2]) + "))";
+      });
+
+  py::class_<PyEstimate3>(m, "Estimate3", "3-D gamut mapping on one image: F3 and the rules' answers.")
+      .def_readonly("feasible_set", &PyEstimate3::feasible)
+      .def_property_readonly("kind", [](const PyEstimate3& e) { return to_string(e.feasible.kind); })
+      .def_readonly("max_volume", &PyEstimate3::max_volume)
+      .def_readonly("centroid", &PyEstimate3::centroid)
+      .def_readonly("max_trace", &PyEstimate3::max_trace)
+      .def_property_readonly("selections", [](const PyEstimate3& e) {
+        py::dict d;
+        d["max_volume"] = py::cast(e.max_volume);
+        d["centroid"] = py::cast(e.centroid);
+        d["max_trace"] = py::cast(e.max_trace);
+        return d;
+      })
+      .def_property_readonly("colours", [](const PyEstimate3& e) { return e.colours; },
+                             "How many image colours went in (after the pixel rules).")
+      .def_property_readonly("pixels", [](const PyEstimate3& e) -> py::object {
+        if (!e.pixels) return py::none();
+        py::dict d;
+        const PixelCounts& c = *e.pixels;
+        d["pixels"] = c.pixels; d["masked"] = c.masked; d["saturated"] = c.saturated; d["dark"] = c.dark;
+        d["bright"] = c.bright; d["kept"] = c.kept; d["colours"] = c.colours; d["hull_vertices"] = c.hull_vertices;
+        return py::object(std::move(d));
+      }, "For an image: what the pixel rules did (dict of counts), else None.")
+      .def("__repr__", [](const PyEstimate3& e) {
+        return "Estimate3(" + to_string(e.feasible.kind) + ", " + std::to_string(e.feasible.vertices.size()) + " vertices)";
+      });
+}
+
+void bind_functions(py::module_& m) {
+  m.def(
+      "prepare_canonical_3d",
+      [](py::handle canonical, const std::string& black) {
+        const CanonicalBlack b = black_from(black);
+        const std::vector<Colour> c = pixel_colours_of(canonical, {}, "canonical");
+        Canonical3 out;
+        out.colours = c.size();
+        out.black = b;
+        try {
+          out.constraints = released([&] { return std::make_shared<const CanonicalConstraints3>(c, b); });
+        } catch (const std::invalid_argument& e) {
+          throw py::value_error(std::string("canonical: ") + e.what());
+        }
+        return out;
+      },
+      py::arg("canonical"), py::kw_only(), py::arg("black") = "include",
+      "CanonicalConstraints3 (feasible_set_3d.h). Public: gmcc.prepare_canonical_3d.");
+
+  m.def(
+      "estimate_3d",
+      [](const Canonical3& canonical, py::handle image, py::handle truth, py::object rules, const std::string& centroid,
+         py::handle canonical_illuminant, py::object mask, py::object black_level, py::object saturation,
+         py::object dark, py::object dark_fraction, py::object bright_fraction, const std::string& pixel_rule,
+         const std::string& colour_set) {
+        PyEstimate3 out;
+        const std::vector<Colour> colours = pixel_colours_of(
+            image, pixel_args(mask, black_level, saturation, dark, dark_fraction, bright_fraction, pixel_rule, colour_set),
+            "image", &out.pixels);
+        out.colours = colours.size();
+        Estimate3Options o;
+        o.canonical_light = positive_light(canonical_illuminant, "canonical_illuminant");
+        if (centroid != "certified" && centroid != "exact")
+          throw py::value_error("centroid: " + quoted_text(centroid) + " is not one of certified, exact");
+        o.route = centroid == "exact" ? Crule3dRoute::exact : Crule3dRoute::certified;
+        if (!rules.is_none()) {
+          o.rules.clear();
+          for (py::handle r : rules) {
+            try {
+              o.rules.push_back(rule_3_from_string(py::str(r)));
+            } catch (const std::invalid_argument& e) {
+              throw py::value_error(std::string("rules: ") + e.what());
+            }
+          }
+        }
+        std::optional<Colour> t;
+        if (!truth.is_none()) t = positive_light(truth, "truth");
+        ImageColours ic;
+        ic.colours = colours;
+        ic.set = ColourSet::distinct;
+        ImageEstimate3 r;
+        try {
+          r = released([&] { return estimate_3d(*canonical.constraints, ic, o); });
+        } catch (const std::invalid_argument& e) {
+          throw py::value_error(std::string("image: ") + e.what());
+        } catch (const std::domain_error& e) {
+          throw py::value_error(std::string("image: ") + e.what());
+        }
+        out.feasible = std::move(r.feasible);
+        auto wrap = [&](std::optional<ImageSelection3>& s, Rule3 rule) -> std::optional<PySelection3> {
+          if (!s) return std::nullopt;
+          PySelection3 p{std::move(*s), to_string(rule), std::nullopt};
+          if (t && p.s.light) p.recovery_error_deg = recovery_angular_error_deg(*p.s.light, *t);
+          return p;
+        };
+        out.max_volume = wrap(r.max_volume, Rule3::max_volume);
+        out.centroid = wrap(r.centroid, Rule3::centroid);
+        out.max_trace = wrap(r.max_trace, Rule3::max_trace);
+        return out;
+      },
+      py::arg("canonical"), py::arg("image"), py::arg("truth") = py::none(), py::kw_only(), py::arg("rules") = py::none(),
+      py::arg("centroid") = "certified", py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1), GMCC_PIXEL_ARGS,
+      "estimate_3d (estimate_3d.h). Public: gmcc.estimate_3d.");
+
+  py::class_<CanonicalLearner3>(m, "CanonicalLearner3",
+                                "A 3-D canonical gamut learned image by image (learn_canonical.h).")
+      .def(py::init([](const std::string& intensity) {
+             try {
+               return CanonicalLearner3(canonical_intensity_from_string(intensity));
+             } catch (const std::invalid_argument& e) {
+               throw py::value_error(std::string("intensity: ") + e.what());
+             }
+           }),
+           py::kw_only(), py::arg("intensity") = "max")
+      .def(
+          "add",
+          [](CanonicalLearner3& l, py::handle image, py::handle light, py::object mask, py::object black_level,
+             py::object saturation, py::object dark, py::object dark_fraction, py::object bright_fraction,
+             const std::string& pixel_rule, const std::string& colour_set) {
+            const Colour e = positive_light(light, "light");
+            const std::vector<Colour> c = pixel_colours_of(
+                image, pixel_args(mask, black_level, saturation, dark, dark_fraction, bright_fraction, pixel_rule, colour_set),
+                "image");
+            released([&] {
+              l.add(c, e);
+              return 0;
+            });
+          },
+          py::arg("image"), py::arg("light"), py::kw_only(), GMCC_PIXEL_ARGS,
+          "Add one image (H×W×3 through the pixel rules, an ImageColours of pixel colours, or colours) and its light.")
+      .def("gamut", [](const CanonicalLearner3& l) {
+             const std::vector<Colour> g = released([&] { return l.gamut(); });
+             py::list out;
+             for (const Colour& c : g) out.append(colour_tuple(c));
+             return out;
+           }, "The learned gamut's vertices, exact (Fraction triples), sorted.")
+      .def("gamut_float", [](const CanonicalLearner3& l) { return colours_array(l.gamut()); },
+           "The learned gamut's vertices as the nearest doubles, shape (n, 3).")
+      .def("prepare", [](const CanonicalLearner3& l, const std::string& black) {
+             Canonical3 out;
+             out.black = black_from(black);
+             const std::vector<Colour> g = l.gamut();
+             if (g.empty()) throw py::value_error("prepare: no colour has been added");
+             out.colours = g.size();
+             out.constraints = released([&] { return std::make_shared<const CanonicalConstraints3>(g, out.black); });
+             return out;
+           }, py::kw_only(), py::arg("black") = "include", "The learned gamut prepared: a Canonical3.")
+      .def_property_readonly("images", &CanonicalLearner3::images)
+      .def_property_readonly("contributing", &CanonicalLearner3::contributing);
+
+  py::class_<CanonicalLearner2>(m, "CanonicalLearner2",
+                                "A 2-D (perspective) canonical gamut learned image by image (learn_canonical.h).")
+      .def(py::init<>())
+      .def(
+          "add",
+          [](CanonicalLearner2& l, py::handle image, py::handle light, py::object mask, py::object black_level,
+             py::object saturation, py::object dark, py::object dark_fraction, py::object bright_fraction,
+             const std::string& pixel_rule) {
+            const Colour e = positive_light(light, "light");
+            std::vector<Colour> c;
+            if (py::isinstance<PyImageColours>(image)) {
+              c = image.cast<const PyImageColours&>().colours;  // lifts or pixel colours: both have chromaticities
+            } else if (is_image(image)) {
+              c = image_colours_of(image, pixel_args(mask, black_level, saturation, dark, dark_fraction, bright_fraction,
+                                                     pixel_rule, "hull")).colours;
+            } else {
+              c = colours_from(image, "image");
+            }
+            released([&] {
+              l.add(c, e);
+              return 0;
+            });
+          },
+          py::arg("image"), py::arg("light"), py::kw_only(), py::arg("mask") = py::none(), py::arg("black_level") = 0,
+          py::arg("saturation") = py::none(), py::arg("dark") = 0, py::arg("dark_fraction") = py::none(),
+          py::arg("bright_fraction") = py::none(), py::arg("pixel_rule") = "none",
+          "Add one image (or its colours) and its light.")
+      .def("gamut", [](const CanonicalLearner2& l) {
+             py::list out;
+             for (const Point2& p : l.gamut()) out.append(py::make_tuple(to_fraction(p.x), to_fraction(p.y), 1));
+             return out;
+           }, "The learned gamut as chromaticity lifts (x, y, 1), exact, counter-clockwise: a canonical gamut for "
+              "gmcc.prepare_canonical.")
+      .def_property_readonly("images", &CanonicalLearner2::images);
+}
+
+}  // namespace
+
+void bind_photo(py::module_& m) {
+  bind_classes(m);
+  bind_functions(m);
+}
+
+}  // namespace gmcc::python
