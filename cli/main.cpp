@@ -3,6 +3,7 @@
 // 3 a resource limit reached (--time-limit, --memory-limit, memory exhausted); a signal ends
 // the run with its default action, temporary files removed (docs/cli.md).
 #include "accuracy.h"
+#include "benchmark.h"
 #include "canonical.h"
 #include "estimate.h"
 #include "exit_cleanup.h"
@@ -99,7 +100,8 @@ int main(int argc, char** argv) {
   const std::vector<Command> commands{
       command(app, add_select_command, plain(run_select)), command(app, add_accuracy_command, plain(run_accuracy)),
       command(app, add_reproduce_command, run_reproduce), command(app, add_estimate_command, plain(run_estimate)),
-      command(app, add_merge_command, plain(run_merge)), command(app, add_canonical_command, plain(run_canonical))};
+      command(app, add_merge_command, plain(run_merge)), command(app, add_canonical_command, plain(run_canonical)),
+      command(app, add_benchmark_command, plain(run_benchmark_command))};
   CLI::App* cite = app.add_subcommand(
       "cite", "print a BibTeX entry for this build of gmcc (version, git commit, commit date) "
               "and the paper it implements (docs/cli.md \"Provenance\")");

@@ -5,6 +5,7 @@
 #include <gmcc/input/build_info.h>
 #include <gmcc/input/file_digest.h>
 
+#include <algorithm>
 #include <set>
 
 namespace gmcc::cli {
@@ -76,7 +77,7 @@ void record_command(const CLI::App& app) {
   recorded() = std::move(c);
 }
 
-Json provenance_json() {
+Json provenance_json(bool inputs_by_path) {
   Json p;
   p["software"] = "gmcc";
   p["version"] = std::string(gmcc_version());
@@ -84,14 +85,18 @@ Json provenance_json() {
   p["command"] = recorded().name;
   p["options"] = recorded().options;
   Json inputs = Json::array();
-  for (const FileDigest& f : files_read())
+  std::vector<FileDigest> files = files_read();
+  if (inputs_by_path)
+    std::stable_sort(files.begin(), files.end(),
+                     [](const FileDigest& a, const FileDigest& b) { return a.path < b.path; });
+  for (const FileDigest& f : files)
     inputs.push_back(Json{{"path", f.path}, {"bytes", f.bytes}, {"sha256", f.sha256}});
   p["inputs"] = std::move(inputs);
   return p;
 }
 
-std::string provenance_csv_line() {
-  return "# gmcc-provenance: " + provenance_json().dump() + "\n";
+std::string provenance_csv_line(bool inputs_by_path) {
+  return "# gmcc-provenance: " + provenance_json(inputs_by_path).dump() + "\n";
 }
 
 std::string version_line() {

@@ -17,13 +17,14 @@ namespace gmcc::cli {
 void record_command(const CLI::App& app);
 
 /// The record: {"software", "version", "commit", "command", "options",
-/// "inputs"}, inputs being the files read so far.
-nlohmann::ordered_json provenance_json();
+/// "inputs"}, inputs being the files read so far, in the order read, or sorted by path when
+/// `inputs_by_path` (a run that reads its inputs in parallel: the same record every run).
+nlohmann::ordered_json provenance_json(bool inputs_by_path = false);
 
 /// The record as one CSV comment line, "# gmcc-provenance: {compact JSON}\n",
 /// for the top of a CSV file (gmcc's readers, and pandas with comment='#', skip
 /// it).
-std::string provenance_csv_line();
+std::string provenance_csv_line(bool inputs_by_path = false);
 
 /// "gmcc 0.2.0 (commit <hash>, <date>)".
 std::string version_line();

@@ -13,6 +13,7 @@
 
 #include <CGAL/Convex_hull_3/dual/halfspace_intersection_3.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
@@ -369,7 +370,26 @@ std::vector<HalfSpace3> hull_half_spaces_3(const std::vector<Point3>& points) {
   return hull_half_spaces(points);
 }
 
-std::vector<Point3> extreme_points_3(const std::vector<Point3>& points) { return extreme_points(points); }
+// Points whose coordinates are all doubles exactly (integer pixel colours, samples read as
+// doubles) have their hull's vertices found with Epick: its predicates are exact on double input
+// (filtered, with an exact fallback), and extreme points need predicates only — the same vertices
+// as Epeck's hull at a small part of its cost. Others take Epeck.
+std::vector<Point3> extreme_points_3(const std::vector<Point3>& points) {
+  using Fast = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::vector<Fast::Point_3> fast;
+  fast.reserve(points.size());
+  for (const Point3& p : points) {
+    const double x = p.x.get_d(), y = p.y.get_d(), z = p.z.get_d();
+    if (Rational(x) != p.x || Rational(y) != p.y || Rational(z) != p.z) return extreme_points(points);
+    fast.emplace_back(x, y, z);
+  }
+  if (affine_frame(points).size() < 4) return points;
+  std::vector<Fast::Point_3> extreme;
+  CGAL::extreme_points_3(fast, std::back_inserter(extreme));
+  std::vector<Point3> out;
+  for (const Fast::Point_3& q : extreme) out.push_back({Rational(q.x()), Rational(q.y()), Rational(q.z())});
+  return sorted_unique(out);
+}
 
 ConvexSet3 feasible_set_3d_lp(const std::vector<HalfSpace3>& canonical, const Point3& canonical_max,
                               const std::vector<Point3>& image) {

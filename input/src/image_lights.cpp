@@ -15,6 +15,7 @@ std::map<std::string, Colour> read_image_lights(const std::string& path) {
       read_text_file(path, {std::size_t(64) << 20, "truth file", "text lines image,r,g,b"});
   std::map<std::string, Colour> lights;
   std::string_view rest(text);
+  if (rest.substr(0, 3) == "\xEF\xBB\xBF") rest.remove_prefix(3);  // UTF-8 byte-order mark
   bool header = false;
   for (std::size_t number = 1; !rest.empty(); ++number) {
     const auto end = rest.find('\n');

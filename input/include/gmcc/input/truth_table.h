@@ -1,0 +1,47 @@
+#pragma once
+/// \file truth_table.h
+/// A dataset's truth table (docs/photographs.md §6, `gmcc benchmark --truths`): one line per
+/// image, in the dataset's order, with its measured light and, optionally, its own pixel rules.
+///
+///   image,r,g,b[,black_level][,saturation][,mask][,chart]
+///
+/// `image` is the file's path relative to the image folder; r, g, b the light (read exactly,
+/// > 0); the optional columns, named in the header in any order after b: `black_level` and
+/// `saturation` (integers 0 to 65535, empty for the run's), `mask` (a mask image's path relative
+/// to the image folder, 0 excluded) and `chart` (a polygon to exclude, "x1 y1 x2 y2 x3 y3 …" in
+/// pixel coordinates, read exactly). Blank lines and `#` lines are skipped; a UTF-8 byte-order
+/// mark and CRLF line ends are accepted.
+
+#include <gmcc/geometry/colour.h>
+#include <gmcc/geometry/point.h>
+#include <gmcc/input/input_error.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gmcc {
+
+/// One image's line.
+struct TruthRow {
+  std::string image;  ///< the image's path relative to the image folder
+  Colour light;       ///< its measured light, every channel > 0
+  std::optional<std::uint32_t> black_level, saturation;  ///< its own, when given
+  std::string mask;            ///< a mask image (relative path), empty for none
+  std::vector<Point2> chart;   ///< a polygon to exclude, empty for none
+  std::size_t line = 0;        ///< the 1-based line it came from
+};
+
+/// Read a truth table. \throws InputError naming the file and line: a header without image,r,g,b
+/// first or with an unknown or repeated column, a wrong number of fields, a bad number, a light
+/// channel <= 0, an image listed twice, a chart of fewer than 3 points, no image at all.
+std::vector<TruthRow> read_truth_table(const std::string& path);
+
+/// Read a folds file `image,fold` (fold an integer >= 0) as a map from image to fold.
+/// \throws InputError naming the file and line.
+std::map<std::string, int> read_folds_file(const std::string& path);
+
+}  // namespace gmcc

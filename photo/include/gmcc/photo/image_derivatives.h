@@ -1,0 +1,44 @@
+#pragma once
+/// \file image_derivatives.h
+/// Gaussian derivatives of a linear image, channel by channel (the scale-space derivatives of
+/// van de Weijer, Gevers & Gijsenij 2007 §3 and Gijsenij, Gevers & van de Weijer 2010 §4):
+/// f_σ = f ⊗ G_σ and its 1st- and 2nd-order derivatives, computed in IEEE double with a fixed
+/// order of operations (the same bytes on every run and platform with IEEE arithmetic). A
+/// derivative is linear in the image, so a diagonal map d acts on it as on the image: the
+/// derivative of d ⊙ f is d ⊙ (the derivative of f), which is what lets the gamut and grey-edge
+/// methods use them (docs/photographs.md §5).
+
+#include <gmcc/input/image_file.h>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace gmcc {
+
+/// An image of three double channels, row-major: width · height · 3 samples.
+struct DoubleImage {
+  std::size_t width = 0, height = 0;  ///< size in pixels
+  std::vector<double> samples;        ///< width · height · 3, r, g, b per pixel
+  /// Channel c at pixel index i = y · width + x. No bounds check.
+  double at(std::size_t i, int c) const { return samples[3 * i + static_cast<std::size_t>(c)]; }
+};
+
+/// The image minus its black level (clamped at 0), as doubles. O(pixels).
+DoubleImage linear_image(const RgbImage& image, std::uint32_t black_level);
+
+/// Which derivative structure: the smoothed image (order 0), the gradient magnitude per channel
+/// sqrt(f_x² + f_y²) (order 1), or the 2nd-order magnitude sqrt(f_xx² + 4 f_xy² + f_yy²)
+/// (order 2; van de Weijer et al. 2007 eq. 9).
+enum class DerivativeOrder { zero = 0, first = 1, second = 2 };
+
+/// Gaussian derivatives of every channel at scale σ: the kernel G_σ sampled at the integers of
+/// [−⌈3σ⌉, ⌈3σ⌉] and normalised to sum 1; the 1st-order kernel −x/σ²·G_σ(x) normalised so that
+/// Σ x·k(x) = −1 (a ramp's slope exactly), the 2nd-order (x²/σ⁴ − 1/σ²)·G_σ(x) with its mean
+/// removed and normalised so that Σ x²/2·k(x) = 1; separable, the image's edge replicated.
+/// σ = 0 with order 0 returns the image itself; order 1 or 2 needs σ > 0.
+/// \returns per pixel and channel: f_σ (order 0), or the magnitudes above (orders 1, 2), >= 0.
+/// \throws std::invalid_argument for σ < 0, σ > 64, not finite, or 0 with order 1 or 2.
+DoubleImage gaussian_derivative(const DoubleImage& image, double sigma, DerivativeOrder order);
+
+}  // namespace gmcc

@@ -1,0 +1,120 @@
+#pragma once
+/// \file benchmark.h
+/// A colour-constancy dataset benchmark (docs/photographs.md §6 "The benchmark"): every image
+/// estimated by a canonical gamut learned only from the images of the other cross-validation
+/// folds, by every gamut-mapping method (3-D pixel gamut mapping with max-trace, max-volume and
+/// centroid; the 2-D perspective route with max-area, 2-D mean and 3-D mean) and by the field's
+/// statistical baselines (grey world, white patch, shades of grey, 1st- and 2nd-order grey edge,
+/// grey_edge.h), all on exactly the pixels the pixel rules keep; the recovery angular error
+/// against the measured light, and the statistics papers report (Hordley & Finlayson 2006:
+/// mean, median, trimean, best and worst 25%). Every estimate of a gamut method comes with its
+/// feasible set, so the benchmark also says how often the true light lies in it and how well the
+/// certified worst case predicts the error.
+
+#include <gmcc/geometry/colour.h>
+#include <gmcc/geometry/feasible_set_3d.h>
+#include <gmcc/input/image_pixels.h>
+#include <gmcc/photo/learn_canonical.h>
+#include <gmcc/validation/error_statistics.h>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gmcc {
+
+/// One image of a dataset: its file, measured light, fold and any per-image pixel rules.
+struct BenchmarkImage {
+  std::string name;  ///< as the truth file names it (reports use it)
+  std::string path;  ///< the PNG or TIFF to read
+  Colour light;      ///< the measured light, every channel > 0
+  int fold = 0;      ///< its cross-validation fold, >= 0
+  /// Per-image pixel rules replacing the run's (a dataset's black level or saturation per camera
+  /// or image; a chart polygon; a mask image of the same size, 0 excluded).
+  ///@{
+  std::optional<std::uint32_t> black_level, saturation;
+  std::vector<std::vector<Point2>> exclude_polygons;
+  std::string mask_path;
+  ///@}
+};
+
+/// The methods, by name: `gm3d-max-trace`, `gm3d-max-volume`, `gm3d-centroid`, `gm2d-max-area`,
+/// `gm2d-mean-2d`, `gm2d-mean-3d`, `grey-world`, `white-patch`, `shades-of-grey`,
+/// `grey-edge-1`, `grey-edge-2`, in that order.
+const std::vector<std::string>& benchmark_methods();
+
+/// How the benchmark runs.
+struct BenchmarkOptions {
+  std::vector<std::string> methods = benchmark_methods();  ///< a subset, in any order
+  PixelRules pixels;  ///< the run's pixel rules (colour_set and bin are set per method)
+  CanonicalIntensity intensity = CanonicalIntensity::max;  ///< 3-D learning (learn_canonical.h)
+  CanonicalBlack black = CanonicalBlack::include;          ///< 3-D canonical gamut with black
+  unsigned threads = 0;  ///< worker threads; 0: the machine's cores
+  /// Called from the calling thread now and then: images done, images in all.
+  std::function<void(std::size_t, std::size_t)> progress;
+};
+
+/// One image under one method.
+struct BenchmarkRecord {
+  std::size_t image = 0;  ///< index into the images given
+  std::string method;
+  /// The light estimated, unit length: the method's own, or grey world's when it gave none
+  /// (`fallback`); absent when neither gave one.
+  std::optional<std::array<double, 3>> light;
+  std::optional<double> error_deg;  ///< recovery angular error against the measured light
+  bool answered = false;            ///< the method itself gave the light
+  std::string fallback;             ///< "grey_world" when the light is grey world's, else empty
+  /// Gamut methods: the feasible set's kind and vertex count; whether the true light's map lies
+  /// in it (exactly; 3-D: some positive multiple, via its perspective image); the rule's worst
+  /// case (2-D: illuminant space; 3-D: map space), degrees.
+  ///@{
+  std::string feasible_kind;
+  std::size_t feasible_vertices = 0;
+  std::optional<bool> truth_in_feasible;
+  std::optional<double> worst_case_deg;
+  ///@}
+};
+
+/// One method over the dataset.
+struct BenchmarkSummary {
+  std::string method;
+  std::size_t images = 0;    ///< estimated (every image of the dataset)
+  std::size_t answered = 0;  ///< answered by the method itself
+  std::size_t empty = 0;     ///< gamut methods: F empty, or no positive map (then grey world)
+  ErrorStatistics errors;    ///< over every image with a light (answered or fallback)
+  /// Gamut methods: images whose true light lies in F, of those with an answer; the share of
+  /// answered images whose error is at most the worst case; the Spearman rank correlation of
+  /// worst case and error over them (absent with fewer than 3).
+  ///@{
+  std::size_t truth_in_feasible = 0;
+  std::optional<double> worst_case_covers, worst_case_correlation;
+  ///@}
+};
+
+/// The whole run: records image-major (every method of image 0, then image 1, …) and one summary
+/// per method, in the order asked.
+struct BenchmarkResult {
+  std::vector<BenchmarkRecord> records;
+  std::vector<BenchmarkSummary> summaries;
+};
+
+/// Run the benchmark. Images are read and reduced to what the methods need (the pixel colours
+/// on their 3-D hull, the chromaticity lifts of their 2-D hull, the baselines' estimates) in
+/// parallel, a few at a time; per fold, the canonical gamuts are learned from the other folds'
+/// reduced images and the fold's images estimated in parallel. Deterministic: the same inputs
+/// give the same records whatever the threads.
+/// \throws InputError (a file: unreadable, not an image, a mask of the wrong size, no usable
+///         pixel); std::invalid_argument (an unknown method, no image, a fold with no training
+///         image).
+BenchmarkResult run_benchmark(const std::vector<BenchmarkImage>& images, const BenchmarkOptions& options);
+
+/// The summaries of some records (of `methods`, over `images` images): what run_benchmark
+/// reports, recomputed from records (merged shards, a subset). O(records log records).
+std::vector<BenchmarkSummary> summarise_benchmark(const std::vector<BenchmarkRecord>& records,
+                                                  const std::vector<std::string>& methods);
+
+}  // namespace gmcc

@@ -1,0 +1,370 @@
+#include <gmcc/validation/benchmark.h>
+
+#include <gmcc/geometry/perspective_image.h>
+#include <gmcc/input/image_file.h>
+#include <gmcc/input/input_error.h>
+#include <gmcc/photo/estimate_3d.h>
+#include <gmcc/photo/grey_edge.h>
+#include <gmcc/selection/prepare_canonical.h>
+#include <gmcc/selection/select_scene.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <thread>
+
+namespace gmcc {
+namespace {
+
+const char* const kGm3d[3] = {"gm3d-max-volume", "gm3d-centroid", "gm3d-max-trace"};
+const char* const kGm2d[3] = {"gm2d-max-area", "gm2d-mean-2d", "gm2d-mean-3d"};
+
+// What an image is reduced to: all the methods need of it.
+struct Reduced {
+  std::vector<Colour> hull3;  // pixel colours on their 3-D hull
+  std::vector<Colour> lifts;  // chromaticity lifts of their 2-D hull
+  std::array<std::optional<std::array<double, 3>>, all_baselines.size()> baselines;
+};
+
+// Which families the methods asked for need.
+struct Needs {
+  bool gm3d = false, gm2d = false;
+  std::array<bool, 3> rule3{}, rule2{};
+  std::array<bool, all_baselines.size()> baseline{};
+};
+
+Needs needs_of(const std::vector<std::string>& methods) {
+  Needs n;
+  n.baseline[0] = true;  // grey world: every gamut method's fallback
+  for (const std::string& m : methods) {
+    bool known = false;
+    for (int k = 0; k < 3; ++k) {
+      if (m == kGm3d[k]) n.gm3d = n.rule3[k] = known = true;
+      if (m == kGm2d[k]) n.gm2d = n.rule2[k] = known = true;
+    }
+    for (std::size_t b = 0; b < all_baselines.size() && !known; ++b)
+      if (m == benchmark_methods()[6 + b]) n.baseline[b] = known = true;
+    if (!known) throw std::invalid_argument("unknown benchmark method \"" + m + "\"");
+  }
+  return n;
+}
+
+// The run's pixel rules with the image's own.
+PixelRules rules_of(const BenchmarkImage& im, const PixelRules& run) {
+  PixelRules r = run;
+  if (im.black_level) r.black_level = *im.black_level;
+  if (im.saturation) r.saturation = *im.saturation;
+  r.exclude_polygons.insert(r.exclude_polygons.end(), im.exclude_polygons.begin(), im.exclude_polygons.end());
+  r.bin = 1;
+  return r;
+}
+
+Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs& n) {
+  const RgbImage image = read_image(im.path);
+  PixelRules rules = rules_of(im, o.pixels);
+  if (!im.mask_path.empty()) {
+    const RgbImage mask = read_image(im.mask_path);
+    if (mask.width != image.width || mask.height != image.height)
+      throw InputError(im.mask_path, 0, "the mask is " + std::to_string(mask.width) + "x" +
+                                            std::to_string(mask.height) + ", its image " + im.path + " is " +
+                                            std::to_string(image.width) + "x" + std::to_string(image.height));
+    rules.keep.resize(image.width * image.height);
+    for (std::size_t p = 0; p < rules.keep.size(); ++p)
+      rules.keep[p] = mask.samples[3 * p] || mask.samples[3 * p + 1] || mask.samples[3 * p + 2];
+  }
+  Reduced r;
+  const KeptPixels kept = kept_pixels(image, rules);
+  if (kept.counts.kept == 0)
+    throw InputError(im.path, 0, "no usable pixel after the mask, saturation and dark or bright rules");
+  if (n.gm3d) {
+    rules.colour_set = ColourSet::hull_3d;
+    r.hull3 = image_colours(image, rules).colours;
+  }
+  if (n.gm2d) {
+    rules.colour_set = ColourSet::hull;
+    r.lifts = image_colours(image, rules).colours;
+  }
+  const DoubleImage linear = linear_image(image, rules.black_level);
+  for (std::size_t b = 0; b < all_baselines.size(); ++b)
+    if (n.baseline[b]) r.baselines[b] = grey_edge_estimate(linear, kept.kept, baseline_parameters(all_baselines[b]));
+  return r;
+}
+
+// f(i) for i in [0, n) on `threads` threads; the first exception (by index) rethrown; progress
+// reported from the calling thread.
+void parallel_for(std::size_t n, unsigned threads, const std::function<void(std::size_t)>& f,
+                  const std::function<void(std::size_t)>& progress) {
+  std::atomic<std::size_t> next{0}, done{0};
+  std::vector<std::exception_ptr> errors(n);
+  auto work = [&] {
+    for (std::size_t i; (i = next++) < n;) {
+      try {
+        f(i);
+      } catch (...) {
+        errors[i] = std::current_exception();
+        next = n;  // stop handing out work
+      }
+      ++done;
+    }
+  };
+  const unsigned t = std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(std::max<std::size_t>(n, 1))));
+  std::vector<std::thread> pool;
+  for (unsigned k = 1; k < t; ++k) pool.emplace_back(work);
+  if (progress && t > 1) {
+    while (done < n && next < n) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      progress(done);
+    }
+  }
+  work();
+  for (std::thread& th : pool) th.join();
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+  if (progress) progress(done);
+}
+
+// The perspective map (m1, m2) of the map c ⊘ e that takes light e to the white canonical light.
+Point2 true_perspective_map(const Colour& e) { return {Rational(e.b / e.r), Rational(e.b / e.g)}; }
+
+// Spearman's rank correlation (average ranks for ties); absent below 3 pairs or with no spread.
+std::optional<double> spearman(const std::vector<std::pair<double, double>>& xy) {
+  const std::size_t n = xy.size();
+  if (n < 3) return std::nullopt;
+  auto ranks = [n](std::vector<double> v) {
+    std::vector<std::size_t> idx(n);
+    for (std::size_t i = 0; i < n; ++i) idx[i] = i;
+    std::stable_sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return v[a] < v[b]; });
+    std::vector<double> r(n);
+    for (std::size_t i = 0; i < n;) {
+      std::size_t j = i;
+      while (j + 1 < n && v[idx[j + 1]] == v[idx[i]]) ++j;
+      for (std::size_t k = i; k <= j; ++k) r[idx[k]] = 0.5 * double(i + j) + 1;
+      i = j + 1;
+    }
+    return r;
+  };
+  std::vector<double> x(n), y(n);
+  for (std::size_t i = 0; i < n; ++i) x[i] = xy[i].first, y[i] = xy[i].second;
+  const std::vector<double> rx = ranks(x), ry = ranks(y);
+  double mx = 0, my = 0;
+  for (std::size_t i = 0; i < n; ++i) mx += rx[i], my += ry[i];
+  mx /= double(n), my /= double(n);
+  double sxy = 0, sxx = 0, syy = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    sxy += (rx[i] - mx) * (ry[i] - my);
+    sxx += (rx[i] - mx) * (rx[i] - mx);
+    syy += (ry[i] - my) * (ry[i] - my);
+  }
+  if (sxx == 0 || syy == 0) return std::nullopt;
+  return sxy / std::sqrt(sxx * syy);
+}
+
+}  // namespace
+
+const std::vector<std::string>& benchmark_methods() {
+  static const std::vector<std::string> m = {"gm3d-max-trace", "gm3d-max-volume", "gm3d-centroid", "gm2d-max-area",
+                                             "gm2d-mean-2d",   "gm2d-mean-3d",    "grey-world",    "white-patch",
+                                             "shades-of-grey", "grey-edge-1",     "grey-edge-2"};
+  return m;
+}
+
+BenchmarkResult run_benchmark(const std::vector<BenchmarkImage>& images, const BenchmarkOptions& o) {
+  if (images.empty()) throw std::invalid_argument("the benchmark has no image");
+  const Needs n = needs_of(o.methods);
+  const unsigned threads = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t total = images.size();
+  std::set<int> folds;
+  for (const BenchmarkImage& im : images) {
+    if (im.fold < 0) throw std::invalid_argument("image " + im.name + ": a fold must be >= 0");
+    folds.insert(im.fold);
+  }
+
+  // 1. Every image reduced, in parallel (half of the progress).
+  std::vector<Reduced> reduced(total);
+  auto report = [&](std::size_t base) {
+    return [&o, base, total](std::size_t done) {
+      if (o.progress) o.progress(std::min(total, (base + done) / 2), total);
+    };
+  };
+  parallel_for(total, threads, [&](std::size_t i) { reduced[i] = reduce(images[i], o, n); }, report(0));
+
+  // 2. Per fold: the canonical gamuts from the other folds, then the fold's images.
+  std::vector<std::vector<BenchmarkRecord>> per_image(total);
+  std::size_t estimated = 0;
+  for (int fold : folds) {
+    std::vector<std::size_t> test;
+    CanonicalLearner3 learner3(o.intensity);
+    CanonicalLearner2 learner2;
+    std::size_t training = 0;
+    for (std::size_t i = 0; i < total; ++i) {
+      if (images[i].fold == fold) {
+        test.push_back(i);
+        continue;
+      }
+      ++training;
+      if (n.gm3d) learner3.add(reduced[i].hull3, images[i].light);
+      if (n.gm2d) learner2.add(reduced[i].lifts, images[i].light);
+    }
+    if (training == 0) throw std::invalid_argument("fold " + std::to_string(fold) + " has no training image (one fold only)");
+    std::optional<CanonicalConstraints3> canonical3;
+    if (n.gm3d) canonical3.emplace(learner3.gamut(), o.black);
+    std::optional<PreparedCanonical> canonical2;
+    if (n.gm2d) {
+      std::vector<Colour> lifts;
+      for (const Point2& p : learner2.gamut()) lifts.push_back({p.x, p.y, Rational(1)});
+      canonical2.emplace(prepare_canonical(lifts, SelectSceneOptions{}));
+    }
+    parallel_for(
+        test.size(), threads,
+        [&](std::size_t k) {
+          const std::size_t i = test[k];
+          const Reduced& r = reduced[i];
+          const Colour& e = images[i].light;
+          std::vector<BenchmarkRecord>& out = per_image[i];
+          const std::optional<std::array<double, 3>>& grey = r.baselines[0];
+          auto finish = [&](BenchmarkRecord rec) {
+            rec.image = i;
+            if (!rec.light && grey && !rec.answered) {
+              rec.light = grey;
+              rec.fallback = "grey_world";
+            }
+            if (rec.light) rec.error_deg = recovery_angular_error_deg(*rec.light, e);
+            return rec;
+          };
+          std::map<std::string, BenchmarkRecord> made;
+          if (n.gm3d) {
+            Estimate3Options eo;
+            eo.rules.clear();
+            for (Rule3 rule : all_rules_3)
+              if (n.rule3[static_cast<int>(rule)]) eo.rules.push_back(rule);
+            ImageColours colours;
+            colours.colours = r.hull3;
+            colours.set = ColourSet::hull_3d;
+            std::optional<ImageEstimate3> est;
+            try {
+              est = estimate_3d(*canonical3, colours, eo);
+            } catch (const std::domain_error&) {  // unbounded F3: no estimate
+            }
+            std::optional<bool> in_f;
+            if (est && est->feasible.kind != ConvexKind3::empty) {
+              const std::optional<ConvexSet2> image = perspective_image(est->feasible);
+              in_f = image && contains(*image, true_perspective_map(e));
+            } else if (est) {
+              in_f = false;
+            }
+            for (Rule3 rule : eo.rules) {
+              BenchmarkRecord rec;
+              rec.method = kGm3d[static_cast<int>(rule)];
+              if (est) {
+                rec.feasible_kind = to_string(est->feasible.kind);
+                rec.feasible_vertices = est->feasible.vertices.size();
+                rec.truth_in_feasible = in_f;
+                const std::optional<ImageSelection3>& s = (*est)[rule];
+                if (s && s->light) {
+                  rec.light = s->light;
+                  rec.answered = true;
+                  rec.worst_case_deg = s->selection.worst_case_deg;
+                }
+              }
+              {
+                const std::string name = rec.method;
+                made[name] = finish(std::move(rec));
+              }
+            }
+          }
+          if (n.gm2d) {
+            std::optional<SceneResult> scene;
+            if (!r.lifts.empty()) {
+              try {
+                scene = select_scene(*canonical2, r.lifts, e);
+              } catch (const SceneInputError&) {  // no usable colour, a map beyond range: no estimate
+              }
+            }
+            for (int k2 = 0; k2 < 3; ++k2) {
+              if (!n.rule2[k2]) continue;
+              BenchmarkRecord rec;
+              rec.method = kGm2d[k2];
+              if (scene) {
+                rec.feasible_kind = to_string(scene->feasible.kind);
+                rec.feasible_vertices = scene->feasible.vertices.size();
+                if (scene->truth) rec.truth_in_feasible = scene->truth->in_feasible_set;
+                const std::optional<Selection>& s = k2 == 0 ? scene->selections.max_area
+                                                    : k2 == 1 ? scene->selections.mean_2d
+                                                              : scene->selections.mean_3d;
+                if (s && s->estimate.valid && s->estimate.map[0] > 0 && s->estimate.map[1] > 0) {
+                  // e = c ⊘ (m1, m2, 1), c white: (1/m1, 1/m2, 1), unit length.
+                  const double l[3] = {1 / s->estimate.map[0], 1 / s->estimate.map[1], 1.0};
+                  const double len = std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
+                  rec.light = std::array<double, 3>{l[0] / len, l[1] / len, l[2] / len};
+                  rec.answered = true;
+                  rec.worst_case_deg = s->worst_case_illuminant_deg;
+                }
+              }
+              {
+                const std::string name = rec.method;
+                made[name] = finish(std::move(rec));
+              }
+            }
+          }
+          for (std::size_t b = 0; b < all_baselines.size(); ++b) {
+            const std::string& name = benchmark_methods()[6 + b];
+            if (!n.baseline[b] || std::find(o.methods.begin(), o.methods.end(), name) == o.methods.end()) continue;
+            BenchmarkRecord rec;
+            rec.method = name;
+            rec.light = r.baselines[b];
+            rec.answered = r.baselines[b].has_value();
+            made[name] = finish(std::move(rec));
+          }
+          for (const std::string& m : o.methods) out.push_back(std::move(made.at(m)));
+        },
+        [&](std::size_t done) {
+          if (o.progress) o.progress(std::min(total, (total + estimated + done) / 2), total);
+        });
+    estimated += test.size();
+  }
+  BenchmarkResult result;
+  for (std::vector<BenchmarkRecord>& v : per_image)
+    for (BenchmarkRecord& r : v) result.records.push_back(std::move(r));
+  result.summaries = summarise_benchmark(result.records, o.methods);
+  return result;
+}
+
+std::vector<BenchmarkSummary> summarise_benchmark(const std::vector<BenchmarkRecord>& records,
+                                                  const std::vector<std::string>& methods) {
+  std::vector<BenchmarkSummary> out;
+  for (const std::string& m : methods) {
+    BenchmarkSummary s;
+    s.method = m;
+    std::vector<double> errors;
+    std::vector<std::pair<double, double>> wc;
+    std::size_t covered = 0;
+    bool gamut = false;
+    for (const BenchmarkRecord& r : records) {
+      if (r.method != m) continue;
+      ++s.images;
+      gamut = gamut || !r.feasible_kind.empty();
+      if (r.answered) ++s.answered;
+      if (!r.feasible_kind.empty() && !r.answered) ++s.empty;
+      if (r.error_deg) errors.push_back(*r.error_deg);
+      if (r.truth_in_feasible && *r.truth_in_feasible) ++s.truth_in_feasible;
+      if (r.answered && r.worst_case_deg && r.error_deg) {
+        wc.push_back({*r.worst_case_deg, *r.error_deg});
+        covered += *r.error_deg <= *r.worst_case_deg;
+      }
+    }
+    s.errors = error_statistics(errors);
+    if (gamut && !wc.empty()) {
+      s.worst_case_covers = double(covered) / double(wc.size());
+      s.worst_case_correlation = spearman(wc);
+    }
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+}  // namespace gmcc
