@@ -193,17 +193,12 @@ int run_benchmark_command(const BenchmarkCliOptions& o) {
     for (const char* name : {"--colour-set", "--bin", "--mask"})
       if (o.pixels.command->count(name))
         throw InputError(name, 0, "is set per method by the benchmark (a per-image mask goes in the truth table's mask column)");
-  PixelOptions pixel_options = o.pixels;
-  pixel_options.saturation = o.pixels.saturation;
-  const PixelSettings settings = pixel_settings(pixel_options);
-  if (settings.saturation_max)
-    throw InputError("--saturation", 0,
-                     "max is per image for estimate; the benchmark takes a value or none (or the truth table's "
-                     "saturation column)");
+  const PixelSettings settings = pixel_settings(o.pixels);
   const std::vector<BenchmarkImage> images = dataset(o);
   BenchmarkOptions options;
   if (!o.methods.empty()) options.methods = o.methods;
   options.pixels = settings.rules;
+  options.saturation_max = settings.saturation_max;
   options.intensity = canonical_intensity_from_string(o.intensity);
   options.black = o.black == "exclude" ? CanonicalBlack::exclude : CanonicalBlack::include;
   options.threads = static_cast<unsigned>(integer_option("--threads", o.threads, 0, 1024));

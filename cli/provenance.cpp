@@ -29,7 +29,8 @@ Command& recorded() {
 const std::set<std::string>& not_recorded() {
   static const std::set<std::string> names{
       "--csv",          "--plot", "--scenes-out", "--out",       "--shard", "--time-limit",
-      "--memory-limit", "--help", "--version",    "--corrected", "--json",  "--threads"};
+      "--memory-limit", "--help", "--version",    "--corrected", "--json",  "--threads",
+      "--records",      "--no-progress"};
   return names;
 }
 

@@ -77,6 +77,7 @@ Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs&
     for (std::size_t p = 0; p < rules.keep.size(); ++p)
       rules.keep[p] = mask.samples[3 * p] || mask.samples[3 * p + 1] || mask.samples[3 * p + 2];
   }
+  if (o.saturation_max && !rules.saturation) rules.saturation = (1u << image.bits) - 1;
   Reduced r;
   const KeptPixels kept = kept_pixels(image, rules);
   if (kept.counts.kept == 0)

@@ -51,6 +51,9 @@ const std::vector<std::string>& benchmark_methods();
 struct BenchmarkOptions {
   std::vector<std::string> methods = benchmark_methods();  ///< a subset, in any order
   PixelRules pixels;  ///< the run's pixel rules (colour_set and bin are set per method)
+  /// Without a saturation in `pixels` or the image's own: drop pixels with a channel at the
+  /// file's largest code, 2^bits − 1 (what `gmcc estimate --saturation max` does).
+  bool saturation_max = false;
   CanonicalIntensity intensity = CanonicalIntensity::max;  ///< 3-D learning (learn_canonical.h)
   CanonicalBlack black = CanonicalBlack::include;          ///< 3-D canonical gamut with black
   unsigned threads = 0;  ///< worker threads; 0: the machine's cores

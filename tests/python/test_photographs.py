@@ -1,0 +1,135 @@
+"""Gamut mapping on photographs from Python (docs/photographs.md, docs/python.md "Photographs"):
+the chromaticity-lift trap refused at every 3-D entry; CanonicalLearner3 and estimate_3d recover
+a light exactly where F3 is a segment; 3-D max-trace agrees with an independent float linear
+program (SciPy's HiGHS, written here) to 0.1 degree wherever the LP's maximiser is unique; the
+dark and bright rules against their definition."""
+
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+import gmcc
+
+scipy_optimize = pytest.importorskip("scipy.optimize")
+scipy_spatial = pytest.importorskip("scipy.spatial")
+
+
+def angle(u, v):
+    u, v = np.asarray(u, float), np.asarray(v, float)
+    return float(np.degrees(np.arctan2(np.linalg.norm(np.cross(u, v)), u @ v)))
+
+
+def scene(seed, h=6, w=7, surfaces=30):
+    rng = np.random.default_rng(seed)
+    s = rng.integers(50, 900, size=(surfaces, 3))
+    light = rng.integers(3, 40, size=3)
+    idx = rng.integers(0, surfaces, size=(h, w))
+    return s, light, (s[idx] * light).astype(np.uint16)
+
+
+def test_lifts_are_refused_everywhere():
+    s, light, img = scene(1)
+    lifts = gmcc.image_colours(img)
+    assert lifts.colour_set == "hull"
+    for read in (lambda: lifts.colours, lambda: lifts.colours_float):
+        with pytest.raises(ValueError, match="chromaticity lifts"):
+            read()
+    assert len(lifts.chromaticity_lifts) == len(lifts)
+    canonical = gmcc.prepare_canonical_3d(s)
+    with pytest.raises(ValueError, match="chromaticity lifts"):
+        gmcc.crule_3d(s, lifts)
+    with pytest.raises(ValueError, match="chromaticity lifts"):
+        gmcc.estimate_3d(canonical, lifts)
+    with pytest.raises(ValueError, match="chromaticity lifts"):
+        gmcc.prepare_canonical_3d(lifts)
+    with pytest.raises(ValueError, match="hull-3d"):
+        gmcc.estimate_3d(canonical, img, colour_set="hull")
+    pixels = gmcc.image_colours(img, colour_set="distinct")
+    assert pixels.colour_set == "distinct"
+    with pytest.raises(ValueError, match="pixel colours"):
+        pixels.chromaticity_lifts
+    assert {tuple(int(x) for x in c) for c in pixels.colours} == {tuple(int(x) for x in p) for p in img.reshape(-1, 3)}
+
+
+def test_learner_and_estimate_recover_the_light():
+    rng = np.random.default_rng(7)
+    s = rng.integers(50, 900, size=(10, 3))
+    learner = gmcc.CanonicalLearner3()
+    for _ in range(4):
+        e = rng.integers(3, 40, size=3)
+        learner.add((s * e).reshape(2, 5, 3).astype(np.uint16), e)
+    assert learner.images == 4 and learner.contributing == 4
+    top = s.max()
+    assert {tuple(c) for c in learner.gamut()} <= {tuple(Fraction(int(x), int(top)) for x in row) for row in s}
+    canonical = learner.prepare()
+    e = np.array([7, 11, 5])
+    r = gmcc.estimate_3d(canonical, (s * e).reshape(2, 5, 3).astype(np.uint16), truth=e)
+    assert r.kind == "segment"
+    for sel in (r.max_volume, r.centroid, r.max_trace):
+        assert sel.recovery_error_deg < 1e-9
+        assert angle(sel.light, e) < 1e-9
+    only = gmcc.estimate_3d(canonical, (s * e).reshape(2, 5, 3).astype(np.uint16), rules=["max_trace"])
+    assert only.max_volume is None and only.max_trace.exact == r.max_trace.exact
+
+
+def lp_max_trace(A, b, q):
+    """Independent float LP: maximise d1 + d2 + d3 subject to A (d ∘ q) <= b, d >= 0; and whether
+    the maximiser is unique (each coordinate's range over the optimal face below 1e-7)."""
+    linprog = scipy_optimize.linprog
+    rows = (A[:, None, :] * q[None, :, :]).reshape(-1, 3)
+    rhs = np.repeat(b, len(q))
+    r = linprog(-np.ones(3), A_ub=rows, b_ub=rhs, bounds=[(0, None)] * 3, method="highs")
+    assert r.status == 0
+    unique = True
+    for k in range(3):
+        ends = []
+        for sign in (1, -1):
+            c = np.zeros(3)
+            c[k] = sign
+            t = linprog(c, A_ub=rows, b_ub=rhs, A_eq=np.ones((1, 3)), b_eq=[-r.fun], bounds=[(0, None)] * 3,
+                        method="highs")
+            ends.append(sign * t.fun)
+        unique = unique and abs(ends[0] - ends[1]) <= 1e-7 * max(1.0, abs(r.x[k]))
+    return r.x, unique
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_max_trace_agrees_with_a_float_lp(seed):
+    rng = np.random.default_rng(100 + seed)
+    canonical_colours = rng.integers(1, 1000, size=(40, 3))
+    light = rng.integers(5, 30, size=3)
+    # Surfaces between canonical ones (so that positive maps exist), under the light, rounded.
+    w = rng.dirichlet(np.ones(40) * 0.3, size=30)
+    image = np.floor((w @ canonical_colours) * light / 10).reshape(5, 6, 3).astype(np.uint16)
+    prepared = gmcc.prepare_canonical_3d(canonical_colours)
+    r = gmcc.estimate_3d(prepared, image, rules=["max_trace"])
+    g = np.vstack([canonical_colours, np.zeros((1, 3))]).astype(float)
+    hull = scipy_spatial.ConvexHull(g)
+    q = image.reshape(-1, 3).astype(float)
+    x, unique = lp_max_trace(hull.equations[:, :3], -hull.equations[:, 3], q)
+    if r.max_trace.light is None or min(x) <= 0:
+        pytest.skip("no positive map")
+    if not unique:
+        pytest.skip("the LP's maximiser is not unique")
+    assert angle(r.max_trace.map, x) <= 0.1
+    assert sum(r.max_trace.map) >= sum(x) * (1 - 1e-6)
+
+
+def test_dark_and_bright_rules_follow_their_definition():
+    rng = np.random.default_rng(3)
+    img = rng.integers(0, 60000, size=(20, 30, 3)).astype(np.uint16)
+    c = gmcc.image_colours(img, pixel_rule="gijsenij", colour_set="distinct")
+    m = int(img.max())
+    v = img.astype(np.int64)
+    keep = np.all((255 * v >= 5 * m) & (255 * v <= 245 * m), axis=2)
+    assert c.counts["kept"] == int(keep.sum())
+    assert c.counts["dark"] + c.counts["bright"] + c.counts["kept"] == img.shape[0] * img.shape[1]
+    assert {tuple(int(x) for x in col) for col in c.colours} == {tuple(int(x) for x in p) for p in v[keep]}
+    f = gmcc.image_colours(img.astype(np.float64), dark_fraction=Fraction(5, 255),
+                           bright_fraction=Fraction(245, 255), colour_set="distinct")
+    assert f.counts == c.counts
+    with pytest.raises(ValueError, match="gijsenij"):
+        gmcc.image_colours(img, pixel_rule="gijsenij", dark_fraction=0.1)
+    with pytest.raises(ValueError, match="dark_fraction"):
+        gmcc.image_colours(img, dark_fraction=2)
