@@ -185,14 +185,12 @@ CLI::App* add_benchmark_command(CLI::App& app, BenchmarkCliOptions& o) {
   cmd->add_option("--records", o.records_path, "write one JSON line per image and method to this file");
   cmd->add_flag("--no-progress", o.no_progress, "no progress line on stderr");
   add_pixel_options(*cmd, o.pixels);
+  // The colour set and binning are the methods' own, a mask is per image (the truth table).
+  for (const char* name : {"--colour-set", "--bin", "--mask"}) cmd->remove_option(cmd->get_option(name));
   return cmd;
 }
 
 int run_benchmark_command(const BenchmarkCliOptions& o) {
-  if (o.pixels.command)
-    for (const char* name : {"--colour-set", "--bin", "--mask"})
-      if (o.pixels.command->count(name))
-        throw InputError(name, 0, "is set per method by the benchmark (a per-image mask goes in the truth table's mask column)");
   const PixelSettings settings = pixel_settings(o.pixels);
   const std::vector<BenchmarkImage> images = dataset(o);
   BenchmarkOptions options;

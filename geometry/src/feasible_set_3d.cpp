@@ -391,6 +391,30 @@ std::vector<Point3> extreme_points_3(const std::vector<Point3>& points) {
   return sorted_unique(out);
 }
 
+std::vector<std::size_t> extreme_point_indices_3(const std::vector<std::array<double, 3>>& points,
+                                                 const std::vector<std::size_t>& candidates) {
+  using Fast = CGAL::Exact_predicates_inexact_constructions_kernel;
+  // The distinct candidates, sorted, with the first index of each.
+  std::vector<std::size_t> order(candidates);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return points[a] < points[b]; });
+  order.erase(std::unique(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return points[a] == points[b]; }),
+              order.end());
+  std::vector<Point3> exact;
+  for (std::size_t i : order) exact.push_back({Rational(points[i][0]), Rational(points[i][1]), Rational(points[i][2])});
+  if (order.size() < 4 || affine_frame(exact).size() < 4) return order;
+  std::vector<Fast::Point_3> fast;
+  for (std::size_t i : order) fast.emplace_back(points[i][0], points[i][1], points[i][2]);
+  std::vector<Fast::Point_3> extreme;
+  CGAL::extreme_points_3(fast, std::back_inserter(extreme));
+  std::vector<std::array<double, 3>> kept;
+  for (const Fast::Point_3& q : extreme) kept.push_back({q.x(), q.y(), q.z()});
+  std::sort(kept.begin(), kept.end());
+  std::vector<std::size_t> out;
+  for (std::size_t i : order)
+    if (std::binary_search(kept.begin(), kept.end(), points[i])) out.push_back(i);
+  return out;
+}
+
 ConvexSet3 feasible_set_3d_lp(const std::vector<HalfSpace3>& canonical, const Point3& canonical_max,
                               const std::vector<Point3>& image) {
   const std::optional<Rows> rows = crule_rows(canonical, canonical_max, image);

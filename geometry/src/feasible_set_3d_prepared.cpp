@@ -68,15 +68,14 @@ IntegerPlane3 integer_plane(const HalfSpace3& h) {
 constexpr std::size_t prefilter_from = 64;
 constexpr double u = 0x1p-53;
 
-// The image colours that may be vertices of their hull: a handful of extreme colours (the largest
-// along 26 directions in double) span a polytope Q ⊆ hull; a colour certified strictly inside
-// every facet of Q by a double filter is no vertex and is dropped; all others are kept.
-std::vector<Point3> hull_candidates(const std::vector<Colour>& image) {
-  const std::size_t n = image.size();
-  std::vector<std::array<double, 3>> d(n);
-  for (std::size_t i = 0; i < n; ++i)  // mpq_get_d truncates: relative error below 2u
-    d[i] = {mpq_get_d(image[i].r.get_mpq_t()), mpq_get_d(image[i].g.get_mpq_t()),
-            mpq_get_d(image[i].b.get_mpq_t())};
+// The colours that may be vertices of their hull, by index: a handful of extreme colours (the
+// largest along 26 directions in double) span a polytope Q ⊆ hull; a colour certified strictly
+// inside every facet of Q by a double filter is no vertex and is dropped; all others are kept.
+// `d` holds each colour's channels as doubles within 2u relative of the exact ones (exact for
+// double input), `exact(i)` the exact colour.
+template <class Exact>
+std::vector<std::size_t> hull_candidate_indices(const std::vector<std::array<double, 3>>& d, Exact exact) {
+  const std::size_t n = d.size();
   std::vector<std::size_t> extreme;
   for (int x = -1; x <= 1; ++x)
     for (int y = -1; y <= 1; ++y)
@@ -91,7 +90,7 @@ std::vector<Point3> hull_candidates(const std::vector<Colour>& image) {
         extreme.push_back(best);
       }
   std::vector<Point3> q;
-  for (std::size_t i : extreme) q.push_back({image[i].r, image[i].g, image[i].b});
+  for (std::size_t i : extreme) q.push_back(exact(i));
   q = sorted_unique(std::move(q));
   std::vector<std::array<double, 4>> facets;
   if (affine_dimension(q) == 3)
@@ -105,7 +104,7 @@ std::vector<Point3> hull_candidates(const std::vector<Colour>& image) {
       }
       facets.push_back(*f);
     }
-  std::vector<Point3> out;
+  std::vector<std::size_t> out;
   for (std::size_t i = 0; i < n; ++i) {
     bool inside = !facets.empty();
     for (int k = 0; k < 3 && inside; ++k)  // magnitudes where the relative bound below holds
@@ -118,8 +117,19 @@ std::vector<Point3> hull_candidates(const std::vector<Colour>& image) {
                        std::fabs(f[3]);
       inside = s < -16 * u * T;
     }
-    if (!inside) out.push_back({image[i].r, image[i].g, image[i].b});
+    if (!inside) out.push_back(i);
   }
+  return out;
+}
+
+std::vector<Point3> hull_candidates(const std::vector<Colour>& image) {
+  std::vector<std::array<double, 3>> d(image.size());
+  for (std::size_t i = 0; i < image.size(); ++i)  // mpq_get_d truncates: relative error below 2u
+    d[i] = {mpq_get_d(image[i].r.get_mpq_t()), mpq_get_d(image[i].g.get_mpq_t()),
+            mpq_get_d(image[i].b.get_mpq_t())};
+  const auto exact = [&](std::size_t i) { return Point3{image[i].r, image[i].g, image[i].b}; };
+  std::vector<Point3> out;
+  for (std::size_t i : hull_candidate_indices(d, exact)) out.push_back(exact(i));
   return out;
 }
 
@@ -198,6 +208,25 @@ ConvexSet3 feasible_set_3d(const CanonicalConstraints3& canonical, const std::ve
     if (r.outcome == internal::ClippedPolytope::Outcome::empty) return {};
   }
   return internal::feasible_set_3d_lp(c.half_spaces, c.max, points);
+}
+
+std::vector<std::size_t> colour_hull_vertex_indices(const std::vector<std::array<double, 3>>& colours) {
+  if (colours.empty()) throw std::invalid_argument("colour_hull_vertex_indices: no colours");
+  for (const auto& c : colours)
+    for (double x : c)
+      if (!(x >= 0) || !std::isfinite(x))
+        throw std::invalid_argument("colour_hull_vertex_indices: a channel that is negative or not finite");
+  const auto exact = [&](std::size_t i) {
+    return Point3{Rational(colours[i][0]), Rational(colours[i][1]), Rational(colours[i][2])};
+  };
+  std::vector<std::size_t> candidates;
+  if (colours.size() >= internal::prefilter_from) {
+    candidates = internal::hull_candidate_indices(colours, exact);
+  } else {
+    candidates.resize(colours.size());
+    for (std::size_t i = 0; i < colours.size(); ++i) candidates[i] = i;
+  }
+  return internal::extreme_point_indices_3(colours, candidates);
 }
 
 std::vector<Colour> colour_hull_vertices(const std::vector<Colour>& colours) {

@@ -143,15 +143,19 @@ ImageColours colours_of_pixels(std::vector<std::uint64_t>& keys, ColourSet colou
     return out;
   }
   if (colour_set == ColourSet::hull_3d) {
+    // Integers are doubles exactly: the hull's vertices are found without making a rational.
     out.set = ColourSet::hull_3d;
     if (keys.empty()) return out;
-    std::vector<Colour> colours;
+    std::vector<std::array<double, 3>> colours;
     colours.reserve(keys.size());
     for (std::uint64_t key : keys) {
       const auto c = channels(key);
-      colours.push_back({Rational(c[0]), Rational(c[1]), Rational(c[2])});
+      colours.push_back({double(c[0]), double(c[1]), double(c[2])});
     }
-    out.colours = colour_hull_vertices(colours);
+    for (std::size_t i : colour_hull_vertex_indices(colours)) {
+      const auto c = channels(keys[i]);
+      out.colours.push_back({Rational(c[0]), Rational(c[1]), Rational(c[2])});
+    }
     out.counts.hull_vertices = out.colours.size();
     return out;
   }

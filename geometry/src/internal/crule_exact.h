@@ -8,6 +8,8 @@
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/convex_set_3.h>
 
+#include <array>
+#include <cstddef>
 #include <vector>
 
 namespace gmcc::internal {
@@ -35,6 +37,11 @@ std::vector<HalfSpace3> hull_half_spaces_3(const std::vector<Point3>& points);
 // The vertices of conv(points) (CGAL::convex_hull_3 over Epeck), sorted; all of `points` when
 // they are flat. \pre points non-empty, sorted, without repeats.
 std::vector<Point3> extreme_points_3(const std::vector<Point3>& points);
+// The indices (into `points`, among `candidates`) of the distinct vertices of conv(candidates),
+// in increasing lexicographic order of the points; every distinct candidate when they are flat.
+// Points are doubles taken exactly (CGAL's Epick: exact predicates on double input).
+std::vector<std::size_t> extreme_point_indices_3(const std::vector<std::array<double, 3>>& points,
+                                                 const std::vector<std::size_t>& candidates);
 
 // F3 by the exact LP route: rows (a ⊙ p)·d <= b for every canonical half-space and image point p
 // (any superset of the image hull's vertices), the box 0 <= d_k <= X_k/P_k, the max-slack LP for

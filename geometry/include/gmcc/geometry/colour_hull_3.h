@@ -7,6 +7,8 @@
 
 #include <gmcc/geometry/colour.h>
 
+#include <array>
+#include <cstddef>
 #include <vector>
 
 namespace gmcc {
@@ -19,5 +21,13 @@ namespace gmcc {
 /// \throws std::invalid_argument if `colours` is empty or has a negative channel.
 /// Complexity O(n) filtered tests, then O(m log m) for the m colours the filter keeps.
 std::vector<Colour> colour_hull_vertices(const std::vector<Colour>& colours);
+
+/// The same for colours whose channels are doubles, each taken exactly (integer pixel values, or
+/// float samples): the indices of the distinct colours that are vertices of the hull, in
+/// increasing (r, g, b) order of the colours (one index per distinct vertex; every distinct colour
+/// when the colours are flat). No rational is made: the filter runs on the doubles themselves and
+/// CGAL's Epick kernel, whose predicates are exact on double input, decides the rest.
+/// \throws std::invalid_argument if `colours` is empty or a channel is negative or not finite.
+std::vector<std::size_t> colour_hull_vertex_indices(const std::vector<std::array<double, 3>>& colours);
 
 }  // namespace gmcc

@@ -29,7 +29,10 @@ namespace gmcc {
 struct TruthRow {
   std::string image;  ///< the image's path relative to the image folder
   Colour light;       ///< its measured light, every channel > 0
-  std::optional<std::uint32_t> black_level, saturation;  ///< its own, when given
+  /// its own black level and saturation, when given
+  ///@{
+  std::optional<std::uint32_t> black_level, saturation;
+  ///@}
   std::string mask;            ///< a mask image (relative path), empty for none
   std::vector<Point2> chart;   ///< a polygon to exclude, empty for none
   std::size_t line = 0;        ///< the 1-based line it came from

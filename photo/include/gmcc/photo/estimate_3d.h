@@ -43,7 +43,10 @@ struct ImageSelection3 {
 /// F3 of one image and the rules asked for. Absent rules were not asked for, or F3 is empty.
 struct ImageEstimate3 {
   ConvexSet3 feasible;  ///< F3, exactly
-  std::optional<ImageSelection3> max_volume, centroid, max_trace;  ///< the rules' answers
+  /// the rules' answers
+  ///@{
+  std::optional<ImageSelection3> max_volume, centroid, max_trace;
+  ///@}
   /// The answer of `rule` (an absent one when not asked for or F3 is empty).
   const std::optional<ImageSelection3>& operator[](Rule3 rule) const;
 };
@@ -60,6 +63,7 @@ struct Estimate3Options {
 /// Gamut mapping in 3-D on one image's colours.
 /// \param canonical the canonical gamut, prepared once (feasible_set_3d.h).
 /// \param image the image's pixel colours (image_pixels.h, ColourSet distinct or hull_3d).
+/// \param options the rules, the centroid's route and the canonical light.
 /// \throws std::invalid_argument if `image` holds chromaticity lifts (ColourSet::hull: they are
 ///         not pixel colours, and F3 from them would be meaningless), has no colour, or the
 ///         canonical light has a channel <= 0; UnboundedFeasibleSet (feasible_set.h) when every

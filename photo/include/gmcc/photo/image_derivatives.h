@@ -18,7 +18,10 @@ namespace gmcc {
 
 /// An image of three double channels, row-major: width · height · 3 samples.
 struct DoubleImage {
-  std::size_t width = 0, height = 0;  ///< size in pixels
+  /// size in pixels
+  ///@{
+  std::size_t width = 0, height = 0;
+  ///@}
   std::vector<double> samples;        ///< width · height · 3, r, g, b per pixel
   /// Channel c at pixel index i = y · width + x. No bounds check.
   double at(std::size_t i, int c) const { return samples[3 * i + static_cast<std::size_t>(c)]; }

@@ -64,7 +64,7 @@ struct BenchmarkOptions {
 /// One image under one method.
 struct BenchmarkRecord {
   std::size_t image = 0;  ///< index into the images given
-  std::string method;
+  std::string method;     ///< its name (benchmark_methods())
   /// The light estimated, unit length: the method's own, or grey world's when it gave none
   /// (`fallback`); absent when neither gave one.
   std::optional<std::array<double, 3>> light;
@@ -84,7 +84,7 @@ struct BenchmarkRecord {
 
 /// One method over the dataset.
 struct BenchmarkSummary {
-  std::string method;
+  std::string method;        ///< its name
   std::size_t images = 0;    ///< estimated (every image of the dataset)
   std::size_t answered = 0;  ///< answered by the method itself
   std::size_t empty = 0;     ///< gamut methods: F empty, or no positive map (then grey world)
@@ -101,8 +101,8 @@ struct BenchmarkSummary {
 /// The whole run: records image-major (every method of image 0, then image 1, …) and one summary
 /// per method, in the order asked.
 struct BenchmarkResult {
-  std::vector<BenchmarkRecord> records;
-  std::vector<BenchmarkSummary> summaries;
+  std::vector<BenchmarkRecord> records;     ///< image-major, methods in the order asked
+  std::vector<BenchmarkSummary> summaries;  ///< one per method, in the order asked
 };
 
 /// Run the benchmark. Images are read and reduced to what the methods need (the pixel colours
