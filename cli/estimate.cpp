@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 
@@ -105,6 +106,23 @@ std::string fixed(double x, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", digits, x);
   return buf;
+}
+
+// --corrected DIR: the folder made and its outputs staged (written as they are made, put in place
+// together at the end), after checking that no two images would write the same names: two
+// inputs with one stem (a/x.png and b/x.png, or x.png and x.tif) are refused before any work.
+std::unique_ptr<StagedFiles> corrected_output(const EstimateOptions& o) {
+  if (o.corrected_dir.empty()) return nullptr;
+  std::map<std::string, std::string> stems;
+  for (const std::string& path : o.images) {
+    const std::string stem = std::filesystem::path(path).stem().string();
+    const auto [it, fresh] = stems.emplace(stem, path);
+    if (!fresh)
+      throw InputError("--corrected", 0, "images " + it->second + " and " + path + " have the same stem \"" + stem +
+                                             "\": their corrected images would have the same names");
+  }
+  ensure_directory(o.corrected_dir);
+  return std::make_unique<StagedFiles>(o.corrected_dir);
 }
 
 // The scene of one image's colours, with its true light if one is given; bad input as an
@@ -254,11 +272,10 @@ int run_estimate_3d(const EstimateOptions& o) {
   require_pixel_colours(canonical, "--space 3d");
   const CanonicalBlack black = o.black == "exclude" ? CanonicalBlack::exclude : CanonicalBlack::include;
   const CanonicalConstraints3 prepared(canonical.colours, black);
-  if (!o.corrected_dir.empty()) ensure_directory(o.corrected_dir);
+  const std::unique_ptr<StagedFiles> outputs = corrected_output(o);
 
   Json images = Json::array();
   std::ostringstream text;
-  std::vector<std::pair<std::filesystem::path, std::string>> outputs;
   for (const std::string& path : o.images) {
     RgbImage image;
     PixelRules rules;
@@ -300,10 +317,10 @@ int run_estimate_3d(const EstimateOptions& o) {
       if (sel->selection.worst_case_deg) text << "  worst case " << fixed(*sel->selection.worst_case_deg, 3) << " deg";
       text << "\n";
       estimates[to_string(rule)] = std::move(j);
-      if (!o.corrected_dir.empty() && sel->light) {
+      if (outputs && sel->light) {
         const std::string stem = std::filesystem::path(path).stem().string();
-        outputs.emplace_back(std::filesystem::path(o.corrected_dir) / (stem + "_" + to_string(rule) + ".png"),
-                             encode_png16(corrected(image, rules, rules.saturation.value_or(65536), m.map)));
+        outputs->add(stem + "_" + to_string(rule) + ".png",
+                     encode_png16(corrected(image, rules, rules.saturation.value_or(65536), m.map)));
       }
     }
     if (r.feasible.kind == ConvexKind3::empty)
@@ -311,7 +328,7 @@ int run_estimate_3d(const EstimateOptions& o) {
     record["estimates"] = std::move(estimates);
     images.push_back(std::move(record));
   }
-  for (const auto& [file, bytes] : outputs) PendingFile(file).commit(bytes);
+  if (outputs) outputs->commit();
   if (o.json) {
     Json document;
     document["space"] = "3d";
@@ -343,13 +360,12 @@ int run_estimate(const EstimateOptions& o) {
       throw select_input_error(e, canonical, nullptr, nullptr);
     }
   }();
-  if (!o.corrected_dir.empty()) ensure_directory(o.corrected_dir);
+  // Files are put in place only once every image is done: nothing half-written on an error.
+  const std::unique_ptr<StagedFiles> outputs = corrected_output(o);
 
   Json document;
   Json images = Json::array();
   std::ostringstream text;
-  // Files are committed only once every image is done: nothing half-written on an error.
-  std::vector<std::pair<std::filesystem::path, std::string>> outputs;
   for (const std::string& path : o.images) {
     RgbImage image;
     PixelRules rules;
@@ -372,11 +388,11 @@ int run_estimate(const EstimateOptions& o) {
           text << "  recovery error " << fixed(*t->illuminant_error_deg, 3) << " deg";
       }
       text << "\n";
-      if (!o.corrected_dir.empty()) {
+      if (outputs) {
         const std::string stem = std::filesystem::path(path).stem().string();
-        outputs.emplace_back(std::filesystem::path(o.corrected_dir) / (stem + "_" + kRules[k] + ".png"),
-                             encode_png16(corrected(image, rules, rules.saturation.value_or(65536),
-                                                    {sel->estimate.map[0], sel->estimate.map[1], 1.0})));
+        outputs->add(stem + "_" + kRules[k] + ".png",
+                     encode_png16(corrected(image, rules, rules.saturation.value_or(65536),
+                                            {sel->estimate.map[0], sel->estimate.map[1], 1.0})));
       }
     }
     if (result.feasible.kind == ConvexKind::empty) text << "  no estimate: " << result.empty_reason << "\n";
@@ -385,7 +401,7 @@ int run_estimate(const EstimateOptions& o) {
     for (auto& [key, value] : scene.items()) record[key] = std::move(value);
     images.push_back(std::move(record));
   }
-  for (const auto& [file, bytes] : outputs) PendingFile(file).commit(bytes);
+  if (outputs) outputs->commit();
   if (o.json) {
     document["canonical_gamut"] = {{"colours", prepared.colours},
                                    {"vertices", prepared.gamut.vertices.size()}};

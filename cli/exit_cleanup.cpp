@@ -16,8 +16,11 @@ namespace {
 // A slot is written once, before it is published (live = true), and never reused: a handler
 // reading a live slot in one thread cannot see it rewritten by another. A run registers a
 // handful of files; 64 slots of 4 KiB are zero pages until used.
+// A slot is one file, or a family of numbered files (path + "0", path + "1", …: members of
+// them), so that a run may stage any number of outputs in one slot.
 struct Slot {
   std::atomic<bool> live{false};
+  std::atomic<int> members{-1};  // -1: one file, `path`; otherwise a family of this many
   char path[4096];
 };
 Slot slots[64];
@@ -70,6 +73,18 @@ int track_temporary(const std::string& path) {
   return i;
 }
 
+int track_temporary_family(const std::string& prefix) {
+  const int i = track_temporary(prefix);
+  slots[i].members.store(0);
+  return i;
+}
+
+void family_members(int handle, int members) noexcept {
+  if (handle >= 0 && handle < static_cast<int>(sizeof slots / sizeof slots[0])) slots[handle].members.store(members);
+}
+
+std::string family_member(const std::string& prefix, int k) { return prefix + std::to_string(k); }
+
 void untrack_temporary(int handle) noexcept {
   if (handle >= 0 && handle < static_cast<int>(sizeof slots / sizeof slots[0]))
     slots[handle].live.store(false);
@@ -117,7 +132,25 @@ void remove_temporaries() noexcept {
   }
   const int used = slots_used.load();
   for (int i = 0; i < used && i < static_cast<int>(sizeof slots / sizeof slots[0]); ++i)
-    if (slots[i].live.exchange(false)) ::unlink(slots[i].path);
+    if (slots[i].live.exchange(false)) {
+      const int members = slots[i].members.load();
+      if (members < 0) {
+        ::unlink(slots[i].path);
+        continue;
+      }
+      // A family: path followed by each member's decimal number, built without allocation.
+      char name[sizeof slots[0].path + 12];
+      const std::size_t n = std::strlen(slots[i].path);
+      std::memcpy(name, slots[i].path, n);
+      for (int k = 0; k < members; ++k) {
+        char digits[12];
+        int d = 0;
+        for (int v = k; d == 0 || v > 0; v /= 10) digits[d++] = static_cast<char>('0' + v % 10);
+        for (int j = 0; j < d; ++j) name[n + j] = digits[d - 1 - j];
+        name[n + d] = '\0';
+        ::unlink(name);
+      }
+    }
   errno = saved_errno;
 }
 

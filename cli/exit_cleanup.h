@@ -27,6 +27,14 @@ void install_exit_cleanup();
 /// than 4095 bytes (a bug: a run writes a handful of files).
 int track_temporary(const std::string& path);
 
+/// Register a family of temporary files named prefix + "0", prefix + "1", … (family_member), of
+/// which family_members says how many may exist: any number of staged outputs in one slot.
+/// Returns the handle for family_members and untrack_temporary. \throws as track_temporary.
+int track_temporary_family(const std::string& prefix);
+/// Members 0 … members − 1 of the family may exist (call before creating the next one).
+void family_members(int handle, int members) noexcept;
+/// The name of member k of the family `prefix`.
+std::string family_member(const std::string& prefix, int k);
 /// The file is renamed into place or removed: no longer remove it.
 void untrack_temporary(int handle) noexcept;
 

@@ -319,3 +319,45 @@ int draw_with_gnuplot(const fs::path& dir, const std::string& stem, const std::s
 }
 
 }  // namespace gmcc::cli
+
+namespace gmcc::cli {
+
+StagedFiles::StagedFiles(std::filesystem::path dir) : dir_(std::move(dir)) {
+  prefix_ = (dir_ / (".gmcc-staged-" + std::to_string(::getpid()) + "-")).string();
+  family_ = track_temporary_family(prefix_);
+}
+
+StagedFiles::~StagedFiles() {
+  if (!committed_)
+    for (const auto& [temp, name] : staged_) ::unlink(temp.c_str());
+  untrack_temporary(family_);
+}
+
+void StagedFiles::add(const std::string& name, const std::string& content) {
+  const std::string temp = family_member(prefix_, static_cast<int>(staged_.size()));
+  family_members(family_, static_cast<int>(staged_.size()) + 1);
+  staged_.push_back({temp, (dir_ / name).string()});
+  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (fd < 0) throw InputError(staged_.back().second, 0, std::string("cannot write: ") + std::strerror(errno));
+  std::size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int e = errno;
+      ::close(fd);
+      throw InputError(staged_.back().second, 0, std::string("cannot write: ") + std::strerror(e));
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0) throw InputError(staged_.back().second, 0, std::string("cannot write: ") + std::strerror(errno));
+}
+
+void StagedFiles::commit() {
+  for (const auto& [temp, name] : staged_)
+    if (::rename(temp.c_str(), name.c_str()) != 0)
+      throw InputError(name, 0, std::string("cannot write: ") + std::strerror(errno));
+  committed_ = true;
+}
+
+}  // namespace gmcc::cli

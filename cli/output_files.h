@@ -15,6 +15,8 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace gmcc::cli {
 
@@ -38,6 +40,30 @@ class PendingFile {
   std::filesystem::path temp_;    // empty when written directly
   int fd_ = -1;
   int tracked_ = -1;  // exit_cleanup handle of temp_
+  bool committed_ = false;
+};
+
+/// Files written into one folder as they are made, and put in place together or not at all:
+/// each goes to a temporary member of one registered family (exit_cleanup.h) in that folder,
+/// so memory holds none of them and a signal or limit removes them; commit() renames every one
+/// onto its name; destruction before commit() removes them (docs/cli.md "gmcc estimate").
+class StagedFiles {
+ public:
+  /// Stage into `dir` (an existing folder). \throws InputError if it cannot be written.
+  explicit StagedFiles(std::filesystem::path dir);
+  StagedFiles(const StagedFiles&) = delete;
+  StagedFiles& operator=(const StagedFiles&) = delete;
+  ~StagedFiles();
+  /// Write `content` now, to appear as dir/name at commit(). \throws InputError on failure.
+  void add(const std::string& name, const std::string& content);
+  /// Rename every staged file into place. \throws InputError on failure.
+  void commit();
+
+ private:
+  std::filesystem::path dir_;
+  std::string prefix_;
+  int family_ = -1;
+  std::vector<std::pair<std::string, std::string>> staged_;  // temporary, final
   bool committed_ = false;
 };
 

@@ -112,7 +112,40 @@ def main():
             rc, out, err = r.run("estimate", "--canonical", canonical2, "--rules", "max-trace", paths[7], prefix=[])
             expect(rc == 2 and "applies to --space 3d" in err, err)
 
-        r.check_all(learned_3d_gamut, estimate_3d_recovers_the_light, lifts_are_refused)
+        def corrected_at_scale():
+            # 70 images × 3 rules: more files than any fixed table of temporaries; all written.
+            many = os.path.join(tmp, "many")
+            os.makedirs(many)
+            inputs = []
+            for i in range(70):
+                p = os.path.join(many, f"m{i:02d}.png")
+                write_png16(p, [[tuple(s[k] * lights[i % 9][k] for k in range(3)) for s in surfaces[:6]]] * 2)
+                inputs.append(p)
+            out = os.path.join(tmp, "corrected")
+            rc, text, err = r.run("estimate", "--space", "3d", "--canonical", canonical3, "--saturation", "none",
+                                  "--corrected", out, *inputs, prefix=[])
+            expect(rc == 0, err)
+            expect(sorted(os.listdir(out)) == sorted(f"m{i:02d}_{rule}.png" for i in range(70)
+                                                     for rule in ("max_volume", "centroid", "max_trace")),
+                   sorted(os.listdir(out))[:5])
+            # A bad image last: exit 2 and nothing written, no temporary left.
+            bad = os.path.join(tmp, "bad.png")
+            with open(bad, "wb") as f:
+                f.write(b"not a png")
+            out2 = os.path.join(tmp, "corrected2")
+            rc, text, err = r.run("estimate", "--space", "3d", "--canonical", canonical3, "--saturation", "none",
+                                  "--corrected", out2, *inputs[:30], bad, prefix=[])
+            expect(rc == 2 and os.listdir(out2) == [], (rc, err, os.listdir(out2)[:3]))
+            # Two inputs with one stem would write the same names: refused before any work.
+            other = os.path.join(tmp, "other")
+            os.makedirs(other)
+            twin = os.path.join(other, "m00.png")
+            write_png16(twin, [[(1, 2, 3)]])
+            out3 = os.path.join(tmp, "corrected3")
+            rc, text, err = r.run("estimate", "--canonical", canonical2, "--corrected", out3, inputs[0], twin, prefix=[])
+            expect(rc == 2 and "same stem" in err and not os.path.exists(out3), (rc, err))
+
+        r.check_all(learned_3d_gamut, estimate_3d_recovers_the_light, lifts_are_refused, corrected_at_scale)
 
         # A noisy dataset for the benchmark: 12 images of random surfaces, some dark, some bright.
         bench = os.path.join(tmp, "bench")
