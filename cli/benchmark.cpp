@@ -42,39 +42,15 @@ Json optional_json(const std::optional<double>& x) { return x ? Json(*x) : Json(
 
 std::vector<BenchmarkImage> dataset(const BenchmarkCliOptions& o) {
   const std::vector<TruthRow> rows = read_truth_table(o.truths_path);
-  std::optional<std::map<std::string, int>> folds_file;
-  std::uint64_t k = 0;
   if (!o.folds_path.empty()) {
     if (!o.folds.empty()) throw InputError("--folds", 0, "give --folds K or --folds-file F.csv, not both");
-    folds_file = read_folds_file(o.folds_path);
-  } else if (o.folds.empty()) {
+    const std::map<std::string, int> folds = read_folds_file(o.folds_path);
+    return benchmark_dataset(o.images_dir, rows, &folds, o.folds_path, 0);
+  }
+  if (o.folds.empty())
     throw InputError("--folds", 0, "required: --folds K (fold = line index mod K) or --folds-file F.csv");
-  } else {
-    k = integer_option("--folds", o.folds, 2, 1000000);
-  }
-  std::vector<BenchmarkImage> images;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const TruthRow& r = rows[i];
-    BenchmarkImage im;
-    im.name = r.image;
-    im.path = (std::filesystem::path(o.images_dir) / r.image).string();
-    im.light = r.light;
-    if (folds_file) {
-      const auto f = folds_file->find(r.image);
-      if (f == folds_file->end())
-        throw InputError(o.folds_path, 0, "no fold for image " + r.image + " (" + o.truths_path + " line " +
-                                              std::to_string(r.line) + ")");
-      im.fold = f->second;
-    } else {
-      im.fold = static_cast<int>(i % k);
-    }
-    im.black_level = r.black_level;
-    im.saturation = r.saturation;
-    if (!r.chart.empty()) im.exclude_polygons.push_back(r.chart);
-    if (!r.mask.empty()) im.mask_path = (std::filesystem::path(o.images_dir) / r.mask).string();
-    images.push_back(std::move(im));
-  }
-  return images;
+  return benchmark_dataset(o.images_dir, rows, nullptr, "",
+                           static_cast<int>(integer_option("--folds", o.folds, 2, 1000000)));
 }
 
 std::string table(const BenchmarkResult& r) {

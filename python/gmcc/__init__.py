@@ -54,7 +54,7 @@ __all__ = [
     "select_maps", "max_area", "mean_2d", "mean_3d", "worst_case_map_deg",
     "worst_case_illuminant_deg", "map_angular_error_deg", "illuminant_angular_error_deg",
     "reproduction_angular_error_deg", "illuminant_map", "illumination_constraint", "crule_3d",
-    "prepare_canonical_3d", "estimate_3d",
+    "prepare_canonical_3d", "estimate_3d", "benchmark",
     "error_statistics", "summarise", "reproduce_synthetic", "reproduce_camera", "data_dir",
 ]
 
@@ -306,6 +306,59 @@ def estimate_3d(canonical, image, truth=None, *, rules=None, centroid="certified
                              black_level=black_level, saturation=saturation, dark=dark,
                              dark_fraction=dark_fraction, bright_fraction=bright_fraction,
                              pixel_rule=pixel_rule, colour_set=colour_set)
+
+
+def benchmark(images, truths, *, folds=None, folds_file=None, methods=None, intensity="max",
+              black="include", threads=0, black_level=0, saturation=None, dark=0,
+              dark_fraction=None, bright_fraction=None, pixel_rule="none", frame=True):
+    """A colour-constancy dataset benchmark (benchmark.h; ``gmcc benchmark``,
+    docs/photographs.md §6): every image estimated by canonical gamuts learned only from the
+    other folds' images, by every gamut method and baseline on the same pixels.
+
+    Parameters
+    ----------
+    images : str
+        The folder the truth table's image paths are relative to.
+    truths : str
+        The truth table, ``image,r,g,b[,black_level][,saturation][,mask][,chart]``.
+    folds : int, optional
+        K folds: the image on data line i (from 0) is in fold i mod K.
+    folds_file : str, optional
+        ``image,fold``: the dataset's own split (give this or ``folds``).
+    methods : list of str, optional
+        A subset of the benchmark's methods (default all).
+    intensity, black : str
+        The 3-D canonical gamut's learning, as ``gmcc benchmark --intensity``, ``--black``.
+    threads : int
+        Worker threads; 0 for the machine's cores. The result does not depend on it.
+    black_level, saturation, dark, dark_fraction, bright_fraction, pixel_rule
+        The run's pixel rules, as image_colours (the truth table's columns override them per
+        image).
+    frame : bool
+        Return pandas DataFrames (when pandas is installed) rather than lists of dicts.
+
+    Returns
+    -------
+    (summary, records)
+        One row per method (images, answered, empty, mean/median/trimean/best25/worst25/p95/max
+        of the recovery error in degrees, truth_in_feasible, worst_case_covers,
+        worst_case_correlation), and one row per image and method (image, fold, method, light,
+        error_deg, answered, fallback, feasible_kind, feasible_vertices, truth_in_feasible,
+        worst_case_deg).
+    """
+    summary, records = _core.benchmark(
+        str(images), str(truths), folds=folds,
+        folds_file=None if folds_file is None else str(folds_file), methods=methods,
+        intensity=intensity, black=black, threads=threads, black_level=black_level,
+        saturation=saturation, dark=dark, dark_fraction=dark_fraction,
+        bright_fraction=bright_fraction, pixel_rule=pixel_rule)
+    if frame:
+        try:
+            import pandas
+        except ImportError:
+            return summary, records
+        return pandas.DataFrame(summary), pandas.DataFrame(records)
+    return summary, records
 
 
 def error_statistics(values) -> ErrorStatistics:

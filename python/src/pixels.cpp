@@ -30,7 +30,7 @@ std::optional<Rational> fraction_from(py::handle x, const char* name) {
 }
 
 // Step 4's fractions from dark_fraction, bright_fraction and pixel_rule.
-void fractions_of(const PixelArgs& args, std::optional<Rational>& dark, std::optional<Rational>& bright) {
+void fractions_of_impl(const PixelArgs& args, std::optional<Rational>& dark, std::optional<Rational>& bright) {
   if (args.pixel_rule != "none" && args.pixel_rule != "gijsenij")
     throw py::value_error("pixel_rule: " + quoted_text(args.pixel_rule) + " is not one of none, gijsenij");
   if (args.pixel_rule == "gijsenij") {
@@ -62,6 +62,10 @@ PyImageColours colours_by_rules(const Image& img, const Rules& rules) {
 }
 
 }  // namespace
+
+void pixel_fractions(const PixelArgs& args, std::optional<Rational>& dark, std::optional<Rational>& bright) {
+  fractions_of_impl(args, dark, bright);
+}
 
 bool PixelArgs::plain() const {
   return mask.is_none() && saturation.is_none() && dark_fraction.is_none() && bright_fraction.is_none() &&
@@ -114,7 +118,7 @@ PyImageColours image_colours_of(py::handle image_obj, const PixelArgs& args) {
     FloatPixelRules rules;
     rules.keep = std::move(keep);
     rules.colour_set = colour_set_from(args.colour_set);
-    fractions_of(args, rules.dark_below_fraction, rules.bright_above_fraction);
+    pixel_fractions(args, rules.dark_below_fraction, rules.bright_above_fraction);
     {
       const Rational d = number_from(args.dark, "dark");
       if (sgn(d) < 0) throw py::value_error("dark: must be >= 0");
@@ -168,7 +172,7 @@ PyImageColours run_pixel_rules(const RgbImage& img, std::vector<bool> keep, cons
   rules.colour_set = colour_set_from(args.colour_set);
   rules.black_level = integer_in<std::uint32_t>(args.black_level, "black_level", 0, 65535);
   if (const auto d = integer_in<std::uint32_t>(args.dark, "dark", 0, 65535)) rules.dark_below = d;
-  fractions_of(args, rules.dark_below_fraction, rules.bright_above_fraction);
+  pixel_fractions(args, rules.dark_below_fraction, rules.bright_above_fraction);
   if (!args.saturation.is_none()) rules.saturation = integer_in<std::uint32_t>(args.saturation, "saturation", 0, 65536);
   return colours_by_rules(img, rules);
 }

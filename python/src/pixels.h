@@ -9,6 +9,8 @@
 
 #include "results.h"
 
+#include <optional>
+
 namespace gmcc::python {
 
 namespace py = pybind11;
@@ -29,6 +31,9 @@ struct PixelArgs {
 
 /// The colours of `image` under `args`, with the counts. \throws TypeError, ValueError.
 PyImageColours image_colours_of(py::handle image, const PixelArgs& args);
+
+/// Step 4's fractions from `args` (dark_fraction, bright_fraction, pixel_rule). \throws ValueError.
+void pixel_fractions(const PixelArgs& args, std::optional<Rational>& dark, std::optional<Rational>& bright);
 
 /// True when `x` is a numpy array with three dimensions (an image, not a list of colours).
 bool is_image(py::handle x);

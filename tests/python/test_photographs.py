@@ -4,7 +4,12 @@ a light exactly where F3 is a segment; 3-D max-trace agrees with an independent 
 program (SciPy's HiGHS, written here) to 0.1 degree wherever the LP's maximiser is unique; the
 dark and bright rules against their definition."""
 
+import json
+import os
+import subprocess
+import sys
 from fractions import Fraction
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -133,3 +138,39 @@ def test_dark_and_bright_rules_follow_their_definition():
         gmcc.image_colours(img, pixel_rule="gijsenij", dark_fraction=0.1)
     with pytest.raises(ValueError, match="dark_fraction"):
         gmcc.image_colours(img, dark_fraction=2)
+
+
+def test_benchmark_equals_the_command_line(tmp_path):
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
+    from png16 import write_png16
+    rng = np.random.default_rng(27)
+    surfaces = rng.integers(50, 900, size=(25, 3))
+    lines = ["image,r,g,b"]
+    for i in range(9):
+        e = rng.integers(3, 60, size=3)
+        img = surfaces[rng.integers(0, 25, size=(6, 7))] * e
+        write_png16(tmp_path / f"p{i}.png", [[tuple(int(x) for x in px) for px in row] for row in img])
+        lines.append(f"p{i}.png,{e[0]},{e[1]},{e[2]}")
+    truths = tmp_path / "truths.csv"
+    truths.write_text("\n".join(lines) + "\n")
+    summary, records = gmcc.benchmark(tmp_path, truths, folds=3, pixel_rule="gijsenij", frame=False)
+    assert [s["method"] for s in summary][:2] == ["gm3d-max-trace", "gm3d-max-volume"]
+    assert len(records) == 9 * len(summary)
+    cli = os.environ.get("GMCC_CLI")
+    if not cli:
+        pytest.skip("GMCC_CLI not set")
+    out = tmp_path / "r.jsonl"
+    subprocess.run([cli, "benchmark", "--images", str(tmp_path), "--truths", str(truths), "--folds", "3",
+                    "--pixel-rule", "gijsenij", "--no-progress", "--records", str(out)], check=True,
+                   capture_output=True)
+    lines = [json.loads(x) for x in out.read_text().splitlines()[1:]]
+    assert len(lines) == len(records)
+    for a, b in zip(records, lines):
+        assert (a["image"], a["method"], a["fold"], a["answered"]) == (b["image"], b["method"], b["fold"], b["answered"])
+        assert (a["error_deg"] is None) == (b["error_deg"] is None)
+        if a["error_deg"] is not None:
+            assert a["error_deg"] == b["error_deg"]
+    with pytest.raises(ValueError, match="folds"):
+        gmcc.benchmark(tmp_path, truths)
+    with pytest.raises(ValueError, match="not a benchmark method"):
+        gmcc.benchmark(tmp_path, truths, folds=3, methods=["grey-sky"])

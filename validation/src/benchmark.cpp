@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <filesystem>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -166,6 +167,34 @@ std::optional<double> spearman(const std::vector<std::pair<double, double>>& xy)
 }
 
 }  // namespace
+
+std::vector<BenchmarkImage> benchmark_dataset(const std::string& images_dir, const std::vector<TruthRow>& rows,
+                                              const std::map<std::string, int>* folds, const std::string& folds_path,
+                                              int k) {
+  if (!folds && k < 2) throw std::invalid_argument("a benchmark needs at least 2 folds");
+  std::vector<BenchmarkImage> images;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const TruthRow& r = rows[i];
+    BenchmarkImage im;
+    im.name = r.image;
+    im.path = (std::filesystem::path(images_dir) / r.image).string();
+    im.light = r.light;
+    if (folds) {
+      const auto f = folds->find(r.image);
+      if (f == folds->end())
+        throw InputError(folds_path, 0, "no fold for image " + r.image + " (truth table line " + std::to_string(r.line) + ")");
+      im.fold = f->second;
+    } else {
+      im.fold = static_cast<int>(i % static_cast<std::size_t>(k));
+    }
+    im.black_level = r.black_level;
+    im.saturation = r.saturation;
+    if (!r.chart.empty()) im.exclude_polygons.push_back(r.chart);
+    if (!r.mask.empty()) im.mask_path = (std::filesystem::path(images_dir) / r.mask).string();
+    images.push_back(std::move(im));
+  }
+  return images;
+}
 
 const std::vector<std::string>& benchmark_methods() {
   static const std::vector<std::string> m = {"gm3d-max-trace", "gm3d-max-volume", "gm3d-centroid", "gm2d-max-area",

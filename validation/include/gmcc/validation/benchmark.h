@@ -14,6 +14,7 @@
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/input/image_pixels.h>
+#include <gmcc/input/truth_table.h>
 #include <gmcc/photo/learn_canonical.h>
 #include <gmcc/validation/error_statistics.h>
 
@@ -21,6 +22,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,6 +43,15 @@ struct BenchmarkImage {
   std::string mask_path;
   ///@}
 };
+
+/// A dataset's images from its truth table (truth_table.h): each image's path under
+/// `images_dir`, its light, its own pixel rules, and its fold — from `folds` (image → fold, a
+/// dataset's own split) when given, else the data line's index modulo `k` (k >= 2).
+/// \throws InputError naming `folds_path` when an image has no fold; std::invalid_argument for
+/// k < 2 without folds.
+std::vector<BenchmarkImage> benchmark_dataset(const std::string& images_dir, const std::vector<TruthRow>& rows,
+                                              const std::map<std::string, int>* folds, const std::string& folds_path,
+                                              int k);
 
 /// The methods, by name: `gm3d-max-trace`, `gm3d-max-volume`, `gm3d-centroid`, `gm2d-max-area`,
 /// `gm2d-mean-2d`, `gm2d-mean-3d`, `grey-world`, `white-patch`, `shades-of-grey`,
