@@ -1,16 +1,21 @@
 #include "benchmark.h"
 
 #include <gmcc/input/input_error.h>
+#include <gmcc/input/text_file.h>
 #include <gmcc/input/truth_table.h>
 #include <gmcc/validation/benchmark.h>
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -75,8 +80,7 @@ std::string table(const BenchmarkResult& r) {
 }
 
 std::string csv(const BenchmarkResult& r) {
-  std::string out = provenance_csv_line(true);
-  out += "method,images,answered,empty,fallback,mean_deg,median_deg,trimean_deg,best25_deg,worst25_deg,p95_deg,"
+  std::string out = "method,images,answered,empty,fallback,mean_deg,median_deg,trimean_deg,best25_deg,worst25_deg,p95_deg,"
          "max_deg,truth_in_feasible,worst_case_covers,worst_case_correlation\n";
   for (const BenchmarkSummary& s : r.summaries) {
     const ErrorStatistics& e = s.errors;
@@ -113,9 +117,14 @@ Json summary_json(const BenchmarkSummary& s) {
   return j;
 }
 
-Json record_json(const BenchmarkRecord& r, const std::vector<BenchmarkImage>& images) {
-  const BenchmarkImage& im = images[r.image];
-  Json j = {{"image", im.name}, {"fold", im.fold}, {"method", r.method}};
+// An image's name and fold, by its index in the dataset.
+struct ImageOf {
+  std::vector<std::string> name;
+  std::vector<int> fold;
+};
+
+Json record_json(const BenchmarkRecord& r, const ImageOf& images) {
+  Json j = {{"index", r.image}, {"image", images.name[r.image]}, {"fold", images.fold[r.image]}, {"method", r.method}};
   j["light"] = r.light ? Json(*r.light) : Json(nullptr);
   j["error_deg"] = optional_json(r.error_deg);
   j["answered"] = r.answered;
@@ -126,6 +135,33 @@ Json record_json(const BenchmarkRecord& r, const std::vector<BenchmarkImage>& im
     j["worst_case_deg"] = optional_json(r.worst_case_deg);
   }
   return j;
+}
+
+// The header line after the provenance: what run the records are of, and which part.
+Json header_json(std::size_t images, const std::vector<std::string>& methods, const std::string& shard) {
+  return Json{{"benchmark", {{"images", images}, {"methods", methods}, {"shard", shard}}}};
+}
+
+// Every output of a run (or of merged shards): the CSV, the JSON, the records, the table.
+void write_outputs(const BenchmarkResult& result, const ImageOf& images, const std::vector<std::string>& methods,
+                   const std::string& shard, const Json& provenance, std::optional<PendingFile>& csv_file,
+                   std::optional<PendingFile>& json_file, std::optional<PendingFile>& records_file) {
+  if (csv_file) csv_file->commit("# gmcc-provenance: " + provenance.dump() + "\n" + csv(result));
+  if (json_file) {
+    Json j;
+    j["provenance"] = provenance;
+    j["images"] = images.name.size();
+    j["methods"] = Json::array();
+    for (const BenchmarkSummary& s : result.summaries) j["methods"].push_back(summary_json(s));
+    json_file->commit(j.dump(2) + "\n");
+  }
+  if (records_file) {
+    std::string text = Json{{"provenance", provenance}}.dump() + "\n";
+    text += header_json(images.name.size(), methods, shard).dump() + "\n";
+    for (const BenchmarkRecord& r : result.records) text += record_json(r, images).dump() + "\n";
+    records_file->commit(text);
+  }
+  write_stdout(table(result));
 }
 
 }  // namespace
@@ -160,6 +196,9 @@ CLI::App* add_benchmark_command(CLI::App& app, BenchmarkCliOptions& o) {
   cmd->add_option("--json", o.json_path, "write the summaries as one JSON document to this file");
   cmd->add_option("--records", o.records_path, "write one JSON line per image and method to this file");
   cmd->add_flag("--no-progress", o.no_progress, "no progress line on stderr");
+  cmd->add_option("--shard", o.shard,
+                  "K/N: estimate only the images whose data line i has i mod N = K - 1 (every image is still "
+                  "read: the canonical gamuts need them all); needs --records, and gmcc merge combines the parts");
   add_pixel_options(*cmd, o.pixels);
   // The colour set and binning are the methods' own, a mask is per image (the truth table).
   for (const char* name : {"--colour-set", "--bin", "--mask"}) cmd->remove_option(cmd->get_option(name));
@@ -176,6 +215,23 @@ int run_benchmark_command(const BenchmarkCliOptions& o) {
   options.intensity = canonical_intensity_from_string(o.intensity);
   options.black = o.black == "exclude" ? CanonicalBlack::exclude : CanonicalBlack::include;
   options.threads = static_cast<unsigned>(integer_option("--threads", o.threads, 0, 1024));
+  std::string shard = "1/1";
+  if (!o.shard.empty()) {
+    const auto slash = o.shard.find('/');
+    const std::string why = "expected K/N with 1 <= K <= N, not " + quoted_text(o.shard);
+    if (slash == std::string::npos) throw InputError("--shard", 0, why);
+    options.shard_index = integer_option("--shard", o.shard.substr(0, slash), 1, 1000000);
+    options.shard_count = integer_option("--shard", o.shard.substr(slash + 1), 1, 1000000);
+    if (options.shard_index > options.shard_count) throw InputError("--shard", 0, why);
+    if (o.records_path.empty())
+      throw InputError("--shard", 0, "a shard needs --records FILE: gmcc merge combines the shards' records");
+    for (const std::string* p : {&o.csv_path, &o.json_path})
+      if (!p->empty())
+        throw InputError(p == &o.csv_path ? "--csv" : "--json", 0,
+                         "not with --shard: a shard's statistics cover only its part; gmcc merge writes the whole "
+                         "run's");
+    shard = std::to_string(options.shard_index) + "/" + std::to_string(options.shard_count);
+  }
   std::optional<PendingFile> csv_file, json_file, records_file;
   if (!o.csv_path.empty()) csv_file.emplace(o.csv_path);
   if (!o.json_path.empty()) json_file.emplace(o.json_path);
@@ -184,26 +240,161 @@ int run_benchmark_command(const BenchmarkCliOptions& o) {
   if (!o.no_progress)
     options.progress = [start](std::size_t done, std::size_t total) {
       const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (s < 2 && done < total) return;
+      if (s < 2) return;
       std::cerr << "\rgmcc benchmark: " << done << " of " << total << " images, " << fixed(s, 1) << " s"
                 << (done == total ? "\n" : "") << std::flush;
     };
   const BenchmarkResult result = run_benchmark(images, options);
-  if (csv_file) csv_file->commit(csv(result));
-  if (json_file) {
-    Json j;
-    j["provenance"] = provenance_json(true);
-    j["images"] = images.size();
-    j["methods"] = Json::array();
-    for (const BenchmarkSummary& s : result.summaries) j["methods"].push_back(summary_json(s));
-    json_file->commit(j.dump(2) + "\n");
+  ImageOf of;
+  for (const BenchmarkImage& im : images) of.name.push_back(im.name), of.fold.push_back(im.fold);
+  write_outputs(result, of, options.methods, shard, provenance_json(true), csv_file, json_file, records_file);
+  return 0;
+}
+
+}  // namespace gmcc::cli
+
+namespace gmcc::cli {
+namespace {
+
+struct Where {
+  std::string file;
+  std::size_t line;
+};
+
+[[noreturn]] void bad_record(const Where& at, const std::string& problem) { throw InputError(at.file, at.line, problem); }
+
+template <class T>
+T field(const Json& j, const char* name, const Where& at) {
+  if (!j.is_object() || !j.contains(name)) bad_record(at, std::string("no member \"") + name + "\"");
+  try {
+    return j.at(name).get<T>();
+  } catch (const Json::exception&) {
+    bad_record(at, std::string("member \"") + name + "\" has the wrong type");
   }
-  if (records_file) {
-    std::string text = Json{{"provenance", provenance_json(true)}}.dump() + "\n";
-    for (const BenchmarkRecord& r : result.records) text += record_json(r, images).dump() + "\n";
-    records_file->commit(text);
+}
+
+std::optional<double> optional_field(const Json& j, const char* name, const Where& at) {
+  if (!j.contains(name) || j.at(name).is_null()) return std::nullopt;
+  return field<double>(j, name, at);
+}
+
+// The JSON lines of a records file: (line number, text).
+std::vector<std::pair<std::size_t, std::string>> json_lines(const std::string& file) {
+  const std::string text = read_text_file(
+      file, {std::size_t(4) << 30, "records file", "JSON Lines from gmcc benchmark --records"});
+  std::vector<std::pair<std::size_t, std::string>> out;
+  std::size_t line = 0, start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    ++line;
+    if (end > start) out.push_back({line, text.substr(start, end - start)});
+    start = end + 1;
   }
-  write_stdout(table(result));
+  return out;
+}
+
+}  // namespace
+
+bool is_benchmark_records(const std::string& file) {
+  const auto lines = json_lines(file);
+  if (lines.size() < 2) return false;
+  try {
+    const Json j = Json::parse(lines[1].second);
+    return j.is_object() && j.contains("benchmark");
+  } catch (const Json::exception&) {
+    return false;
+  }
+}
+
+int merge_benchmark(const std::vector<std::string>& files, const std::string& csv_path, const std::string& json_path,
+                    const std::string& records_path) {
+  std::optional<PendingFile> csv_file, json_file, records_file;
+  if (!csv_path.empty()) csv_file.emplace(csv_path);
+  if (!json_path.empty()) json_file.emplace(json_path);
+  if (!records_path.empty()) records_file.emplace(records_path);
+  std::optional<Json> provenance, setup;
+  std::string first_file;
+  std::size_t images = 0;
+  std::vector<std::string> methods;
+  // (index, method position) -> record, and where it was read.
+  std::map<std::pair<std::size_t, std::size_t>, std::pair<BenchmarkRecord, Where>> read;
+  ImageOf of;
+  std::vector<bool> named;
+  std::set<std::string> shards;
+  for (const std::string& file : files) {
+    const auto lines = json_lines(file);
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+      const Where at{file, lines[k].first};
+      Json j;
+      try {
+        j = Json::parse(lines[k].second);
+      } catch (const Json::exception&) {
+        bad_record(at, "not a JSON object");
+      }
+      if (k == 0) {
+        if (!j.is_object() || j.size() != 1 || !j.contains("provenance")) bad_record(at, "expected the provenance line");
+        if (!provenance) provenance = j.at("provenance");
+        else if (*provenance != j.at("provenance"))
+          bad_record(at, "another run's provenance than " + first_file + "'s (the shards of one run record the same)");
+        continue;
+      }
+      if (k == 1) {
+        if (!j.is_object() || !j.contains("benchmark")) bad_record(at, "expected the benchmark's header line");
+        Json h = j.at("benchmark");
+        const std::string shard = field<std::string>(h, "shard", at);
+        if (!shards.insert(shard).second) bad_record(at, "shard " + shard + " is already in another file");
+        h.erase("shard");
+        if (!setup) {
+          setup = h;
+          first_file = file;
+          images = field<std::size_t>(h, "images", at);
+          methods = field<std::vector<std::string>>(h, "methods", at);
+          of.name.assign(images, "");
+          of.fold.assign(images, 0);
+          named.assign(images, false);
+        } else if (*setup != h) {
+          bad_record(at, "another run than " + first_file + "'s (only \"shard\" may differ)");
+        }
+        continue;
+      }
+      BenchmarkRecord r;
+      r.image = field<std::size_t>(j, "index", at);
+      if (r.image >= images) bad_record(at, "image index " + std::to_string(r.image) + " beyond the run's " + std::to_string(images));
+      r.method = field<std::string>(j, "method", at);
+      const auto m = std::find(methods.begin(), methods.end(), r.method);
+      if (m == methods.end()) bad_record(at, "method " + quoted_text(r.method) + " is not in the run");
+      of.name[r.image] = field<std::string>(j, "image", at);
+      of.fold[r.image] = field<int>(j, "fold", at);
+      named[r.image] = true;
+      if (!j.at("light").is_null()) r.light = field<std::array<double, 3>>(j, "light", at);
+      r.error_deg = optional_field(j, "error_deg", at);
+      r.answered = field<bool>(j, "answered", at);
+      if (!j.at("fallback").is_null()) r.fallback = field<std::string>(j, "fallback", at);
+      if (j.contains("feasible_set")) {
+        const Json& f = j.at("feasible_set");
+        r.feasible_kind = field<std::string>(f, "kind", at);
+        r.feasible_vertices = field<std::size_t>(f, "vertices", at);
+        if (!j.at("truth_in_feasible").is_null()) r.truth_in_feasible = field<bool>(j, "truth_in_feasible", at);
+        r.worst_case_deg = optional_field(j, "worst_case_deg", at);
+      }
+      const auto key = std::make_pair(r.image, static_cast<std::size_t>(m - methods.begin()));
+      if (const auto seen = read.find(key); seen != read.end())
+        bad_record(at, "image " + of.name[r.image] + " under " + r.method + " is already in " + seen->second.second.file +
+                           ":" + std::to_string(seen->second.second.line));
+      read.emplace(key, std::make_pair(std::move(r), at));
+    }
+  }
+  if (!setup) throw InputError(files.front(), 0, "no benchmark records");
+  for (std::size_t i = 0; i < images; ++i)
+    for (std::size_t k = 0; k < methods.size(); ++k)
+      if (!read.count({i, k}))
+        throw InputError(first_file, 0, "image " + (named[i] ? of.name[i] : "#" + std::to_string(i)) + " under " +
+                                            methods[k] + " is in none of the files: a shard is missing");
+  BenchmarkResult result;
+  for (auto& [key, value] : read) result.records.push_back(std::move(value.first));
+  result.summaries = summarise_benchmark(result.records, methods);
+  write_outputs(result, of, methods, "1/1", *provenance, csv_file, json_file, records_file);
   return 0;
 }
 

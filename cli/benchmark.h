@@ -23,6 +23,7 @@ struct BenchmarkCliOptions {
   std::string threads = "0";
   std::string csv_path, json_path, records_path;
   bool no_progress = false;
+  std::string shard;  // K/N: estimate only part K of N (every image still read)
   PixelOptions pixels;
 };
 
@@ -31,5 +32,14 @@ CLI::App* add_benchmark_command(CLI::App& app, BenchmarkCliOptions& options);
 
 /// Run it. \throws InputError.
 int run_benchmark_command(const BenchmarkCliOptions& options);
+
+/// Whether a records file's second line is a benchmark's header (gmcc merge dispatches on it).
+bool is_benchmark_records(const std::string& file);
+
+/// `gmcc merge` of the --records files of one benchmark's shards: every image of the run
+/// exactly once, the whole run's table on stdout and its CSV, JSON and records, byte for byte.
+/// \throws InputError naming the file and line of a problem.
+int merge_benchmark(const std::vector<std::string>& files, const std::string& csv_path,
+                    const std::string& json_path, const std::string& records_path);
 
 }  // namespace gmcc::cli

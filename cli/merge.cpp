@@ -1,5 +1,6 @@
 #include "merge.h"
 
+#include "benchmark.h"
 #include "limit_exit.h"
 #include "reproduce.h"
 
@@ -172,6 +173,8 @@ CLI::App* add_merge_command(CLI::App& app, MergeOptions& o) {
   cmd->add_option("--json", o.json_path, "write the whole run's JSON to this file");
   cmd->add_option("--scenes-out", o.scenes_out_path, "write the whole run's per-scene records to this file");
   cmd->add_option("--plot", o.plot_dir, "write the whole run's figure to this folder, as reproduce --plot");
+  cmd->add_option("--records", o.records_path,
+                  "gmcc benchmark's shards (their --records files): write the whole run's records to this file");
   return cmd;
 }
 
@@ -219,6 +222,14 @@ void summarise_cells(ExperimentResult& r, std::size_t cells) {
 }  // namespace
 
 int run_merge(const MergeOptions& o) {
+  if (!o.files.empty() && is_benchmark_records(o.files.front())) {
+    if (!o.scenes_out_path.empty() || !o.plot_dir.empty())
+      throw InputError(o.scenes_out_path.empty() ? "--plot" : "--scenes-out", 0,
+                       "not for gmcc benchmark's records (use --records, --csv, --json)");
+    return merge_benchmark(o.files, o.csv_path, o.json_path, o.records_path);
+  }
+  if (!o.records_path.empty())
+    throw InputError("--records", 0, "is for gmcc benchmark's shards; reproduce's scene files merge with --scenes-out");
   std::optional<ExperimentResult> result;
   std::string provenance;  // the first part's: the whole run's, as every part records the same run
   std::optional<ExperimentOutputs> outputs;

@@ -13,6 +13,7 @@ namespace gmcc::cli {
 struct MergeOptions {
   std::vector<std::string> files;  // the shards' --scenes-out files, in any order
   std::string csv_path, json_path, scenes_out_path, plot_dir;
+  std::string records_path;  // gmcc benchmark's shards: the whole run's records
 };
 
 /// Register `merge`.

@@ -175,7 +175,8 @@ def main():
             expect(rc == 0, err)
             lines = [json.loads(x) for x in open(records)]
             expect("provenance" in lines[0], lines[0].keys())
-            for rec in lines[1:]:
+            expect(lines[1] == {"benchmark": {"images": 12, "methods": ["grey-world"], "shard": "1/1"}}, lines[1])
+            for rec in lines[2:]:
                 rows = pixels_of[rec["image"]]
                 m = max(max(p) for row in rows for p in row)
                 kept = [p for row in rows for p in row if all(255 * c >= 5 * m and 255 * c <= 245 * m for c in p)]
@@ -190,7 +191,7 @@ def main():
             expect(rc == 0, err)
             rc, out_b, err = r.run(*base, "--folds-file", folds_file, "--records", b, prefix=[])
             expect(rc == 0, err)
-            ra, rb = open(a).read().splitlines()[1:], open(b).read().splitlines()[1:]
+            ra, rb = open(a).read().splitlines()[2:], open(b).read().splitlines()[2:]
             expect(ra == rb and out_a == out_b, "the same records and table")
             expect(len(ra) == 12 * 11, len(ra))
             with open(os.path.join(tmp, "a.csv")) as f:
@@ -218,7 +219,34 @@ def main():
             rc, out, err = r.run("benchmark", "--images", bench, "--truths", bench_truths, "--folds-file", bad, prefix=[])
             expect(rc == 2 and "no fold for image b01.png" in err, err)
 
-        r.check_all(grey_world_independent, folds_file_equals_folds_k, bad_tables)
+        def shards_merge_to_the_whole_run():
+            whole = {k: os.path.join(tmp, f"whole.{k}") for k in ("csv", "json", "jsonl")}
+            rc, table, err = r.run(*base, "--folds", "3", "--csv", whole["csv"], "--json", whole["json"],
+                                   "--records", whole["jsonl"], prefix=[])
+            expect(rc == 0, err)
+            parts = []
+            for k in (1, 2, 3, 4):
+                part = os.path.join(tmp, f"part{k}.jsonl")
+                rc, out, err = r.run(*base, "--folds", "3", "--shard", f"{k}/4", "--records", part, prefix=[])
+                expect(rc == 0, err)
+                parts.append(part)
+            merged = {k: os.path.join(tmp, f"merged.{k}") for k in ("csv", "json", "jsonl")}
+            rc, merged_table, err = r.run("merge", "--csv", merged["csv"], "--json", merged["json"], "--records",
+                                          merged["jsonl"], *reversed(parts), prefix=[])
+            expect(rc == 0, err)
+            expect(merged_table == table, "the same table")
+            for k in whole:
+                expect(open(whole[k], "rb").read() == open(merged[k], "rb").read(), f"merged {k} differs")
+            rc, out, err = r.run("merge", "--records", merged["jsonl"], *parts[:3], prefix=[])
+            expect(rc == 2 and "a shard is missing" in err, err)
+            rc, out, err = r.run("merge", "--records", merged["jsonl"], parts[0], parts[0], *parts[1:], prefix=[])
+            expect(rc == 2 and "already in another file" in err, err)
+            rc, out, err = r.run(*base, "--folds", "3", "--shard", "1/4", prefix=[])
+            expect(rc == 2 and "--records" in err, err)
+            rc, out, err = r.run(*base, "--folds", "3", "--shard", "5/4", "--records", merged["jsonl"], prefix=[])
+            expect(rc == 2 and "--shard" in err, err)
+
+        r.check_all(grey_world_independent, folds_file_equals_folds_k, bad_tables, shards_merge_to_the_whole_run)
         return r.finish()
 
 

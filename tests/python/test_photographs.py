@@ -163,7 +163,7 @@ def test_benchmark_equals_the_command_line(tmp_path):
     subprocess.run([cli, "benchmark", "--images", str(tmp_path), "--truths", str(truths), "--folds", "3",
                     "--pixel-rule", "gijsenij", "--no-progress", "--records", str(out)], check=True,
                    capture_output=True)
-    lines = [json.loads(x) for x in out.read_text().splitlines()[1:]]
+    lines = [json.loads(x) for x in out.read_text().splitlines()[2:]]
     assert len(lines) == len(records)
     for a, b in zip(records, lines):
         assert (a["image"], a["method"], a["fold"], a["answered"]) == (b["image"], b["method"], b["fold"], b["answered"])

@@ -205,6 +205,8 @@ const std::vector<std::string>& benchmark_methods() {
 
 BenchmarkResult run_benchmark(const std::vector<BenchmarkImage>& images, const BenchmarkOptions& o) {
   if (images.empty()) throw std::invalid_argument("the benchmark has no image");
+  if (o.shard_count < 1 || o.shard_index < 1 || o.shard_index > o.shard_count)
+    throw std::invalid_argument("a shard K/N needs 1 <= K <= N");
   const Needs n = needs_of(o.methods);
   const unsigned threads = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
   const std::size_t total = images.size();
@@ -233,7 +235,7 @@ BenchmarkResult run_benchmark(const std::vector<BenchmarkImage>& images, const B
     std::size_t training = 0;
     for (std::size_t i = 0; i < total; ++i) {
       if (images[i].fold == fold) {
-        test.push_back(i);
+        if (i % o.shard_count == o.shard_index - 1) test.push_back(i);
         continue;
       }
       ++training;
@@ -241,6 +243,7 @@ BenchmarkResult run_benchmark(const std::vector<BenchmarkImage>& images, const B
       if (n.gm2d) learner2.add(reduced[i].lifts, images[i].light);
     }
     if (training == 0) throw std::invalid_argument("fold " + std::to_string(fold) + " has no training image (one fold only)");
+    if (test.empty()) continue;  // another shard's
     std::optional<CanonicalConstraints3> canonical3;
     if (n.gm3d) canonical3.emplace(learner3.gamut(), o.black);
     std::optional<PreparedCanonical> canonical2;

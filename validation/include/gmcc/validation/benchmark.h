@@ -68,6 +68,11 @@ struct BenchmarkOptions {
   CanonicalIntensity intensity = CanonicalIntensity::max;  ///< 3-D learning (learn_canonical.h)
   CanonicalBlack black = CanonicalBlack::include;          ///< 3-D canonical gamut with black
   unsigned threads = 0;  ///< worker threads; 0: the machine's cores
+  /// Shard K of N: only the images whose index i has i mod N = K − 1 are estimated (every image
+  /// is still read and reduced: the canonical gamuts need them all). 1 of 1: the whole run.
+  ///@{
+  std::size_t shard_index = 1, shard_count = 1;
+  ///@}
   /// Called from the calling thread now and then: images done, images in all.
   std::function<void(std::size_t, std::size_t)> progress;
 };
