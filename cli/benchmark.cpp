@@ -4,6 +4,7 @@
 #include <gmcc/input/text_file.h>
 #include <gmcc/input/truth_table.h>
 #include <gmcc/validation/benchmark.h>
+#include <gmcc/validation/error_statistics.h>
 
 #include <nlohmann/json.hpp>
 
@@ -142,6 +143,64 @@ Json header_json(std::size_t images, const std::vector<std::string>& methods, co
   return Json{{"benchmark", {{"images", images}, {"methods", methods}, {"shard", shard}}}};
 }
 
+// --plot: benchmark.dat (per method, index k: its sorted errors and the share of images at or
+// below each; then index M: per method its 5th, 25th, 50th, 75th and 95th percentiles) and
+// benchmark.gp (cumulative error curves, and the distributions as boxes), drawn by gnuplot.
+void write_plot(const BenchmarkResult& result, const std::string& dir) {
+  ensure_directory(dir);
+  std::string dat = "# gmcc benchmark: recovery angular errors (deg) per method\n";
+  std::vector<std::string> names;
+  for (const BenchmarkSummary& s : result.summaries) {
+    std::vector<double> e;
+    for (const BenchmarkRecord& r : result.records)
+      if (r.method == s.method && r.error_deg) e.push_back(*r.error_deg);
+    std::sort(e.begin(), e.end());
+    dat += "# " + s.method + "\n";
+    for (std::size_t i = 0; i < e.size(); ++i) dat += number(e[i]) + " " + number(double(i + 1) / double(e.size())) + "\n";
+    if (e.empty()) dat += "0 0\n";
+    dat += "\n\n";
+    names.push_back(s.method);
+  }
+  dat += "# method index, p5, p25, median, p75, p95\n";
+  for (std::size_t k = 0; k < result.summaries.size(); ++k) {
+    std::vector<double> e;
+    for (const BenchmarkRecord& r : result.records)
+      if (r.method == names[k] && r.error_deg) e.push_back(*r.error_deg);
+    std::sort(e.begin(), e.end());
+    if (e.empty()) continue;
+    dat += std::to_string(k + 1);
+    for (double q : {0.05, 0.25, 0.5, 0.75, 0.95}) dat += " " + number(sorted_quantile(e, q));
+    dat += "\n";
+  }
+  std::string gp = "# gmcc benchmark: cumulative recovery-error curves and their distributions, per method\n"
+                   "if (!exists('png_file')) png_file = 'benchmark.png'\n"
+                   "if (!exists('svg_file')) svg_file = 'benchmark.svg'\n"
+                   "set datafile commentschars '#'\nset grid lc rgb '#dddddd'\n";
+  std::string curves = "plot ", boxes = "set xtics (";
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    curves += std::string(k ? ", '' " : "'benchmark.dat' ") + "index " + std::to_string(k) +
+              " using 1:2 with steps lw 2 dt " + (names[k].rfind("gm", 0) == 0 ? "1" : "2") + " title '" + names[k] + "'";
+    boxes += (k ? ", '" : "'") + names[k] + "' " + std::to_string(k + 1);
+  }
+  boxes += ") rotate by 45 right\n";
+  gp += "do for [term = 1:2] {\n"
+        "  if (term == 1) { set terminal pngcairo size 1500,560 font ',9'; set output png_file }\n"
+        "  if (term == 2) { set terminal svg size 1500,560 font 'sans,9'; set output svg_file }\n"
+        "  set multiplot layout 1,2\n"
+        "  set xlabel 'recovery angular error (deg)'; set ylabel 'share of images'; set xrange [0:20]; set yrange [0:1]\n"
+        "  set key bottom right\n  " + curves + "\n"
+        "  set xlabel ''; set ylabel 'recovery angular error (deg): 5, 25, 50, 75, 95th percentiles'\n"
+        "  set xrange [0.5:" + std::to_string(names.size()) + ".5]; set yrange [0:*]; unset key\n"
+        "  " + boxes +
+        "  set boxwidth 0.5\n"
+        "  plot 'benchmark.dat' index " + std::to_string(names.size()) +
+        " using 1:3:2:6:5 with candlesticks whiskerbars lw 1.5 lc rgb '#1f77b4', "
+        "'' index " + std::to_string(names.size()) + " using 1:4:4:4:4 with candlesticks lw 2 lc rgb '#d62728'\n"
+        "  unset xtics; set xtics auto\n  unset multiplot\n  set output\n}\n";
+  PendingFile(std::filesystem::path(dir) / "benchmark.dat").commit(dat);
+  PendingFile(std::filesystem::path(dir) / "benchmark.gp").commit(gp);
+}
+
 // Every output of a run (or of merged shards): the CSV, the JSON, the records, the table.
 void write_outputs(const BenchmarkResult& result, const ImageOf& images, const std::vector<std::string>& methods,
                    const std::string& shard, const Json& provenance, std::optional<PendingFile>& csv_file,
@@ -162,6 +221,12 @@ void write_outputs(const BenchmarkResult& result, const ImageOf& images, const s
     records_file->commit(text);
   }
   write_stdout(table(result));
+}
+
+int draw(const BenchmarkResult& result, const std::string& plot_dir) {
+  if (plot_dir.empty()) return 0;
+  write_plot(result, plot_dir);
+  return draw_with_gnuplot(plot_dir, "benchmark", "gmcc benchmark");
 }
 
 }  // namespace
@@ -196,6 +261,9 @@ CLI::App* add_benchmark_command(CLI::App& app, BenchmarkCliOptions& o) {
   cmd->add_option("--json", o.json_path, "write the summaries as one JSON document to this file");
   cmd->add_option("--records", o.records_path, "write one JSON line per image and method to this file");
   cmd->add_flag("--no-progress", o.no_progress, "no progress line on stderr");
+  cmd->add_option("--plot", o.plot_dir,
+                  "write benchmark.dat/.gp to this folder (cumulative error curves and each method's "
+                  "distribution) and draw .png/.svg with gnuplot");
   cmd->add_option("--shard", o.shard,
                   "K/N: estimate only the images whose data line i has i mod N = K - 1 (every image is still "
                   "read: the canonical gamuts need them all); needs --records, and gmcc merge combines the parts");
@@ -225,9 +293,9 @@ int run_benchmark_command(const BenchmarkCliOptions& o) {
     if (options.shard_index > options.shard_count) throw InputError("--shard", 0, why);
     if (o.records_path.empty())
       throw InputError("--shard", 0, "a shard needs --records FILE: gmcc merge combines the shards' records");
-    for (const std::string* p : {&o.csv_path, &o.json_path})
+    for (const std::string* p : {&o.csv_path, &o.json_path, &o.plot_dir})
       if (!p->empty())
-        throw InputError(p == &o.csv_path ? "--csv" : "--json", 0,
+        throw InputError(p == &o.csv_path ? "--csv" : p == &o.json_path ? "--json" : "--plot", 0,
                          "not with --shard: a shard's statistics cover only its part; gmcc merge writes the whole "
                          "run's");
     shard = std::to_string(options.shard_index) + "/" + std::to_string(options.shard_count);
@@ -248,7 +316,7 @@ int run_benchmark_command(const BenchmarkCliOptions& o) {
   ImageOf of;
   for (const BenchmarkImage& im : images) of.name.push_back(im.name), of.fold.push_back(im.fold);
   write_outputs(result, of, options.methods, shard, provenance_json(true), csv_file, json_file, records_file);
-  return 0;
+  return draw(result, o.plot_dir);
 }
 
 }  // namespace gmcc::cli
@@ -308,7 +376,7 @@ bool is_benchmark_records(const std::string& file) {
 }
 
 int merge_benchmark(const std::vector<std::string>& files, const std::string& csv_path, const std::string& json_path,
-                    const std::string& records_path) {
+                    const std::string& records_path, const std::string& plot_dir) {
   std::optional<PendingFile> csv_file, json_file, records_file;
   if (!csv_path.empty()) csv_file.emplace(csv_path);
   if (!json_path.empty()) json_file.emplace(json_path);
@@ -395,7 +463,7 @@ int merge_benchmark(const std::vector<std::string>& files, const std::string& cs
   for (auto& [key, value] : read) result.records.push_back(std::move(value.first));
   result.summaries = summarise_benchmark(result.records, methods);
   write_outputs(result, of, methods, "1/1", *provenance, csv_file, json_file, records_file);
-  return 0;
+  return draw(result, plot_dir);
 }
 
 }  // namespace gmcc::cli

@@ -21,7 +21,7 @@ struct BenchmarkCliOptions {
   std::string intensity = "max";
   std::string black = "include";
   std::string threads = "0";
-  std::string csv_path, json_path, records_path;
+  std::string csv_path, json_path, records_path, plot_dir;
   bool no_progress = false;
   std::string shard;  // K/N: estimate only part K of N (every image still read)
   PixelOptions pixels;
@@ -40,6 +40,6 @@ bool is_benchmark_records(const std::string& file);
 /// exactly once, the whole run's table on stdout and its CSV, JSON and records, byte for byte.
 /// \throws InputError naming the file and line of a problem.
 int merge_benchmark(const std::vector<std::string>& files, const std::string& csv_path,
-                    const std::string& json_path, const std::string& records_path);
+                    const std::string& json_path, const std::string& records_path, const std::string& plot_dir);
 
 }  // namespace gmcc::cli

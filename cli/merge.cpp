@@ -223,10 +223,9 @@ void summarise_cells(ExperimentResult& r, std::size_t cells) {
 
 int run_merge(const MergeOptions& o) {
   if (!o.files.empty() && is_benchmark_records(o.files.front())) {
-    if (!o.scenes_out_path.empty() || !o.plot_dir.empty())
-      throw InputError(o.scenes_out_path.empty() ? "--plot" : "--scenes-out", 0,
-                       "not for gmcc benchmark's records (use --records, --csv, --json)");
-    return merge_benchmark(o.files, o.csv_path, o.json_path, o.records_path);
+    if (!o.scenes_out_path.empty())
+      throw InputError("--scenes-out", 0, "not for gmcc benchmark's records (use --records, --csv, --json, --plot)");
+    return merge_benchmark(o.files, o.csv_path, o.json_path, o.records_path, o.plot_dir);
   }
   if (!o.records_path.empty())
     throw InputError("--records", 0, "is for gmcc benchmark's shards; reproduce's scene files merge with --scenes-out");

@@ -232,11 +232,21 @@ def main():
                 parts.append(part)
             merged = {k: os.path.join(tmp, f"merged.{k}") for k in ("csv", "json", "jsonl")}
             rc, merged_table, err = r.run("merge", "--csv", merged["csv"], "--json", merged["json"], "--records",
-                                          merged["jsonl"], *reversed(parts), prefix=[])
+                                          merged["jsonl"], "--plot", os.path.join(tmp, "merged_plot"),
+                                          *reversed(parts), prefix=[])
             expect(rc == 0, err)
             expect(merged_table == table, "the same table")
             for k in whole:
                 expect(open(whole[k], "rb").read() == open(merged[k], "rb").read(), f"merged {k} differs")
+            # The figure's data: every method's errors, sorted, with the share at or below each.
+            dat = open(os.path.join(tmp, "merged_plot", "benchmark.dat")).read()
+            blocks = [b for b in dat.split("\n\n\n") if b.strip()]
+            expect(len(blocks) == 12, len(blocks))  # 11 methods' curves, then the percentiles
+            for block in blocks[:11]:
+                rows = [[float(v) for v in x.split()] for x in block.splitlines() if x and not x.startswith("#")]
+                expect(len(rows) == 12 and rows[-1][1] == 1.0, rows[-1:])
+                expect([x[0] for x in rows] == sorted(x[0] for x in rows), "sorted")
+            expect(os.path.exists(os.path.join(tmp, "merged_plot", "benchmark.gp")), "the script")
             rc, out, err = r.run("merge", "--records", merged["jsonl"], *parts[:3], prefix=[])
             expect(rc == 2 and "a shard is missing" in err, err)
             rc, out, err = r.run("merge", "--records", merged["jsonl"], parts[0], parts[0], *parts[1:], prefix=[])
