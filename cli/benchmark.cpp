@@ -3,6 +3,8 @@
 #include <gmcc/input/input_error.h>
 #include <gmcc/input/text_file.h>
 #include <gmcc/input/truth_table.h>
+
+#include "dataset_layouts.h"
 #include <gmcc/validation/benchmark.h>
 #include <gmcc/validation/error_statistics.h>
 
@@ -47,7 +49,13 @@ std::string number(std::optional<double> x) {
 Json optional_json(const std::optional<double>& x) { return x ? Json(*x) : Json(nullptr); }
 
 std::vector<BenchmarkImage> dataset(const BenchmarkCliOptions& o) {
-  const std::vector<TruthRow> rows = read_truth_table(o.truths_path);
+  if (o.layout == "table" && o.truths_path.empty())
+    throw InputError("--truths", 0, "required with --layout table (a dataset as shipped: --layout nus or cube+)");
+  if (o.layout != "table" && !o.truths_path.empty())
+    throw InputError("--truths", 0, "not with --layout " + o.layout + ": the layout's own files give the lights");
+  const std::vector<TruthRow> rows = o.layout == "nus"     ? read_nus_camera(o.images_dir)
+                                     : o.layout == "cube+" ? read_cube_plus(o.images_dir)
+                                                           : read_truth_table(o.truths_path);
   if (!o.folds_path.empty()) {
     if (!o.folds.empty()) throw InputError("--folds", 0, "give --folds K or --folds-file F.csv, not both");
     const std::map<std::string, int> folds = read_folds_file(o.folds_path);
@@ -240,8 +248,12 @@ CLI::App* add_benchmark_command(CLI::App& app, BenchmarkCliOptions& o) {
   cmd->add_option("--images", o.images_dir, "the folder the truth table's image paths are relative to")->required();
   cmd->add_option("--truths", o.truths_path,
                   "CSV image,r,g,b[,black_level][,saturation][,mask][,chart]: each image's measured light "
-                  "(and its own pixel rules), in the dataset's order")
-      ->required();
+                  "(and its own pixel rules), in the dataset's order (--layout table)");
+  cmd->add_option("--layout", o.layout,
+                  "table (--truths), nus (a NUS 8-camera folder: <camera>_gt.mat and its PNGs) or cube+ "
+                  "(cube+_gt.txt and its PNGs)")
+      ->check(CLI::IsMember({"table", "nus", "cube+"}))
+      ->capture_default_str();
   cmd->add_option("--folds", o.folds, "K folds: the image on data line i (from 0) is in fold i mod K");
   cmd->add_option("--folds-file", o.folds_path, "CSV image,fold: the dataset's own split");
   cmd->add_option("--methods", o.methods,

@@ -15,6 +15,7 @@ namespace gmcc::cli {
 struct BenchmarkCliOptions {
   std::string images_dir;
   std::string truths_path;
+  std::string layout = "table";  // table | nus | cube+
   std::string folds = "";        // K: fold = line index mod K
   std::string folds_path;        // image,fold
   std::vector<std::string> methods;

@@ -1,0 +1,195 @@
+#include "dataset_layouts.h"
+
+#include <gmcc/geometry/rational.h>
+#include <gmcc/input/file_digest.h>
+#include <gmcc/input/input_error.h>
+#include <gmcc/input/text_file.h>
+
+#include <matio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+namespace gmcc {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The image `stem` with one of these endings, in `dir` or `dir/PNG`, as a path relative to dir.
+std::string find_image(const fs::path& dir, const std::string& stem, const std::string& listed_in) {
+  for (const char* sub : {"", "PNG"})
+    for (const char* ending : {".PNG", ".png"}) {
+      const fs::path p = fs::path(sub) / (stem + ending);
+      if (fs::exists(dir / p)) return p.string();
+    }
+  throw InputError(listed_in, 0, "no image " + stem + ".PNG in " + dir.string() + " or its PNG/ folder");
+}
+
+struct MatFile {
+  mat_t* mat = nullptr;
+  ~MatFile() {
+    if (mat) Mat_Close(mat);
+  }
+};
+struct MatVar {
+  matvar_t* var = nullptr;
+  ~MatVar() {
+    if (var) Mat_VarFree(var);
+  }
+};
+
+// A numeric variable's values as doubles, column-major, with its rows and columns.
+struct Numbers {
+  std::size_t rows = 0, cols = 0;
+  std::vector<double> v;
+  double at(std::size_t i, std::size_t j) const { return v[i + j * rows]; }
+};
+
+template <class T>
+void append(const void* data, std::size_t n, std::vector<double>& out) {
+  const T* p = static_cast<const T*>(data);
+  for (std::size_t i = 0; i < n; ++i) out.push_back(static_cast<double>(p[i]));
+}
+
+Numbers numbers(mat_t* mat, const char* name, const std::string& file) {
+  MatVar m{Mat_VarRead(mat, name)};
+  if (!m.var) throw InputError(file, 0, std::string("no variable ") + name);
+  if (m.var->rank != 2 || m.var->isComplex)
+    throw InputError(file, 0, std::string(name) + ": expected a real matrix");
+  Numbers out{m.var->dims[0], m.var->dims[1], {}};
+  const std::size_t n = out.rows * out.cols;
+  switch (m.var->class_type) {
+    case MAT_C_DOUBLE: append<double>(m.var->data, n, out.v); break;
+    case MAT_C_SINGLE: append<float>(m.var->data, n, out.v); break;
+    case MAT_C_UINT16: append<std::uint16_t>(m.var->data, n, out.v); break;
+    case MAT_C_INT16: append<std::int16_t>(m.var->data, n, out.v); break;
+    case MAT_C_UINT32: append<std::uint32_t>(m.var->data, n, out.v); break;
+    case MAT_C_INT32: append<std::int32_t>(m.var->data, n, out.v); break;
+    case MAT_C_UINT8: append<std::uint8_t>(m.var->data, n, out.v); break;
+    default: throw InputError(file, 0, std::string(name) + ": expected numbers");
+  }
+  for (double x : out.v)
+    if (!std::isfinite(x)) throw InputError(file, 0, std::string(name) + ": a value that is not finite");
+  return out;
+}
+
+// A char array's text (MATLAB stores characters as 8- or 16-bit codes).
+std::string text_of(const matvar_t* v, const std::string& file) {
+  if (v->class_type != MAT_C_CHAR) throw InputError(file, 0, "all_image_names: a cell that is not text");
+  std::size_t n = 1;
+  for (int k = 0; k < v->rank; ++k) n *= v->dims[k];
+  std::string s;
+  if (v->data_type == MAT_T_UINT16 || v->data_type == MAT_T_UTF16) {
+    const std::uint16_t* p = static_cast<const std::uint16_t*>(v->data);
+    for (std::size_t i = 0; i < n; ++i) s += p[i] < 128 ? static_cast<char>(p[i]) : '?';
+  } else {
+    s.assign(static_cast<const char*>(v->data), n);
+  }
+  return s;
+}
+
+// A level (black or saturation) as an integer code 0..65535.
+std::uint32_t level(const Numbers& x, const char* name, const std::string& file) {
+  if (x.v.size() != 1) throw InputError(file, 0, std::string(name) + ": expected one number");
+  const double v = x.v[0];
+  if (v < 0 || v > 65535 || v != std::floor(v))
+    throw InputError(file, 0, std::string(name) + ": expected an integer code from 0 to 65535");
+  return static_cast<std::uint32_t>(v);
+}
+
+}  // namespace
+
+std::vector<TruthRow> read_nus_camera(const std::string& dir_text) {
+  const fs::path dir(dir_text);
+  std::vector<fs::path> found;
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.size() > 7 && name.compare(name.size() - 7, 7, "_gt.mat") == 0) found.push_back(e.path());
+  }
+  if (ec) throw InputError(dir_text, 0, "cannot read the folder: " + ec.message());
+  if (found.size() != 1)
+    throw InputError(dir_text, 0, found.empty() ? "no <camera>_gt.mat (a NUS camera folder)" : "several *_gt.mat files");
+  const std::string file = found[0].string();
+  // Recorded for provenance like every input (the bytes are read again by libmatio).
+  read_binary_file(file, std::size_t(256) << 20, "ground-truth file");
+  MatFile mat{Mat_Open(file.c_str(), MAT_ACC_RDONLY)};
+  if (!mat.mat) throw InputError(file, 0, "not a MATLAB file libmatio reads");
+  const Numbers lights = numbers(mat.mat, "groundtruth_illuminants", file);
+  const Numbers coords = numbers(mat.mat, "CC_coords", file);
+  const std::uint32_t black = level(numbers(mat.mat, "darkness_level", file), "darkness_level", file);
+  const std::uint32_t saturation = level(numbers(mat.mat, "saturation_level", file), "saturation_level", file);
+  MatVar names{Mat_VarRead(mat.mat, "all_image_names")};
+  if (!names.var || names.var->class_type != MAT_C_CELL) throw InputError(file, 0, "all_image_names: expected a cell array");
+  std::size_t n = 1;
+  for (int k = 0; k < names.var->rank; ++k) n *= names.var->dims[k];
+  if (lights.rows != n || lights.cols != 3) throw InputError(file, 0, "groundtruth_illuminants: expected one r,g,b per image");
+  if (coords.rows != n || coords.cols != 4) throw InputError(file, 0, "CC_coords: expected y1,y2,x1,x2 per image");
+  std::vector<TruthRow> rows;
+  for (std::size_t i = 0; i < n; ++i) {
+    const matvar_t* cell = Mat_VarGetCell(names.var, static_cast<int>(i));
+    if (!cell) throw InputError(file, 0, "all_image_names: a missing cell");
+    // Names may be wrapped in one more cell (a cell of 1×1 cells).
+    const matvar_t* c = cell->class_type == MAT_C_CELL ? Mat_VarGetCell(const_cast<matvar_t*>(cell), 0) : cell;
+    if (!c) throw InputError(file, 0, "all_image_names: an empty cell");
+    TruthRow row;
+    row.line = i + 1;
+    row.image = find_image(dir, text_of(c, file), file);
+    Rational e[3];
+    for (int k = 0; k < 3; ++k) {
+      e[k] = Rational(lights.at(i, static_cast<std::size_t>(k)));
+      if (sgn(e[k]) <= 0) throw InputError(file, 0, "groundtruth_illuminants: image " + std::to_string(i + 1) + " has a channel <= 0");
+    }
+    row.light = {e[0], e[1], e[2]};
+    row.black_level = black;
+    row.saturation = saturation;
+    const double y1 = coords.at(i, 0), y2 = coords.at(i, 1), x1 = coords.at(i, 2), x2 = coords.at(i, 3);
+    const Rational l(std::min(x1, x2) - 1), r(std::max(x1, x2) + 1), t(std::min(y1, y2) - 1), b(std::max(y1, y2) + 1);
+    row.chart = {{l, t}, {r, t}, {r, b}, {l, b}};
+    rows.push_back(std::move(row));
+  }
+  if (rows.empty()) throw InputError(file, 0, "no images");
+  return rows;
+}
+
+std::vector<TruthRow> read_cube_plus(const std::string& dir_text) {
+  const fs::path dir(dir_text);
+  const std::string file = (dir / "cube+_gt.txt").string();
+  const std::string text = read_text_file(file, {std::size_t(16) << 20, "ground-truth file", "lines r g b"});
+  std::vector<TruthRow> rows;
+  std::istringstream in(text);
+  std::string line;
+  for (std::size_t number = 1; std::getline(in, line); ++number) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    std::istringstream fields(line);
+    std::string f[3], extra;
+    if (!(fields >> f[0] >> f[1] >> f[2]) || (fields >> extra))
+      throw InputError(file, number, "expected three numbers r g b");
+    Rational e[3];
+    for (int k = 0; k < 3; ++k) {
+      try {
+        e[k] = parse_rational(f[k]);
+      } catch (const std::invalid_argument& err) {
+        throw InputError(file, number, std::string("rgb"[k] == 'r' ? "r" : k == 1 ? "g" : "b") + ": " + err.what());
+      }
+      if (sgn(e[k]) <= 0) throw InputError(file, number, "a light channel must be > 0");
+    }
+    TruthRow row;
+    row.line = number;
+    row.image = find_image(dir, std::to_string(rows.size() + 1), file);
+    row.light = {e[0], e[1], e[2]};
+    row.black_level = 2048;
+    // The SpyderCube: rows from 1050, columns from 2050 (0-based) to the edge, as pixel squares.
+    const Rational far(1 << 20);
+    row.chart = {{Rational(2050), Rational(1050)}, {far, Rational(1050)}, {far, far}, {Rational(2050), far}};
+    rows.push_back(std::move(row));
+  }
+  if (rows.empty()) throw InputError(file, 0, "no lights");
+  return rows;
+}
+
+}  // namespace gmcc
