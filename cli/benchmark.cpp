@@ -53,16 +53,22 @@ std::vector<BenchmarkImage> dataset(const BenchmarkCliOptions& o) {
     throw InputError("--truths", 0, "required with --layout table (a dataset as shipped: --layout nus or cube+)");
   if (o.layout != "table" && !o.truths_path.empty())
     throw InputError("--truths", 0, "not with --layout " + o.layout + ": the layout's own files give the lights");
-  const std::vector<TruthRow> rows = o.layout == "nus"     ? read_nus_camera(o.images_dir)
-                                     : o.layout == "cube+" ? read_cube_plus(o.images_dir)
-                                                           : read_truth_table(o.truths_path);
+  std::map<std::string, int> shipped_folds;
+  const std::vector<TruthRow> rows = o.layout == "nus"          ? read_nus_camera(o.images_dir)
+                                     : o.layout == "cube+"      ? read_cube_plus(o.images_dir)
+                                     : o.layout == "gehler-shi" ? read_gehler_shi(o.images_dir, shipped_folds)
+                                                                : read_truth_table(o.truths_path);
+  if (o.folds_path.empty() && o.folds.empty() && !shipped_folds.empty())
+    return benchmark_dataset(o.images_dir, rows, &shipped_folds,
+                             (std::filesystem::path(o.images_dir) / "threefoldCVsplit.mat").string(), 0);
   if (!o.folds_path.empty()) {
     if (!o.folds.empty()) throw InputError("--folds", 0, "give --folds K or --folds-file F.csv, not both");
     const std::map<std::string, int> folds = read_folds_file(o.folds_path);
     return benchmark_dataset(o.images_dir, rows, &folds, o.folds_path, 0);
   }
   if (o.folds.empty())
-    throw InputError("--folds", 0, "required: --folds K (fold = line index mod K) or --folds-file F.csv");
+    throw InputError("--folds", 0, "required: --folds K (fold = line index mod K) or --folds-file F.csv (a "
+                                   "Gehler-Shi folder with threefoldCVsplit.mat brings its own)");
   return benchmark_dataset(o.images_dir, rows, nullptr, "",
                            static_cast<int>(integer_option("--folds", o.folds, 2, 1000000)));
 }
@@ -250,9 +256,10 @@ CLI::App* add_benchmark_command(CLI::App& app, BenchmarkCliOptions& o) {
                   "CSV image,r,g,b[,black_level][,saturation][,mask][,chart]: each image's measured light "
                   "(and its own pixel rules), in the dataset's order (--layout table)");
   cmd->add_option("--layout", o.layout,
-                  "table (--truths), nus (a NUS 8-camera folder: <camera>_gt.mat and its PNGs) or cube+ "
-                  "(cube+_gt.txt and its PNGs)")
-      ->check(CLI::IsMember({"table", "nus", "cube+"}))
+                  "table (--truths), nus (a NUS 8-camera folder: <camera>_gt.mat and its PNGs), cube+ "
+                  "(cube+_gt.txt and its PNGs) or gehler-shi (png/, real_illum_568.mat, coordinates/, and "
+                  "threefoldCVsplit.mat: its folds unless --folds or --folds-file is given)")
+      ->check(CLI::IsMember({"table", "nus", "cube+", "gehler-shi"}))
       ->capture_default_str();
   cmd->add_option("--folds", o.folds, "K folds: the image on data line i (from 0) is in fold i mod K");
   cmd->add_option("--folds-file", o.folds_path, "CSV image,fold: the dataset's own split");

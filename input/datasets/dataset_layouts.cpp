@@ -8,6 +8,8 @@
 #include <matio.h>
 
 #include <algorithm>
+#include <array>
+#include <fstream>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -189,6 +191,109 @@ std::vector<TruthRow> read_cube_plus(const std::string& dir_text) {
     rows.push_back(std::move(row));
   }
   if (rows.empty()) throw InputError(file, 0, "no lights");
+  return rows;
+}
+
+namespace {
+
+// A PNG's width and height from its header (IHDR), without decoding it.
+std::pair<std::size_t, std::size_t> png_size(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  unsigned char h[24] = {};
+  in.read(reinterpret_cast<char*>(h), sizeof h);
+  if (!in || h[1] != 'P' || h[2] != 'N' || h[3] != 'G' || h[12] != 'I' || h[13] != 'H')
+    throw InputError(file.string(), 0, "not a PNG");
+  auto be = [&](int k) { return (std::size_t(h[k]) << 24) | (std::size_t(h[k + 1]) << 16) | (std::size_t(h[k + 2]) << 8) | h[k + 3]; };
+  return {be(16), be(20)};
+}
+
+}  // namespace
+
+std::vector<TruthRow> read_gehler_shi(const std::string& dir_text, std::map<std::string, int>& folds) {
+  const fs::path dir(dir_text);
+  fs::path images;
+  for (const char* sub : {"png", "images"})
+    if (fs::is_directory(dir / sub)) images = sub;
+  if (images.empty()) throw InputError(dir_text, 0, "no png/ or images/ folder (a Gehler-Shi folder)");
+  std::vector<std::string> names;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir / images)) {
+    const std::string n = e.path().filename().string();
+    if (n.size() > 4 && (n.compare(n.size() - 4, 4, ".png") == 0 || n.compare(n.size() - 4, 4, ".PNG") == 0))
+      names.push_back(n);
+  }
+  std::sort(names.begin(), names.end());
+  fs::path lights_file = dir / "real_illum_568.mat";
+  if (!fs::exists(lights_file)) lights_file = dir / "real_illum_568..mat";
+  const std::string file = lights_file.string();
+  read_binary_file(file, std::size_t(64) << 20, "ground-truth file");
+  MatFile mat{Mat_Open(file.c_str(), MAT_ACC_RDONLY)};
+  if (!mat.mat) throw InputError(file, 0, "not a MATLAB file libmatio reads");
+  const Numbers lights = numbers(mat.mat, "real_rgb", file);
+  if (lights.rows != names.size() || lights.cols != 3)
+    throw InputError(file, 0, "real_rgb: expected one r,g,b per image of " + (dir / images).string() + " (" +
+                                  std::to_string(names.size()) + ")");
+  std::vector<TruthRow> rows;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    TruthRow row;
+    row.line = i + 1;
+    row.image = (images / names[i]).string();
+    Rational e[3];
+    for (int k = 0; k < 3; ++k) {
+      e[k] = Rational(lights.at(i, static_cast<std::size_t>(k)));
+      if (sgn(e[k]) <= 0) throw InputError(file, 0, "real_rgb: image " + std::to_string(i + 1) + " has a channel <= 0");
+    }
+    row.light = {e[0], e[1], e[2]};
+    row.black_level = names[i].rfind("IMG", 0) == 0 ? 129 : 1;
+    // The chart: four corners in a frame of the stated size, scaled to the image's.
+    const std::string stem = names[i].substr(0, names[i].find('.'));
+    const std::string coords = (dir / "coordinates" / (stem + "_macbeth.txt")).string();
+    const std::string text = read_text_file(coords, {std::size_t(1) << 20, "chart coordinates", "lines x y"});
+    std::istringstream in(text);
+    double fw = 0, fh = 0;
+    std::array<std::array<double, 2>, 4> corner{};
+    if (!(in >> fw >> fh) || !(fw > 0) || !(fh > 0)) throw InputError(coords, 1, "expected the frame's width and height");
+    for (int k = 0; k < 4; ++k)
+      if (!(in >> corner[k][0] >> corner[k][1])) throw InputError(coords, std::size_t(k) + 2, "expected a corner x y");
+    const auto [w, h] = png_size(dir / images / names[i]);
+    for (int k : {0, 1, 3, 2})
+      row.chart.push_back({Rational(corner[k][0]) * Rational(static_cast<long>(w)) / Rational(fw),
+                           Rational(corner[k][1]) * Rational(static_cast<long>(h)) / Rational(fh)});
+    rows.push_back(std::move(row));
+  }
+  if (rows.empty()) throw InputError(dir_text, 0, "no images");
+  // The standard split, when shipped: te_split{f} lists the 1-based indices of fold f's images.
+  const fs::path split = dir / "threefoldCVsplit.mat";
+  folds.clear();
+  if (fs::exists(split)) {
+    const std::string sfile = split.string();
+    read_binary_file(sfile, std::size_t(64) << 20, "split file");
+    MatFile s{Mat_Open(sfile.c_str(), MAT_ACC_RDONLY)};
+    if (!s.mat) throw InputError(sfile, 0, "not a MATLAB file libmatio reads");
+    MatVar te{Mat_VarRead(s.mat, "te_split")};
+    if (!te.var || te.var->class_type != MAT_C_CELL) throw InputError(sfile, 0, "te_split: expected a cell array");
+    std::size_t n = 1;
+    for (int k = 0; k < te.var->rank; ++k) n *= te.var->dims[k];
+    for (std::size_t f = 0; f < n; ++f) {
+      const matvar_t* c = Mat_VarGetCell(te.var, static_cast<int>(f));
+      if (!c || c->rank != 2) throw InputError(sfile, 0, "te_split: a fold that is not a list");
+      const std::size_t m = c->dims[0] * c->dims[1];
+      std::vector<double> idx;
+      switch (c->class_type) {
+        case MAT_C_DOUBLE: append<double>(c->data, m, idx); break;
+        case MAT_C_SINGLE: append<float>(c->data, m, idx); break;
+        case MAT_C_UINT16: append<std::uint16_t>(c->data, m, idx); break;
+        case MAT_C_INT32: append<std::int32_t>(c->data, m, idx); break;
+        default: throw InputError(sfile, 0, "te_split: indices that are not numbers");
+      }
+      for (double x : idx) {
+        if (x < 1 || x > double(rows.size()) || x != std::floor(x))
+          throw InputError(sfile, 0, "te_split: an index outside 1.." + std::to_string(rows.size()));
+        if (!folds.emplace(rows[static_cast<std::size_t>(x) - 1].image, static_cast<int>(f)).second)
+          throw InputError(sfile, 0, "te_split: image " + std::to_string(static_cast<long>(x)) + " in two folds");
+      }
+    }
+    if (folds.size() != rows.size()) throw InputError(sfile, 0, "te_split: not every image is in a fold");
+  }
   return rows;
 }
 

@@ -8,6 +8,7 @@
 
 #include <gmcc/input/truth_table.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -31,5 +32,18 @@ std::vector<TruthRow> read_nus_camera(const std::string& dir);
 /// 2050 (0-based), to the image's edge.
 /// \throws InputError naming the file and line.
 std::vector<TruthRow> read_cube_plus(const std::string& dir);
+
+/// Shi & Funt's re-processed Gehler–Shi set (568 linear PNGs of the Canon 5D and 1D): the folder
+/// holds the images (`png/` or `images/`, taken in sorted name order), the lights
+/// `real_illum_568.mat` (variable `real_rgb`, one row per image in that order; the name
+/// `real_illum_568..mat` it is sometimes shipped under is accepted), the chart coordinates
+/// `coordinates/<name>_macbeth.txt` (a line "width height" of the frame the coordinates are in,
+/// then the chart's four corners "x y", in the order 1, 2, 4, 3 around it, scaled here to the
+/// image's size) and, optionally, the standard split `threefoldCVsplit.mat` (`te_split`: three
+/// lists of 1-based image indices). Black level 129 for the Canon 5D images (names beginning
+/// `IMG`), 1 for the others, as the public loaders subtract; no saturation level is assumed.
+/// \returns the rows, and in `folds` each image's fold (0, 1, 2) from the split, empty without it.
+/// \throws InputError naming the file.
+std::vector<TruthRow> read_gehler_shi(const std::string& dir, std::map<std::string, int>& folds);
 
 }  // namespace gmcc

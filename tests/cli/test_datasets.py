@@ -73,7 +73,22 @@ def main():
             rc, out, err = r.run("--layout", "cube+", "--images", empty, "--folds", "2")
             expect(rc == 2 and "cube+_gt.txt:1:" in err, err)
 
-        r.check_all(nus_equals_its_table, cube_equals_its_table, broken_layouts)
+        def gehler_shi_equals_its_table():
+            a, b = os.path.join(tmp, "e.jsonl"), os.path.join(tmp, "f.jsonl")
+            common = ["--pixel-rule", "gijsenij", "--no-progress"]
+            # The split shipped in threefoldCVsplit.mat, against the same folds in a folds file.
+            rc, out, err = r.run("--layout", "gehler-shi", "--images", os.path.join(tmp, "gehler"), *common,
+                                 "--records", a)
+            expect(rc == 0, err)
+            rc, out, err = r.run("--images", os.path.join(tmp, "gehler"), "--truths",
+                                 os.path.join(tmp, "gehler_table.csv"), "--folds-file",
+                                 os.path.join(tmp, "gehler_folds.csv"), *common, "--records", b)
+            expect(rc == 0, err)
+            ra, rb = records(a), records(b)
+            expect(len(ra) == 6 * 11 and ra == rb, (len(ra), ra[:1], rb[:1]))
+            expect([x["fold"] for x in ra[::11]] == [0, 1, 2, 0, 1, 2], [x["fold"] for x in ra[::11]])
+
+        r.check_all(nus_equals_its_table, cube_equals_its_table, gehler_shi_equals_its_table, broken_layouts)
         return r.finish()
 
 

@@ -119,5 +119,46 @@ int main(int argc, char** argv) {
       table << i << ".PNG," << light_text << ",2048,2050 1050 2060 1050 2060 1060 2050 1060\n";
     }
   }
+  // Gehler-Shi: 6 images (IMG_* of the Canon 5D, black 129; 8D5U* of the Canon 1D, black 1),
+  // 48 × 32, the lights in real_illum_568.mat, chart corners in a half-size frame, and a split.
+  {
+    const std::string dir = out + "/gehler";
+    std::system(("mkdir -p " + dir + "/png " + dir + "/coordinates").c_str());
+    const std::vector<std::string> names = {"8D5U5524", "8D5U5525", "IMG_0301", "IMG_0302", "IMG_0303", "IMG_0304"};
+    const int n = static_cast<int>(names.size());
+    std::vector<double> lights(3 * n);
+    std::ofstream table(out + "/gehler_table.csv"), folds(out + "/gehler_folds.csv");
+    table << "image,r,g,b,black_level,chart\n";
+    folds << "image,fold\n";
+    for (int i = 0; i < n; ++i) {
+      const double e[3] = {l(rng), l(rng), l(rng)};
+      const int black = names[i].rfind("IMG", 0) == 0 ? 129 : 1;
+      // The chart in image pixels: columns 30..44, rows 20..30 (1-based box for draw).
+      write(dir + "/png/" + names[i] + ".png", encode_png16(draw(rng, 48, 32, e, black, 65535, 21, 30, 31, 44)));
+      for (int k = 0; k < 3; ++k) lights[i + k * n] = e[k];
+      // Corners in a 24 × 16 frame (half size), listed 1, 2, 4, 3 around the chart.
+      std::ofstream(dir + "/coordinates/" + names[i] + "_macbeth.txt")
+          << "24 16\n15 10\n22 10\n15 15\n22 15\n";
+      table << "png/" << names[i] << ".png," << exact(e) << "," << black << ",30 20 44 20 44 30 30 30\n";
+      folds << "png/" << names[i] << ".png," << (i % 3) << "\n";
+    }
+    mat_t* mat = Mat_CreateVer((dir + "/real_illum_568..mat").c_str(), nullptr, MAT_FT_MAT5);  // as shipped
+    std::size_t dims[2] = {std::size_t(n), 3};
+    Mat_VarWrite(mat, Mat_VarCreate("real_rgb", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, lights.data(), 0),
+                 MAT_COMPRESSION_NONE);
+    Mat_Close(mat);
+    mat = Mat_CreateVer((dir + "/threefoldCVsplit.mat").c_str(), nullptr, MAT_FT_MAT5);
+    std::size_t cell_dims[2] = {1, 3};
+    matvar_t* te = Mat_VarCreate("te_split", MAT_C_CELL, MAT_T_CELL, 2, cell_dims, nullptr, 0);
+    for (int f = 0; f < 3; ++f) {
+      std::vector<double> idx;
+      for (int i = f; i < n; i += 3) idx.push_back(i + 1);  // 1-based
+      std::size_t d[2] = {1, idx.size()};
+      Mat_VarSetCell(te, f, Mat_VarCreate(nullptr, MAT_C_DOUBLE, MAT_T_DOUBLE, 2, d, idx.data(), 0));
+    }
+    Mat_VarWrite(mat, te, MAT_COMPRESSION_NONE);
+    Mat_VarFree(te);
+    Mat_Close(mat);
+  }
   return 0;
 }
