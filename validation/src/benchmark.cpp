@@ -8,6 +8,8 @@
 #include <gmcc/selection/prepare_canonical.h>
 #include <gmcc/selection/select_scene.h>
 
+#include <mpfr.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -116,7 +118,12 @@ void parallel_for(std::size_t n, unsigned threads, const std::function<void(std:
   };
   const unsigned t = std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(std::max<std::size_t>(n, 1))));
   std::vector<std::thread> pool;
-  for (unsigned k = 1; k < t; ++k) pool.emplace_back(work);
+  // A worker's MPFR constant caches (π for the angles) are thread-local: freed as it ends.
+  for (unsigned k = 1; k < t; ++k)
+    pool.emplace_back([&work] {
+      work();
+      mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE);
+    });
   if (progress && t > 1) {
     while (done < n && next < n) {
       std::this_thread::sleep_for(std::chrono::milliseconds(200));
