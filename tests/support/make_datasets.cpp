@@ -42,6 +42,12 @@ RgbImage draw(std::mt19937& rng, std::size_t w, std::size_t h, const double ligh
   return im;
 }
 
+// Write a variable and free it (Mat_VarWrite does not take ownership).
+void put(mat_t* mat, matvar_t* var) {
+  Mat_VarWrite(mat, var, MAT_COMPRESSION_NONE);
+  Mat_VarFree(var);
+}
+
 void write(const std::string& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
 
 // The light's doubles as exact rationals (the MATLAB file holds the doubles themselves).
@@ -82,15 +88,13 @@ int main(int argc, char** argv) {
     }
     mat_t* mat = Mat_CreateVer((dir + "/TestCam_gt.mat").c_str(), nullptr, MAT_FT_MAT5);
     std::size_t dims[2] = {std::size_t(n), 3};
-    Mat_VarWrite(mat, Mat_VarCreate("groundtruth_illuminants", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, lights.data(), 0),
-                 MAT_COMPRESSION_NONE);
+    put(mat, Mat_VarCreate("groundtruth_illuminants", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, lights.data(), 0));
     dims[1] = 4;
-    Mat_VarWrite(mat, Mat_VarCreate("CC_coords", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, coords.data(), 0),
-                 MAT_COMPRESSION_NONE);
+    put(mat, Mat_VarCreate("CC_coords", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, coords.data(), 0));
     double b = black, s = saturation;
     std::size_t one[2] = {1, 1};
-    Mat_VarWrite(mat, Mat_VarCreate("darkness_level", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, one, &b, 0), MAT_COMPRESSION_NONE);
-    Mat_VarWrite(mat, Mat_VarCreate("saturation_level", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, one, &s, 0), MAT_COMPRESSION_NONE);
+    put(mat, Mat_VarCreate("darkness_level", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, one, &b, 0));
+    put(mat, Mat_VarCreate("saturation_level", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, one, &s, 0));
     std::size_t cell_dims[2] = {std::size_t(n), 1};
     matvar_t* cell = Mat_VarCreate("all_image_names", MAT_C_CELL, MAT_T_CELL, 2, cell_dims, nullptr, 0);
     for (int i = 0; i < n; ++i) {
@@ -144,8 +148,7 @@ int main(int argc, char** argv) {
     }
     mat_t* mat = Mat_CreateVer((dir + "/real_illum_568..mat").c_str(), nullptr, MAT_FT_MAT5);  // as shipped
     std::size_t dims[2] = {std::size_t(n), 3};
-    Mat_VarWrite(mat, Mat_VarCreate("real_rgb", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, lights.data(), 0),
-                 MAT_COMPRESSION_NONE);
+    put(mat, Mat_VarCreate("real_rgb", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, lights.data(), 0));
     Mat_Close(mat);
     mat = Mat_CreateVer((dir + "/threefoldCVsplit.mat").c_str(), nullptr, MAT_FT_MAT5);
     std::size_t cell_dims[2] = {1, 3};
