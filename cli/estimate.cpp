@@ -108,6 +108,18 @@ std::string fixed(double x, int digits) {
   return buf;
 }
 
+// The run's output on stdout: the JSON document (its images last) or the summary.
+int report(bool json, Json& document, Json images, const std::ostringstream& text) {
+  if (json) {
+    document["images"] = std::move(images);
+    finish_document(document);
+    write_stdout(document.dump(2) + "\n");
+  } else {
+    write_stdout(text.str());
+  }
+  return 0;
+}
+
 // --corrected DIR: the folder made and its outputs staged (written as they are made, put in place
 // together at the end), after checking that no two images would write the same names: two
 // inputs with one stem (a/x.png and b/x.png, or x.png and x.tif) are refused before any work.
@@ -329,19 +341,14 @@ int run_estimate_3d(const EstimateOptions& o) {
     images.push_back(std::move(record));
   }
   if (outputs) outputs->commit();
+  Json document;
   if (o.json) {
-    Json document;
     document["space"] = "3d";
     document["canonical_gamut"] = {{"colours", canonical.colours.size()},
                                    {"black", o.black},
                                    {"half_spaces", prepared.half_spaces()}};
-    document["images"] = std::move(images);
-    finish_document(document);
-    write_stdout(document.dump(2) + "\n");
-  } else {
-    write_stdout(text.str());
   }
-  return 0;
+  return report(o.json, document, std::move(images), text);
 }
 
 }  // namespace
@@ -402,16 +409,10 @@ int run_estimate(const EstimateOptions& o) {
     images.push_back(std::move(record));
   }
   if (outputs) outputs->commit();
-  if (o.json) {
+  if (o.json)
     document["canonical_gamut"] = {{"colours", prepared.colours},
                                    {"vertices", prepared.gamut.vertices.size()}};
-    document["images"] = std::move(images);
-    finish_document(document);
-    write_stdout(document.dump(2) + "\n");
-  } else {
-    write_stdout(text.str());
-  }
-  return 0;
+  return report(o.json, document, std::move(images), text);
 }
 
 }  // namespace gmcc::cli
