@@ -5,6 +5,7 @@
 #include <gmcc/input/input_error.h>
 #include <gmcc/input/colour_csv.h>
 #include <gmcc/input/image_lights.h>
+#include <gmcc/input/truth_table.h>
 #include <gmcc/input/text_file.h>
 #include <gmcc/photo/learn_canonical.h>
 
@@ -60,7 +61,7 @@ int run_canonical(const CanonicalOptions& o) {
     throw InputError("--intensity", 0, "applies to --space 3d (chromaticities have no intensity)");
   }
   const PixelSettings settings = pixel_settings(pixel_options);
-  const std::map<std::string, Colour> truths = read_image_lights(o.truths_path);
+  const std::map<std::string, TruthRow> truths = truth_rows_by_image(read_truth_table(o.truths_path));
   std::optional<PendingFile> out;
   if (!o.out_path.empty()) out.emplace(o.out_path);
   const bool lifts = !space_3d && settings.rules.colour_set == ColourSet::hull && settings.rules.bin == 1;
@@ -69,8 +70,9 @@ int run_canonical(const CanonicalOptions& o) {
   std::set<std::array<Rational, 3>> colours;  // 2-D with distinct colours: every one
   std::uint64_t pixels = 0;
   for (const std::string& path : o.images) {
-    const Colour& e = light_of_image(truths, path, o.truths_path);
-    const ImageColours c = image_colours_of(path, settings);
+    const TruthRow& row = truth_of_image(truths, path, o.truths_path);
+    const Colour& e = row.light;
+    const ImageColours c = image_colours_of(path, settings, nullptr, nullptr, &row, o.truths_path);
     pixels += c.counts.kept;
     if (space_3d) {
       learner3.add(c.colours, e);

@@ -29,7 +29,7 @@ struct Settings {
   SelectSceneOptions scene;
   PixelSettings pixels;
   std::optional<Colour> truth;                 // --truth: the one image's light
-  std::map<std::string, Colour> truths;        // --truths: each image's light
+  std::map<std::string, TruthRow> truths;      // --truths: each image's light and own pixel rules
 };
 
 Settings settings_of(const EstimateOptions& o) {
@@ -45,7 +45,7 @@ Settings settings_of(const EstimateOptions& o) {
   if (!o.truths_path.empty()) {
     if (!o.truth.empty())
       throw InputError("--truths", 0, "give --truth (one image) or --truths (a file), not both");
-    s.truths = read_image_lights(o.truths_path);
+    s.truths = truth_rows_by_image(read_truth_table(o.truths_path));
   }
   try {
     s.scene.expansion.policy = expansion_policy_from_string(o.expand_policy);
@@ -143,7 +143,7 @@ SceneResult select_image(const PreparedCanonical& prepared, const ColourTable& c
                          const std::string& truths_path, const std::string& path, const ImageColours& colours) {
   try {
     const std::optional<Colour> truth =
-        s.truths.empty() ? s.truth : std::optional<Colour>(light_of_image(s.truths, path, truths_path));
+        s.truths.empty() ? s.truth : std::optional<Colour>(truth_of_image(s.truths, path, truths_path).light);
     return select_scene(prepared, colours.colours, truth);
   } catch (const SceneInputError& e) {
     if (e.input == SceneInput::image)
@@ -291,9 +291,11 @@ int run_estimate_3d(const EstimateOptions& o) {
   for (const std::string& path : o.images) {
     RgbImage image;
     PixelRules rules;
-    const ImageColours colours = image_colours_of(path, s.pixels, &image, &rules);
+    const ImageColours colours =
+        image_colours_of(path, s.pixels, &image, &rules,
+                         s.truths.empty() ? nullptr : &truth_of_image(s.truths, path, o.truths_path), o.truths_path);
     const std::optional<Colour> truth =
-        s.truths.empty() ? s.truth : std::optional<Colour>(light_of_image(s.truths, path, o.truths_path));
+        s.truths.empty() ? s.truth : std::optional<Colour>(truth_of_image(s.truths, path, o.truths_path).light);
     ImageEstimate3 r;
     try {
       r = estimate_3d(prepared, colours, options);
@@ -376,7 +378,9 @@ int run_estimate(const EstimateOptions& o) {
   for (const std::string& path : o.images) {
     RgbImage image;
     PixelRules rules;
-    const ImageColours colours = image_colours_of(path, s.pixels, &image, &rules);
+    const ImageColours colours =
+        image_colours_of(path, s.pixels, &image, &rules,
+                         s.truths.empty() ? nullptr : &truth_of_image(s.truths, path, o.truths_path), o.truths_path);
     const SceneResult result = select_image(prepared, canonical, s, o.truths_path, path, colours);
     Json record = image_record(path, image, colours);
     Json estimates = Json::object();

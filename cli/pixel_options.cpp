@@ -5,6 +5,9 @@
 
 #include "integer_option.h"
 
+#include <filesystem>
+#include <optional>
+
 namespace gmcc::cli {
 namespace {
 
@@ -129,12 +132,20 @@ PixelSettings pixel_settings(const PixelOptions& o) {
 }
 
 ImageColours image_colours_of(const std::string& path, const PixelSettings& s, RgbImage* image_out,
-                              PixelRules* rules_out) {
+                              PixelRules* rules_out, const TruthRow* row, const std::string& truths_path) {
   RgbImage image = read_image(path);
   PixelRules rules = s.rules;
   if (s.saturation_max) rules.saturation = (1u << image.bits) - 1;
-  if (s.mask) {
-    const RgbImage& mask = *s.mask;
+  std::optional<RgbImage> own_mask;
+  if (row) {
+    if (row->black_level) rules.black_level = *row->black_level;
+    if (row->saturation) rules.saturation = *row->saturation;
+    if (!row->chart.empty()) rules.exclude_polygons.push_back(row->chart);
+    if (!row->mask.empty())
+      own_mask = read_image((std::filesystem::path(truths_path).parent_path() / row->mask).string());
+  }
+  if (own_mask || s.mask) {
+    const RgbImage& mask = own_mask ? *own_mask : *s.mask;
     if (mask.width != image.width || mask.height != image.height)
       throw InputError(path, 0,
                        "the mask is " + std::to_string(mask.width) + "x" +

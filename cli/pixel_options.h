@@ -4,6 +4,7 @@
 
 #include <gmcc/input/image_file.h>
 #include <gmcc/input/image_pixels.h>
+#include <gmcc/input/truth_table.h>
 
 #include <CLI/CLI.hpp>
 
@@ -46,9 +47,12 @@ struct PixelSettings {
 };
 PixelSettings pixel_settings(const PixelOptions& options);
 
-/// Read the image at `path` and apply the settings to it (the mask must have its size).
+/// Read the image at `path` and apply the settings to it (the mask must have its size), with the
+/// image's own rules from its truth-table row when given (black level, saturation, chart polygon,
+/// and a mask image whose path is relative to the folder of `truths_path`).
 /// \throws InputError naming the file.
 ImageColours image_colours_of(const std::string& path, const PixelSettings& settings,
-                              RgbImage* image_out = nullptr, PixelRules* rules_out = nullptr);
+                              RgbImage* image_out = nullptr, PixelRules* rules_out = nullptr,
+                              const TruthRow* row = nullptr, const std::string& truths_path = "");
 
 }  // namespace gmcc::cli

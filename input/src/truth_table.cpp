@@ -2,6 +2,7 @@
 #include <gmcc/input/text_file.h>
 #include <gmcc/input/truth_table.h>
 
+#include <filesystem>
 #include <set>
 #include <string_view>
 
@@ -107,6 +108,23 @@ std::vector<TruthRow> read_truth_table(const std::string& path) {
   }
   if (rows.empty()) throw InputError(path, 0, "no images after the header");
   return rows;
+}
+
+std::map<std::string, TruthRow> truth_rows_by_image(std::vector<TruthRow> rows) {
+  std::map<std::string, TruthRow> out;
+  for (TruthRow& r : rows) {
+    std::string name = r.image;
+    out.emplace(std::move(name), std::move(r));
+  }
+  return out;
+}
+
+const TruthRow& truth_of_image(const std::map<std::string, TruthRow>& rows, const std::string& image_path,
+                               const std::string& truths_path) {
+  auto t = rows.find(image_path);
+  if (t == rows.end()) t = rows.find(std::filesystem::path(image_path).filename().string());
+  if (t == rows.end()) throw InputError(truths_path, 0, "no light for image " + image_path + " (nor for its file name)");
+  return t->second;
 }
 
 std::map<std::string, int> read_folds_file(const std::string& path) {

@@ -256,7 +256,29 @@ def main():
             rc, out, err = r.run(*base, "--folds", "3", "--shard", "5/4", "--records", merged["jsonl"], prefix=[])
             expect(rc == 2 and "--shard" in err, err)
 
-        r.check_all(grey_world_independent, folds_file_equals_folds_k, bad_tables, shards_merge_to_the_whole_run)
+        def per_image_rules_in_the_truth_table():
+            # estimate and canonical take each image's black level, saturation and chart from the
+            # truth table, the same as the options for that one image.
+            own = os.path.join(tmp, "own_rules.csv")
+            with open(own, "w") as f:
+                f.write("image,r,g,b,black_level,saturation,chart\n")
+                for line in table[1:]:
+                    name = line.split(",")[0]
+                    f.write(f"{line},300,60000,0 0 4 0 4 3 0 3\n" if name == "b03.png" else f"{line},,,\n")
+            img = os.path.join(bench, "b03.png")
+            rc, a, err = r.run("estimate", "--space", "3d", "--canonical", canonical3, "--truths", own, "--json", img,
+                               prefix=[])
+            expect(rc == 0, err)
+            rc, b, err = r.run("estimate", "--space", "3d", "--canonical", canonical3, "--truths", bench_truths,
+                               "--black-level", "300", "--saturation", "60000", "--exclude-polygon",
+                               "0,0,4,0,4,3,0,3", "--json", img, prefix=[])
+            expect(rc == 0, err)
+            ja, jb = json.loads(a), json.loads(b)
+            expect(ja["images"] == jb["images"], "the same image record")
+            expect(ja["images"][0]["pixels"]["masked"] == 12, ja["images"][0]["pixels"])
+
+        r.check_all(grey_world_independent, folds_file_equals_folds_k, bad_tables, shards_merge_to_the_whole_run,
+                    per_image_rules_in_the_truth_table)
         return r.finish()
 
 

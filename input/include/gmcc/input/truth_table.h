@@ -43,6 +43,14 @@ struct TruthRow {
 /// channel <= 0, an image listed twice, a chart of fewer than 3 points, no image at all.
 std::vector<TruthRow> read_truth_table(const std::string& path);
 
+/// The rows by image name (the `image` column).
+std::map<std::string, TruthRow> truth_rows_by_image(std::vector<TruthRow> rows);
+
+/// The row of the image at `image_path`: the line naming it as given, else by its file name.
+/// \throws InputError naming the truth file and the image when there is none.
+const TruthRow& truth_of_image(const std::map<std::string, TruthRow>& rows, const std::string& image_path,
+                               const std::string& truths_path);
+
 /// Read a folds file `image,fold` (fold an integer >= 0) as a map from image to fold.
 /// \throws InputError naming the file and line.
 std::map<std::string, int> read_folds_file(const std::string& path);
