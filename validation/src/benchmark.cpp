@@ -210,6 +210,149 @@ const std::vector<std::string>& benchmark_methods() {
   return m;
 }
 
+namespace {
+
+// One fold's canonical gamuts, learned from the other folds' reduced images.
+struct FoldCanonicals {
+  std::optional<CanonicalConstraints3> gamut3;
+  std::optional<PreparedCanonical> gamut2;
+};
+
+FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, const std::vector<Reduced>& reduced,
+                          const BenchmarkOptions& o, const Needs& n) {
+  CanonicalLearner3 learner3(o.intensity);
+  CanonicalLearner2 learner2;
+  std::size_t training = 0;
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    if (images[i].fold == fold) continue;
+    ++training;
+    if (n.gm3d) learner3.add(reduced[i].hull3, images[i].light);
+    if (n.gm2d) learner2.add(reduced[i].lifts, images[i].light);
+  }
+  if (training == 0) throw std::invalid_argument("fold " + std::to_string(fold) + " has no training image (one fold only)");
+  FoldCanonicals c;
+  if (n.gm3d) c.gamut3.emplace(learner3.gamut(), o.black);
+  if (n.gm2d) {
+    std::vector<Colour> lifts;
+    for (const Point2& p : learner2.gamut()) lifts.push_back({p.x, p.y, Rational(1)});
+    c.gamut2.emplace(prepare_canonical(lifts, SelectSceneOptions{}));
+  }
+  return c;
+}
+
+// The 3-D rules' records of one image (light absent where the rule gave none).
+std::vector<BenchmarkRecord> records_3d(const CanonicalConstraints3& canonical, const Reduced& r, const Colour& e,
+                                        const Needs& n) {
+  Estimate3Options eo;
+  eo.rules.clear();
+  for (Rule3 rule : all_rules_3)
+    if (n.rule3[static_cast<int>(rule)]) eo.rules.push_back(rule);
+  ImageColours colours;
+  colours.colours = r.hull3;
+  colours.set = ColourSet::hull_3d;
+  std::optional<ImageEstimate3> est;
+  try {
+    est = estimate_3d(canonical, colours, eo);
+  } catch (const std::domain_error&) {  // unbounded F3: no estimate
+  }
+  std::optional<bool> in_f;
+  if (est && est->feasible.kind != ConvexKind3::empty) {
+    const std::optional<ConvexSet2> image = perspective_image(est->feasible);
+    in_f = image && contains(*image, true_perspective_map(e));
+  } else if (est) {
+    in_f = false;
+  }
+  std::vector<BenchmarkRecord> out;
+  for (Rule3 rule : eo.rules) {
+    BenchmarkRecord rec;
+    rec.method = kGm3d[static_cast<int>(rule)];
+    if (est) {
+      rec.feasible_kind = to_string(est->feasible.kind);
+      rec.feasible_vertices = est->feasible.vertices.size();
+      rec.truth_in_feasible = in_f;
+      const std::optional<ImageSelection3>& s = (*est)[rule];
+      if (s && s->light) {
+        rec.light = s->light;
+        rec.answered = true;
+        rec.worst_case_deg = s->selection.worst_case_deg;
+      }
+    }
+    out.push_back(std::move(rec));
+  }
+  return out;
+}
+
+// The 2-D rules' records of one image: the select pipeline on its chromaticity lifts.
+std::vector<BenchmarkRecord> records_2d(const PreparedCanonical& canonical, const Reduced& r, const Colour& e,
+                                        const Needs& n) {
+  std::optional<SceneResult> scene;
+  if (!r.lifts.empty()) {
+    try {
+      scene = select_scene(canonical, r.lifts, e);
+    } catch (const SceneInputError&) {  // no usable colour, a map beyond range: no estimate
+    }
+  }
+  std::vector<BenchmarkRecord> out;
+  for (int k = 0; k < 3; ++k) {
+    if (!n.rule2[k]) continue;
+    BenchmarkRecord rec;
+    rec.method = kGm2d[k];
+    if (scene) {
+      rec.feasible_kind = to_string(scene->feasible.kind);
+      rec.feasible_vertices = scene->feasible.vertices.size();
+      if (scene->truth) rec.truth_in_feasible = scene->truth->in_feasible_set;
+      const std::optional<Selection>& s =
+          k == 0 ? scene->selections.max_area : k == 1 ? scene->selections.mean_2d : scene->selections.mean_3d;
+      if (s && s->estimate.valid && s->estimate.map[0] > 0 && s->estimate.map[1] > 0) {
+        // e = c ⊘ (m1, m2, 1), c white: (1/m1, 1/m2, 1), unit length.
+        const double l[3] = {1 / s->estimate.map[0], 1 / s->estimate.map[1], 1.0};
+        const double len = std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
+        rec.light = std::array<double, 3>{l[0] / len, l[1] / len, l[2] / len};
+        rec.answered = true;
+        rec.worst_case_deg = s->worst_case_illuminant_deg;
+      }
+    }
+    out.push_back(std::move(rec));
+  }
+  return out;
+}
+
+// Every method's record of image i, in the order asked: grey world where a method gave no light,
+// and the error against the measured light.
+std::vector<BenchmarkRecord> records_of(std::size_t i, const FoldCanonicals& c, const Reduced& r, const Colour& e,
+                                        const BenchmarkOptions& o, const Needs& n) {
+  std::map<std::string, BenchmarkRecord> made;
+  auto keep = [&](std::vector<BenchmarkRecord> recs) {
+    for (BenchmarkRecord& rec : recs) {
+      const std::string name = rec.method;
+      made[name] = std::move(rec);
+    }
+  };
+  if (n.gm3d) keep(records_3d(*c.gamut3, r, e, n));
+  if (n.gm2d) keep(records_2d(*c.gamut2, r, e, n));
+  for (std::size_t b = 0; b < all_baselines.size(); ++b) {
+    BenchmarkRecord rec;
+    rec.method = benchmark_methods()[6 + b];
+    rec.light = r.baselines[b];
+    rec.answered = r.baselines[b].has_value();
+    keep({std::move(rec)});
+  }
+  std::vector<BenchmarkRecord> out;
+  for (const std::string& m : o.methods) {
+    BenchmarkRecord rec = std::move(made.at(m));
+    rec.image = i;
+    if (!rec.light && !rec.answered && r.baselines[0]) {
+      rec.light = r.baselines[0];
+      rec.fallback = "grey_world";
+    }
+    if (rec.light) rec.error_deg = recovery_angular_error_deg(*rec.light, e);
+    out.push_back(std::move(rec));
+  }
+  return out;
+}
+
+}  // namespace
+
 BenchmarkResult run_benchmark(const std::vector<BenchmarkImage>& images, const BenchmarkOptions& o) {
   if (images.empty()) throw std::invalid_argument("the benchmark has no image");
   if (o.shard_count < 1 || o.shard_index < 1 || o.shard_index > o.shard_count)
@@ -222,146 +365,24 @@ BenchmarkResult run_benchmark(const std::vector<BenchmarkImage>& images, const B
     if (im.fold < 0) throw std::invalid_argument("image " + im.name + ": a fold must be >= 0");
     folds.insert(im.fold);
   }
-
-  // 1. Every image reduced, in parallel (half of the progress).
+  // 1. Every image reduced, in parallel (the first half of the progress).
   std::vector<Reduced> reduced(total);
-  auto report = [&](std::size_t base) {
-    return [&o, base, total](std::size_t done) {
-      if (o.progress) o.progress(std::min(total, (base + done) / 2), total);
-    };
-  };
-  parallel_for(total, threads, [&](std::size_t i) { reduced[i] = reduce(images[i], o, n); }, report(0));
-
-  // 2. Per fold: the canonical gamuts from the other folds, then the fold's images.
+  parallel_for(total, threads, [&](std::size_t i) { reduced[i] = reduce(images[i], o, n); },
+               [&](std::size_t done) {
+                 if (o.progress) o.progress(std::min(total, done / 2), total);
+               });
+  // 2. Per fold: the canonical gamuts from the other folds, then the fold's images (this shard's).
   std::vector<std::vector<BenchmarkRecord>> per_image(total);
   std::size_t estimated = 0;
   for (int fold : folds) {
     std::vector<std::size_t> test;
-    CanonicalLearner3 learner3(o.intensity);
-    CanonicalLearner2 learner2;
-    std::size_t training = 0;
-    for (std::size_t i = 0; i < total; ++i) {
-      if (images[i].fold == fold) {
-        if (i % o.shard_count == o.shard_index - 1) test.push_back(i);
-        continue;
-      }
-      ++training;
-      if (n.gm3d) learner3.add(reduced[i].hull3, images[i].light);
-      if (n.gm2d) learner2.add(reduced[i].lifts, images[i].light);
-    }
-    if (training == 0) throw std::invalid_argument("fold " + std::to_string(fold) + " has no training image (one fold only)");
+    for (std::size_t i = 0; i < total; ++i)
+      if (images[i].fold == fold && i % o.shard_count == o.shard_index - 1) test.push_back(i);
     if (test.empty()) continue;  // another shard's
-    std::optional<CanonicalConstraints3> canonical3;
-    if (n.gm3d) canonical3.emplace(learner3.gamut(), o.black);
-    std::optional<PreparedCanonical> canonical2;
-    if (n.gm2d) {
-      std::vector<Colour> lifts;
-      for (const Point2& p : learner2.gamut()) lifts.push_back({p.x, p.y, Rational(1)});
-      canonical2.emplace(prepare_canonical(lifts, SelectSceneOptions{}));
-    }
+    const FoldCanonicals c = learn_fold(fold, images, reduced, o, n);
     parallel_for(
         test.size(), threads,
-        [&](std::size_t k) {
-          const std::size_t i = test[k];
-          const Reduced& r = reduced[i];
-          const Colour& e = images[i].light;
-          std::vector<BenchmarkRecord>& out = per_image[i];
-          const std::optional<std::array<double, 3>>& grey = r.baselines[0];
-          auto finish = [&](BenchmarkRecord rec) {
-            rec.image = i;
-            if (!rec.light && grey && !rec.answered) {
-              rec.light = grey;
-              rec.fallback = "grey_world";
-            }
-            if (rec.light) rec.error_deg = recovery_angular_error_deg(*rec.light, e);
-            return rec;
-          };
-          std::map<std::string, BenchmarkRecord> made;
-          if (n.gm3d) {
-            Estimate3Options eo;
-            eo.rules.clear();
-            for (Rule3 rule : all_rules_3)
-              if (n.rule3[static_cast<int>(rule)]) eo.rules.push_back(rule);
-            ImageColours colours;
-            colours.colours = r.hull3;
-            colours.set = ColourSet::hull_3d;
-            std::optional<ImageEstimate3> est;
-            try {
-              est = estimate_3d(*canonical3, colours, eo);
-            } catch (const std::domain_error&) {  // unbounded F3: no estimate
-            }
-            std::optional<bool> in_f;
-            if (est && est->feasible.kind != ConvexKind3::empty) {
-              const std::optional<ConvexSet2> image = perspective_image(est->feasible);
-              in_f = image && contains(*image, true_perspective_map(e));
-            } else if (est) {
-              in_f = false;
-            }
-            for (Rule3 rule : eo.rules) {
-              BenchmarkRecord rec;
-              rec.method = kGm3d[static_cast<int>(rule)];
-              if (est) {
-                rec.feasible_kind = to_string(est->feasible.kind);
-                rec.feasible_vertices = est->feasible.vertices.size();
-                rec.truth_in_feasible = in_f;
-                const std::optional<ImageSelection3>& s = (*est)[rule];
-                if (s && s->light) {
-                  rec.light = s->light;
-                  rec.answered = true;
-                  rec.worst_case_deg = s->selection.worst_case_deg;
-                }
-              }
-              {
-                const std::string name = rec.method;
-                made[name] = finish(std::move(rec));
-              }
-            }
-          }
-          if (n.gm2d) {
-            std::optional<SceneResult> scene;
-            if (!r.lifts.empty()) {
-              try {
-                scene = select_scene(*canonical2, r.lifts, e);
-              } catch (const SceneInputError&) {  // no usable colour, a map beyond range: no estimate
-              }
-            }
-            for (int k2 = 0; k2 < 3; ++k2) {
-              if (!n.rule2[k2]) continue;
-              BenchmarkRecord rec;
-              rec.method = kGm2d[k2];
-              if (scene) {
-                rec.feasible_kind = to_string(scene->feasible.kind);
-                rec.feasible_vertices = scene->feasible.vertices.size();
-                if (scene->truth) rec.truth_in_feasible = scene->truth->in_feasible_set;
-                const std::optional<Selection>& s = k2 == 0 ? scene->selections.max_area
-                                                    : k2 == 1 ? scene->selections.mean_2d
-                                                              : scene->selections.mean_3d;
-                if (s && s->estimate.valid && s->estimate.map[0] > 0 && s->estimate.map[1] > 0) {
-                  // e = c ⊘ (m1, m2, 1), c white: (1/m1, 1/m2, 1), unit length.
-                  const double l[3] = {1 / s->estimate.map[0], 1 / s->estimate.map[1], 1.0};
-                  const double len = std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
-                  rec.light = std::array<double, 3>{l[0] / len, l[1] / len, l[2] / len};
-                  rec.answered = true;
-                  rec.worst_case_deg = s->worst_case_illuminant_deg;
-                }
-              }
-              {
-                const std::string name = rec.method;
-                made[name] = finish(std::move(rec));
-              }
-            }
-          }
-          for (std::size_t b = 0; b < all_baselines.size(); ++b) {
-            const std::string& name = benchmark_methods()[6 + b];
-            if (!n.baseline[b] || std::find(o.methods.begin(), o.methods.end(), name) == o.methods.end()) continue;
-            BenchmarkRecord rec;
-            rec.method = name;
-            rec.light = r.baselines[b];
-            rec.answered = r.baselines[b].has_value();
-            made[name] = finish(std::move(rec));
-          }
-          for (const std::string& m : o.methods) out.push_back(std::move(made.at(m)));
-        },
+        [&](std::size_t k) { per_image[test[k]] = records_of(test[k], c, reduced[test[k]], images[test[k]].light, o, n); },
         [&](std::size_t done) {
           if (o.progress) o.progress(std::min(total, (total + estimated + done) / 2), total);
         });
