@@ -160,9 +160,9 @@ Json header_json(std::size_t images, const std::vector<std::string>& methods, co
 // --plot: benchmark.dat (per method, index k: its sorted errors and the share of images at or
 // below each; then index M: per method its 5th, 25th, 50th, 75th and 95th percentiles) and
 // benchmark.gp (cumulative error curves, and the distributions as boxes), drawn by gnuplot.
-void write_plot(const BenchmarkResult& result, const std::string& dir) {
+void write_plot(const BenchmarkResult& result, const std::string& dir, const Json& provenance) {
   ensure_directory(dir);
-  std::string dat = "# gmcc benchmark: recovery angular errors (deg) per method\n";
+  std::string dat = "# gmcc-provenance: " + provenance.dump() + "\n# gmcc benchmark: recovery angular errors (deg) per method\n";
   std::vector<std::string> names;
   for (const BenchmarkSummary& s : result.summaries) {
     std::vector<double> e;
@@ -237,9 +237,9 @@ void write_outputs(const BenchmarkResult& result, const ImageOf& images, const s
   write_stdout(table(result));
 }
 
-int draw(const BenchmarkResult& result, const std::string& plot_dir) {
+int draw(const BenchmarkResult& result, const std::string& plot_dir, const Json& provenance) {
   if (plot_dir.empty()) return 0;
-  write_plot(result, plot_dir);
+  write_plot(result, plot_dir, provenance);
   return draw_with_gnuplot(plot_dir, "benchmark", "gmcc benchmark");
 }
 
@@ -335,7 +335,7 @@ int run_benchmark_command(const BenchmarkCliOptions& o) {
   ImageOf of;
   for (const BenchmarkImage& im : images) of.name.push_back(im.name), of.fold.push_back(im.fold);
   write_outputs(result, of, options.methods, shard, provenance_json(true), csv_file, json_file, records_file);
-  return draw(result, o.plot_dir);
+  return draw(result, o.plot_dir, provenance_json(true));
 }
 
 }  // namespace gmcc::cli
@@ -482,7 +482,7 @@ int merge_benchmark(const std::vector<std::string>& files, const std::string& cs
   for (auto& [key, value] : read) result.records.push_back(std::move(value.first));
   result.summaries = summarise_benchmark(result.records, methods);
   write_outputs(result, of, methods, "1/1", *provenance, csv_file, json_file, records_file);
-  return draw(result, plot_dir);
+  return draw(result, plot_dir, *provenance);
 }
 
 }  // namespace gmcc::cli
