@@ -108,6 +108,13 @@ std::string fixed(double x, int digits) {
   return buf;
 }
 
+// An image read and made colours by the run's pixel rules and its own (its truth-table row).
+ImageColours colours_of(const std::string& path, const Settings& s, const EstimateOptions& o, RgbImage& image,
+                        PixelRules& rules) {
+  const TruthRow* row = s.truths.empty() ? nullptr : &truth_of_image(s.truths, path, o.truths_path);
+  return image_colours_of(path, s.pixels, &image, &rules, row, o.truths_path);
+}
+
 // The run's output on stdout: the JSON document (its images last) or the summary.
 int report(bool json, Json& document, Json images, const std::ostringstream& text) {
   if (json) {
@@ -291,9 +298,7 @@ int run_estimate_3d(const EstimateOptions& o) {
   for (const std::string& path : o.images) {
     RgbImage image;
     PixelRules rules;
-    const ImageColours colours =
-        image_colours_of(path, s.pixels, &image, &rules,
-                         s.truths.empty() ? nullptr : &truth_of_image(s.truths, path, o.truths_path), o.truths_path);
+    const ImageColours colours = colours_of(path, s, o, image, rules);
     const std::optional<Colour> truth =
         s.truths.empty() ? s.truth : std::optional<Colour>(truth_of_image(s.truths, path, o.truths_path).light);
     ImageEstimate3 r;
@@ -378,9 +383,7 @@ int run_estimate(const EstimateOptions& o) {
   for (const std::string& path : o.images) {
     RgbImage image;
     PixelRules rules;
-    const ImageColours colours =
-        image_colours_of(path, s.pixels, &image, &rules,
-                         s.truths.empty() ? nullptr : &truth_of_image(s.truths, path, o.truths_path), o.truths_path);
+    const ImageColours colours = colours_of(path, s, o, image, rules);
     const SceneResult result = select_image(prepared, canonical, s, o.truths_path, path, colours);
     Json record = image_record(path, image, colours);
     Json estimates = Json::object();
