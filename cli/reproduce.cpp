@@ -1,5 +1,7 @@
 #include "reproduce.h"
 
+#include <gmcc/selection/select_scene_options.h>
+
 #include "integer_option.h"
 #include "limit_exit.h"
 #include "output_files.h"
@@ -232,6 +234,8 @@ int report(const ExperimentSetup& setup, ExperimentConfig config, const Reproduc
   set_activity("running the " + setup.name + " experiment");
   try {
     result = run_gamut_experiment(setup, config);
+  } catch (const SceneInputError& e) {
+    throw InputError(e.input == SceneInput::expansion ? "--expand" : "--surfaces", 0, e.what());
   } catch (const std::invalid_argument& e) {
     throw InputError("--surfaces", 0, e.what());
   }
@@ -383,6 +387,8 @@ int gehler_shi(ReproduceOptions o) {
   ExperimentResult result;
   try {
     result = run_gamut_experiment(setup.setup, config);
+  } catch (const SceneInputError& e) {
+    throw InputError(e.input == SceneInput::expansion ? "--expand" : "--surfaces", 0, e.what());
   } catch (const std::invalid_argument& e) {
     throw InputError("--surfaces", 0, e.what());
   }

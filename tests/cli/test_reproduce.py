@@ -55,6 +55,12 @@ with tempfile.TemporaryDirectory() as tmp:
                      (["synthetic", "--scenes", "abc"], "non-number"),
                      (["synthetic", "--lights", "X42"], "unknown light"),
                      (["synthetic", "--expand", "0.1"], "factor without policy"),
+                     (["synthetic", "--expand", "1e151", "--expand-policy", "multiplicative", "--scenes", "1"],
+                      "expansion beyond 1e150"),
+                     (["synthetic", "--expand", "1e400", "--expand-policy", "multiplicative", "--scenes", "1"],
+                      "expansion far beyond the doubles"),
+                     (["camera", "--expand", "1e200", "--expand-policy", "centroid-clip", "--scenes", "1"],
+                      "camera: expansion beyond 1e150"),
                      (["synthetic", "--surfaces", "30"], "more surfaces than allowed"),
                      (["synthetic", "--scenes", "1", "--csv", os.path.join(tmp, "no", "such", "dir", "x.csv")],
                       "unwritable CSV path"),
@@ -62,6 +68,8 @@ with tempfile.TemporaryDirectory() as tmp:
                      (["synthetic", "--data", os.path.join(tmp, "nodata"), "--scenes", "1"], "missing data folder")]:
         r = run(*bad)
         check(r.returncode == 2 and r.stdout == "" and "gmcc: error:" in r.stderr, f"{why}: exit 2, message, no stdout")
+        if "expansion" in why:
+            check("--expand" in r.stderr and "1e150" in r.stderr, f"{why}: blames --expand")
     check(not os.path.exists(os.path.join(tmp, "no")), "nothing half-written")
 
 sys.exit(tally.finish())

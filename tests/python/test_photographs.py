@@ -174,3 +174,10 @@ def test_benchmark_equals_the_command_line(tmp_path):
         gmcc.benchmark(tmp_path, truths)
     with pytest.raises(ValueError, match="not a benchmark method"):
         gmcc.benchmark(tmp_path, truths, folds=3, methods=["grey-sky"])
+
+
+def test_reproduce_refuses_an_expansion_beyond_the_limit():
+    # Issue 30 item 4: the 1e150 limit of every command, as a ValueError naming it (not an internal error).
+    for expand in ("1e151", "1e400"):
+        with pytest.raises(ValueError, match="1e150"):
+            gmcc.reproduce_synthetic(scenes=1, expand=expand, expand_policy="multiplicative")

@@ -1,4 +1,5 @@
 #include <gmcc/validation/gamut_experiment.h>
+#include <gmcc/selection/select_scene_options.h>
 
 #include <gmcc/geometry/chromaticity.h>
 #include <gmcc/geometry/feasible_polygon.h>
@@ -360,6 +361,19 @@ ExperimentResult result_header(const ExperimentSetup& setup, const ExperimentCon
       result.canonical_gamuts.push_back(canonical_gamut(set, config.expansion));
     result.canonical_gamut = result.canonical_gamuts.front();
   }
+  // The limit every command applies (docs/cli.md "Input files"): coordinates up to 1e150.
+  for (const ConvexSet2* g : {&result.canonical_gamut})
+    for (const Point2& v : g->vertices)
+      if (v.x > max_scene_coordinate() || v.y > max_scene_coordinate())
+        throw SceneInputError(SceneInput::expansion, SceneProblem::too_large, std::nullopt,
+                              "the expanded canonical gamut exceeds 1e150, the largest coordinate gmcc accepts "
+                              "(it reports doubles)");
+  for (const ConvexSet2& g : result.canonical_gamuts)
+    for (const Point2& v : g.vertices)
+      if (v.x > max_scene_coordinate() || v.y > max_scene_coordinate())
+        throw SceneInputError(SceneInput::expansion, SceneProblem::too_large, std::nullopt,
+                              "the expanded canonical gamut exceeds 1e150, the largest coordinate gmcc accepts "
+                              "(it reports doubles)");
   return result;
 }
 
