@@ -127,7 +127,7 @@ PixelSettings pixel_settings(const PixelOptions& o) {
     throw InputError("--colour-set", 0,
                      "with --bin the binned colours are passed as they are (their hull is taken "
                      "by the geometry); give one of --bin or --colour-set");
-  if (!o.mask_path.empty()) s.mask = read_image(o.mask_path);
+  if (!o.mask_path.empty()) s.mask = read_mask_image(o.mask_path);
   return s;
 }
 
@@ -142,7 +142,7 @@ ImageColours image_colours_of(const std::string& path, const PixelSettings& s, R
     if (row->saturation) rules.saturation = *row->saturation;
     if (!row->chart.empty()) rules.exclude_polygons.push_back(row->chart);
     if (!row->mask.empty())
-      own_mask = read_image((std::filesystem::path(truths_path).parent_path() / row->mask).string());
+      own_mask = read_mask_image((std::filesystem::path(truths_path).parent_path() / row->mask).string());
   }
   if (own_mask || s.mask) {
     const RgbImage& mask = own_mask ? *own_mask : *s.mask;

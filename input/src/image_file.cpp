@@ -41,7 +41,7 @@ void png_quiet(png_structp, png_const_charp) {}
 // Decodes into *out; on failure returns false with failure->message set. The
 // buffers live in the caller, so the longjmp of an error skips no destructor.
 bool decode_png(const std::string& bytes, RgbImage* out, std::vector<unsigned char>* buffer,
-                std::vector<png_bytep>* rows, PngFailure* failure) {
+                std::vector<png_bytep>* rows, PngFailure* failure, bool mask = false) {
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, failure, png_fail, png_quiet);
   if (!png) {
     std::snprintf(failure->message, sizeof failure->message, "libpng could not start");
@@ -62,15 +62,27 @@ bool decode_png(const std::string& bytes, RgbImage* out, std::vector<unsigned ch
   const png_uint_32 height = png_get_image_height(png, info);
   const int depth = png_get_bit_depth(png, info);
   const int type = png_get_color_type(png, info);
-  if (type != PNG_COLOR_TYPE_RGB && type != PNG_COLOR_TYPE_RGB_ALPHA)
+  if (mask) {
+    // A mask may be of any colour type and depth: made RGB, 8 or 16 bits; only zero matters.
+    if (type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
+    if ((type == PNG_COLOR_TYPE_GRAY || type == PNG_COLOR_TYPE_GRAY_ALPHA) && depth < 8)
+      png_set_expand_gray_1_2_4_to_8(png);
+    if (type == PNG_COLOR_TYPE_GRAY || type == PNG_COLOR_TYPE_GRAY_ALPHA) png_set_gray_to_rgb(png);
+    if (type & PNG_COLOR_MASK_ALPHA) png_set_strip_alpha(png);
+    if (png_get_valid(png, info, PNG_INFO_tRNS)) png_set_strip_alpha(png);
+  } else if (type != PNG_COLOR_TYPE_RGB && type != PNG_COLOR_TYPE_RGB_ALPHA) {
     png_error(png, type == PNG_COLOR_TYPE_PALETTE
                        ? "a palette image: expected linear RGB samples"
                        : "a grey image: expected three channels r, g, b");
-  if (depth != 8 && depth != 16) png_error(png, "expected 8 or 16 bits per sample");
+  }
+  if (!mask && depth != 8 && depth != 16) png_error(png, "expected 8 or 16 bits per sample");
   if (std::size_t(width) * height > max_image_pixels) png_error(png, "more than 2^28 pixels");
   if (depth == 16) png_set_swap(png);  // big-endian in the file; native order here
   if (type == PNG_COLOR_TYPE_RGB_ALPHA) png_set_strip_alpha(png);
   png_read_update_info(png, info);
+  const int out_depth = png_get_bit_depth(png, info);
+  if (png_get_channels(png, info) != 3 || (out_depth != 8 && out_depth != 16))
+    png_error(png, "cannot be read as RGB samples");
   const std::size_t row_bytes = png_get_rowbytes(png, info);
   buffer->resize(row_bytes * height);
   rows->resize(height);
@@ -80,10 +92,10 @@ bool decode_png(const std::string& bytes, RgbImage* out, std::vector<unsigned ch
   png_destroy_read_struct(&png, &info, nullptr);
   out->width = width;
   out->height = height;
-  out->bits = depth;
+  out->bits = out_depth;
   out->samples.resize(std::size_t(width) * height * 3);
   for (std::size_t i = 0; i < out->samples.size(); ++i)
-    if (depth == 8) {
+    if (out_depth == 8) {
       out->samples[i] = (*buffer)[i];
     } else {
       std::uint16_t v;
@@ -299,6 +311,20 @@ RgbImage decode_image(const std::string& bytes, const std::string& file) {
 
 RgbImage read_image(const std::string& path) {
   return decode_image(read_binary_file(path, max_image_file_bytes, "image file"), path);
+}
+
+RgbImage read_mask_image(const std::string& path) {
+  const std::string bytes = read_binary_file(path, max_image_file_bytes, "mask image");
+  if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n", 8) == 0) {
+    RgbImage image;
+    std::vector<unsigned char> buffer;
+    std::vector<png_bytep> rows;
+    PngFailure failure;
+    if (!decode_png(bytes, &image, &buffer, &rows, &failure, true))
+      throw InputError(path, 0, std::string("PNG: ") + failure.message);
+    return image;
+  }
+  return decode_image(bytes, path);
 }
 
 std::string encode_png16(const RgbImage& image) {

@@ -28,7 +28,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "support"))
 from cli_harness import Runner, expect  # noqa: E402
-from png16 import write_png16  # noqa: E402
+from png16 import write_grey_png, write_png16  # noqa: E402
 
 
 def angle(u, v):
@@ -277,8 +277,22 @@ def main():
             expect(ja["images"] == jb["images"], "the same image record")
             expect(ja["images"][0]["pixels"]["masked"] == 12, ja["images"][0]["pixels"])
 
+        def grey_and_one_bit_masks():
+            # The usual masks: 1-bit and 8-bit grey PNGs, zero where excluded (9 × 7 images).
+            img = os.path.join(bench, "b05.png")
+            counts = []
+            for depth in (1, 8):
+                mask = os.path.join(tmp, f"mask{depth}.png")
+                on = 1 if depth == 1 else 255
+                write_grey_png(mask, [[0 if (x < 3 and y < 2) else on for x in range(9)] for y in range(7)], depth)
+                rc, out, err = r.run("estimate", "--space", "3d", "--canonical", canonical3, "--mask", mask,
+                                     "--json", img, prefix=[])
+                expect(rc == 0, err)
+                counts.append(json.loads(out)["images"][0]["pixels"]["masked"])
+            expect(counts == [6, 6], counts)
+
         r.check_all(grey_world_independent, folds_file_equals_folds_k, bad_tables, shards_merge_to_the_whole_run,
-                    per_image_rules_in_the_truth_table)
+                    per_image_rules_in_the_truth_table, grey_and_one_bit_masks)
         return r.finish()
 
 

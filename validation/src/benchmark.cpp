@@ -71,7 +71,7 @@ Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs&
   const RgbImage image = read_image(im.path);
   PixelRules rules = rules_of(im, o.pixels);
   if (!im.mask_path.empty()) {
-    const RgbImage mask = read_image(im.mask_path);
+    const RgbImage mask = read_mask_image(im.mask_path);
     if (mask.width != image.width || mask.height != image.height)
       throw InputError(im.mask_path, 0, "the mask is " + std::to_string(mask.width) + "x" +
                                             std::to_string(mask.height) + ", its image " + im.path + " is " +

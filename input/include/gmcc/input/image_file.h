@@ -50,6 +50,11 @@ RgbImage decode_image(const std::string& bytes, const std::string& file);
 /// Read a PNG or TIFF file (read_binary_file, then decode_image).
 RgbImage read_image(const std::string& path);
 
+/// Read a mask image: a PNG of any colour type and depth (grey, 1-bit, palette, with or without
+/// alpha, RGB; made RGB for the caller, alpha dropped), or an RGB TIFF as read_image. A pixel is
+/// kept where any channel is non-zero (image_pixels.h). \throws InputError as read_image.
+RgbImage read_mask_image(const std::string& path);
+
 /// A 16-bit RGB PNG of `image` (samples as they are, whatever image.bits), no
 /// gamma chunk. \throws std::invalid_argument if the image is empty or its
 /// samples do not match its size.
