@@ -88,6 +88,10 @@ void add_pixel_options(CLI::App& cmd, PixelOptions& o) {
                  "(--dark-fraction 5/255 --bright-fraction 245/255)")
       ->check(CLI::IsMember({"none", "gijsenij"}))
       ->capture_default_str();
+  cmd.add_option("--prefilter", o.prefilter,
+                 "smooth the image with a Gaussian of this sigma (pixels, 0 to 64) before taking the "
+                 "kept pixels' colours; 0 for none")
+      ->capture_default_str();
   cmd.add_option("--bin", o.bin,
                  "average the kept pixels of each BxB block into one colour, 1 to 4096")
       ->capture_default_str();
@@ -120,6 +124,18 @@ PixelSettings pixel_settings(const PixelOptions& o) {
       if (o.command && o.command->count(name))
         throw InputError(name, 0, "--pixel-rule gijsenij sets it (5/255 and 245/255); give one or the other");
     r = gijsenij_pixel_rules(std::move(r));
+  }
+  {
+    Rational sigma;
+    try {
+      sigma = parse_rational(o.prefilter);
+    } catch (const std::invalid_argument& e) {
+      throw InputError("--prefilter", 0, quoted_text(o.prefilter) + ": " + e.what());
+    }
+    if (sgn(sigma) < 0 || sigma > 64) throw InputError("--prefilter", 0, "expected a sigma from 0 to 64 pixels");
+    r.prefilter_sigma = to_double_nearest(sigma);
+    if (r.prefilter_sigma > 0 && r.bin > 1)
+      throw InputError("--prefilter", 0, "not with --bin: give one or the other");
   }
   r.dark_below_fraction = fraction_option("--dark-fraction", o.dark_fraction, r.dark_below_fraction);
   r.bright_above_fraction = fraction_option("--bright-fraction", o.bright_fraction, r.bright_above_fraction);

@@ -22,6 +22,7 @@ struct PixelOptions {
   std::string dark = "0";                 // absolute dark threshold, after the black level
   std::string dark_fraction, bright_fraction;  // of the image's largest value; empty: none
   std::string pixel_rule = "none";        // none | gijsenij
+  std::string prefilter = "0";            // Gaussian pre-filter sigma, 0 for none
   std::string bin = "1";
   std::string colour_set = "hull";  // hull | distinct | hull-3d
   const CLI::App* command = nullptr;

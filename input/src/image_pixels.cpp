@@ -2,6 +2,7 @@
 
 #include <gmcc/geometry/chromaticity_hull.h>
 #include <gmcc/geometry/colour_hull_3.h>
+#include <gmcc/input/image_derivatives.h>
 #include <gmcc/input/colour_csv.h>
 
 #include <algorithm>
@@ -248,10 +249,53 @@ KeptPixels kept_pixels(const RgbImage& image, const PixelRules& rules) {
   return out;
 }
 
+namespace {
+
+// The pre-filtered route: the smoothed image's values at the kept pixels, as exact colours.
+ImageColours prefiltered_colours(const RgbImage& image, const PixelRules& rules, const KeptPixels& kept) {
+  const DoubleImage smooth = gaussian_derivative(linear_image(image, rules.black_level), rules.prefilter_sigma,
+                                                 DerivativeOrder::zero);
+  ImageColours out;
+  out.counts = kept.counts;
+  std::vector<std::array<double, 3>> colours;
+  for (std::size_t i = 0; i < kept.kept.size(); ++i)
+    if (kept.kept[i]) colours.push_back({smooth.at(i, 0), smooth.at(i, 1), smooth.at(i, 2)});
+  std::sort(colours.begin(), colours.end());
+  colours.erase(std::unique(colours.begin(), colours.end()), colours.end());
+  out.counts.colours = colours.size();
+  out.set = rules.colour_set;
+  if (colours.empty()) return out;
+  if (rules.colour_set == ColourSet::hull) {
+    const ChromaticityHull hull = chromaticity_hull(colours);
+    out.counts.no_chromaticity = hull.dropped;
+    for (const Point2& p : hull.hull.vertices) out.colours.push_back({p.x, p.y, Rational(1)});
+    out.counts.hull_vertices = out.colours.size();
+    return out;
+  }
+  if (rules.colour_set == ColourSet::hull_3d) {
+    for (std::size_t i : colour_hull_vertex_indices(colours))
+      out.colours.push_back({Rational(colours[i][0]), Rational(colours[i][1]), Rational(colours[i][2])});
+    out.counts.hull_vertices = out.colours.size();
+    return out;
+  }
+  if (colours.size() > max_colours)
+    throw std::length_error(std::to_string(colours.size()) + " distinct colours, more than the " +
+                            std::to_string(max_colours) + " a colour set may hold: use the hull colour set");
+  for (const auto& c : colours) out.colours.push_back({Rational(c[0]), Rational(c[1]), Rational(c[2])});
+  return out;
+}
+
+}  // namespace
+
 ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
   if (rules.bin == 0) throw std::invalid_argument("the binning block size must be at least 1");
+  if (!(rules.prefilter_sigma >= 0 && rules.prefilter_sigma <= 64))
+    throw std::invalid_argument("the pre-filter's sigma must be from 0 to 64");
+  if (rules.prefilter_sigma > 0 && rules.bin > 1)
+    throw std::invalid_argument("a pre-filter and binning do not go together: give one");
   const std::size_t w = image.width, h = image.height;
   KeptPixels kept = kept_pixels(image, rules);
+  if (rules.prefilter_sigma > 0) return prefiltered_colours(image, rules, kept);
 
   ImageColours out;
   out.counts = kept.counts;

@@ -136,7 +136,7 @@ def feasible_set(canonical, image, *, mask=None, black_level=0, saturation=None,
 
 def image_colours(image, *, mask=None, black_level=0, saturation=None, dark=0,
                   dark_fraction=None, bright_fraction=None, pixel_rule="none",
-                  colour_set="hull") -> ImageColours:
+                  colour_set="hull", prefilter=0) -> ImageColours:
     """The colours the geometry takes from a linear camera image (image_pixels.h;
     docs/conventions.md §8).
 
@@ -164,13 +164,16 @@ def image_colours(image, *, mask=None, black_level=0, saturation=None, dark=0,
         the 2-D route depends on (read them as ``.chromaticity_lifts``; ``.colours`` refuses
         them, since they are not pixel colours); ``'distinct'``: every distinct pixel colour;
         ``'hull-3d'``: the pixel colours on their exact 3-D hull.
+    prefilter : number
+        A Gaussian pre-filter's sigma in pixels (integer images; 0 for none): the kept pixels'
+        colours are taken from the smoothed image (computed in double, taken exactly).
 
     Returns
     -------
     ImageColours
         The colours, what they are (``colour_set``) and the pixel counts."""
     return _core.image_colours(image, mask, black_level, saturation, dark, dark_fraction,
-                               bright_fraction, pixel_rule, colour_set)
+                               bright_fraction, pixel_rule, colour_set, prefilter)
 
 
 def select_maps(feasible_set, *, mean3d="analytic", precision=0, order=12, samples=1000000,

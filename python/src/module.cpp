@@ -247,13 +247,13 @@ void bind_scene(py::module_& m) {
       "image_colours",
       [](py::handle image, py::object mask, py::object black_level, py::object saturation, py::object dark,
          py::object dark_fraction, py::object bright_fraction, const std::string& pixel_rule,
-         const std::string& colour_set) {
+         const std::string& colour_set, py::object prefilter) {
         return image_colours_of(image, {mask, black_level, saturation, dark, dark_fraction, bright_fraction,
-                                        pixel_rule, colour_set});
+                                        pixel_rule, colour_set, prefilter});
       },
       py::arg("image"), py::arg("mask") = py::none(), py::arg("black_level") = 0, py::arg("saturation") = py::none(),
       py::arg("dark") = 0, py::arg("dark_fraction") = py::none(), py::arg("bright_fraction") = py::none(),
-      py::arg("pixel_rule") = "none", py::arg("colour_set") = "hull",
+      py::arg("pixel_rule") = "none", py::arg("colour_set") = "hull", py::arg("prefilter") = 0,
         "The pixel rules (image_pixels.h; docs/conventions.md §8). Public: gmcc.image_colours.");
 
   m.def(

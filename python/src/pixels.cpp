@@ -67,10 +67,16 @@ void pixel_fractions(const PixelArgs& args, std::optional<Rational>& dark, std::
   fractions_of_impl(args, dark, bright);
 }
 
+double sigma_from(py::handle x) {
+  const Rational s = number_from(x, "prefilter");
+  if (sgn(s) < 0 || s > 64) throw py::value_error("prefilter: a sigma from 0 to 64 pixels");
+  return to_double_nearest(s);
+}
+
 bool PixelArgs::plain() const {
   return mask.is_none() && saturation.is_none() && dark_fraction.is_none() && bright_fraction.is_none() &&
          pixel_rule == "none" && py::isinstance<py::int_>(black_level) && black_level.cast<long long>() == 0 &&
-         py::isinstance<py::int_>(dark) && dark.cast<long long>() == 0;
+         py::isinstance<py::int_>(dark) && dark.cast<long long>() == 0 && sigma_from(prefilter) == 0;
 }
 
 ColourSet colour_set_from(const std::string& name) {
@@ -115,6 +121,8 @@ PyImageColours image_colours_of(py::handle image_obj, const PixelArgs& args) {
     img.height = h;
     const py::array_t<double, py::array::c_style> a = np.attr("ascontiguousarray")(image, "float64");
     img.samples.assign(a.data(), a.data() + h * w * 3);
+    if (sigma_from(args.prefilter) > 0)
+      throw py::value_error("prefilter: for integer images (8- or 16-bit samples); smooth a float image yourself");
     FloatPixelRules rules;
     rules.keep = std::move(keep);
     rules.colour_set = colour_set_from(args.colour_set);
@@ -173,6 +181,7 @@ PyImageColours run_pixel_rules(const RgbImage& img, std::vector<bool> keep, cons
   rules.black_level = integer_in<std::uint32_t>(args.black_level, "black_level", 0, 65535);
   if (const auto d = integer_in<std::uint32_t>(args.dark, "dark", 0, 65535)) rules.dark_below = d;
   pixel_fractions(args, rules.dark_below_fraction, rules.bright_above_fraction);
+  rules.prefilter_sigma = sigma_from(args.prefilter);
   if (!args.saturation.is_none()) rules.saturation = integer_in<std::uint32_t>(args.saturation, "saturation", 0, 65536);
   return colours_by_rules(img, rules);
 }

@@ -25,6 +25,7 @@ struct PixelArgs {
   py::object bright_fraction = py::none();  ///< None or a fraction of M
   std::string pixel_rule = "none";          ///< none | gijsenij
   std::string colour_set = "hull";          ///< hull | distinct | hull-3d
+  py::object prefilter = py::int_(0);       ///< Gaussian pre-filter sigma, 0 for none
   /// True when every argument but colour_set has its default (no pixel rule asked for).
   bool plain() const;
 };
@@ -37,6 +38,9 @@ void pixel_fractions(const PixelArgs& args, std::optional<Rational>& dark, std::
 
 /// True when `x` is a numpy array with three dimensions (an image, not a list of colours).
 bool is_image(py::handle x);
+
+/// The `prefilter` argument: a sigma from 0 to 64 pixels. \throws ValueError.
+double sigma_from(py::handle x);
 
 /// The `colour_set` argument as the library's ColourSet. \throws ValueError.
 ColourSet colour_set_from(const std::string& name);

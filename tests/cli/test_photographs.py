@@ -290,6 +290,11 @@ def main():
                 expect(rc == 0, err)
                 counts.append(json.loads(out)["images"][0]["pixels"]["masked"])
             expect(counts == [6, 6], counts)
+            rc, out, err = r.run("estimate", "--space", "3d", "--canonical", canonical3, "--prefilter", "1", img,
+                                 prefix=[])
+            expect(rc == 0 and "max_trace  light" in out, err)
+            rc, out, err = r.run("estimate", "--canonical", canonical2, "--prefilter", "1", "--bin", "2", img, prefix=[])
+            expect(rc == 2 and "--prefilter" in err, err)
 
         r.check_all(grey_world_independent, folds_file_equals_folds_k, bad_tables, shards_merge_to_the_whole_run,
                     per_image_rules_in_the_truth_table, grey_and_one_bit_masks)

@@ -459,3 +459,48 @@ BOOST_AUTO_TEST_CASE(hull_3d_colour_set) {
   rules.colour_set = ColourSet::hull;
   BOOST_TEST(!pixel_colours(image_colours(im, rules).set));
 }
+
+// The Gaussian pre-filter (image_pixels.h): a constant image stays one colour exactly; a smoothed
+// colour is a convex combination of the image's (every channel within the image's range, and in
+// 2-D its chromaticity within theirs); kept pixels are decided on the raw values; not with binning.
+BOOST_AUTO_TEST_CASE(gaussian_prefilter) {
+  RgbImage flat = ramp(9, 7, 16);
+  for (std::size_t p = 0; p < 63; ++p) flat.samples[3 * p] = 300, flat.samples[3 * p + 1] = 200, flat.samples[3 * p + 2] = 100;
+  PixelRules rules;
+  rules.prefilter_sigma = 1.5;
+  rules.colour_set = ColourSet::distinct;
+  const ImageColours one = image_colours(flat, rules);
+  BOOST_TEST_REQUIRE(one.colours.size() == 1u);
+  BOOST_TEST((one.colours[0] == Colour{300, 200, 100}));
+  std::mt19937 rng(9);
+  std::uniform_int_distribution<int> v(10, 5000);
+  RgbImage im = ramp(16, 12, 16);
+  for (auto& s : im.samples) s = static_cast<std::uint16_t>(v(rng));
+  int lo[3] = {65535, 65535, 65535}, hi[3] = {0, 0, 0};
+  for (std::size_t p = 0; p < 16 * 12; ++p)
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = std::min<int>(lo[c], im.samples[3 * p + c]);
+      hi[c] = std::max<int>(hi[c], im.samples[3 * p + c]);
+    }
+  rules.prefilter_sigma = 1;
+  rules.colour_set = ColourSet::distinct;
+  const ImageColours smooth = image_colours(im, rules);
+  BOOST_TEST(smooth.counts.kept == 16u * 12u);
+  for (const Colour& c : smooth.colours)
+    for (int k = 0; k < 3; ++k) {
+      const Rational& x = k == 0 ? c.r : k == 1 ? c.g : c.b;
+      BOOST_TEST((x >= lo[k] && x <= hi[k]));
+    }
+  rules.colour_set = ColourSet::hull_3d;
+  const ImageColours hull = image_colours(im, rules);
+  BOOST_TEST(hull.colours.size() <= smooth.colours.size());
+  for (const Colour& c : hull.colours)
+    BOOST_TEST((std::find(smooth.colours.begin(), smooth.colours.end(), c) != smooth.colours.end()));
+  rules.colour_set = ColourSet::hull;
+  BOOST_TEST((image_colours(im, rules).set == ColourSet::hull));
+  rules.bin = 2;
+  BOOST_CHECK_THROW(image_colours(im, rules), std::invalid_argument);
+  rules.bin = 1;
+  rules.prefilter_sigma = 65;
+  BOOST_CHECK_THROW(image_colours(im, rules), std::invalid_argument);
+}

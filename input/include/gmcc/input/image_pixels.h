@@ -69,6 +69,12 @@ struct PixelRules {
   std::optional<Rational> dark_below_fraction;
   /// Step 4: drop a pixel with a channel above this fraction of M (0 to 1); absent: none.
   std::optional<Rational> bright_above_fraction;
+  /// A Gaussian pre-filter of scale σ (Gijsenij et al. 2010's pixel gamut mapping parameter):
+  /// 0 for none; else the image (black level removed) is smoothed channel by channel
+  /// (image_derivatives.h, in double with a fixed order) and each kept pixel's colour is its
+  /// smoothed value, taken exactly; which pixels are kept is decided on the raw values (steps
+  /// 1–4). Not with binning.
+  double prefilter_sigma = 0;
   std::uint32_t bin = 1;  ///< block size b for binning; 1: every kept pixel is a colour
   /// With bin > 1 the binned colours are always returned as ColourSet::distinct.
   ColourSet colour_set = ColourSet::distinct;
@@ -114,8 +120,8 @@ KeptPixels kept_pixels(const RgbImage& image, const PixelRules& rules);
 /// Apply the rules to `image`.
 /// \throws std::length_error for ColourSet::distinct with more than max_colours (colour_csv.h)
 ///         distinct colours; std::invalid_argument if bin is 0, `keep` is neither empty nor width
-///         · height long, a polygon has fewer than 3 vertices, or a fraction of step 4 is
-///         outside [0, 1].
+///         · height long, a polygon has fewer than 3 vertices, a fraction of step 4 is
+///         outside [0, 1], or a pre-filter σ outside [0, 64] or given with binning.
 ImageColours image_colours(const RgbImage& image, const PixelRules& rules);
 
 /// A linear camera image of floating-point samples (as a Python or MATLAB reader returns it):

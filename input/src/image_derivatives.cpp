@@ -1,4 +1,4 @@
-#include <gmcc/photo/image_derivatives.h>
+#include <gmcc/input/image_derivatives.h>
 
 #include <cmath>
 #include <stdexcept>
