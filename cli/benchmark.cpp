@@ -23,6 +23,7 @@
 #include <thread>
 
 #include "integer_option.h"
+#include "json_fields.h"
 #include "output_files.h"
 #include "provenance.h"
 #include "write_stdout.h"
@@ -81,7 +82,7 @@ std::string table(const BenchmarkResult& r) {
   t << line;
   for (const BenchmarkSummary& s : r.summaries) {
     const ErrorStatistics& e = s.errors;
-    const bool gamut = s.method.rfind("gm", 0) == 0;
+    const bool gamut = is_gamut_method(s.method);
     std::snprintf(line, sizeof line, "%-16s %6zu %8zu %7.2f %7.2f %7.2f %7.2f %7.2f %7.2f %7.2f %7s %7s\n",
                   s.method.c_str(), s.images, s.answered, e.mean, e.median, e.trimean, e.best25, e.worst25, e.p95,
                   e.max, gamut ? (fixed(100.0 * double(s.truth_in_feasible) / double(s.images), 1) + "%").c_str() : "",
@@ -99,7 +100,7 @@ std::string csv(const BenchmarkResult& r) {
          "max_deg,truth_in_feasible,worst_case_covers,worst_case_correlation\n";
   for (const BenchmarkSummary& s : r.summaries) {
     const ErrorStatistics& e = s.errors;
-    const bool gamut = s.method.rfind("gm", 0) == 0;
+    const bool gamut = is_gamut_method(s.method);
     const bool any = e.n > 0;
     auto stat = [&](double x) { return any ? number(x) : std::string(); };
     out += s.method + "," + std::to_string(s.images) + "," + std::to_string(s.answered) + "," +
@@ -122,7 +123,7 @@ Json summary_json(const BenchmarkSummary& s) {
             {"errors_deg",
              {{"n", e.n}, {"mean", stat(e.mean)}, {"median", stat(e.median)}, {"trimean", stat(e.trimean)},
               {"best25", stat(e.best25)}, {"worst25", stat(e.worst25)}, {"p95", stat(e.p95)}, {"max", stat(e.max)}}}};
-  if (s.method.rfind("gm", 0) == 0) {
+  if (is_gamut_method(s.method)) {
     j["empty"] = s.empty;
     j["fallback"] = "grey_world";
     j["truth_in_feasible"] = s.truth_in_feasible;
@@ -193,7 +194,7 @@ void write_plot(const BenchmarkResult& result, const std::string& dir, const Jso
   std::string curves = "plot ", boxes = "set xtics (";
   for (std::size_t k = 0; k < names.size(); ++k) {
     curves += std::string(k ? ", '' " : "'benchmark.dat' ") + "index " + std::to_string(k) +
-              " using 1:2 with steps lw 2 dt " + (names[k].rfind("gm", 0) == 0 ? "1" : "2") + " title '" + names[k] + "'";
+              " using 1:2 with steps lw 2 dt " + (is_gamut_method(names[k]) ? "1" : "2") + " title '" + names[k] + "'";
     boxes += (k ? ", '" : "'") + names[k] + "' " + std::to_string(k + 1);
   }
   boxes += ") rotate by 45 right\n";
@@ -343,26 +344,9 @@ int run_benchmark_command(const BenchmarkCliOptions& o) {
 namespace gmcc::cli {
 namespace {
 
-struct Where {
-  std::string file;
-  std::size_t line;
-};
-
-[[noreturn]] void bad_record(const Where& at, const std::string& problem) { throw InputError(at.file, at.line, problem); }
-
-template <class T>
-T field(const Json& j, const char* name, const Where& at) {
-  if (!j.is_object() || !j.contains(name)) bad_record(at, std::string("no member \"") + name + "\"");
-  try {
-    return j.at(name).get<T>();
-  } catch (const Json::exception&) {
-    bad_record(at, std::string("member \"") + name + "\" has the wrong type");
-  }
-}
-
-std::optional<double> optional_field(const Json& j, const char* name, const Where& at) {
+std::optional<double> optional_field(const Json& j, const char* name, const Place& at) {
   if (!j.contains(name) || j.at(name).is_null()) return std::nullopt;
-  return field<double>(j, name, at);
+  return get<double>(j, name, at);
 }
 
 // The JSON lines of a records file: (line number, text).
@@ -405,69 +389,69 @@ int merge_benchmark(const std::vector<std::string>& files, const std::string& cs
   std::size_t images = 0;
   std::vector<std::string> methods;
   // (index, method position) -> record, and where it was read.
-  std::map<std::pair<std::size_t, std::size_t>, std::pair<BenchmarkRecord, Where>> read;
+  std::map<std::pair<std::size_t, std::size_t>, std::pair<BenchmarkRecord, Place>> read;
   ImageOf of;
   std::vector<bool> named;
   std::set<std::string> shards;
   for (const std::string& file : files) {
     const auto lines = json_lines(file);
     for (std::size_t k = 0; k < lines.size(); ++k) {
-      const Where at{file, lines[k].first};
+      const Place at{file, lines[k].first};
       Json j;
       try {
         j = Json::parse(lines[k].second);
       } catch (const Json::exception&) {
-        bad_record(at, "not a JSON object");
+        bad(at, "not a JSON object");
       }
       if (k == 0) {
-        if (!j.is_object() || j.size() != 1 || !j.contains("provenance")) bad_record(at, "expected the provenance line");
+        if (!j.is_object() || j.size() != 1 || !j.contains("provenance")) bad(at, "expected the provenance line");
         if (!provenance) provenance = j.at("provenance");
         else if (*provenance != j.at("provenance"))
-          bad_record(at, "another run's provenance than " + first_file + "'s (the shards of one run record the same)");
+          bad(at, "another run's provenance than " + first_file + "'s (the shards of one run record the same)");
         continue;
       }
       if (k == 1) {
-        if (!j.is_object() || !j.contains("benchmark")) bad_record(at, "expected the benchmark's header line");
+        if (!j.is_object() || !j.contains("benchmark")) bad(at, "expected the benchmark's header line");
         Json h = j.at("benchmark");
-        const std::string shard = field<std::string>(h, "shard", at);
-        if (!shards.insert(shard).second) bad_record(at, "shard " + shard + " is already in another file");
+        const std::string shard = get<std::string>(h, "shard", at);
+        if (!shards.insert(shard).second) bad(at, "shard " + shard + " is already in another file");
         h.erase("shard");
         if (!setup) {
           setup = h;
           first_file = file;
-          images = field<std::size_t>(h, "images", at);
-          methods = field<std::vector<std::string>>(h, "methods", at);
+          images = get<std::size_t>(h, "images", at);
+          methods = get<std::vector<std::string>>(h, "methods", at);
           of.name.assign(images, "");
           of.fold.assign(images, 0);
           named.assign(images, false);
         } else if (*setup != h) {
-          bad_record(at, "another run than " + first_file + "'s (only \"shard\" may differ)");
+          bad(at, "another run than " + first_file + "'s (only \"shard\" may differ)");
         }
         continue;
       }
       BenchmarkRecord r;
-      r.image = field<std::size_t>(j, "index", at);
-      if (r.image >= images) bad_record(at, "image index " + std::to_string(r.image) + " beyond the run's " + std::to_string(images));
-      r.method = field<std::string>(j, "method", at);
+      r.image = get<std::size_t>(j, "index", at);
+      if (r.image >= images) bad(at, "image index " + std::to_string(r.image) + " beyond the run's " + std::to_string(images));
+      r.method = get<std::string>(j, "method", at);
       const auto m = std::find(methods.begin(), methods.end(), r.method);
-      if (m == methods.end()) bad_record(at, "method " + quoted_text(r.method) + " is not in the run");
-      of.name[r.image] = field<std::string>(j, "image", at);
-      of.fold[r.image] = field<int>(j, "fold", at);
+      if (m == methods.end()) bad(at, "method " + quoted_text(r.method) + " is not in the run");
+      of.name[r.image] = get<std::string>(j, "image", at);
+      of.fold[r.image] = get<int>(j, "fold", at);
       named[r.image] = true;
-      if (!j.at("light").is_null()) r.light = field<std::array<double, 3>>(j, "light", at);
+      if (!member(j, "light", at).is_null()) r.light = get<std::array<double, 3>>(j, "light", at);
       r.error_deg = optional_field(j, "error_deg", at);
-      r.answered = field<bool>(j, "answered", at);
-      if (!j.at("fallback").is_null()) r.fallback = field<std::string>(j, "fallback", at);
+      r.answered = get<bool>(j, "answered", at);
+      if (!member(j, "fallback", at).is_null()) r.fallback = get<std::string>(j, "fallback", at);
       if (j.contains("feasible_set")) {
         const Json& f = j.at("feasible_set");
-        r.feasible_kind = field<std::string>(f, "kind", at);
-        r.feasible_vertices = field<std::size_t>(f, "vertices", at);
-        if (!j.at("truth_in_feasible").is_null()) r.truth_in_feasible = field<bool>(j, "truth_in_feasible", at);
+        r.feasible_kind = get<std::string>(f, "kind", at);
+        r.feasible_vertices = get<std::size_t>(f, "vertices", at);
+        if (!member(j, "truth_in_feasible", at).is_null()) r.truth_in_feasible = get<bool>(j, "truth_in_feasible", at);
         r.worst_case_deg = optional_field(j, "worst_case_deg", at);
       }
       const auto key = std::make_pair(r.image, static_cast<std::size_t>(m - methods.begin()));
       if (const auto seen = read.find(key); seen != read.end())
-        bad_record(at, "image " + of.name[r.image] + " under " + r.method + " is already in " + seen->second.second.file +
+        bad(at, "image " + of.name[r.image] + " under " + r.method + " is already in " + seen->second.second.file +
                            ":" + std::to_string(seen->second.second.line));
       read.emplace(key, std::make_pair(std::move(r), at));
     }

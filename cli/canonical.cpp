@@ -4,7 +4,6 @@
 #include <gmcc/geometry/rational.h>
 #include <gmcc/input/input_error.h>
 #include <gmcc/input/colour_csv.h>
-#include <gmcc/input/image_lights.h>
 #include <gmcc/input/truth_table.h>
 #include <gmcc/input/text_file.h>
 #include <gmcc/photo/learn_canonical.h>

@@ -6,7 +6,6 @@
 #include <gmcc/selection/select_scene.h>
 #include <gmcc/input/colour_csv.h>
 #include <gmcc/input/image_file.h>
-#include <gmcc/input/image_lights.h>
 #include <gmcc/photo/estimate_3d.h>
 
 #include <cmath>

@@ -1,6 +1,7 @@
 #include "merge.h"
 
 #include "benchmark.h"
+#include "json_fields.h"
 #include "limit_exit.h"
 #include "reproduce.h"
 
@@ -19,27 +20,6 @@ using nlohmann::json;
 // Largest scene file accepted: 10^6 scenes of 64 lights and 24 surface counts do not fit, but a
 // shard of them does (a record is about 600 bytes).
 constexpr std::size_t kMaxSceneFileBytes = std::size_t(4) << 30;
-
-struct Place {
-  std::string file;
-  std::size_t line;
-};
-
-[[noreturn]] void bad(const Place& at, const std::string& problem) { throw InputError(at.file, at.line, problem); }
-
-const json& member(const json& object, const char* name, const Place& at) {
-  if (!object.is_object() || !object.contains(name)) bad(at, std::string("no member \"") + name + "\"");
-  return object.at(name);
-}
-
-template <class T>
-T get(const json& object, const char* name, const Place& at) {
-  try {
-    return member(object, name, at).get<T>();
-  } catch (const json::exception&) {
-    bad(at, std::string("member \"") + name + "\" has the wrong type");
-  }
-}
 
 Rational rational(const json& j, const Place& at) {
   try {

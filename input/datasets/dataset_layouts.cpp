@@ -56,26 +56,30 @@ void append(const void* data, std::size_t n, std::vector<double>& out) {
   for (std::size_t i = 0; i < n; ++i) out.push_back(static_cast<double>(p[i]));
 }
 
-Numbers numbers(mat_t* mat, const char* name, const std::string& file) {
-  MatVar m{Mat_VarRead(mat, name)};
-  if (!m.var) throw InputError(file, 0, std::string("no variable ") + name);
-  if (m.var->rank != 2 || m.var->isComplex)
-    throw InputError(file, 0, std::string(name) + ": expected a real matrix");
-  Numbers out{m.var->dims[0], m.var->dims[1], {}};
+// A real numeric matrix's values as doubles, column-major, with its rows and columns.
+Numbers numbers_of(const matvar_t* v, const char* name, const std::string& file) {
+  if (v->rank != 2 || v->isComplex) throw InputError(file, 0, std::string(name) + ": expected a real matrix");
+  Numbers out{v->dims[0], v->dims[1], {}};
   const std::size_t n = out.rows * out.cols;
-  switch (m.var->class_type) {
-    case MAT_C_DOUBLE: append<double>(m.var->data, n, out.v); break;
-    case MAT_C_SINGLE: append<float>(m.var->data, n, out.v); break;
-    case MAT_C_UINT16: append<std::uint16_t>(m.var->data, n, out.v); break;
-    case MAT_C_INT16: append<std::int16_t>(m.var->data, n, out.v); break;
-    case MAT_C_UINT32: append<std::uint32_t>(m.var->data, n, out.v); break;
-    case MAT_C_INT32: append<std::int32_t>(m.var->data, n, out.v); break;
-    case MAT_C_UINT8: append<std::uint8_t>(m.var->data, n, out.v); break;
+  switch (v->class_type) {
+    case MAT_C_DOUBLE: append<double>(v->data, n, out.v); break;
+    case MAT_C_SINGLE: append<float>(v->data, n, out.v); break;
+    case MAT_C_UINT16: append<std::uint16_t>(v->data, n, out.v); break;
+    case MAT_C_INT16: append<std::int16_t>(v->data, n, out.v); break;
+    case MAT_C_UINT32: append<std::uint32_t>(v->data, n, out.v); break;
+    case MAT_C_INT32: append<std::int32_t>(v->data, n, out.v); break;
+    case MAT_C_UINT8: append<std::uint8_t>(v->data, n, out.v); break;
     default: throw InputError(file, 0, std::string(name) + ": expected numbers");
   }
   for (double x : out.v)
     if (!std::isfinite(x)) throw InputError(file, 0, std::string(name) + ": a value that is not finite");
   return out;
+}
+
+Numbers numbers(mat_t* mat, const char* name, const std::string& file) {
+  MatVar m{Mat_VarRead(mat, name)};
+  if (!m.var) throw InputError(file, 0, std::string("no variable ") + name);
+  return numbers_of(m.var, name, file);
 }
 
 // A char array's text (MATLAB stores characters as 8- or 16-bit codes).
@@ -275,17 +279,8 @@ std::vector<TruthRow> read_gehler_shi(const std::string& dir_text, std::map<std:
     for (int k = 0; k < te.var->rank; ++k) n *= te.var->dims[k];
     for (std::size_t f = 0; f < n; ++f) {
       const matvar_t* c = Mat_VarGetCell(te.var, static_cast<int>(f));
-      if (!c || c->rank != 2) throw InputError(sfile, 0, "te_split: a fold that is not a list");
-      const std::size_t m = c->dims[0] * c->dims[1];
-      std::vector<double> idx;
-      switch (c->class_type) {
-        case MAT_C_DOUBLE: append<double>(c->data, m, idx); break;
-        case MAT_C_SINGLE: append<float>(c->data, m, idx); break;
-        case MAT_C_UINT16: append<std::uint16_t>(c->data, m, idx); break;
-        case MAT_C_INT32: append<std::int32_t>(c->data, m, idx); break;
-        default: throw InputError(sfile, 0, "te_split: indices that are not numbers");
-      }
-      for (double x : idx) {
+      if (!c) throw InputError(sfile, 0, "te_split: a fold that is not a list");
+      for (double x : numbers_of(c, "te_split", sfile).v) {
         if (x < 1 || x > double(rows.size()) || x != std::floor(x))
           throw InputError(sfile, 0, "te_split: an index outside 1.." + std::to_string(rows.size()));
         if (!folds.emplace(rows[static_cast<std::size_t>(x) - 1].image, static_cast<int>(f)).second)

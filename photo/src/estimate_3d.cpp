@@ -2,6 +2,8 @@
 
 #include <gmcc/selection/max_trace.h>
 
+#include "internal/names.h"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -17,12 +19,8 @@ std::string to_string(Rule3 rule) {
 }
 
 Rule3 rule_3_from_string(const std::string& text) {
-  for (Rule3 r : all_rules_3) {
-    std::string dashed = to_string(r);
-    for (char& ch : dashed)
-      if (ch == '_') ch = '-';
-    if (text == to_string(r) || text == dashed) return r;
-  }
+  for (Rule3 r : all_rules_3)
+    if (internal::names_match(text, to_string(r))) return r;
   throw std::invalid_argument("\"" + text + "\" is not one of max-volume, centroid, max-trace");
 }
 
@@ -71,17 +69,8 @@ ImageEstimate3 estimate_3d(const CanonicalConstraints3& canonical, const ImageCo
   } else {
     out.feasible = feasible_set_3d(canonical, image.colours);
   }
-  if (want[2] && out.feasible.kind != ConvexKind3::empty) {
-    MapEstimate3 m = max_trace(out.feasible);
-    Selection3 s{m, std::nullopt};
-    const Point3 d = measured_map(m);
-    bool nonzero = false;
-    for (const Point3& v : out.feasible.vertices)
-      nonzero = nonzero || sgn(v.x) != 0 || sgn(v.y) != 0 || sgn(v.z) != 0;
-    if (nonzero && (sgn(d.x) != 0 || sgn(d.y) != 0 || sgn(d.z) != 0))
-      s.worst_case_deg = worst_case_map_deg_3d(out.feasible, d);
-    out.max_trace = light_of(std::move(s));
-  }
+  if (want[2] && out.feasible.kind != ConvexKind3::empty)
+    out.max_trace = light_of(with_worst_case(out.feasible, max_trace(out.feasible)));
   return out;
 }
 

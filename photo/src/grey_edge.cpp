@@ -1,5 +1,7 @@
 #include <gmcc/photo/grey_edge.h>
 
+#include "internal/names.h"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -17,12 +19,8 @@ std::string to_string(Baseline b) {
 }
 
 Baseline baseline_from_string(const std::string& text) {
-  for (Baseline b : all_baselines) {
-    std::string dashed = to_string(b);
-    for (char& c : dashed)
-      if (c == '_') c = '-';
-    if (text == to_string(b) || text == dashed) return b;
-  }
+  for (Baseline b : all_baselines)
+    if (internal::names_match(text, to_string(b))) return b;
   throw std::invalid_argument("\"" + text +
                               "\" is not one of grey-world, white-patch, shades-of-grey, grey-edge-1, grey-edge-2");
 }

@@ -364,14 +364,8 @@ void bind_lights_and_crule(py::module_& m) {
         "illumination_constraint (illumination_constraint.h; Finlayson 1996 §5).");
 
   m.def("crule_3d", [](py::handle canonical, py::handle image, const std::string& black) {
-    // An ImageColours passes its pixel colours; chromaticity lifts are refused, not taken as colours.
-    auto colours = [](py::handle x, const char* what) {
-      if (!py::isinstance<PyImageColours>(x)) return colours_from(x, what);
-      const PyImageColours& c = x.cast<const PyImageColours&>();
-      require_pixel_colours(c, what);
-      return c.colours;
-    };
-    const std::vector<Colour> c = colours(canonical, "canonical"), i = colours(image, "image");
+    const std::vector<Colour> c = colours_or_pixel_colours(canonical, "canonical"),
+                              i = colours_or_pixel_colours(image, "image");
     if (black != "include" && black != "exclude")
       throw py::value_error("black: " + quoted_text(black) + " is not one of include, exclude");
     const CanonicalBlack b = black == "include" ? CanonicalBlack::include : CanonicalBlack::exclude;

@@ -62,10 +62,8 @@ CanonicalBlack black_from(const std::string& black) {
 std::vector<Colour> pixel_colours_of(py::handle x, PixelArgs args, const char* what,
                                      std::optional<PixelCounts>* counts = nullptr) {
   if (py::isinstance<PyImageColours>(x)) {
-    const PyImageColours& c = x.cast<const PyImageColours&>();
-    require_pixel_colours(c, what);
-    if (counts) *counts = c.counts;
-    return c.colours;
+    if (counts) *counts = x.cast<const PyImageColours&>().counts;
+    return colours_or_pixel_colours(x, what);
   }
   if (is_image(x)) {
     if (args.colour_set == "hull")
@@ -163,12 +161,7 @@ void bind_classes(py::module_& m) {
       .def_property_readonly("colours", [](const PyEstimate3& e) { return e.colours; },
                              "How many image colours went in (after the pixel rules).")
       .def_property_readonly("pixels", [](const PyEstimate3& e) -> py::object {
-        if (!e.pixels) return py::none();
-        py::dict d;
-        const PixelCounts& c = *e.pixels;
-        d["pixels"] = c.pixels; d["masked"] = c.masked; d["saturated"] = c.saturated; d["dark"] = c.dark;
-        d["bright"] = c.bright; d["kept"] = c.kept; d["colours"] = c.colours; d["hull_vertices"] = c.hull_vertices;
-        return py::object(std::move(d));
+        return e.pixels ? pixel_counts(*e.pixels) : py::object(py::none());
       }, "For an image: what the pixel rules did (dict of counts), else None.")
       .def("__repr__", [](const PyEstimate3& e) {
         return "Estimate3(" + to_string(e.feasible.kind) + ", " + std::to_string(e.feasible.vertices.size()) + " vertices)";
@@ -349,7 +342,7 @@ py::dict summary_dict(const BenchmarkSummary& s) {
   d["worst25_deg"] = stat(s.errors.worst25);
   d["p95_deg"] = stat(s.errors.p95);
   d["max_deg"] = stat(s.errors.max);
-  const bool gamut = s.method.rfind("gm", 0) == 0;
+  const bool gamut = is_gamut_method(s.method);
   d["empty"] = gamut ? py::object(py::int_(s.empty)) : py::object(py::none());
   d["truth_in_feasible"] = gamut ? py::object(py::float_(double(s.truth_in_feasible) / double(s.images)))
                                  : py::object(py::none());

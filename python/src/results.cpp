@@ -9,6 +9,20 @@
 
 namespace gmcc::python {
 
+py::object pixel_counts(const PixelCounts& c) {
+  py::dict d;
+  d["pixels"] = c.pixels;
+  d["masked"] = c.masked;
+  d["saturated"] = c.saturated;
+  d["dark"] = c.dark;
+  d["bright"] = c.bright;
+  d["kept"] = c.kept;
+  d["colours"] = c.colours;
+  d["hull_vertices"] = c.hull_vertices;
+  d["no_chromaticity"] = c.no_chromaticity;
+  return std::move(d);
+}
+
 std::string g10(double x) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.10g", x);
@@ -120,19 +134,6 @@ void estimate_properties(Class& c, Get get) {
       });
 }
 
-py::object pixel_counts(const PixelCounts& c) {
-  py::dict d;
-  d["pixels"] = c.pixels;
-  d["masked"] = c.masked;
-  d["saturated"] = c.saturated;
-  d["dark"] = c.dark;
-  d["bright"] = c.bright;
-  d["kept"] = c.kept;
-  d["colours"] = c.colours;
-  d["hull_vertices"] = c.hull_vertices;
-  d["no_chromaticity"] = c.no_chromaticity;
-  return std::move(d);
-}
 
 // The 2-D feasible set and gamut type.
 void bind_convex_set(py::module_& m) {
@@ -453,6 +454,13 @@ void require_pixel_colours(const PyImageColours& c, const char* what) {
     throw py::value_error(std::string(what) + ": these are chromaticity lifts (x, y, 1) of the 2-D hull colour set, "
                           "not pixel colours; a 3-D method given them returns a meaningless feasible set. Use "
                           ".chromaticity_lifts for the 2-D route, or colour_set='distinct' or 'hull-3d' for pixel colours");
+}
+
+std::vector<Colour> colours_or_pixel_colours(py::handle x, const char* what) {
+  if (!py::isinstance<PyImageColours>(x)) return colours_from(x, what);
+  const PyImageColours& c = x.cast<const PyImageColours&>();
+  require_pixel_colours(c, what);
+  return c.colours;
 }
 
 py::array_t<double> colours_array(const std::vector<Colour>& colours) {

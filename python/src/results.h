@@ -31,6 +31,10 @@ struct PyImageColours {
   PixelCounts counts;
 };
 
+/// What the pixel rules did, as a dict of counts (pixels, masked, saturated, dark, bright, kept,
+/// colours, hull_vertices, no_chromaticity).
+py::object pixel_counts(const PixelCounts& c);
+
 /// A double with 10 significant digits, for __repr__.
 std::string g10(double x);
 /// A float, or None when absent.
@@ -43,6 +47,10 @@ py::object point3_tuple(const Point3& p);
 
 /// ValueError unless `c` holds pixel colours (not chromaticity lifts); `what` names the use.
 void require_pixel_colours(const PyImageColours& c, const char* what);
+
+/// Colours from `x`: an ImageColours passes its pixel colours (chromaticity lifts are refused,
+/// not taken as colours); anything else is read by colours_from. \throws ValueError, TypeError.
+std::vector<Colour> colours_or_pixel_colours(py::handle x, const char* what);
 
 /// Exact colours as an (n, 3) array of the nearest doubles.
 py::array_t<double> colours_array(const std::vector<Colour>& colours);

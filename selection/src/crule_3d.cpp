@@ -32,6 +32,8 @@ std::vector<std::size_t> worst_case_contenders(const ConvexSet3& F, const Point3
   return out;
 }
 
+}  // namespace
+
 Selection3 with_worst_case(const ConvexSet3& F, MapEstimate3 e) {
   const Point3 m = measured_map(e);
   Selection3 s{std::move(e), std::nullopt};
@@ -40,7 +42,6 @@ Selection3 with_worst_case(const ConvexSet3& F, MapEstimate3 e) {
   if (!is_zero(m) && nonzero_vertex) s.worst_case_deg = worst_case_map_deg_3d(F, m);
   return s;
 }
-}  // namespace
 
 double diagonal_map_angular_error_deg(const Point3& u, const Point3& v) {
   if (is_zero(u) || is_zero(v))

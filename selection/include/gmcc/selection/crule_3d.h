@@ -31,6 +31,10 @@ struct Selection3 {
   std::optional<double> worst_case_deg;  ///< absent when the map or F3 is only {0}
 };
 
+/// A 3-D rule's map with its worst case within F3 (worst_case_map_deg_3d, from the map as
+/// measured), absent when the map or F3 is only {0}: how every 3-D rule's answer is reported.
+Selection3 with_worst_case(const ConvexSet3& F3, MapEstimate3 estimate);
+
 /// CRULE in 3-D: F3 and its selections (absent when F3 is empty).
 struct Crule3d {
   ConvexSet3 feasible;  ///< F3, exactly (feasible_set_3d)

@@ -58,6 +58,10 @@ std::vector<BenchmarkImage> benchmark_dataset(const std::string& images_dir, con
 /// `grey-edge-1`, `grey-edge-2`, in that order.
 const std::vector<std::string>& benchmark_methods();
 
+/// Whether `method` is a gamut-mapping method (`gm3d-…`, `gm2d-…`): it has a feasible set, an
+/// empty count and a fallback.
+inline bool is_gamut_method(const std::string& method) { return method.rfind("gm", 0) == 0; }
+
 /// How the benchmark runs.
 struct BenchmarkOptions {
   std::vector<std::string> methods = benchmark_methods();  ///< a subset, in any order
