@@ -300,6 +300,7 @@ int run_benchmark_command(const BenchmarkCliOptions& o) {
   if (!o.methods.empty()) options.methods = o.methods;
   options.pixels = settings.rules;
   options.saturation_max = settings.saturation_max;
+  options.black_level_given = settings.black_level_given;
   options.intensity = canonical_intensity_from_string(o.intensity);
   options.black = o.black == "exclude" ? CanonicalBlack::exclude : CanonicalBlack::include;
   options.threads = static_cast<unsigned>(integer_option("--threads", o.threads, 0, 1024));

@@ -1,6 +1,7 @@
 #include "pixel_options.h"
 
 #include <gmcc/geometry/rational.h>
+#include <gmcc/input/camera_image.h>
 #include <gmcc/input/input_error.h>
 
 #include "integer_option.h"
@@ -61,10 +62,10 @@ CLI::Option* add_truths_option(CLI::App& cmd, std::string& path, const std::stri
 
 void add_pixel_options(CLI::App& cmd, PixelOptions& o) {
   o.command = &cmd;
-  cmd.add_option("--black-level", o.black_level, "subtracted from every channel, 0 to 65535")
+  cmd.add_option("--black-level", o.black_level, "subtracted from every channel, 0 to 65535 (a raw file: replaces its own, subtracted from every photosite)")
       ->capture_default_str();
   cmd.add_option("--saturation", o.saturation,
-                 "drop pixels with any raw channel at or above this: a value, max (the file's "
+                 "drop pixels with any raw channel at or above this: a value (a raw file: its white level, replacing its own), max (the file's "
                  "largest code, 2^bits - 1) or none")
       ->capture_default_str();
   cmd.add_option("--exclude-polygon", o.exclude_polygons,
@@ -108,6 +109,7 @@ PixelSettings pixel_settings(const PixelOptions& o) {
   PixelSettings s;
   PixelRules& r = s.rules;
   r.black_level = static_cast<std::uint32_t>(integer_option("--black-level", o.black_level, 0, 65535));
+  s.black_level_given = o.command && o.command->count("--black-level");
   if (o.saturation == "max") {
     s.saturation_max = true;
   } else if (o.saturation != "none") {
@@ -149,13 +151,16 @@ PixelSettings pixel_settings(const PixelOptions& o) {
 
 ImageColours image_colours_of(const std::string& path, const PixelSettings& s, RgbImage* image_out,
                               PixelRules* rules_out, const TruthRow* row, const std::string& truths_path) {
-  RgbImage image = read_image(path);
   PixelRules rules = s.rules;
-  if (s.saturation_max) rules.saturation = (1u << image.bits) - 1;
+  ImageLevels levels;
+  if (s.black_level_given) levels.black = rules.black_level;
+  levels.saturation = rules.saturation;
+  if (row && row->black_level) levels.black = row->black_level;
+  if (row && row->saturation) levels.saturation = row->saturation;
+  RgbImage image = read_camera_image(path, levels, rules);
+  if (s.saturation_max && !levels.saturation) rules.saturation = (1u << image.bits) - 1;
   std::optional<RgbImage> own_mask;
   if (row) {
-    if (row->black_level) rules.black_level = *row->black_level;
-    if (row->saturation) rules.saturation = *row->saturation;
     if (!row->chart.empty()) rules.exclude_polygons.push_back(row->chart);
     if (!row->mask.empty())
       own_mask = read_mask_image((std::filesystem::path(truths_path).parent_path() / row->mask).string());

@@ -44,6 +44,7 @@ void add_pixel_options(CLI::App& command, PixelOptions& options);
 struct PixelSettings {
   PixelRules rules;
   bool saturation_max = false;  // the image's own largest code, 2^bits - 1
+  bool black_level_given = false;  // --black-level given: it replaces a raw file's own
   std::optional<RgbImage> mask;
 };
 PixelSettings pixel_settings(const PixelOptions& options);

@@ -1,6 +1,7 @@
 #include <gmcc/validation/benchmark.h>
 
 #include <gmcc/geometry/perspective_image.h>
+#include <gmcc/input/camera_image.h>
 #include <gmcc/input/image_file.h>
 #include <gmcc/input/input_error.h>
 #include <gmcc/photo/estimate_3d.h>
@@ -60,16 +61,19 @@ Needs needs_of(const std::vector<std::string>& methods) {
 // The run's pixel rules with the image's own.
 PixelRules rules_of(const BenchmarkImage& im, const PixelRules& run) {
   PixelRules r = run;
-  if (im.black_level) r.black_level = *im.black_level;
-  if (im.saturation) r.saturation = *im.saturation;
   r.exclude_polygons.insert(r.exclude_polygons.end(), im.exclude_polygons.begin(), im.exclude_polygons.end());
   r.bin = 1;
   return r;
 }
 
 Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs& n) {
-  const RgbImage image = read_image(im.path);
   PixelRules rules = rules_of(im, o.pixels);
+  ImageLevels levels;
+  if (o.black_level_given) levels.black = o.pixels.black_level;
+  levels.saturation = o.pixels.saturation;
+  if (im.black_level) levels.black = im.black_level;
+  if (im.saturation) levels.saturation = im.saturation;
+  const RgbImage image = read_camera_image(im.path, levels, rules);
   if (!im.mask_path.empty()) {
     const RgbImage mask = read_mask_image(im.mask_path);
     if (mask.width != image.width || mask.height != image.height)
@@ -80,7 +84,7 @@ Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs&
     for (std::size_t p = 0; p < rules.keep.size(); ++p)
       rules.keep[p] = mask.samples[3 * p] || mask.samples[3 * p + 1] || mask.samples[3 * p + 2];
   }
-  if (o.saturation_max && !rules.saturation) rules.saturation = (1u << image.bits) - 1;
+  if (o.saturation_max && !levels.saturation) rules.saturation = (1u << image.bits) - 1;
   Reduced r;
   const KeptPixels kept = kept_pixels(image, rules);
   if (kept.counts.kept == 0)

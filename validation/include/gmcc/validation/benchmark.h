@@ -32,7 +32,7 @@ namespace gmcc {
 /// One image of a dataset: its file, measured light, fold and any per-image pixel rules.
 struct BenchmarkImage {
   std::string name;  ///< as the truth file names it (reports use it)
-  std::string path;  ///< the PNG or TIFF to read
+  std::string path;  ///< the PNG, TIFF or camera raw file to read (camera_image.h)
   Colour light;      ///< the measured light, every channel > 0
   int fold = 0;      ///< its cross-validation fold, >= 0
   /// Per-image pixel rules replacing the run's (a dataset's black level or saturation per camera
@@ -69,6 +69,9 @@ struct BenchmarkOptions {
   /// Without a saturation in `pixels` or the image's own: drop pixels with a channel at the
   /// file's largest code, 2^bits − 1 (what `gmcc estimate --saturation max` does).
   bool saturation_max = false;
+  /// `pixels.black_level` was given: it replaces a camera raw file's own (raw_file.h), which is
+  /// used otherwise.
+  bool black_level_given = false;
   CanonicalIntensity intensity = CanonicalIntensity::max;  ///< 3-D learning (learn_canonical.h)
   CanonicalBlack black = CanonicalBlack::include;          ///< 3-D canonical gamut with black
   unsigned threads = 0;  ///< worker threads; 0: the machine's cores

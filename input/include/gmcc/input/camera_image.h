@@ -1,0 +1,30 @@
+#pragma once
+/// \file camera_image.h
+/// One entry for every camera image a command reads: a PNG or TIFF as stored (image_file.h), or
+/// a camera raw file reduced to quads (raw_file.h), with the pixel rules' black level and
+/// saturation set to match (docs/conventions.md §8).
+
+#include <gmcc/input/image_file.h>
+#include <gmcc/input/image_pixels.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace gmcc {
+
+/// The black level and saturation a user gave for an image (command line, truth table, Python);
+/// absent: for a raw file its own metadata, for a PNG or TIFF what `rules` already holds.
+struct ImageLevels {
+  std::optional<std::uint32_t> black;
+  std::optional<std::uint32_t> saturation;
+};
+
+/// Read the camera image at `path`. A raw file (is_raw_file_name) is read by read_raw_image with
+/// `levels` replacing its metadata; the returned pixels have the black level subtracted, so
+/// `rules.black_level` becomes 0 and `rules.saturation` raw_saturated_value. Any other file is
+/// read by read_image, and `levels` that are present replace `rules`' black level and saturation.
+/// \throws InputError naming the file, as read_image and read_raw_image.
+RgbImage read_camera_image(const std::string& path, const ImageLevels& levels, PixelRules& rules);
+
+}  // namespace gmcc
