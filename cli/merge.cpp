@@ -257,6 +257,9 @@ int run_merge(const MergeOptions& o) {
         }
         continue;
       }
+      if (j.is_object() && j.contains("format"))
+        bad(at, "a second setup line: this file holds more than one run (reproduce expansion writes "
+                "three); merge joins the shards of one run, a setup line and its scenes per file");
       SceneRecord s = record_of(j, *result, at);
       if (s.rules.size() != (s.kind == ConvexKind::empty ? 0 : result->rules.size()))
         bad(at, "\"rules\" must be null exactly when the feasible set is empty");

@@ -368,8 +368,21 @@ int gehler_shi(ReproduceOptions o) {
     }
   }
   if (options.dark >= options.clip) throw InputError("--dark", 0, "must be below --clip");
-  for (const std::string& k : o.exclude_patches)
-    options.exclude_patches.push_back(static_cast<std::uint32_t>(integer_option("--exclude-patches", k, 1, 24)));
+  // Patch numbers as written: digits between commas ("1.0", "1e1" and an empty field "1,,2" are
+  // refused rather than read as numbers or skipped).
+  for (const std::string& list : o.exclude_patches) {
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t comma = list.find(',', start);
+      const std::string k = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+      if (k.empty() || k.find_first_not_of("0123456789") != std::string::npos)
+        throw InputError("--exclude-patches", 0,
+                         "expected patch numbers 1 to 24 separated by commas, not " + quoted_text(list));
+      options.exclude_patches.push_back(static_cast<std::uint32_t>(integer_option("--exclude-patches", k, 1, 24)));
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+  }
   const std::string patches = data_file(o, "gehler_shi_568_colorchecker_patch_rgb_rec2018.csv");
   const std::string truth = data_file(o, "gehler_shi_568_groundtruth.csv");
   set_activity("reading " + patches + " and " + truth);
@@ -454,8 +467,7 @@ CLI::App* add_reproduce_command(CLI::App& app, ReproduceOptions& o) {
   gs->add_option("--clip", o.clip, "drop patches with a channel >= this (clipped)")->capture_default_str();
   gs->add_option("--exclude-patches", o.exclude_patches,
                  "leave these patch numbers (1-24) out of every image, e.g. 19,20,21,22,23,24 (the "
-                 "achromatic row, on which the ground truth was measured)")
-      ->delimiter(',');
+                 "achromatic row, on which the ground truth was measured)");
   gs->add_option("--expand", o.expand_factor, "expand the canonical gamut by this factor (0.1 = 10%)")
       ->capture_default_str();
   gs->add_option("--expand-policy", o.expand_policy, "none | centroid-clip | multiplicative")

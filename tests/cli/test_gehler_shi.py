@@ -91,7 +91,9 @@ with tempfile.TemporaryDirectory() as tmp:
     check(r.returncode == 2 and f"{PATCHES}:11" in r.stderr, f"partial NaN: exit 2 naming file:line: {r.stderr}")
 
     for args, what in ((["--dark", "0.5", "--clip", "0.4"], "--dark"), (["--cameras", "Nikon"], "--cameras"),
-                       (["--clip", "x"], "--clip"), (["--exclude-patches", "0"], "--exclude-patches"), (["--shard", "1/2", "--scenes-out", out_csv], "--shard")):
+                       (["--clip", "x"], "--clip"), (["--exclude-patches", "0"], "--exclude-patches"),
+                       (["--exclude-patches", "1.0"], "--exclude-patches"), (["--exclude-patches", "1,,2"], "--exclude-patches"),
+                       (["--exclude-patches", "3,"], "--exclude-patches"), (["--shard", "1/2", "--scenes-out", out_csv], "--shard")):
         r = run(*small, *args)
         check(r.returncode == 2 and what in r.stderr, f"{args}: exit 2 naming {what}: {r.stderr}")
 

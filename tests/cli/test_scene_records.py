@@ -337,6 +337,11 @@ def main():
                 f.write(open(p("s1.jsonl")).read().replace('"drawn":[', '"drawn":[1,', 1))
             bad(merge, [p("broken.jsonl"), p("s2.jsonl"), p("s3.jsonl")], ["broken.jsonl:3:"])
             bad(merge, [p("no-such-file.jsonl")], ["no-such-file"])
+            # reproduce expansion's file holds three runs: refused at the second setup line, not
+            # with a missing member of a scene record.
+            rc, _, err = r.run("expansion", "--scenes", "1", "--surfaces", "2", "--scenes-out", p("expansion.jsonl"))
+            expect(rc == 0, err)
+            bad(merge, [p("expansion.jsonl"), "--csv", p("out.csv")], ["a second setup line", "one run"])
         r.check("merge refuses missing, repeated, foreign and broken parts", merge_errors)
 
         print(f"{r.passed + merge.passed} passed, {r.failed + merge.failed} failed")
