@@ -17,7 +17,11 @@ double sorted_quantile(const std::vector<double>& x, double p) {
 ErrorStatistics error_statistics(std::vector<double> v) {
   ErrorStatistics s;
   s.n = v.size();
-  if (v.empty()) return s;
+  if (v.empty()) {  // nothing to summarise: every statistic undefined (NaN; null or empty in reports)
+    s.mean = s.standard_error = s.median = s.trimean = s.best25 = s.worst25 = s.p95 = s.max =
+        std::numeric_limits<double>::quiet_NaN();
+    return s;
+  }
   const double n = static_cast<double>(v.size());
   double sum = 0;
   for (double x : v) sum += x;  // in the order given

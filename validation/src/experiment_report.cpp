@@ -11,6 +11,7 @@ namespace gmcc {
 namespace {
 
 std::string num(double x, const char* format = "%.6f") {
+  if (std::isnan(x)) return "";  // undefined in CSV (no scene in the cell, a spread of one value)
   char b[64];
   std::snprintf(b, sizeof b, format, x);
   return b;
@@ -323,6 +324,8 @@ std::string experiment_table(const ExperimentResult& r) {
 }
 
 std::string experiment_plot_data(const ExperimentResult& r) {
+  // gnuplot skips NaN: a cell without scenes leaves a gap in its curve.
+  auto num = [](double x) { return std::isnan(x) ? std::string("NaN") : gmcc::num(x); };
   std::ostringstream out;
   std::string light;
   for (const ExperimentCell& c : r.cells) {

@@ -16,8 +16,8 @@ namespace gmcc {
 /// The black level and saturation a user gave for an image (command line, truth table, Python);
 /// absent: for a raw file its own metadata, for a PNG or TIFF what `rules` already holds.
 struct ImageLevels {
-  std::optional<std::uint32_t> black;
-  std::optional<std::uint32_t> saturation;
+  std::optional<std::uint32_t> black;       ///< the black level
+  std::optional<std::uint32_t> saturation;  ///< the saturation threshold (a raw file: its white level)
 };
 
 /// Read the camera image at `path`. A raw file (is_raw_file_name) is read by read_raw_image with

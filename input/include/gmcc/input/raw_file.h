@@ -36,7 +36,10 @@ struct RawLevels {
 struct RawImage {
   RgbImage image;             ///< (width/2) × (height/2) pixels as above, bits = 16
   std::string pattern;        ///< the quad's colours row by row, e.g. "RGGB"
-  std::uint32_t black_min = 0, black_max = 0;  ///< the least and greatest photosite black level used
+  /// The least and greatest photosite black level used.
+  ///@{
+  std::uint32_t black_min = 0, black_max = 0;
+  ///@}
   std::uint32_t white = 0;    ///< the white level used
   std::string camera;         ///< make and model as the file names them
   std::size_t saturated = 0;  ///< quads written as saturated
@@ -47,7 +50,8 @@ struct RawImage {
 /// .x3f, case-insensitive): those go to decode_raw_image, every other image to decode_image.
 bool is_raw_file_name(const std::string& path);
 
-/// Decode a raw file held in `bytes` as above. \param file the name used in messages.
+/// Decode a raw file held in `bytes` as above. \param bytes the whole file's content.
+/// \param file the name used in messages.
 /// \param levels levels that replace the file's metadata.
 /// \throws InputError naming the file: a format LibRaw does not read, a truncated or corrupt
 ///         file, a mosaic that is not a 2×2 Bayer pattern of red, two greens and blue (X-Trans,

@@ -10,7 +10,8 @@
 
 namespace gmcc {
 
-/// Statistics of n values. With n = 0 every statistic is 0 (the count says there was nothing);
+/// Statistics of n values. With n = 0 every statistic is NaN, undefined (reports write null in JSON
+/// and an empty field in CSV);
 /// with n = 1 the standard error is NaN (a spread needs two values).
 struct ErrorStatistics {
   std::uint64_t n = 0;        ///< how many values (scenes) the statistics are over
