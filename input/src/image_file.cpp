@@ -11,6 +11,10 @@
 namespace gmcc {
 namespace {
 
+// Deflate's largest expansion: 258 bytes from a match of at least 2 bits, 1032:1 (zlib's
+// technical notes); PNG and deflate-compressed TIFF data cannot decompress to more.
+constexpr std::size_t max_deflate_ratio = 1032;
+
 // ---- PNG (libpng's classic interface: no transformation but byte order and
 // alpha) ----
 
@@ -77,6 +81,16 @@ bool decode_png(const std::string& bytes, RgbImage* out, std::vector<unsigned ch
   }
   if (!mask && depth != 8 && depth != 16) png_error(png, "expected 8 or 16 bits per sample");
   if (std::size_t(width) * height > max_image_pixels) png_error(png, "more than 2^28 pixels");
+  {
+    // The filtered rows the header declares must fit in what the file's compressed bytes can
+    // hold: deflate expands at most 1032:1 (RFC 1951's longest match, 258 bytes, costs at least
+    // two bits), so a larger claim is a truncated file or a decompression bomb, refused before
+    // any allocation.
+    const std::size_t declared = std::size_t(height) * (1 + png_get_rowbytes(png, info));
+    if (declared > max_deflate_ratio * bytes.size() + 4096)
+      png_error(png, "the header declares more pixels than the file's bytes can hold (truncated, or a "
+                     "decompression bomb)");
+  }
   if (depth == 16) png_set_swap(png);  // big-endian in the file; native order here
   if (type == PNG_COLOR_TYPE_RGB_ALPHA) png_set_strip_alpha(png);
   png_read_update_info(png, info);
@@ -238,12 +252,33 @@ RgbImage decode_tiff(const std::string& bytes, const std::string& file) {
     tiff_fail(file, "separate colour planes: expected interleaved r, g, b");
   if (width == 0 || height == 0) tiff_fail(file, "an empty image");
   if (std::size_t(width) * height > max_image_pixels) tiff_fail(file, "more than 2^28 pixels");
+  // What the file's bytes can hold decompressed: the samples must fit, and so must one tile
+  // (padding included, since a tile is encoded whole), before anything is allocated.
+  std::uint16_t compression = COMPRESSION_NONE;
+  TIFFGetFieldDefaulted(h.tif, TIFFTAG_COMPRESSION, &compression);
+  const std::size_t ratio = compression == COMPRESSION_NONE       ? 1
+                            : compression == COMPRESSION_PACKBITS ? 64  // 2 bytes → at most 128
+                            : compression == COMPRESSION_ADOBE_DEFLATE || compression == COMPRESSION_DEFLATE
+                                ? max_deflate_ratio
+                                : 4096;  // LZW and others: a generous bound
+  const std::size_t capacity = ratio * bytes.size() + 4096;
+  const std::size_t bytes_per_sample = bps / 8;
+  if (std::size_t(width) * height * spp * bytes_per_sample > capacity)
+    tiff_fail(file, "the header declares more pixels than the file's bytes can hold (truncated, or a "
+                    "decompression bomb)");
+  if (TIFFIsTiled(h.tif)) {
+    std::uint32_t tw = 0, th = 0;
+    TIFFGetField(h.tif, TIFFTAG_TILEWIDTH, &tw);
+    TIFFGetField(h.tif, TIFFTAG_TILELENGTH, &th);
+    if (std::size_t(tw) * th * spp * bytes_per_sample > capacity)
+      tiff_fail(file, "a " + std::to_string(tw) + "x" + std::to_string(th) +
+                          " tile larger than the file's bytes can hold (a decompression bomb)");
+  }
   RgbImage image;
   image.width = width;
   image.height = height;
   image.bits = bps;
   image.samples.resize(std::size_t(width) * height * 3);
-  const std::size_t bytes_per_sample = bps / 8;
   auto store = [&](const unsigned char* pixel, std::size_t x, std::size_t y) {
     for (int c = 0; c < 3; ++c) {
       std::uint16_t v;

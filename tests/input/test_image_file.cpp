@@ -81,6 +81,76 @@ std::string grey_tiff() {
   return bytes;
 }
 
+// CRC-32 of PNG chunks (ISO 3309), bit by bit: for rewriting a header in a test.
+std::uint32_t crc32_of(const std::string& bytes) {
+  std::uint32_t c = 0xffffffffu;
+  for (unsigned char b : bytes) {
+    c ^= b;
+    for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
+  }
+  return c ^ 0xffffffffu;
+}
+
+void put_be32(std::string& s, std::size_t at, std::uint32_t v) {
+  for (int k = 0; k < 4; ++k) s[at + k] = static_cast<char>((v >> (24 - 8 * k)) & 0xff);
+}
+
+// A PNG whose IHDR declares w × h (the CRC rewritten, so libpng reads the header).
+std::string png_declaring(std::string png, std::uint32_t w, std::uint32_t h) {
+  put_be32(png, 16, w);
+  put_be32(png, 20, h);
+  put_be32(png, 29, crc32_of(png.substr(12, 17)));
+  return png;
+}
+
+// A little-endian TIFF with tag `tag`'s value replaced by v (a SHORT or LONG entry of count 1).
+std::string tiff_with(std::string tiff, std::uint16_t tag, std::uint32_t v) {
+  auto u16 = [&](std::size_t at) { return std::uint32_t(std::uint8_t(tiff[at])) | std::uint32_t(std::uint8_t(tiff[at + 1])) << 8; };
+  auto u32 = [&](std::size_t at) { return u16(at) | u16(at + 2) << 16; };
+  BOOST_REQUIRE(tiff.compare(0, 4, "II*\0", 4) == 0);
+  const std::size_t ifd = u32(4);
+  for (std::size_t i = 0, n = u16(ifd); i < n; ++i) {
+    const std::size_t e = ifd + 2 + 12 * i;
+    if (u16(e) != tag) continue;
+    const std::uint32_t type = u16(e + 2);
+    BOOST_REQUIRE((type == 3 || type == 4));
+    if (type == 3) BOOST_REQUIRE(v < 65536u);
+    for (int k = 0; k < (type == 3 ? 2 : 4); ++k) tiff[e + 8 + k] = static_cast<char>((v >> (8 * k)) & 0xff);
+    return tiff;
+  }
+  BOOST_FAIL("tag not in the TIFF");
+  return tiff;
+}
+
+// A 16×16 RGB 16-bit TIFF in one 16×16 tile, written by libtiff (compression none or deflate).
+std::string tiled_tiff(std::uint16_t compression) {
+  char name[] = "/tmp/gmcc_test_tiled_XXXXXX";
+  const int fd = mkstemp(name);
+  BOOST_REQUIRE(fd >= 0);
+  close(fd);
+  TIFF* t = TIFFOpen(name, "w");
+  BOOST_REQUIRE(t);
+  TIFFSetField(t, TIFFTAG_IMAGEWIDTH, 16u);
+  TIFFSetField(t, TIFFTAG_IMAGELENGTH, 16u);
+  TIFFSetField(t, TIFFTAG_SAMPLESPERPIXEL, 3);
+  TIFFSetField(t, TIFFTAG_BITSPERSAMPLE, 16);
+  TIFFSetField(t, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_RGB);
+  TIFFSetField(t, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
+  TIFFSetField(t, TIFFTAG_COMPRESSION, compression);
+  TIFFSetField(t, TIFFTAG_TILEWIDTH, 16u);
+  TIFFSetField(t, TIFFTAG_TILELENGTH, 16u);
+  std::vector<std::uint16_t> tile(16 * 16 * 3, 1000);
+  BOOST_REQUIRE(TIFFWriteTile(t, tile.data(), 0, 0, 0, 0) > 0);
+  TIFFClose(t);
+  std::FILE* f = std::fopen(name, "rb");
+  std::string bytes;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) bytes.append(buf, n);
+  std::fclose(f);
+  std::remove(name);
+  return bytes;
+}
+
 // Independent of polygon_cover: is p inside the polygon or on its boundary?
 // (exact; even–odd by a ray to +x, with points on an edge decided first)
 bool inside_or_on(const std::vector<Point2>& poly, const Point2& p) {
@@ -153,6 +223,33 @@ BOOST_AUTO_TEST_CASE(bad_files_get_clear_messages) {
   const std::string tiff = encode_tiff16(ramp(40, 40, 16));
   BOOST_TEST(error_of(tiff.substr(0, 200)) != "");
   BOOST_CHECK_THROW(encode_png16(RgbImage{}), std::invalid_argument);
+}
+
+// Memory follows the data, not the header (issue 30): a header claiming more pixels than the
+// file's bytes can decompress to is refused before any allocation, and real files of any
+// compressibility are not (the bound is deflate's, 1032:1, not a guess).
+BOOST_AUTO_TEST_CASE(headers_cannot_claim_more_than_the_data_holds) {
+  const std::string small = encode_png16(ramp(4, 4, 16));
+  BOOST_TEST(error_of(png_declaring(small, 4, 4)).empty());  // the rewriting itself is sound
+  const std::string bomb = error_of(png_declaring(small, 16384, 16384));
+  BOOST_TEST(bomb.find("i.png: PNG: the header declares more pixels than the file's bytes can hold") == 0u, bomb);
+  // A constant 2000×2000 image compresses as well as deflate can: still read.
+  RgbImage flat;
+  flat.width = flat.height = 2000;
+  flat.samples.assign(2000 * 2000 * 3, 4242);
+  const RgbImage back = decode_image(encode_png16(flat), "flat.png");
+  BOOST_TEST((back.width == 2000 && back.samples == flat.samples));
+
+  const std::string tiff = encode_tiff16(ramp(4, 4, 16));
+  BOOST_TEST(error_of(tiff_with(tiff, 256, 4)).empty());
+  const std::string wide = error_of(tiff_with(tiff_with(tiff, 256, 10000), 257, 10000));
+  BOOST_TEST(wide.find("the header declares more pixels than the file's bytes can hold") != std::string::npos, wide);
+  for (std::uint16_t compression : {std::uint16_t(COMPRESSION_NONE), std::uint16_t(COMPRESSION_ADOBE_DEFLATE)}) {
+    const std::string tiled = tiled_tiff(compression);
+    BOOST_TEST(decode_image(tiled, "t.tif").samples == std::vector<std::uint16_t>(16 * 16 * 3, 1000));
+    const std::string huge = error_of(tiff_with(tiff_with(tiled, 322, 32768), 323, 32768));
+    BOOST_TEST(huge.find("a 32768x32768 tile larger than the file's bytes can hold") != std::string::npos, huge);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(polygon_cover_hand_counts) {
