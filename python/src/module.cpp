@@ -16,14 +16,19 @@
 #include <gmcc/selection/worst_case.h>
 #include <gmcc/selection/worst_case_illuminant.h>
 #include <gmcc/input/build_info.h>
+#include <gmcc/input/camera_image.h>
+#include <gmcc/input/raw_file.h>
 #include <gmcc/validation/camera_experiment.h>
 #include <gmcc/validation/error_statistics.h>
 #include <gmcc/validation/gamut_experiment.h>
+#include <gmcc/input/gehler_shi.h>
+#include <gmcc/validation/gehler_shi_experiment.h>
 #include <gmcc/input/spectral_table.h>
 #include <gmcc/validation/synthetic_experiment.h>
 
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -162,7 +167,11 @@ const ConvexSet2& nonempty(const ConvexSet2& F, const char* what) {
 
 // ---- experiments ----
 
-py::dict records_columns(const ExperimentResult& r) {
+// One record per scene as columns (name -> list or array), in ExperimentResult::scenes order.
+// `setup`: given for an experiment whose lights are grouped (gehler-shi): then a `group` column
+// after `light`, and each rule's `truth_in_feasible_set`. Baselines, when the run has them, follow
+// the rules: their map and errors (no worst case: a baseline has no feasible set).
+py::dict records_columns(const ExperimentResult& r, const ExperimentSetup* setup = nullptr) {
   const std::size_t n = r.scenes.size();
   py::dict cols;
   std::vector<std::string> light(n), kind(n), drawn(n);
@@ -178,35 +187,51 @@ py::dict records_columns(const ExperimentResult& r) {
     for (std::size_t k = 0; k < s.drawn.size(); ++k) drawn[i] += (k ? " " : "") + std::to_string(s.drawn[k]);
   }
   cols["light"] = light;
+  if (setup) {
+    std::vector<std::string> group(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const TestLight& t = setup->lights.at(r.scenes[i].light);
+      group[i] = t.group.empty() ? t.name : t.group;
+    }
+    cols["group"] = group;
+  }
   cols["surfaces"] = py::array(py::cast(surfaces));
   cols["scene"] = py::array(py::cast(scene));
   cols["kind"] = kind;
   cols["area"] = py::array(py::cast(area));
   cols["drawn"] = drawn;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (std::size_t k = 0; k < r.rules.size(); ++k) {
+  // Rules (k < rules) and then baselines: the map and errors of one estimate per scene, NaN
+  // where it gave none.
+  for (std::size_t k = 0; k < r.rules.size() + r.baselines.size(); ++k) {
+    const bool baseline = k >= r.rules.size();
     std::vector<double> mx(n, nan), my(n, nan), err(n, nan), wc(n, nan), il(n, nan), rep(n, nan);
-    std::vector<bool> in_f(n, false);
+    std::vector<std::uint8_t> in_f(n, 0);
     for (std::size_t i = 0; i < n; ++i) {
-      const SceneRecord& s = r.scenes[i];
-      if (k >= s.rules.size() || !s.rules[k].scored) continue;
-      const RuleRecord& q = s.rules[k];
+      const std::vector<RuleRecord>& records = baseline ? r.scenes[i].baselines : r.scenes[i].rules;
+      const std::size_t j = baseline ? k - r.rules.size() : k;
+      if (j >= records.size() || !records[j].scored) continue;
+      const RuleRecord& q = records[j];
       mx[i] = q.map[0];
       my[i] = q.map[1];
       err[i] = q.error_deg;
       wc[i] = q.worst_case_deg;
+      in_f[i] = q.truth_in_feasible_set;
       if (q.positive_map) {
         il[i] = q.illuminant_error_deg;
         rep[i] = q.reproduction_error_deg;
       }
     }
-    const std::string p = r.rules[k];
+    const std::string p = baseline ? r.baselines[k - r.rules.size()] : r.rules[k];
     cols[(p + "_map_x").c_str()] = py::array(py::cast(mx));
     cols[(p + "_map_y").c_str()] = py::array(py::cast(my));
     cols[(p + "_error_deg").c_str()] = py::array(py::cast(err));
-    cols[(p + "_worst_case_deg").c_str()] = py::array(py::cast(wc));
+    if (!baseline) cols[(p + "_worst_case_deg").c_str()] = py::array(py::cast(wc));
     cols[(p + "_illuminant_error_deg").c_str()] = py::array(py::cast(il));
     cols[(p + "_reproduction_error_deg").c_str()] = py::array(py::cast(rep));
+    if (setup && !baseline)
+      cols[(p + "_truth_in_feasible_set").c_str()] =
+          py::module_::import("numpy").attr("array")(py::cast(in_f), "bool");
   }
   return cols;
 }
@@ -255,6 +280,48 @@ void bind_scene(py::module_& m) {
       py::arg("dark") = 0, py::arg("dark_fraction") = py::none(), py::arg("bright_fraction") = py::none(),
       py::arg("pixel_rule") = "none", py::arg("colour_set") = "hull", py::arg("prefilter") = 0,
         "The pixel rules (image_pixels.h; docs/conventions.md §8). Public: gmcc.image_colours.");
+
+  m.def(
+      "read_image",
+      [](const std::string& path, py::object black_level, py::object saturation) {
+        ImageLevels levels;
+        if (!black_level.is_none()) levels.black = integer_in<std::uint32_t>(black_level, "black_level", 0, 65535);
+        if (!saturation.is_none()) levels.saturation = integer_in<std::uint32_t>(saturation, "saturation", 1, 65536);
+        PixelRules rules;
+        RgbImage image;
+        py::object raw = py::none();
+        try {
+          if (is_raw_file_name(path)) {
+            RawImage r = read_raw_image(path, RawLevels{levels.black, levels.saturation});
+            py::dict info;
+            info["pattern"] = r.pattern;
+            info["black_min"] = r.black_min;
+            info["black_max"] = r.black_max;
+            info["white"] = r.white;
+            info["camera"] = r.camera;
+            info["saturated"] = r.saturated;
+            raw = std::move(info);
+            rules.black_level = 0;
+            rules.saturation = raw_saturated_value;
+            image = std::move(r.image);
+          } else {
+            image = read_camera_image(path, levels, rules);
+          }
+        } catch (const std::runtime_error& e) {  // InputError: the file and its problem
+          throw py::value_error(e.what());
+        }
+        py::array_t<std::uint16_t> a({image.height, image.width, std::size_t(3)});
+        if (!image.samples.empty()) std::memcpy(a.mutable_data(), image.samples.data(), image.samples.size() * 2);
+        py::dict out;
+        out["image"] = a;
+        out["bits"] = image.bits;
+        out["black_level"] = rules.black_level;
+        out["saturation"] = rules.saturation ? py::object(py::int_(*rules.saturation)) : py::object(py::none());
+        out["raw"] = raw;
+        return out;
+      },
+      py::arg("path"), py::arg("black_level") = py::none(), py::arg("saturation") = py::none(),
+      "read_camera_image (camera_image.h, raw_file.h; docs/conventions.md §8). Public: gmcc.read_image.");
 
   m.def(
       "select_maps",
@@ -471,6 +538,83 @@ void bind_benchmark_and_experiments(py::module_& m) {
       py::arg("canonical_surfaces"), py::arg("min_surfaces"), py::arg("max_surfaces"), py::arg("scenes"),
       py::arg("seed"), py::arg("expand"), py::arg("expand_policy"), py::arg("crule"), py::arg("threads"),
         "run_gamut_experiment on synthetic_setup or camera_setup, with every scene's record (gamut_experiment.h).");
+
+  // `gmcc reproduce gehler-shi` (cli/reproduce.cpp), option by option with the command line's
+  // checks: the setup of gehler_shi_experiment.h on the shipped chart data, run with every
+  // scene's record.
+  m.def(
+      "run_gehler_shi",
+      [](const std::string& data_dir, const std::string& protocol, const std::vector<std::string>& cameras,
+         py::handle dark, py::handle clip, py::handle exclude_patches, py::handle min_surfaces,
+         py::handle max_surfaces, py::handle scenes, py::handle seed, py::handle expand,
+         const std::string& expand_policy, const std::string& mean3d, py::handle threads) {
+        GehlerShiOptions options;
+        try {
+          options.protocol = gehler_shi_protocol_from_string(protocol);
+        } catch (const std::invalid_argument& e) {
+          throw py::value_error(std::string("protocol: ") + e.what());
+        }
+        options.cameras.clear();
+        for (const std::string& camera : cameras) {
+          if (camera != "Canon1D" && camera != "Canon5D")
+            throw py::value_error("cameras: unknown camera " + quoted_text(camera) + " (Canon1D, Canon5D)");
+          if (std::find(options.cameras.begin(), options.cameras.end(), camera) == options.cameras.end())
+            options.cameras.push_back(camera);
+        }
+        if (options.cameras.empty()) throw py::value_error("cameras: give at least one of Canon1D, Canon5D");
+        options.dark = number_from(dark, "dark");
+        options.clip = number_from(clip, "clip");
+        if (sgn(options.dark) < 0) throw py::value_error("dark: must be >= 0");
+        if (sgn(options.clip) < 0) throw py::value_error("clip: must be >= 0");
+        if (options.dark >= options.clip) throw py::value_error("dark: must be below clip");
+        for (py::handle k : py::reinterpret_borrow<py::iterable>(exclude_patches))
+          options.exclude_patches.push_back(integer_in<std::uint32_t>(k, "exclude_patches", 1, chart_patches));
+        ExperimentConfig config;
+        config.min_surfaces = integer_in<int>(min_surfaces, "min_surfaces", 1, chart_patches);
+        config.max_surfaces = integer_in<int>(max_surfaces, "max_surfaces", 1, chart_patches);
+        if (config.max_surfaces < config.min_surfaces)
+          throw py::value_error("surfaces: need 1 <= min_surfaces <= max_surfaces");
+        config.scenes = integer_in<std::uint64_t>(scenes, "scenes", 1, 1000000);
+        config.seed = integer_in<std::uint64_t>(seed, "seed", 0, ~0ULL);
+        config.threads = integer_in<unsigned>(threads, "threads", 0, 256);
+        config.keep_scenes = true;
+        config.expansion = expansion_from(expand, expand_policy);
+        try {
+          config.mean3d.method = mean3d_method_from_string(mean3d);
+        } catch (const std::invalid_argument& e) {
+          throw py::value_error(std::string("mean3d: ") + e.what());
+        }
+        const std::string patches = data_dir + "/gehler_shi_568_colorchecker_patch_rgb_rec2018.csv";
+        const std::string truth = data_dir + "/gehler_shi_568_groundtruth.csv";
+        GehlerShiSetup setup;
+        ExperimentResult r;
+        try {
+          py::gil_scoped_release nogil;
+          const ChartDataset data = read_gehler_shi(patches, truth);
+          try {
+            setup = gehler_shi_setup(data, options);
+          } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument(patches + ": " + e.what());
+          }
+          r = run_gamut_experiment(setup.setup, config);
+        } catch (const SceneInputError& e) {
+          throw py::value_error(std::string(e.input == SceneInput::expansion ? "expand: " : "") + e.what());
+        } catch (const std::invalid_argument& e) {
+          throw py::value_error(e.what());
+        } catch (const std::runtime_error& e) {  // files (InputError)
+          throw py::value_error(e.what());
+        }
+        py::dict out;
+        out["columns"] = records_columns(r, &setup.setup);
+        out["rules"] = r.rules;
+        out["baselines"] = r.baselines;
+        return out;
+      },
+      py::arg("data_dir"), py::arg("protocol"), py::arg("cameras"), py::arg("dark"), py::arg("clip"),
+      py::arg("exclude_patches"), py::arg("min_surfaces"), py::arg("max_surfaces"), py::arg("scenes"),
+      py::arg("seed"), py::arg("expand"), py::arg("expand_policy"), py::arg("mean3d"), py::arg("threads"),
+      "run_gamut_experiment on gehler_shi_setup (gehler_shi_experiment.h; Finlayson & Hordley 1999 §4, Fig. 5 "
+      "on measured charts), with every scene's record. Public: gmcc.reproduce_gehler_shi.");
 }
 
 }  // namespace

@@ -100,9 +100,23 @@ PixelArgs pixel_args(py::object mask, py::object black_level, py::object saturat
   py::arg("pixel_rule") = "none", py::arg("colour_set") = "hull-3d"
 
 void bind_classes(py::module_& m) {
-  py::class_<Canonical3>(m, "Canonical3",
-                         "A 3-D canonical gamut G_c3 prepared once (feasible_set_3d.h CanonicalConstraints3): its "
-                         "exact half-spaces, for many images.")
+  py::class_<Canonical3>(m, "Canonical3", R"doc(A 3-D canonical gamut G_c3 prepared once for many images.
+
+The exact half-spaces of the hull of the canonical colours (Forsyth 1990 §3;
+feasible_set_3d.h), for estimate_3d. Made by prepare_canonical_3d and
+CanonicalLearner3.prepare, not constructed. Immutable; thread-safe.
+
+Attributes
+----------
+dimension : int
+    The dimension of G_c3's affine hull, 0 to 3.
+half_spaces : int
+    How many half-spaces describe G_c3 (its facets when 3-dimensional).
+colours : int
+    How many colours it was prepared from.
+black : str
+    'include' (black joins the hull: F3 is never empty) or 'exclude'.
+)doc")
       .def_property_readonly("dimension", [](const Canonical3& c) { return c.constraints->dimension(); },
                              "The dimension of G_c3's affine hull, 0 to 3.")
       .def_property_readonly("half_spaces", [](const Canonical3& c) { return c.constraints->half_spaces(); },
@@ -117,9 +131,32 @@ void bind_classes(py::module_& m) {
                " half-spaces, black " + (c.black == CanonicalBlack::include ? "included" : "excluded") + ")";
       });
 
-  py::class_<PySelection3>(m, "ImageSelection3",
-                           "One 3-D rule's answer on an image (estimate_3d.h): the map d, its worst case in F3, "
-                           "the light c ⊘ d it implies and, with a truth, the recovery error.")
+  py::class_<PySelection3>(m, "ImageSelection3", R"doc(One 3-D rule's answer on an image: the map, its worst case and the light it implies.
+
+Max-volume (Forsyth 1990 §4, CRULE-MV), the centroid (Barnard, Cardei & Funt 2002, CRULE-AVE)
+or max-trace (Gijsenij, Gevers & van de Weijer 2010 §3) of F3 (estimate_3d.h;
+docs/photographs.md §3): the map d, its worst case in F3, the light c ⊘ d it implies and, with
+a truth, the recovery error. Part of an Estimate3, not constructed.
+
+Attributes
+----------
+rule : str
+    'max_volume', 'centroid' or 'max_trace'.
+method : str
+    'exact' (rational) or 'certified' (a double with a rigorous bound).
+map : tuple of (float, float, float)
+    The map (d1, d2, d3) as doubles.
+exact : tuple of (Fraction, Fraction, Fraction) or None
+    The exact map where it is rational, else None.
+error_bound : float
+    A rigorous bound on the largest component's distance from the true value.
+worst_case_deg : float or None
+    The largest angle from the map to a map of F3, degrees.
+light : tuple of (float, float, float) or None
+    The light c ⊘ d with unit length; None when a component of d is 0.
+recovery_error_deg : float or None
+    With a truth: the angle between ``light`` and the true light, degrees; else None.
+)doc")
       .def_property_readonly("rule", [](const PySelection3& s) { return s.rule; })
       .def_property_readonly("method", [](const PySelection3& s) { return s.s.selection.estimate.method; },
                              "`exact` (rational) or `certified` (a double with a rigorous bound).")
@@ -145,7 +182,27 @@ void bind_classes(py::module_& m) {
         return "ImageSelection3(" + s.rule + " (" + g10(d[0]) + ", " + g10(d[1]) + ", " + g10(d[2]) + "))";
       });
 
-  py::class_<PyEstimate3>(m, "Estimate3", "3-D gamut mapping on one image: F3 and the rules' answers.")
+  py::class_<PyEstimate3>(m, "Estimate3", R"doc(3-D gamut mapping on one image: F3 and the rules' answers.
+
+The exact feasible set F3 of diagonal maps taking the image's pixel colours into the canonical
+gamut (Forsyth 1990 §3; Gijsenij, Gevers & van de Weijer 2010 §3) and the selections asked for
+(docs/photographs.md §3). Made by estimate_3d, not constructed.
+
+Attributes
+----------
+feasible_set : ConvexSet3
+    F3, exactly.
+kind : str
+    F3's kind: 'polytope', 'polygon', 'segment', 'point' or 'empty'.
+max_volume, centroid, max_trace : ImageSelection3 or None
+    Each rule's answer; None when not asked for or when F3 holds no map.
+selections : dict of str to ImageSelection3 or None
+    The three, keyed 'max_volume', 'centroid', 'max_trace'.
+colours : int
+    How many image colours went in (after the pixel rules).
+pixels : dict of str to int, or None
+    For an image: what the pixel rules did (counts as ImageColours.counts); else None.
+)doc")
       .def_readonly("feasible_set", &PyEstimate3::feasible)
       .def_property_readonly("kind", [](const PyEstimate3& e) { return to_string(e.feasible.kind); })
       .def_readonly("max_volume", &PyEstimate3::max_volume)
@@ -242,8 +299,31 @@ void bind_functions(py::module_& m) {
       py::arg("centroid") = "certified", py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1), GMCC_PIXEL_ARGS,
       "estimate_3d (estimate_3d.h). Public: gmcc.estimate_3d.");
 
-  py::class_<CanonicalLearner3>(m, "CanonicalLearner3",
-                                "A 3-D canonical gamut learned image by image (learn_canonical.h).")
+  py::class_<CanonicalLearner3>(m, "CanonicalLearner3", R"doc(A 3-D canonical gamut learned image by image from photographs with known lights.
+
+Each training image's pixel colours p are divided by its light e, p ⊘ e, scaled as
+``intensity`` says, and the canonical gamut is the hull of the union over the images (Forsyth
+1990 §3; Gijsenij, Gevers & van de Weijer 2010 §3; learn_canonical.h, docs/photographs.md §2).
+Only the running hull's vertices are kept.
+
+Parameters
+----------
+intensity : {'max', 'none'}, default 'max'
+    'max': each image is scaled so that its largest white-balanced channel is 1 (its brightest
+    surface under the white light sets the scale); 'none': p ⊘ e as it is.
+
+Attributes
+----------
+images : int
+    How many images were added.
+contributing : int
+    Of those, how many added colours (an image with no colour, or only black, adds nothing).
+
+Raises
+------
+ValueError
+    An unknown ``intensity``.
+)doc")
       .def(py::init([](const std::string& intensity) {
              try {
                return CanonicalLearner3(canonical_intensity_from_string(intensity));
@@ -266,16 +346,68 @@ void bind_functions(py::module_& m) {
               return 0;
             });
           },
-          py::arg("image"), py::arg("light"), py::kw_only(), GMCC_PIXEL_ARGS,
-          "Add one image (H×W×3 through the pixel rules, an ImageColours of pixel colours, or colours) and its light.")
+          py::arg("image"), py::arg("light"), py::kw_only(), GMCC_PIXEL_ARGS, R"doc(Add one training image and its measured light to the gamut.
+
+Its pixel colours p join the gamut as p ⊘ e, scaled (Forsyth 1990 §3; docs/photographs.md §2).
+
+Parameters
+----------
+image : numpy.ndarray (H, W, 3), ImageColours, or array_like (n, 3)
+    An image goes through the pixel rules below; an ImageColours must hold pixel colours;
+    colours are taken as they are.
+light : sequence of 3 numbers
+    The image's measured light e, every channel > 0.
+mask : numpy.ndarray of bool, shape (H, W), optional
+    True for the pixels to use (default None: every pixel).
+black_level : int or float, default 0
+    Subtracted from every raw sample; negative results become 0.
+saturation : int or float, optional
+    A pixel with any raw channel >= it is dropped (default None: none is).
+dark : int or float, default 0
+    A pixel with a channel below it (after the black level) is dropped.
+dark_fraction, bright_fraction : int, float, Fraction or str, optional
+    A pixel with a channel below dark_fraction·M, or above bright_fraction·M, is dropped; M is
+    the image's largest value after the black level. Default None: no such rule.
+pixel_rule : {'none', 'gijsenij'}, default 'none'
+    'gijsenij': Gijsenij et al. (2010)'s rule, the fractions 5/255 and 245/255.
+colour_set : {'hull-3d', 'distinct'}, default 'hull-3d'
+    The colours an image is reduced to ('hull' gives chromaticity lifts: refused).
+
+Returns
+-------
+None
+
+Raises
+------
+ValueError
+    A bad image or light, chromaticity lifts, or no usable pixel.
+TypeError
+    An argument of the wrong type.
+)doc")
       .def("gamut", [](const CanonicalLearner3& l) {
              const std::vector<Colour> g = released([&] { return l.gamut(); });
              py::list out;
              for (const Colour& c : g) out.append(colour_tuple(c));
              return out;
-           }, "The learned gamut's vertices, exact (Fraction triples), sorted.")
+           }, R"doc(The learned gamut's vertices, exactly.
+
+The hull of the union of the images' p ⊘ e (Forsyth 1990 §3; docs/photographs.md §2).
+
+Returns
+-------
+list of tuple of (Fraction, Fraction, Fraction)
+    The vertices, sorted; empty before any colour was added.
+)doc")
       .def("gamut_float", [](const CanonicalLearner3& l) { return colours_array(l.gamut()); },
-           "The learned gamut's vertices as the nearest doubles, shape (n, 3).")
+           R"doc(The learned gamut's vertices as the nearest doubles.
+
+As gamut() (Forsyth 1990 §3; docs/photographs.md §2), in floating point.
+
+Returns
+-------
+numpy.ndarray of float64, shape (n, 3)
+    The vertices, in gamut()'s order.
+)doc")
       .def("prepare", [](const CanonicalLearner3& l, const std::string& black) {
              Canonical3 out;
              out.black = black_from(black);
@@ -284,12 +416,39 @@ void bind_functions(py::module_& m) {
              out.colours = g.size();
              out.constraints = released([&] { return std::make_shared<const CanonicalConstraints3>(g, out.black); });
              return out;
-           }, py::kw_only(), py::arg("black") = "include", "The learned gamut prepared: a Canonical3.")
+           }, py::kw_only(), py::arg("black") = "include", R"doc(The learned gamut prepared for estimate_3d.
+
+Its exact half-spaces (Forsyth 1990 §3; feasible_set_3d.h), as prepare_canonical_3d.
+
+Parameters
+----------
+black : {'include', 'exclude'}, default 'include'
+    Whether black (0, 0, 0) joins the hull (with it F3 is never empty).
+
+Returns
+-------
+Canonical3
+    G_c3, immutable and thread-safe.
+
+Raises
+------
+ValueError
+    No colour has been added, or an unknown ``black``.
+)doc")
       .def_property_readonly("images", &CanonicalLearner3::images)
       .def_property_readonly("contributing", &CanonicalLearner3::contributing);
 
-  py::class_<CanonicalLearner2>(m, "CanonicalLearner2",
-                                "A 2-D (perspective) canonical gamut learned image by image (learn_canonical.h).")
+  py::class_<CanonicalLearner2>(m, "CanonicalLearner2", R"doc(A 2-D (perspective) canonical gamut learned image by image.
+
+The hull of the perspective chromaticities of each training image's colours divided by its
+light (Finlayson & Hordley 1999 eq. 10; Finlayson 1996; learn_canonical.h,
+docs/photographs.md §2); chromaticities need no intensity scaling. Takes no parameters.
+
+Attributes
+----------
+images : int
+    How many images were added.
+)doc")
       .def(py::init<>())
       .def(
           "add",
@@ -314,13 +473,56 @@ void bind_functions(py::module_& m) {
           py::arg("image"), py::arg("light"), py::kw_only(), py::arg("mask") = py::none(), py::arg("black_level") = 0,
           py::arg("saturation") = py::none(), py::arg("dark") = 0, py::arg("dark_fraction") = py::none(),
           py::arg("bright_fraction") = py::none(), py::arg("pixel_rule") = "none",
-          "Add one image (or its colours) and its light.")
+          R"doc(Add one training image and its measured light to the 2-D gamut.
+
+Its chromaticities, divided by the light, join the hull (Finlayson & Hordley 1999 eq. 10).
+
+Parameters
+----------
+image : numpy.ndarray (H, W, 3), ImageColours, or array_like (n, 3)
+    An image goes through the pixel rules below (colour set 'hull'); an ImageColours (lifts or
+    pixel colours) and colours are taken as they are.
+light : sequence of 3 numbers
+    The image's measured light e, every channel > 0.
+mask : numpy.ndarray of bool, shape (H, W), optional
+    True for the pixels to use (default None: every pixel).
+black_level : int or float, default 0
+    Subtracted from every raw sample; negative results become 0.
+saturation : int or float, optional
+    A pixel with any raw channel >= it is dropped (default None: none is).
+dark : int or float, default 0
+    A pixel with a channel below it (after the black level) is dropped.
+dark_fraction, bright_fraction : int, float, Fraction or str, optional
+    A pixel with a channel below dark_fraction·M, or above bright_fraction·M, is dropped; M is
+    the image's largest value after the black level. Default None: no such rule.
+pixel_rule : {'none', 'gijsenij'}, default 'none'
+    'gijsenij': Gijsenij et al. (2010)'s rule, the fractions 5/255 and 245/255.
+
+Returns
+-------
+None
+
+Raises
+------
+ValueError
+    A bad image or light.
+TypeError
+    An argument of the wrong type.
+)doc")
       .def("gamut", [](const CanonicalLearner2& l) {
              py::list out;
              for (const Point2& p : l.gamut()) out.append(py::make_tuple(to_fraction(p.x), to_fraction(p.y), 1));
              return out;
-           }, "The learned gamut as chromaticity lifts (x, y, 1), exact, counter-clockwise: a canonical gamut for "
-              "gmcc.prepare_canonical.")
+           }, R"doc(The learned gamut as chromaticity lifts, a canonical gamut for prepare_canonical.
+
+The hull's vertices (x, y) as colours (x, y, 1), whose perspective chromaticities they are
+(Finlayson & Hordley 1999 eq. 10).
+
+Returns
+-------
+list of tuple of (Fraction, Fraction, int)
+    The lifts (x, y, 1), exact, counter-clockwise.
+)doc")
       .def_property_readonly("images", &CanonicalLearner2::images);
 }
 
@@ -393,7 +595,9 @@ void bind_benchmark(py::module_& m) {
         o.threads = threads;
         // The run's pixel rules, through the same checks as images (a 1×1 image is not needed:
         // the integer route's checks are the arguments').
-        o.pixels.black_level = integer_in<std::uint32_t>(black_level, "black_level", 0, 65535);
+        // Absent: 0 for PNG and TIFF, a raw file's own black levels (camera_image.h).
+        o.black_level_given = !black_level.is_none();
+        if (o.black_level_given) o.pixels.black_level = integer_in<std::uint32_t>(black_level, "black_level", 0, 65535);
         if (!saturation.is_none()) o.pixels.saturation = integer_in<std::uint32_t>(saturation, "saturation", 1, 65536);
         if (const auto d = integer_in<std::uint32_t>(dark, "dark", 0, 65535)) o.pixels.dark_below = d;
         PixelArgs args;
@@ -432,7 +636,7 @@ void bind_benchmark(py::module_& m) {
       },
       py::arg("images"), py::arg("truths"), py::kw_only(), py::arg("folds") = py::none(),
       py::arg("folds_file") = py::none(), py::arg("methods") = py::none(), py::arg("intensity") = "max",
-      py::arg("black") = "include", py::arg("threads") = 0, py::arg("black_level") = 0,
+      py::arg("black") = "include", py::arg("threads") = 0, py::arg("black_level") = py::none(),
       py::arg("saturation") = py::none(), py::arg("dark") = 0, py::arg("dark_fraction") = py::none(),
       py::arg("bright_fraction") = py::none(), py::arg("pixel_rule") = "none",
       "run_benchmark (benchmark.h). Public: gmcc.benchmark.");

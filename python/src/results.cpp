@@ -137,11 +137,30 @@ void estimate_properties(Class& c, Get get) {
 
 // The 2-D feasible set and gamut type.
 void bind_convex_set(py::module_& m) {
-  py::class_<ConvexSet2>(m, "ConvexSet",
-                         "An exact closed convex set of the plane (a feasible set of perspective "
-                         "maps, a gamut of chromaticities): a polygon (counter-clockwise, from its "
-                         "lexicographically smallest vertex), a segment, a point or empty. "
-                         "Degenerate kinds are results, not errors (docs/conventions.md).")
+  py::class_<ConvexSet2>(m, "ConvexSet", R"doc(An exact closed convex set of the plane: polygon, segment, point or empty.
+
+A feasible set of perspective maps F (Finlayson & Hordley 1999 eqs. 7–9, in perspective) or a
+gamut of chromaticities G_c (eq. 10), with rational vertices. Degenerate kinds are results, not
+errors (docs/conventions.md §6). Made by gmcc (canonical_gamut, feasible_set, select, ...), not
+constructed; ``len(s)`` is the number of vertices, ``bool(s)`` whether it is not empty, and ``==``
+compares exactly.
+
+Attributes
+----------
+kind : str
+    'polygon', 'segment', 'point' or 'empty'.
+vertices : list of tuple of (Fraction, Fraction)
+    The exact vertices: a polygon counter-clockwise from its lexicographically smallest
+    vertex, a segment's two ends, a point's one.
+vertices_float : numpy.ndarray of float64, shape (k, 2)
+    The vertices as the nearest doubles.
+area : Fraction
+    The exact area (0 unless a polygon).
+area_float : float
+    The area as the nearest double.
+centroid : tuple of (Fraction, Fraction) or None
+    The exact centroid in the set's own dimension (the 2-D mean's map); None when empty.
+)doc")
       .def_property_readonly("kind", [](const ConvexSet2& s) { return to_string(s.kind); },
                              "`polygon`, `segment`, `point` or `empty`.")
       .def_property_readonly(
@@ -168,24 +187,95 @@ void bind_convex_set(py::module_& m) {
       .def(
           "contains",
           [](const ConvexSet2& s, py::handle p) { return contains(s, map_from(p, "point")); },
-          py::arg("point"), "Whether the point (x, y) lies in the closed set, exactly.")
+          py::arg("point"), R"doc(Whether a point lies in the closed set, decided exactly.
+
+For F, whether a map is feasible (Finlayson & Hordley 1999 eqs. 7–9).
+
+Parameters
+----------
+point : sequence of 2 numbers
+    The point (x, y), taken exactly (a float is the rational of its value).
+
+Returns
+-------
+bool
+    True on the boundary too.
+
+Raises
+------
+ValueError
+    The point is not two finite numbers.
+)doc")
       .def("__len__", [](const ConvexSet2& s) { return s.vertices.size(); })
       .def("__bool__", [](const ConvexSet2& s) { return s.kind != ConvexKind::empty; })
       .def("__eq__", [](const ConvexSet2& a, const ConvexSet2& b) { return a == b; })
       .def("__repr__", &convex_set_repr);
 
   auto estimate = py::class_<MapEstimate>(
-      m, "MapEstimate",
-      "A selection rule's perspective map (d1/d3, d2/d3) with its provenance: exact where the "
-      "rule's answer is rational (max-area, 2-D mean), else the double map with its error "
-      "statement (3-D mean; Finlayson & Hordley 1999 §3).");
+      m, "MapEstimate", R"doc(A selection rule's perspective map with its provenance and error statement.
+
+The map (d1/d3, d2/d3) one of the rules of Finlayson & Hordley (1999) §3 selects: exact where
+the rule's answer is rational (max-area, 2-D mean), else the double map with its error
+statement (3-D mean; docs/math.md §2). Made by max_area, mean_2d and mean_3d, not constructed.
+
+Attributes
+----------
+rule : str
+    'max_area', 'mean_2d' or 'mean_3d'.
+method : str
+    'exact' (a rational rule), 'analytic', 'quadrature' or 'monte-carlo'.
+valid : bool
+    False when the route could not produce a map (see ``note``).
+note : str
+    Why the map is not valid, or a caveat on a valid one; '' otherwise.
+map : tuple of (float, float) or None
+    The map as the nearest doubles; None when not valid.
+exact : tuple of (Fraction, Fraction) or None
+    The exact map where the rule's answer is rational, else None.
+error_bound : float
+    The larger of ``error_bounds``.
+error_bounds : tuple of (float, float)
+    Per component: a rigorous bound on abs(map - true map) (exact, analytic), the truncation
+    estimate plus rounding bound (quadrature), the standard error (monte-carlo).
+correctly_rounded : tuple of (bool, bool)
+    Per component: ``map`` is the double nearest the true value.
+enclosure : numpy.ndarray of float64, shape (2, 2), or None
+    exact and analytic: a certified enclosure, rows (lo, hi) per component; else None.
+precision_bits : int
+    analytic: the working precision, bits (64: the x87 extended fast path); else 0.
+order : int
+    quadrature: Gauss–Legendre points per direction; else 0.
+samples : int
+    monte-carlo: the points drawn in the unit cube; else 0.
+samples_kept : int
+    monte-carlo: of those, the points inside cone ∩ ball.
+seed : int
+    monte-carlo: the seed of its mt19937_64 generator.
+standard_error : tuple of (float, float)
+    monte-carlo: the standard error per component; else zeros.
+)doc");
   estimate_properties(estimate, [](const MapEstimate& e) -> const MapEstimate& { return e; });
   estimate.def("__repr__", [](const MapEstimate& e) { return "MapEstimate(" + estimate_repr(e) + ")"; });
 
   auto selection = py::class_<Selection>(
-      m, "Selection",
-      "One rule's answer and the largest error it can make within F (Finlayson & Hordley 1999 "
-      "§4): the estimate's properties, and worst_case_deg, worst_case_illuminant_deg.");
+      m, "Selection", R"doc(One rule's answer on F and the largest error it can make within F.
+
+A selection rule's map (Finlayson & Hordley 1999 §3) with its worst cases (§4): the angle to
+the farthest map of F, in map space and in illuminant space (docs/derivations.md §3). It has
+every attribute of its ``estimate`` (a MapEstimate), forwarded; it is not a subclass of
+MapEstimate. Made by select and select_maps, not constructed.
+
+Attributes
+----------
+estimate : MapEstimate
+    The rule's map and error statement.
+rule, method, valid, note, map, exact, error_bound, error_bounds, correctly_rounded, enclosure, precision_bits, order, samples, samples_kept, seed, standard_error
+    As MapEstimate, forwarded from ``estimate``.
+worst_case_deg : float or None
+    The largest map-space angular error within F, degrees (None if not valid).
+worst_case_illuminant_deg : float or None
+    The same in illuminant space (docs/derivations.md §3.2); None when not computed.
+)doc");
   estimate_properties(selection, [](const Selection& s) -> const MapEstimate& { return s.estimate; });
   selection
       .def_property_readonly("estimate", [](const Selection& s) { return s.estimate; })
@@ -204,7 +294,21 @@ void bind_convex_set(py::module_& m) {
 
 // What a scene is scored and recovered with: truth errors, the illumination constraint, recovery.
 void bind_scene_reports(py::module_& m) {
-  py::class_<TruthErrors>(m, "TruthErrors", "One rule's errors against the true light, degrees.")
+  py::class_<TruthErrors>(m, "TruthErrors", R"doc(One rule's errors against the true light, in degrees.
+
+The paper's map-space angular error (Finlayson & Hordley 1999 §4), the recovery error (Hordley
+& Finlayson 2006) and the reproduction error (Finlayson & Zakizadeh 2014), as docs/math.md §3
+defines them. Part of a Truth, not constructed.
+
+Attributes
+----------
+map_error_deg : float
+    The angle between the rule's map and the true map, lifted as (m1, m2, 1).
+illuminant_error_deg : float or None
+    The recovery (illuminant-space) angular error; None for a map with a component <= 0.
+reproduction_error_deg : float or None
+    The reproduction angular error; None likewise.
+)doc")
       .def_readonly("map_error_deg", &TruthErrors::map_error_deg,
                     "The paper's map-space angular error (§4).")
       .def_property_readonly("illuminant_error_deg",
@@ -219,7 +323,25 @@ void bind_scene_reports(py::module_& m) {
         if (e.reproduction_error_deg) r += ", reproduction " + g10(*e.reproduction_error_deg) + " deg";
         return r + ")";
       });
-  py::class_<TruthReport>(m, "Truth", "The scene scored against its true light.")
+  py::class_<TruthReport>(m, "Truth", R"doc(A scene scored against its true light: the true map and each rule's errors.
+
+The true map c ⊘ e in perspective (Finlayson 1996 §5) and each rule's errors against it
+(Finlayson & Hordley 1999 §4). A SceneResult's ``truth`` when select was given one, not
+constructed.
+
+Attributes
+----------
+light : tuple of (Fraction, Fraction, Fraction)
+    The true light e, exact.
+map : tuple of (Fraction, Fraction)
+    The true perspective map c ⊘ e, exact.
+map_float : tuple of (float, float)
+    The true map as the nearest doubles.
+in_feasible_set : bool
+    Whether the true map lies in F (after the constraint and any recovery), exactly.
+max_area, mean_2d, mean_3d : TruthErrors or None
+    Each rule's errors; None when the rule gave no map.
+)doc")
       .def_property_readonly("light", [](const TruthReport& t) { return colour_tuple(t.light); })
       .def_property_readonly("map", [](const TruthReport& t) { return to_fraction_pair(t.map); },
                              "The true perspective map c ⊘ e, exact.")
@@ -236,14 +358,51 @@ void bind_scene_reports(py::module_& m) {
         return "Truth(map (" + g10(d[0]) + ", " + g10(d[1]) + "), " +
                (t.in_feasible_set ? "inside" : "outside") + " F)";
       });
-  py::class_<ConstraintReport>(m, "Constraint", "Finlayson's illumination constraint as applied.")
+  py::class_<ConstraintReport>(m, "Constraint", R"doc(Finlayson's illumination constraint as a scene applied it.
+
+C, the hull of the plausible lights' perspective maps, intersected with F (Finlayson 1996 §5).
+A SceneResult's ``constraint`` when the canonical side has ``illuminants``, not constructed.
+
+Attributes
+----------
+illuminants : int
+    How many plausible lights C is made of.
+maps : ConvexSet
+    C: the hull of the lights' perspective maps.
+unconstrained : ConvexSet
+    F before F ∩ C.
+)doc")
       .def_readonly("illuminants", &ConstraintReport::illuminants)
       .def_readonly("maps", &ConstraintReport::maps, "C: the hull of the lights' perspective maps.")
       .def_readonly("unconstrained", &ConstraintReport::unconstrained, "F before F ∩ C.")
       .def("__repr__", [](const ConstraintReport& c) {
         return "Constraint(" + std::to_string(c.illuminants) + " illuminants, C " + convex_set_repr(c.maps) + ")";
       });
-  py::class_<RecoveryReport>(m, "Recovery", "What the recovery policy did with an empty F.")
+  py::class_<RecoveryReport>(m, "Recovery", R"doc(What the recovery policy did with an empty feasible set.
+
+``on_empty='grow-canonical'`` grows G_c until a map fits, as Barnard, Cardei & Funt (2002) Part I
+§3 enlarge the canonical gamut; ``'min-violation'`` takes the maps that violate Forsyth's (1990)
+constraints least (docs/math.md §1). A SceneResult's ``recovery``, not constructed.
+
+Attributes
+----------
+policy : str
+    The policy asked for: 'none', 'grow-canonical' or 'min-violation'.
+reason : str
+    Why F was empty.
+applied : bool
+    True when the policy ran and recovered a non-empty F.
+factor : Fraction or None
+    grow-canonical: the expansion factor found, else None.
+empty_below : Fraction or None
+    grow-canonical: the bracket's lower end, a factor at which F is still empty (the least
+    factor with a non-empty F lies above it, at most ``factor``); else None.
+violation : Fraction or None
+    min-violation: the least Chebyshev violation t*, else None.
+canonical_gamut : ConvexSet or None
+    The gamut the recovered F fits: grow-canonical, G_c grown by ``factor``; min-violation,
+    G_c grown by t* in each direction (Chebyshev); else None.
+)doc")
       .def_property_readonly("policy", [](const RecoveryReport& r) { return to_string(r.policy); })
       .def_readonly("reason", &RecoveryReport::reason)
       .def_readonly("applied", &RecoveryReport::applied)
@@ -272,10 +431,26 @@ void bind_scene_reports(py::module_& m) {
 // A prepared canonical gamut, a scene's result and an image's colours.
 void bind_scene(py::module_& m) {
   py::class_<PreparedCanonical, std::shared_ptr<PreparedCanonical>>(
-      m, "Canonical",
-      "The canonical side prepared once for many images (gmcc.prepare_canonical): the exact "
-      "(expanded) canonical gamut G_c and the illumination constraint C. Immutable; one object "
-      "may serve many calls, also from several threads.")
+      m, "Canonical", R"doc(The canonical side, prepared once for many images: G_c and the options.
+
+The exact (expanded) canonical gamut G_c of perspective chromaticities (Finlayson & Hordley 1999
+eq. 10) and Finlayson's illumination constraint C (Finlayson 1996 §5), with the options of
+select. Made by prepare_canonical, not constructed. Immutable; one object may serve many calls,
+also from several threads.
+
+Attributes
+----------
+gamut : ConvexSet
+    G_c after expansion.
+colours : int
+    The canonical colours given.
+dropped : int
+    Of those, the colours with b <= 0 (dropped).
+constraint : ConvexSet or None
+    C, when illuminants were given.
+chromaticities : numpy.ndarray of float64, shape (n, 2)
+    The canonical perspective chromaticities (r/b, g/b) as doubles.
+)doc")
       .def_readonly("gamut", &PreparedCanonical::gamut, "G_c after expansion (ConvexSet).")
       .def_readonly("colours", &PreparedCanonical::colours, "Canonical colours given.")
       .def_readonly("dropped", &PreparedCanonical::dropped, "Of those, with b <= 0 (dropped).")
@@ -293,10 +468,42 @@ void bind_scene(py::module_& m) {
         return "Canonical(" + std::to_string(c.colours) + " colours, gamut " + convex_set_repr(c.gamut) +
                (c.constraint ? ", constrained" : "") + ")";
       });
-  py::class_<Scene>(m, "SceneResult",
-                    "Everything gmcc.select found for one image: the feasible set F (Finlayson & "
-                    "Hordley 1999 eqs. 7–9, in perspective), the three selections (§3) with their "
-                    "worst cases (§4), and the truth report when a true light was given.")
+  py::class_<Scene>(m, "SceneResult", R"doc(Everything select found for one image: F, the selections, their worst cases.
+
+The feasible set F (Finlayson & Hordley 1999 eqs. 7–9, in perspective), the three selections
+(§3) with their worst cases (§4), and the truth report when a true light was given. Made by
+select, not constructed.
+
+Attributes
+----------
+feasible_set : ConvexSet
+    F (∩ C), or what a recovery policy recovered.
+kind : str
+    F's kind: 'polygon', 'segment', 'point' or 'empty'.
+canonical : Canonical
+    The canonical side the scene was selected against.
+canonical_gamut : ConvexSet
+    Its G_c.
+image_colours : int
+    The image colours given (after the pixel rules, for an image).
+image_dropped : int
+    Of those, the colours with b <= 0 (dropped).
+empty_reason : str
+    Why F is empty; '' when it is not.
+constraint : Constraint or None
+    The illumination constraint as applied, when there is one.
+recovery : Recovery or None
+    What the recovery policy did, when F was empty and a policy was asked for.
+max_area, mean_2d, mean_3d : Selection or None
+    Each rule's answer; None when F is empty.
+selections : dict of str to Selection or None
+    The three, keyed 'max_area', 'mean_2d', 'mean_3d'.
+truth : Truth or None
+    The truth report, when a true light was given.
+pixels : dict of str to int, or None
+    For an image: what the pixel rules did (pixels, masked, saturated, dark, bright, kept,
+    colours, hull_vertices, no_chromaticity); None for colours.
+)doc")
       .def_property_readonly("feasible_set", [](const Scene& s) { return s.result.feasible; },
                              "F (∩ C), or what a recovery policy recovered (ConvexSet).")
       .def_property_readonly("kind", [](const Scene& s) { return to_string(s.result.feasible.kind); })
@@ -330,10 +537,29 @@ void bind_scene(py::module_& m) {
         if (!s.result.empty_reason.empty()) r += ", " + s.result.empty_reason;
         return r + ")";
       });
-  py::class_<PyImageColours>(m, "ImageColours",
-                             "The colours the pixel rules kept (docs/conventions.md §8), with counts: pixel "
-                             "colours (colour_set 'distinct' or 'hull-3d') or, for the 2-D perspective route, "
-                             "chromaticity lifts (colour_set 'hull').")
+  py::class_<PyImageColours>(m, "ImageColours", R"doc(The colours the pixel rules kept from an image, with the counts.
+
+Pixel colours (colour_set 'distinct' or 'hull-3d': Forsyth 1990 §3, only the 3-D hull's
+vertices constrain the diagonal maps) or, for the 2-D perspective route, the chromaticity lifts
+(x, y, 1) of the chromaticity hull's vertices (colour_set 'hull': all Finlayson & Hordley 1999
+eqs. 7–9 depend on); docs/conventions.md §8. Made by image_colours, not constructed;
+``len(c)`` is the number of colours.
+
+Attributes
+----------
+colour_set : str
+    What the colours are: 'distinct', 'hull-3d' (pixel colours) or 'hull' (lifts).
+colours : list of tuple of (Fraction, Fraction, Fraction)
+    The exact pixel colours; reading it raises ValueError for chromaticity lifts.
+colours_float : numpy.ndarray of float64, shape (n, 3)
+    The pixel colours as the nearest doubles; ValueError for chromaticity lifts.
+chromaticity_lifts : list of tuple of (Fraction, Fraction, Fraction)
+    colour_set 'hull': the lifts (x, y, 1), exact, counter-clockwise; ValueError for pixel
+    colours.
+counts : dict of str to int
+    What the pixel rules did: pixels, masked, saturated, dark, bright, kept, colours,
+    hull_vertices, no_chromaticity.
+)doc")
       .def_property_readonly("colour_set", [](const PyImageColours& c) { return to_string(c.set); },
                              "What the colours are: 'distinct', 'hull-3d' (pixel colours) or 'hull' (lifts).")
       .def_property_readonly("colours", [](const PyImageColours& c) {
@@ -364,9 +590,25 @@ void bind_scene(py::module_& m) {
 
 // CRULE in 3-D: F3, its selections and the whole result.
 void bind_crule(py::module_& m) {
-  py::class_<ConvexSet3>(m, "ConvexSet3",
-                         "An exact convex set of diagonal maps (d1, d2, d3): Forsyth's 3-D "
-                         "feasible set; polytope, polygon, segment, point or empty.")
+  py::class_<ConvexSet3>(m, "ConvexSet3", R"doc(An exact convex set of 3-D diagonal maps: Forsyth's feasible set F3.
+
+The maps d = (d1, d2, d3) taking every image colour into the canonical gamut (Forsyth 1990 §3;
+docs/math.md §1b): a polytope, polygon, segment, point or empty, with rational vertices. Made
+by crule_3d and estimate_3d, not constructed; ``len(s)`` is the number of vertices.
+
+Attributes
+----------
+kind : str
+    'polytope', 'polygon', 'segment', 'point' or 'empty'.
+vertices : list of tuple of (Fraction, Fraction, Fraction)
+    The exact vertices, sorted.
+vertices_float : numpy.ndarray of float64, shape (k, 3)
+    The vertices as the nearest doubles.
+faces : list of list of int
+    The facets as cycles of vertex indices.
+volume : Fraction
+    The exact volume (0 unless a polytope).
+)doc")
       .def_property_readonly("kind", [](const ConvexSet3& s) { return to_string(s.kind); })
       .def_property_readonly("vertices", [](const ConvexSet3& s) {
         py::list l;
@@ -386,7 +628,29 @@ void bind_crule(py::module_& m) {
         return "ConvexSet3(" + to_string(s.kind) + ", " + std::to_string(s.vertices.size()) +
                " vertices, volume≈" + g10(to_double_nearest(volume(s))) + ")";
       });
-  py::class_<Selection3>(m, "Selection3", "A 3-D CRULE rule's diagonal map and its worst case.")
+  py::class_<Selection3>(m, "Selection3", R"doc(A 3-D CRULE rule's diagonal map and its worst case.
+
+Max-volume (Forsyth 1990 §4, CRULE-MV; docs/derivations.md §2.4) or the centroid (Barnard,
+Cardei & Funt 2002, CRULE-AVE) of F3, with the largest map-space angle to a map of F3. Part
+of a Crule3d, not constructed.
+
+Attributes
+----------
+rule : str
+    'max_volume' or 'centroid'.
+method : str
+    'exact' (rational) or 'certified' (a quadratic irrational, enclosed).
+map : tuple of (float, float, float)
+    The map (d1, d2, d3) as doubles.
+exact : tuple of (Fraction, Fraction, Fraction) or None
+    The exact map where it is rational, else None.
+error_bound : float
+    A rigorous bound on the largest component's distance from the true value.
+enclosure : numpy.ndarray of float64, shape (3, 2)
+    A certified enclosure, rows (lo, hi) per component.
+worst_case_deg : float or None
+    The largest angle from the map to a map of F3, degrees.
+)doc")
       .def_property_readonly("rule", [](const Selection3& s) { return s.estimate.rule; })
       .def_property_readonly("method", [](const Selection3& s) { return s.estimate.method; },
                              "`exact` (rational) or `certified` (a quadratic irrational, enclosed).")
@@ -408,7 +672,20 @@ void bind_crule(py::module_& m) {
         return "Selection3(" + e.rule + " (" + g10(e.map[0]) + ", " + g10(e.map[1]) + ", " + g10(e.map[2]) +
                ") " + e.method + ")";
       });
-  py::class_<Crule3d>(m, "Crule3d", "Forsyth's CRULE in 3-D: F3, its volume and two selections.")
+  py::class_<Crule3d>(m, "Crule3d", R"doc(Forsyth's CRULE in 3-D on colours: F3, its volume and two selections.
+
+The feasible set F3 of diagonal maps (Forsyth 1990 §3) with the max-volume map (CRULE-MV) and
+the centroid (CRULE-AVE, Barnard, Cardei & Funt 2002). Made by crule_3d, not constructed.
+
+Attributes
+----------
+feasible_set : ConvexSet3
+    F3, exactly.
+volume : Fraction
+    F3's exact volume.
+max_volume, centroid : Selection3 or None
+    The two selections; None when F3 is empty.
+)doc")
       .def_readonly("feasible_set", &Crule3d::feasible)
       .def_property_readonly("volume", [](const Crule3d& c) { return to_fraction(c.volume.value()); })
       .def_readonly("max_volume", &Crule3d::max_volume)
@@ -421,9 +698,33 @@ void bind_crule(py::module_& m) {
 
 // Error statistics over scenes.
 void bind_statistics(py::module_& m) {
-  py::class_<ErrorStatistics>(m, "ErrorStatistics",
-                              "The statistics the field reports for a list of angular errors "
-                              "(docs/reproduction.md \"Statistics\").")
+  py::class_<ErrorStatistics>(m, "ErrorStatistics", R"doc(The statistics the field reports for a list of angular errors.
+
+Mean and standard error (Finlayson & Hordley 1999 §4 report the mean), median (Hordley &
+Finlayson 2006), trimean, best and worst 25%, 95th percentile and maximum, each defined in
+docs/reproduction.md "Statistics". Made by error_statistics and summarise, not constructed.
+
+Attributes
+----------
+n : int
+    How many values the statistics are over (with n = 0 every statistic is NaN, undefined).
+mean : float
+    The sum over n, summed in the order given.
+standard_error : float
+    s / sqrt(n), s the sample standard deviation; NaN for n = 1.
+median : float
+    The 0.5 quantile (Hyndman & Fan type 7, numpy's default).
+trimean : float
+    (Q(0.25) + 2 median + Q(0.75)) / 4.
+best25 : float
+    The mean of the ceil(n/4) smallest values.
+worst25 : float
+    The mean of the ceil(n/4) largest values.
+p95 : float
+    The 0.95 quantile.
+max : float
+    The largest value.
+)doc")
       .def_readonly("n", &ErrorStatistics::n)
       .def_readonly("mean", &ErrorStatistics::mean)
       .def_readonly("standard_error", &ErrorStatistics::standard_error)
@@ -439,7 +740,16 @@ void bind_statistics(py::module_& m) {
         d["trimean"] = s.trimean; d["best25"] = s.best25; d["worst25"] = s.worst25; d["p95"] = s.p95;
         d["max"] = s.max;
         return d;
-      })
+      }, R"doc(The statistics as a dict, for a table row or JSON.
+
+The statistics of docs/reproduction.md "Statistics": the mean Finlayson & Hordley (1999) §4
+report, the median Hordley & Finlayson (2006) recommend, and the rest.
+
+Returns
+-------
+dict of str to float
+    n, mean, standard_error, median, trimean, best25, worst25, p95 and max.
+)doc")
       .def("__repr__", [](const ErrorStatistics& s) {
         return "ErrorStatistics(n=" + std::to_string(s.n) + ", mean=" + g10(s.mean) + ", median=" +
                g10(s.median) + ", trimean=" + g10(s.trimean) + ", best25=" + g10(s.best25) +
