@@ -5,6 +5,7 @@
 /// (results.h). No geometry or selection is done here.
 
 #include "convert.h"
+#include "interrupt.h"
 #include "photo.h"
 #include "pixels.h"
 #include "results.h"
@@ -107,7 +108,7 @@ SelectSceneOptions scene_options(py::handle expand, const std::string& expand_po
 template <class F>
 auto released(F f) {
   try {
-    py::gil_scoped_release nogil;
+    InterruptibleRelease nogil;
     return f();
   } catch (const SceneInputError& e) {
     raise_scene_error(e);
@@ -507,7 +508,7 @@ void bind_benchmark_and_experiments(py::module_& m) {
         if (scenes < 1) throw py::value_error("scenes: must be >= 1");
         ExperimentResult r;
         try {
-          py::gil_scoped_release nogil;
+          InterruptibleRelease nogil;
           auto table = [&](const char* name) { return read_spectral_csv(data_dir + "/" + name); };
           ExperimentSetup setup;
           if (experiment == "synthetic") {
@@ -589,7 +590,7 @@ void bind_benchmark_and_experiments(py::module_& m) {
         GehlerShiSetup setup;
         ExperimentResult r;
         try {
-          py::gil_scoped_release nogil;
+          InterruptibleRelease nogil;
           const ChartDataset data = read_gehler_shi(patches, truth);
           try {
             setup = gehler_shi_setup(data, options);
@@ -625,6 +626,7 @@ PYBIND11_MODULE(_core, m) {
   using namespace gmcc;
   using namespace gmcc::python;
   m.doc() = "gmcc._core: the compiled half of the Python module gmcc (docs/python.md).";
+  register_interrupt(m);
   m.attr("__version__") = std::string(gmcc_version());
   m.attr("__commit__") = std::string(gmcc_commit());
   m.attr("__commit_date__") = std::string(gmcc_commit_date());

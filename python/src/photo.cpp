@@ -5,6 +5,8 @@
 
 #include "photo.h"
 
+#include "interrupt.h"
+
 #include "convert.h"
 #include "pixels.h"
 #include "results.h"
@@ -25,7 +27,7 @@ namespace {
 // A library call with the GIL released (its exceptions propagate once the GIL is back).
 template <class F>
 auto released(F f) {
-  py::gil_scoped_release nogil;
+  InterruptibleRelease nogil;
   return f();
 }
 
@@ -607,7 +609,7 @@ void bind_benchmark(py::module_& m) {
         pixel_fractions(args, o.pixels.dark_below_fraction, o.pixels.bright_above_fraction);
         BenchmarkResult r;
         try {
-          py::gil_scoped_release nogil;
+          InterruptibleRelease nogil;
           r = run_benchmark(dataset, o);
         } catch (const InputError& e) {
           throw py::value_error(e.what());

@@ -1,5 +1,7 @@
 #include <gmcc/selection/mean_3d_monte_carlo.h>
 
+#include <gmcc/numerics/interrupt.h>
+
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -77,6 +79,7 @@ MapEstimate mean_3d_monte_carlo(const ConvexSet2& F, std::uint64_t samples, std:
   long double sx = 0, sy = 0, sz = 0, sxx = 0, syy = 0, szz = 0, sxz = 0, syz = 0;
   std::uint64_t kept = 0;
   for (std::uint64_t i = 0; i < samples; ++i) {
+    if ((i & 0xffff) == 0) check_interrupt();  // a caller's Ctrl-C (interrupt.h)
     const double x = uniform(), y = uniform(), z = uniform();
     if (z == 0 || !in_unit_ball(x, y, z)) continue;
     bool inside = true;

@@ -2,6 +2,7 @@
 
 #include <gmcc/geometry/perspective_image.h>
 #include <gmcc/input/camera_image.h>
+#include <gmcc/numerics/interrupt.h>
 #include <gmcc/input/image_file.h>
 #include <gmcc/input/input_error.h>
 #include <gmcc/photo/estimate_3d.h>
@@ -112,6 +113,7 @@ void parallel_for(std::size_t n, unsigned threads, const std::function<void(std:
   auto work = [&] {
     for (std::size_t i; (i = next++) < n;) {
       try {
+        check_interrupt();  // a caller's Ctrl-C (interrupt.h): between images
         f(i);
       } catch (...) {
         errors[i] = std::current_exception();

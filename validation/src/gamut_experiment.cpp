@@ -1,4 +1,5 @@
 #include <gmcc/validation/gamut_experiment.h>
+#include <gmcc/numerics/interrupt.h>
 #include <gmcc/selection/select_scene_options.h>
 
 #include <gmcc/geometry/chromaticity.h>
@@ -193,6 +194,7 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
   score_options.mean3d = config.mean3d;
   score_options.certified_route = config.certified_fast_route;
   for (std::uint64_t s = s_begin; s < s_end; ++s, ++done) {
+    check_interrupt();  // a caller's Ctrl-C (interrupt.h): between scenes
     SceneRecord& rec = records.emplace_back();
     rec.light = light_index;
     rec.surfaces = n;
