@@ -134,6 +134,23 @@ _DOC_PARTS = {
 }
 
 
+def _whole(name, value, lo, hi):
+    """`value` as an int in [lo, hi], or a ValueError / TypeError naming the argument (instead of
+    the extension's raw signature dump)."""
+    if isinstance(value, bool) or not isinstance(value, int) and not hasattr(value, "__index__"):
+        raise TypeError(f"{name}: expected an integer, got {type(value).__name__} {value!r}")
+    value = value.__index__()
+    if not lo <= value <= hi:
+        raise ValueError(f"{name}: must be an integer from {lo} to {hi}, not {value}")
+    return value  # numpy integers too (they have __index__)
+
+
+def _experiment_counts(min_surfaces, max_surfaces, scenes, seed, threads):
+    return (_whole("min_surfaces", min_surfaces, 1, 2**31 - 1), _whole("max_surfaces", max_surfaces, 1, 2**31 - 1),
+            _whole("scenes", scenes, 1, 10**6), _whole("seed", seed, 0, 2**64 - 1),
+            _whole("threads", threads, 0, 256))
+
+
 def _doc(f):
     """Splice the shared parameter descriptions (_DOC_PARTS) into f's docstring (none under
     python -OO)."""
@@ -1054,6 +1071,8 @@ def reproduce_synthetic(*, lights=("D75", "D100", "P2856", "P15000"), canonical=
     TypeError
         An argument of the wrong type.
     """
+    min_surfaces, max_surfaces, scenes, seed, threads = _experiment_counts(
+        min_surfaces, max_surfaces, scenes, seed, threads)
     result = _core.run_experiment("synthetic", data or data_dir(), canonical, list(lights), "sfu",
                                   min_surfaces, max_surfaces, scenes, seed, expand, expand_policy,
                                   crule, threads)
@@ -1107,6 +1126,8 @@ def reproduce_camera(*, lights=("syl-50MR16Q", "solux-4700+3202"), canonical="so
     TypeError
         An argument of the wrong type.
     """
+    min_surfaces, max_surfaces, scenes, seed, threads = _experiment_counts(
+        min_surfaces, max_surfaces, scenes, seed, threads)
     result = _core.run_experiment("camera", data or data_dir(), canonical, list(lights),
                                   canonical_surfaces, min_surfaces, max_surfaces, scenes, seed, expand,
                                   expand_policy, crule, threads)

@@ -60,3 +60,16 @@ def test_bad_experiment_options():
         gmcc.reproduce_camera(canonical_surfaces="paint", scenes=1, max_surfaces=1)
     with pytest.raises(ValueError, match="surfaces"):
         gmcc.reproduce_synthetic(min_surfaces=3, max_surfaces=2, scenes=1)
+
+
+@pytest.mark.parametrize("kw, exc, word", [
+    ({"scenes": -1}, ValueError, "scenes"), ({"scenes": 0}, ValueError, "scenes"),
+    ({"scenes": 10**7}, ValueError, "scenes"), ({"seed": -1}, ValueError, "seed"),
+    ({"threads": -2}, ValueError, "threads"), ({"scenes": 1.5}, TypeError, "scenes"),
+    ({"max_surfaces": True}, TypeError, "max_surfaces")])
+def test_counts_out_of_range_name_the_argument(kw, exc, word):
+    # Issue 30: a negative count got pybind's signature dump; now the argument and its range.
+    for run in (gmcc.reproduce_synthetic, gmcc.reproduce_camera):
+        with pytest.raises(exc, match=word) as info:
+            run(**kw)
+        assert "incompatible function arguments" not in str(info.value)
