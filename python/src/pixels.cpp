@@ -9,6 +9,7 @@
 
 #include <cstring>
 #include <optional>
+#include <type_traits>
 
 namespace gmcc::python {
 namespace {
@@ -159,16 +160,26 @@ PyImageColours image_colours_of(py::handle image_obj, const PixelArgs& args) {
     if (!img.samples.empty()) std::memcpy(img.samples.data(), a.data(), img.samples.size() * sizeof(std::uint16_t));
     return run_pixel_rules(img, std::move(keep), args);
   }
-  const py::array_t<std::int64_t, py::array::c_style> a = np.attr("ascontiguousarray")(image, "int64");
-  const std::int64_t* p = a.data();
-  for (std::size_t i = 0; i < h * w * 3; ++i) {
-    if (p[i] < 0 || p[i] > 65535) {
-      const std::size_t px = i / 3;
-      throw py::value_error("image: pixel (row " + std::to_string(px / w) + ", column " + std::to_string(px % w) +
-                            ") channel " + "rgb"[i % 3] + ": " + std::to_string(p[i]) +
-                            " is outside 0..65535 (integer images are 8- or 16-bit linear samples)");
+  // Wider integers, each checked: unsigned ones as uint64 (2^64 − 1 is not −1), signed as int64.
+  auto copy = [&](const auto* p) {
+    for (std::size_t i = 0; i < h * w * 3; ++i) {
+      bool negative = false;
+      if constexpr (std::is_signed_v<std::remove_cv_t<std::remove_pointer_t<decltype(p)>>>) negative = p[i] < 0;
+      if (negative || p[i] > 65535) {
+        const std::size_t px = i / 3;
+        throw py::value_error("image: pixel (row " + std::to_string(px / w) + ", column " + std::to_string(px % w) +
+                              ") channel " + "rgb"[i % 3] + ": " + std::to_string(p[i]) +
+                              " is outside 0..65535 (integer images are 8- or 16-bit linear samples)");
+      }
+      img.samples[i] = static_cast<std::uint16_t>(p[i]);
     }
-    img.samples[i] = static_cast<std::uint16_t>(p[i]);
+  };
+  if (kind == 'u') {
+    const py::array_t<std::uint64_t, py::array::c_style> a = np.attr("ascontiguousarray")(image, "uint64");
+    copy(a.data());
+  } else {
+    const py::array_t<std::int64_t, py::array::c_style> a = np.attr("ascontiguousarray")(image, "int64");
+    copy(a.data());
   }
   return run_pixel_rules(img, std::move(keep), args);
 }

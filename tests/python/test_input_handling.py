@@ -166,6 +166,9 @@ def test_degenerate_results_are_results():
     (np.zeros((4, 4, 4), np.uint16), ValueError, r"shape"),
     (np.full((2, 2, 3), 70000, np.int32), ValueError, r"image: pixel \(row 0, column 0\) channel r: 70000 is outside"),
     (np.full((2, 2, 3), -1, np.int16), ValueError, r"outside 0..65535"),
+    # Unsigned 64-bit samples read as such: 2^64 - 1 is reported as itself, not as -1 (issue 30).
+    (np.full((2, 2, 3), 2**64 - 1, np.uint64), ValueError, r"channel r: 18446744073709551615 is outside 0\.\.65535"),
+    (np.full((2, 2, 3), 2**63 + 5, np.uint64), ValueError, r"channel r: 9223372036854775813 is outside"),
     (np.full((2, 2, 3), np.nan), ValueError, r"image: pixel \(row 0, column 0\) channel r: NaN"),
     (np.full((2, 2, 3), np.inf, np.float32), ValueError, r"infinity"),
     (np.full((2, 2, 3), -0.5), ValueError, r"negative"),
