@@ -390,6 +390,8 @@ int gehler_shi(ReproduceOptions o) {
   GehlerShiSetup setup;
   try {
     setup = gehler_shi_setup(data, options);
+  } catch (const GehlerShiNothingUsable& e) {  // the options, not the file
+    throw InputError(o.exclude_patches.empty() ? "--dark/--clip" : "--dark/--clip/--exclude-patches", 0, e.what());
   } catch (const std::invalid_argument& e) {
     throw InputError(patches, 0, e.what());
   }

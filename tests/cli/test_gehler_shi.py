@@ -90,6 +90,11 @@ with tempfile.TemporaryDirectory() as tmp:
     r = run(*small, "--data", bad)
     check(r.returncode == 2 and f"{PATCHES}:11" in r.stderr, f"partial NaN: exit 2 naming file:line: {r.stderr}")
 
+    # Options that leave a camera no patch blame the options, not the data file (issue 30).
+    r = run(*small, "--dark", "0.9", "--clip", "0.95")
+    check(r.returncode == 2 and r.stderr.startswith("gmcc: error: --dark/--clip: camera") and "no usable patch" in r.stderr
+          and "dark 9/10" in r.stderr, f"dark/clip emptying a camera blame the options: {r.stderr}")
+
     for args, what in ((["--dark", "0.5", "--clip", "0.4"], "--dark"), (["--cameras", "Nikon"], "--cameras"),
                        (["--clip", "x"], "--clip"), (["--exclude-patches", "0"], "--exclude-patches"),
                        (["--exclude-patches", "1.0"], "--exclude-patches"), (["--exclude-patches", "1,,2"], "--exclude-patches"),

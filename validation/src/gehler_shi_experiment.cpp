@@ -173,6 +173,12 @@ GehlerShiSetup gehler_shi_setup(const ChartDataset& data, const GehlerShiOptions
     GehlerShiCamera info;
     info.camera = camera;
     const std::vector<Usable> images = usable_images(data, camera, o, info);
+    if (info.usable_patches == 0 && info.dropped_patches + info.excluded_patches > 0)
+      throw GehlerShiNothingUsable(
+          "camera \"" + camera + "\": no usable patch is left of its " + std::to_string(info.images) + " images: " +
+          std::to_string(info.dropped_patches) + " patches have a channel at or below dark " + to_string(o.dark) +
+          " or at or above clip " + to_string(o.clip) +
+          (info.excluded_patches ? ", " + std::to_string(info.excluded_patches) + " are excluded" : std::string()));
     if (info.usable_patches == 0)
       throw std::invalid_argument("camera \"" + camera + "\" has no usable patches in the data");
 

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -79,8 +80,16 @@ struct GehlerShiSetup {
 /// canonical chart is the union of the 3 daylight images whose τ is nearest the daylight median
 /// (the lower median; ties by file order); yellowish: τ < −1/2; bluish: τ > that median (bluer
 /// than the canonical chart's light); the canonical images and the rest are not tested.
-/// \throws std::invalid_argument for an unknown camera or one with no usable patches, or an
+/// \throws GehlerShiNothingUsable when a camera's images are there but the options (dark, clip,
+///         excluded patches) leave none of its patches usable; std::invalid_argument for an
+///         unknown camera, one without images or without a usable patch in the data, or an
 ///         excluded patch number outside 1–24.
 GehlerShiSetup gehler_shi_setup(const ChartDataset& data, const GehlerShiOptions& options);
+
+/// The options, not the data, left a camera nothing: front ends blame their dark, clip and
+/// exclude-patches options (the message names the camera, the counts and the thresholds).
+struct GehlerShiNothingUsable : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
 
 }  // namespace gmcc
