@@ -98,6 +98,15 @@ ExperimentResult result_of(const json& h, const Place& at) {
   return r;
 }
 
+// The members of a part's provenance that every part of one run shares: all but the inputs'
+// paths (a cluster's nodes may see the data at other paths; sizes and digests must agree).
+json same_run_provenance(json p) {
+  if (p.is_object() && p.contains("inputs") && p["inputs"].is_array())
+    for (json& input : p["inputs"])
+      if (input.is_object()) input.erase("path");
+  return p;
+}
+
 // A setup line without the members that differ between the shards of one run.
 json comparable(json h) {
   h.erase("shard");
@@ -211,6 +220,8 @@ int run_merge(const MergeOptions& o) {
     throw InputError("--records", 0, "is for gmcc benchmark's shards; reproduce's scene files merge with --scenes-out");
   std::optional<ExperimentResult> result;
   std::string provenance;  // the first part's: the whole run's, as every part records the same run
+  json first_provenance;   // what must agree between parts (same_run_provenance)
+  std::string provenance_file;
   std::optional<ExperimentOutputs> outputs;
   json setup;
   std::string first_file;
@@ -239,7 +250,18 @@ int run_merge(const MergeOptions& o) {
       if (line == 1 && j.is_object() && j.size() == 1 && j.contains("provenance")) {
         // Kept as written (member order too): the merged outputs' provenance. Every part records
         // the same run (--shard, --threads and the output paths are not recorded).
-        if (provenance.empty()) provenance = nlohmann::ordered_json::parse(first, last).at("provenance").dump();
+        // Checked against the first part's: the same software, build, command, options and input
+        // contents (paths may differ between machines; the inputs' sizes and SHA-256 may not).
+        const json same = same_run_provenance(j.at("provenance"));
+        if (provenance.empty()) {
+          provenance = nlohmann::ordered_json::parse(first, last).at("provenance").dump();
+          first_provenance = same;
+          provenance_file = file;
+        } else if (same != first_provenance) {
+          bad(at, "another run than " + provenance_file +
+                      "'s: its provenance names another build, command, options or inputs (the parts of one "
+                      "run come from one gmcc and the same data)");
+        }
         continue;
       }
       if (header) {

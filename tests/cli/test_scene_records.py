@@ -342,6 +342,21 @@ def main():
             rc, _, err = r.run("expansion", "--scenes", "1", "--surfaces", "2", "--scenes-out", p("expansion.jsonl"))
             expect(rc == 0, err)
             bad(merge, [p("expansion.jsonl"), "--csv", p("out.csv")], ["a second setup line", "one run"])
+            # A part whose provenance names another build or other data is refused; another path
+            # to the same data is not.
+            for text, ok in (('"commit":"', False), ('"sha256":"', False), ('"path":"', True)):
+                with open(p("s2.jsonl")) as f:
+                    lines = f.read().split("\n")
+                lines[0] = lines[0].replace(text, text + "0", 1)
+                with open(p("foreign.jsonl"), "w") as f:
+                    f.write("\n".join(lines))
+                if ok:
+                    rc, _, err = merge.run(p("s1.jsonl"), p("foreign.jsonl"), p("s3.jsonl"), "--csv", p("ok.csv"))
+                    expect(rc == 0, err)
+                    os.remove(p("ok.csv"))
+                else:
+                    bad(merge, [p("s1.jsonl"), p("foreign.jsonl"), p("s3.jsonl"), "--csv", p("out.csv")],
+                        ["foreign.jsonl:1:", "provenance"])
         r.check("merge refuses missing, repeated, foreign and broken parts", merge_errors)
 
         print(f"{r.passed + merge.passed} passed, {r.failed + merge.failed} failed")
