@@ -319,6 +319,52 @@ RgbImage decode_tiff(const std::string& bytes, const std::string& file) {
   return image;
 }
 
+// A mask TIFF of any kind libtiff can show (grey, 1-bit, palette, RGB; strips or tiles):
+// RGB 8/16-bit images as decode_tiff reads them, the others through libtiff's RGBA rendering, so
+// a pixel that displays black (every channel 0) is excluded, whatever the photometric
+// interpretation (min-is-white included). Checked first as decode_tiff checks images: at most
+// max_image_pixels, no more samples than the file's bytes can hold.
+RgbImage decode_tiff_mask(const std::string& bytes, const std::string& file) {
+  install_tiff_handlers();
+  tiff_message.clear();
+  TiffMemory memory;
+  memory.readable = &bytes;
+  TiffHandle h{TIFFClientOpen(file.c_str(), "rm", &memory, tiff_read, tiff_write, tiff_seek,
+                              tiff_close, tiff_size, tiff_map, tiff_unmap)};
+  if (!h.tif) tiff_fail(file, "not a readable TIFF");
+  std::uint16_t photometric = 0xffff, bps = 1, spp = 1, compression = COMPRESSION_NONE;
+  TIFFGetField(h.tif, TIFFTAG_PHOTOMETRIC, &photometric);
+  TIFFGetFieldDefaulted(h.tif, TIFFTAG_BITSPERSAMPLE, &bps);
+  TIFFGetFieldDefaulted(h.tif, TIFFTAG_SAMPLESPERPIXEL, &spp);
+  if (photometric == PHOTOMETRIC_RGB && (bps == 8 || bps == 16)) return decode_tiff(bytes, file);
+  std::uint32_t width = 0, height = 0;
+  TIFFGetField(h.tif, TIFFTAG_IMAGEWIDTH, &width);
+  TIFFGetField(h.tif, TIFFTAG_IMAGELENGTH, &height);
+  if (width == 0 || height == 0) tiff_fail(file, "an empty mask");
+  if (std::size_t(width) * height > max_image_pixels) tiff_fail(file, "more than 2^28 pixels");
+  TIFFGetFieldDefaulted(h.tif, TIFFTAG_COMPRESSION, &compression);
+  const std::size_t ratio = compression == COMPRESSION_NONE ? 1 : compression == COMPRESSION_PACKBITS ? 64 : 4096;
+  if ((std::size_t(width) * height * spp * bps + 7) / 8 > ratio * bytes.size() + 4096)
+    tiff_fail(file, "the header declares more pixels than the file's bytes can hold (truncated, or a "
+                    "decompression bomb)");
+  std::vector<std::uint32_t> rgba(std::size_t(width) * height);
+  if (!TIFFReadRGBAImageOriented(h.tif, width, height, rgba.data(), ORIENTATION_TOPLEFT, 0))
+    tiff_fail(file, "a mask TIFF libtiff cannot render (photometric " + std::to_string(photometric) + ", " +
+                        std::to_string(bps) + " bits)");
+  RgbImage image;
+  image.width = width;
+  image.height = height;
+  image.bits = 8;
+  image.samples.resize(rgba.size() * 3);
+  for (std::size_t p = 0; p < rgba.size(); ++p) {
+    image.samples[3 * p] = static_cast<std::uint16_t>(TIFFGetR(rgba[p]));
+    image.samples[3 * p + 1] = static_cast<std::uint16_t>(TIFFGetG(rgba[p]));
+    image.samples[3 * p + 2] = static_cast<std::uint16_t>(TIFFGetB(rgba[p]));
+  }
+  tiff_message.clear();
+  return image;
+}
+
 void check_encodable(const RgbImage& image) {
   if (image.width == 0 || image.height == 0 || image.width > (1u << 20) ||
       image.height > (1u << 20) || image.samples.size() != image.width * image.height * 3)
@@ -359,6 +405,9 @@ RgbImage read_mask_image(const std::string& path) {
       throw InputError(path, 0, std::string("PNG: ") + failure.message);
     return image;
   }
+  if (bytes.compare(0, 4, "II*\0", 4) == 0 || bytes.compare(0, 4, "MM\0*", 4) == 0 ||
+      bytes.compare(0, 4, "II+\0", 4) == 0 || bytes.compare(0, 4, "MM\0+", 4) == 0)
+    return decode_tiff_mask(bytes, path);
   return decode_image(bytes, path);
 }
 

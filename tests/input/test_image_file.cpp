@@ -252,6 +252,43 @@ BOOST_AUTO_TEST_CASE(headers_cannot_claim_more_than_the_data_holds) {
   }
 }
 
+// Masks in TIFF of the usual kinds (issue 30): 8-bit grey, 1-bit min-is-black and min-is-white,
+// read as they display; a black pixel excluded, any other kept.
+BOOST_AUTO_TEST_CASE(grey_and_bilevel_tiff_masks) {
+  struct Case {
+    std::uint16_t bits, photometric;
+    std::vector<unsigned char> row;  // one row of 8 pixels as stored
+    std::vector<bool> kept;
+  };
+  const std::vector<Case> cases = {
+      {8, PHOTOMETRIC_MINISBLACK, {0, 1, 255, 0, 7, 0, 0, 9}, {0, 1, 1, 0, 1, 0, 0, 1}},
+      {1, PHOTOMETRIC_MINISBLACK, {0xb2}, {1, 0, 1, 1, 0, 0, 1, 0}},   // 1011 0010
+      {1, PHOTOMETRIC_MINISWHITE, {0xb2}, {0, 1, 0, 0, 1, 1, 0, 1}}};  // 1 displays black
+  for (const Case& c : cases) {
+    char name[] = "/tmp/gmcc_test_mask_XXXXXX";
+    const int fd = mkstemp(name);
+    BOOST_REQUIRE(fd >= 0);
+    close(fd);
+    TIFF* t = TIFFOpen(name, "w");
+    BOOST_REQUIRE(t);
+    TIFFSetField(t, TIFFTAG_IMAGEWIDTH, 8u);
+    TIFFSetField(t, TIFFTAG_IMAGELENGTH, 1u);
+    TIFFSetField(t, TIFFTAG_SAMPLESPERPIXEL, 1);
+    TIFFSetField(t, TIFFTAG_BITSPERSAMPLE, c.bits);
+    TIFFSetField(t, TIFFTAG_PHOTOMETRIC, c.photometric);
+    std::vector<unsigned char> row = c.row;
+    BOOST_REQUIRE(TIFFWriteScanline(t, row.data(), 0, 0) >= 0);
+    TIFFClose(t);
+    const RgbImage mask = read_mask_image(name);
+    std::remove(name);
+    BOOST_TEST((mask.width == 8u && mask.height == 1u));
+    for (std::size_t x = 0; x < 8; ++x) {
+      const bool kept = mask.samples[3 * x] || mask.samples[3 * x + 1] || mask.samples[3 * x + 2];
+      BOOST_TEST(kept == c.kept[x], "bits " << c.bits << " photometric " << c.photometric << " pixel " << x);
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(polygon_cover_hand_counts) {
   // Centres (i + ½, j + ½): the square [1,3]² holds 4 of them; [½, 5/2]² has 9
   // on or inside.

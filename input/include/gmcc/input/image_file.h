@@ -51,8 +51,9 @@ RgbImage decode_image(const std::string& bytes, const std::string& file);
 RgbImage read_image(const std::string& path);
 
 /// Read a mask image: a PNG of any colour type and depth (grey, 1-bit, palette, with or without
-/// alpha, RGB; made RGB for the caller, alpha dropped), or an RGB TIFF as read_image. A pixel is
-/// kept where any channel is non-zero (image_pixels.h). \throws InputError as read_image.
+/// alpha, RGB; made RGB for the caller, alpha dropped), or a TIFF of any kind libtiff renders
+/// (grey, 1-bit, palette, RGB; a non-RGB one as it displays, so min-is-white 0 is white). A pixel
+/// is kept where any channel is non-zero (image_pixels.h). \throws InputError as read_image.
 RgbImage read_mask_image(const std::string& path);
 
 /// A 16-bit RGB PNG of `image` (samples as they are, whatever image.bits), no
