@@ -106,6 +106,17 @@ namespace {
 
 // The pixels the rules leave out: inside an excluded polygon, or not kept by the mask.
 std::vector<bool> excluded_pixels(const PixelRules& rules, std::size_t w, std::size_t h) {
+  // The exact cover costs one rational crossing test per edge and row the polygon spans: bounded
+  // before any work (docs/cli.md "Resource limits").
+  std::uint64_t work = 0;
+  for (const std::vector<Point2>& polygon : rules.exclude_polygons) {
+    work += std::uint64_t(polygon.size()) * h;
+    if (work > max_polygon_work)
+      throw std::invalid_argument("the exclusion polygons (" + std::to_string(polygon.size()) +
+                                  " vertices in the last) on " + std::to_string(h) +
+                                  " rows would take more than 2^25 exact edge tests (about 30 s): "
+                                  "give fewer vertices, or a mask image");
+  }
   std::vector<bool> excluded(w * h, false);
   for (const std::vector<Point2>& polygon : rules.exclude_polygons) {
     const std::vector<bool> cover = polygon_cover(polygon, w, h);

@@ -289,6 +289,30 @@ BOOST_AUTO_TEST_CASE(grey_and_bilevel_tiff_masks) {
   }
 }
 
+// Exclusion polygons are bounded in work, Σ vertices × rows ≤ max_polygon_work, checked before any
+// work (issue 30: a 9,000-vertex polygon on a tall image took hours).
+BOOST_AUTO_TEST_CASE(polygon_work_is_bounded) {
+  const RgbImage tall = ramp(2, 1024, 16);
+  PixelRules rules;
+  std::vector<Point2> many;
+  const std::size_t n = max_polygon_work / 1024 + 1;
+  for (std::size_t k = 0; k < n; ++k)  // a convex fan: vertices on a parabola, then closed
+    many.push_back({Rational(static_cast<long>(k)), Rational(static_cast<long>(k * k % 1000))});
+  rules.exclude_polygons = {many};
+  try {
+    image_colours(tall, rules);
+    BOOST_FAIL("accepted");
+  } catch (const std::invalid_argument& e) {
+    BOOST_TEST(std::string(e.what()).find("more than 2^25 exact edge tests") != std::string::npos, e.what());
+  }
+  // Two polygons that fit each but not together are refused too; a chart's four corners are not.
+  rules.exclude_polygons = {std::vector<Point2>(many.begin(), many.begin() + n / 2 + 1),
+                            std::vector<Point2>(many.begin(), many.begin() + n / 2 + 1)};
+  BOOST_CHECK_THROW(image_colours(tall, rules), std::invalid_argument);
+  rules.exclude_polygons = {square(0, 0, 1, 512)};
+  BOOST_TEST(image_colours(tall, rules).counts.masked == 512u);
+}
+
 BOOST_AUTO_TEST_CASE(polygon_cover_hand_counts) {
   // Centres (i + ½, j + ½): the square [1,3]² holds 4 of them; [½, 5/2]² has 9
   // on or inside.

@@ -87,7 +87,12 @@ Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs&
   }
   if (o.saturation_max && !levels.saturation) rules.saturation = (1u << image.bits) - 1;
   Reduced r;
-  const KeptPixels kept = kept_pixels(image, rules);
+  KeptPixels kept;
+  try {
+    kept = kept_pixels(image, rules);
+  } catch (const std::invalid_argument& e) {  // the rules against this image (polygon work)
+    throw InputError(im.path, 0, e.what());
+  }
   if (kept.counts.kept == 0)
     throw InputError(im.path, 0, "no usable pixel after the mask, saturation and dark or bright rules");
   if (n.gm3d) {

@@ -155,6 +155,10 @@ struct FloatPixelRules {
 ///         saturation that is negative or not finite, or a `keep` of the wrong size.
 ImageColours image_colours(const FloatRgbImage& image, const FloatPixelRules& rules);
 
+/// Most exact edge tests the exclusion polygons of one image may take, Σ vertices × rows: 2^25
+/// (about 30 s; more is refused with std::invalid_argument before any work).
+inline constexpr std::uint64_t max_polygon_work = std::uint64_t(1) << 25;
+
 /// The pixels a polygon excludes, row-major (true: centre inside or on the
 /// boundary). Exposed for tests and reports.
 std::vector<bool> polygon_cover(const std::vector<Point2>& polygon, std::size_t width,
