@@ -350,6 +350,9 @@ ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
         mean[c].canonicalize();
       }
       distinct.insert(std::move(mean));
+      if (distinct.size() > max_colours)  // memory: each block mean is three exact rationals
+        throw std::length_error("more than " + std::to_string(max_colours) +
+                                " distinct block means, more than a colour set may hold: use larger blocks");
     }
     for (const auto& mean : distinct) out.colours.push_back({mean[0], mean[1], mean[2]});
   }
