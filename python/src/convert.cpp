@@ -1,5 +1,7 @@
 #include "convert.h"
 
+#include <gmcc/input/colour_csv.h>
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -81,6 +83,16 @@ T load(const char* p) {
 }
 
 // Colours from a numpy array of a real dtype, any strides; native byte order.
+// The command line's cap on a colour list (colour_csv.h's max_colours, 10^6): exact colours take
+// hundreds of bytes each, so 10^7 would take gigabytes before any work (issue 30).
+static void check_colour_count(std::size_t n, const std::string& argument) {
+  if (n > max_colours)
+    throw py::value_error(argument + ": " + std::to_string(n) + " colours, more than the " +
+                          std::to_string(max_colours) +
+                          " a colour list may hold (as in a colour file); an image's colours go through "
+                          "gmcc.image_colours, which keeps only its hull");
+}
+
 std::vector<Colour> colours_from_array(py::array a, const std::string& argument) {
   if (a.ndim() != 2 || a.shape(1) != 3) {
     std::string shape = "(";
@@ -105,6 +117,7 @@ std::vector<Colour> colours_from_array(py::array a, const std::string& argument)
     a = a.attr("astype")(kind == 'f' ? py::dtype("float64") : a.dtype().attr("newbyteorder")("="));
   const std::size_t n = static_cast<std::size_t>(a.shape(0));
   if (n == 0) throw py::value_error(argument + ": no colours (expected an N×3 array, N >= 1)");
+  check_colour_count(n, argument);
   const char* base = static_cast<const char*>(a.data());
   const py::ssize_t s0 = a.strides(0), s1 = a.strides(1), size = a.itemsize();
   std::vector<Colour> out(n);
@@ -198,6 +211,7 @@ std::vector<Colour> colours_from(py::handle x, const std::string& argument) {
   }
   const py::sequence rows = py::reinterpret_borrow<py::sequence>(x);
   if (rows.size() == 0) throw py::value_error(argument + ": no colours (expected rows r,g,b)");
+  check_colour_count(rows.size(), argument);
   std::vector<Colour> out;
   out.reserve(rows.size());
   for (std::size_t i = 0; i < rows.size(); ++i) {

@@ -315,3 +315,14 @@ def test_images_equal_their_pixels_as_colours(data, dtype):
     counts = gmcc.image_colours(img, **kwargs).counts
     assert counts["kept"] == len(listed)
     assert counts["colours"] == len({tuple(c) for c in listed})
+
+
+def test_colour_lists_are_capped_like_colour_files():
+    # Issue 30: 10^7 colours took 5.9 GB before any work; the cap is the colour file's, 10^6,
+    # checked before anything is converted (an array or a list of rows).
+    too_many = np.ones((10**6 + 1, 3))
+    for call in (lambda: gmcc.select(too_many, [[1, 1, 1]]), lambda: gmcc.select([[1, 1, 1], [2, 1, 1], [1, 2, 1]], too_many)):
+        with pytest.raises(ValueError, match=r"1000001 colours, more than the 1000000"):
+            call()
+    with pytest.raises(ValueError, match=r"image: 1000001 colours"):
+        gmcc.select([[1, 1, 1], [2, 1, 1], [1, 2, 1]], [[1, 1, 1]] * (10**6 + 1))
