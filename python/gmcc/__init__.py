@@ -145,10 +145,21 @@ def _whole(name, value, lo, hi):
     return value  # numpy integers too (they have __index__)
 
 
-def _experiment_counts(min_surfaces, max_surfaces, scenes, seed, threads):
-    return (_whole("min_surfaces", min_surfaces, 1, 2**31 - 1), _whole("max_surfaces", max_surfaces, 1, 2**31 - 1),
-            _whole("scenes", scenes, 1, 10**6), _whole("seed", seed, 0, 2**64 - 1),
-            _whole("threads", threads, 0, 256))
+# Most scene records an experiment may return from Python: every record is kept (416 bytes in the
+# array, more while the run holds its own), where the command line streams them to --scenes-out.
+_MAX_RECORDS = 4 * 10**6
+
+
+def _experiment_counts(min_surfaces, max_surfaces, scenes, seed, threads, lights):
+    counts = (_whole("min_surfaces", min_surfaces, 1, 2**31 - 1), _whole("max_surfaces", max_surfaces, 1, 2**31 - 1),
+              _whole("scenes", scenes, 1, 10**6), _whole("seed", seed, 0, 2**64 - 1),
+              _whole("threads", threads, 0, 256))
+    records = len(lights) * max(counts[1] - counts[0] + 1, 0) * counts[2]
+    if records > _MAX_RECORDS:
+        raise ValueError(f"scenes: {records} scene records would be kept in memory, more than the "
+                         f"{_MAX_RECORDS} a Python run returns; run larger studies with gmcc reproduce "
+                         "--scenes-out (records streamed to the file) or in shards (--shard, gmcc merge)")
+    return counts
 
 
 def _doc(f):
@@ -1072,7 +1083,7 @@ def reproduce_synthetic(*, lights=("D75", "D100", "P2856", "P15000"), canonical=
         An argument of the wrong type.
     """
     min_surfaces, max_surfaces, scenes, seed, threads = _experiment_counts(
-        min_surfaces, max_surfaces, scenes, seed, threads)
+        min_surfaces, max_surfaces, scenes, seed, threads, lights)
     result = _core.run_experiment("synthetic", data or data_dir(), canonical, list(lights), "sfu",
                                   min_surfaces, max_surfaces, scenes, seed, expand, expand_policy,
                                   crule, threads)
@@ -1127,7 +1138,7 @@ def reproduce_camera(*, lights=("syl-50MR16Q", "solux-4700+3202"), canonical="so
         An argument of the wrong type.
     """
     min_surfaces, max_surfaces, scenes, seed, threads = _experiment_counts(
-        min_surfaces, max_surfaces, scenes, seed, threads)
+        min_surfaces, max_surfaces, scenes, seed, threads, lights)
     result = _core.run_experiment("camera", data or data_dir(), canonical, list(lights),
                                   canonical_surfaces, min_surfaces, max_surfaces, scenes, seed, expand,
                                   expand_policy, crule, threads)

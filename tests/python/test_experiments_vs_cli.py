@@ -66,7 +66,9 @@ def test_bad_experiment_options():
     ({"scenes": -1}, ValueError, "scenes"), ({"scenes": 0}, ValueError, "scenes"),
     ({"scenes": 10**7}, ValueError, "scenes"), ({"seed": -1}, ValueError, "seed"),
     ({"threads": -2}, ValueError, "threads"), ({"scenes": 1.5}, TypeError, "scenes"),
-    ({"max_surfaces": True}, TypeError, "max_surfaces")])
+    ({"max_surfaces": True}, TypeError, "max_surfaces"),
+    # 2 lights x 11 surface counts x 200,000 scenes = 4.4e6 records: more than Python keeps.
+    ({"lights": ("D75", "D100"), "scenes": 200000}, ValueError, "4400000 scene records")])
 def test_counts_out_of_range_name_the_argument(kw, exc, word):
     # Issue 30: a negative count got pybind's signature dump; now the argument and its range.
     for run in (gmcc.reproduce_synthetic, gmcc.reproduce_camera):
