@@ -190,20 +190,23 @@ int run_select_batch(const SelectOptions& o, const SelectSettings& settings) {
       read_text_file(file, {max_scene_file_bytes, "scene file", "JSON Lines, one scene a line"});
 
   // The scene limit, checked before any work.
+  std::size_t count = 0;
   {
-    std::size_t count = 0, number = 1;
+    std::size_t number = 1;
     for (std::size_t start = 0; start < text.size(); ++number) {
       std::size_t end = text.find('\n', start);
       if (end == std::string::npos) end = text.size();
       if (text.find_first_not_of(" \t\r", start) < end && ++count > max_batch_scenes)
         throw InputError(file, number,
                          "more than " + std::to_string(max_batch_scenes) +
-                             " scenes, the limit for one file (the records are kept in memory "
-                             "until all are done): split the file");
+                             " scenes, the limit for one file: split the file");
       start = end + 1;
     }
   }
-  std::string out = json_lines_preamble();
+  if (count == 0) throw InputError(file, 0, "no scenes (expected JSON Lines, one scene a line)");
+  // Each record goes to stdout as it is made (a scene's record can take megabytes against a large
+  // canonical gamut: none is held once written).
+  write_stdout(json_lines_preamble());
   std::size_t scenes = 0, failed = 0;
   bool warned = settings.canonical_illuminant_given;
   std::string_view rest(text);
@@ -236,11 +239,8 @@ int run_select_batch(const SelectOptions& o, const SelectSettings& settings) {
       ++failed;
     }
     // Invalid UTF-8 can only come from the input quoted in a message: replaced, not fatal.
-    out += record.dump(-1, ' ', false, Json::error_handler_t::replace);
-    out += '\n';
+    write_stdout(record.dump(-1, ' ', false, Json::error_handler_t::replace) + '\n');
   }
-  if (scenes == 0) throw InputError(file, 0, "no scenes (expected JSON Lines, one scene a line)");
-  write_stdout(out);
   if (failed) {
     std::cerr << "gmcc: error: " << file << ": " << failed << " of " << scenes
               << " scenes could not be selected; their records carry \"error\" with the line\n";
