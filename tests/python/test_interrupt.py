@@ -23,17 +23,22 @@ def interrupt_after(seconds):
 
 
 def interrupted(call):
-    """Run call() with a SIGINT 0.3 s in; the seconds until KeyboardInterrupt came."""
-    handler = signal.getsignal(signal.SIGINT)
-    start = time.monotonic()
-    timer = interrupt_after(0.3)
+    """Run call() with a SIGINT 0.3 s in; the seconds until KeyboardInterrupt came. Python's own
+    handler is put in place first: a test runner started in the background of a shell inherits
+    SIGINT ignored, and then Python installs none."""
+    inherited = signal.signal(signal.SIGINT, signal.default_int_handler)
     try:
-        with pytest.raises(KeyboardInterrupt):
-            call()
+        start = time.monotonic()
+        timer = interrupt_after(0.3)
+        try:
+            with pytest.raises(KeyboardInterrupt):
+                call()
+        finally:
+            timer.cancel()
+        assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # Python's handler restored
+        return time.monotonic() - start
     finally:
-        timer.cancel()
-    assert signal.getsignal(signal.SIGINT) is handler  # Python's handler restored
-    return time.monotonic() - start
+        signal.signal(signal.SIGINT, inherited)
 
 
 def test_monte_carlo_stops_and_the_module_answers_as_before():
