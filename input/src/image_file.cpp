@@ -221,14 +221,44 @@ void install_tiff_handlers() {
   throw InputError(file, 0, why);
 }
 
-RgbImage decode_tiff(const std::string& bytes, const std::string& file) {
-  install_tiff_handlers();
-  tiff_message.clear();
+// A TIFF held in `bytes`, opened for reading (libtiff reads through `memory`).
+struct TiffReader {
   TiffMemory memory;
-  memory.readable = &bytes;
-  TiffHandle h{TIFFClientOpen(file.c_str(), "rm", &memory, tiff_read, tiff_write, tiff_seek,
-                              tiff_close, tiff_size, tiff_map, tiff_unmap)};
-  if (!h.tif) tiff_fail(file, "not a readable TIFF");
+  TiffHandle h{nullptr};
+  TiffReader(const std::string& bytes, const std::string& file) {
+    install_tiff_handlers();
+    tiff_message.clear();
+    memory.readable = &bytes;
+    h.tif = TIFFClientOpen(file.c_str(), "rm", &memory, tiff_read, tiff_write, tiff_seek, tiff_close, tiff_size,
+                           tiff_map, tiff_unmap);
+    if (!h.tif) tiff_fail(file, "not a readable TIFF");
+  }
+  TiffReader(const TiffReader&) = delete;
+  TiffReader& operator=(const TiffReader&) = delete;
+};
+
+// What a TIFF's `file_bytes` can decompress to at most under its compression: deflate's 1032:1,
+// PackBits' 64:1 (2 bytes give at most 128), none 1:1, LZW and the others a generous 4096:1; plus
+// 4 KiB of slack for headers.
+std::size_t tiff_capacity(TIFF* tif, std::size_t file_bytes) {
+  std::uint16_t compression = COMPRESSION_NONE;
+  TIFFGetFieldDefaulted(tif, TIFFTAG_COMPRESSION, &compression);
+  const std::size_t ratio = compression == COMPRESSION_NONE       ? 1
+                            : compression == COMPRESSION_PACKBITS ? 64
+                            : compression == COMPRESSION_ADOBE_DEFLATE || compression == COMPRESSION_DEFLATE
+                                ? max_deflate_ratio
+                                : 4096;
+  return ratio * file_bytes + 4096;
+}
+
+bool is_tiff(const std::string& bytes) {
+  return bytes.compare(0, 4, "II*\0", 4) == 0 || bytes.compare(0, 4, "MM\0*", 4) == 0 ||
+         bytes.compare(0, 4, "II+\0", 4) == 0 || bytes.compare(0, 4, "MM\0+", 4) == 0;
+}
+
+RgbImage decode_tiff(const std::string& bytes, const std::string& file) {
+  TiffReader reader(bytes, file);
+  TiffHandle& h = reader.h;
   std::uint32_t width = 0, height = 0;
   std::uint16_t spp = 1, bps = 1, photometric = 0, planar = PLANARCONFIG_CONTIG,
                 format = SAMPLEFORMAT_UINT;
@@ -254,14 +284,7 @@ RgbImage decode_tiff(const std::string& bytes, const std::string& file) {
   if (std::size_t(width) * height > max_image_pixels) tiff_fail(file, "more than 2^28 pixels");
   // What the file's bytes can hold decompressed: the samples must fit, and so must one tile
   // (padding included, since a tile is encoded whole), before anything is allocated.
-  std::uint16_t compression = COMPRESSION_NONE;
-  TIFFGetFieldDefaulted(h.tif, TIFFTAG_COMPRESSION, &compression);
-  const std::size_t ratio = compression == COMPRESSION_NONE       ? 1
-                            : compression == COMPRESSION_PACKBITS ? 64  // 2 bytes → at most 128
-                            : compression == COMPRESSION_ADOBE_DEFLATE || compression == COMPRESSION_DEFLATE
-                                ? max_deflate_ratio
-                                : 4096;  // LZW and others: a generous bound
-  const std::size_t capacity = ratio * bytes.size() + 4096;
+  const std::size_t capacity = tiff_capacity(h.tif, bytes.size());
   const std::size_t bytes_per_sample = bps / 8;
   if (std::size_t(width) * height * spp * bytes_per_sample > capacity)
     tiff_fail(file, "the header declares more pixels than the file's bytes can hold (truncated, or a "
@@ -325,14 +348,9 @@ RgbImage decode_tiff(const std::string& bytes, const std::string& file) {
 // interpretation (min-is-white included). Checked first as decode_tiff checks images: at most
 // max_image_pixels, no more samples than the file's bytes can hold.
 RgbImage decode_tiff_mask(const std::string& bytes, const std::string& file) {
-  install_tiff_handlers();
-  tiff_message.clear();
-  TiffMemory memory;
-  memory.readable = &bytes;
-  TiffHandle h{TIFFClientOpen(file.c_str(), "rm", &memory, tiff_read, tiff_write, tiff_seek,
-                              tiff_close, tiff_size, tiff_map, tiff_unmap)};
-  if (!h.tif) tiff_fail(file, "not a readable TIFF");
-  std::uint16_t photometric = 0xffff, bps = 1, spp = 1, compression = COMPRESSION_NONE;
+  TiffReader reader(bytes, file);
+  TiffHandle& h = reader.h;
+  std::uint16_t photometric = 0xffff, bps = 1, spp = 1;
   TIFFGetField(h.tif, TIFFTAG_PHOTOMETRIC, &photometric);
   TIFFGetFieldDefaulted(h.tif, TIFFTAG_BITSPERSAMPLE, &bps);
   TIFFGetFieldDefaulted(h.tif, TIFFTAG_SAMPLESPERPIXEL, &spp);
@@ -342,9 +360,7 @@ RgbImage decode_tiff_mask(const std::string& bytes, const std::string& file) {
   TIFFGetField(h.tif, TIFFTAG_IMAGELENGTH, &height);
   if (width == 0 || height == 0) tiff_fail(file, "an empty mask");
   if (std::size_t(width) * height > max_image_pixels) tiff_fail(file, "more than 2^28 pixels");
-  TIFFGetFieldDefaulted(h.tif, TIFFTAG_COMPRESSION, &compression);
-  const std::size_t ratio = compression == COMPRESSION_NONE ? 1 : compression == COMPRESSION_PACKBITS ? 64 : 4096;
-  if ((std::size_t(width) * height * spp * bps + 7) / 8 > ratio * bytes.size() + 4096)
+  if ((std::size_t(width) * height * spp * bps + 7) / 8 > tiff_capacity(h.tif, bytes.size()))
     tiff_fail(file, "the header declares more pixels than the file's bytes can hold (truncated, or a "
                     "decompression bomb)");
   std::vector<std::uint32_t> rgba(std::size_t(width) * height);
@@ -384,9 +400,7 @@ RgbImage decode_image(const std::string& bytes, const std::string& file) {
       throw InputError(file, 0, std::string("PNG: ") + failure.message);
     return image;
   }
-  if (bytes.compare(0, 4, "II*\0", 4) == 0 || bytes.compare(0, 4, "MM\0*", 4) == 0 ||
-      bytes.compare(0, 4, "II+\0", 4) == 0 || bytes.compare(0, 4, "MM\0+", 4) == 0)
-    return decode_tiff(bytes, file);
+  if (is_tiff(bytes)) return decode_tiff(bytes, file);
   throw InputError(file, 0, "not a PNG or TIFF image (its first bytes are neither signature)");
 }
 
@@ -405,9 +419,7 @@ RgbImage read_mask_image(const std::string& path) {
       throw InputError(path, 0, std::string("PNG: ") + failure.message);
     return image;
   }
-  if (bytes.compare(0, 4, "II*\0", 4) == 0 || bytes.compare(0, 4, "MM\0*", 4) == 0 ||
-      bytes.compare(0, 4, "II+\0", 4) == 0 || bytes.compare(0, 4, "MM\0+", 4) == 0)
-    return decode_tiff_mask(bytes, path);
+  if (is_tiff(bytes)) return decode_tiff_mask(bytes, path);
   return decode_image(bytes, path);
 }
 

@@ -11,16 +11,15 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <filesystem>
 #include <memory>
 
 namespace gmcc {
 namespace {
 
 std::string lower_extension(const std::string& path) {
-  const auto slash = path.find_last_of("/\\");
-  const auto dot = path.rfind('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
-  std::string e = path.substr(dot + 1);
+  std::string e = std::filesystem::path(path).extension().string();  // ".DNG", or empty
+  if (!e.empty()) e.erase(0, 1);
   for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return e;
 }

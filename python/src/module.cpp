@@ -290,26 +290,22 @@ void bind_scene(py::module_& m) {
         if (!saturation.is_none()) levels.saturation = integer_in<std::uint32_t>(saturation, "saturation", 1, 65536);
         PixelRules rules;
         RgbImage image;
-        py::object raw = py::none();
+        RawImage meta;  // a raw file's metadata (its image is `image`)
         try {
-          if (is_raw_file_name(path)) {
-            RawImage r = read_raw_image(path, RawLevels{levels.black, levels.saturation});
-            py::dict info;
-            info["pattern"] = r.pattern;
-            info["black_min"] = r.black_min;
-            info["black_max"] = r.black_max;
-            info["white"] = r.white;
-            info["camera"] = r.camera;
-            info["saturated"] = r.saturated;
-            raw = std::move(info);
-            rules.black_level = 0;
-            rules.saturation = raw_saturated_value;
-            image = std::move(r.image);
-          } else {
-            image = read_camera_image(path, levels, rules);
-          }
+          image = read_camera_image(path, levels, rules, &meta);
         } catch (const std::runtime_error& e) {  // InputError: the file and its problem
           throw py::value_error(e.what());
+        }
+        py::object raw = py::none();
+        if (is_raw_file_name(path)) {
+          py::dict info;
+          info["pattern"] = meta.pattern;
+          info["black_min"] = meta.black_min;
+          info["black_max"] = meta.black_max;
+          info["white"] = meta.white;
+          info["camera"] = meta.camera;
+          info["saturated"] = meta.saturated;
+          raw = std::move(info);
         }
         py::array_t<std::uint16_t> a({image.height, image.width, std::size_t(3)});
         if (!image.samples.empty()) std::memcpy(a.mutable_data(), image.samples.data(), image.samples.size() * 2);

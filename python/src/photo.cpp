@@ -19,6 +19,7 @@
 
 #include <pybind11/stl.h>
 
+#include <deque>
 #include <memory>
 
 namespace gmcc::python {
@@ -29,6 +30,30 @@ template <class F>
 auto released(F f) {
   InterruptibleRelease nogil;
   return f();
+}
+
+// The docstring of a learner's add(): `before` (summary and the image parameter), the light and
+// pixel-rule parameters both learners share, then `after`. Kept for the module's lifetime (pybind
+// holds the pointer).
+const std::string& learner_add_doc(const char* before, const char* after) {
+  static std::deque<std::string> docs;
+  docs.push_back(std::string(before) + R"doc(light : sequence of 3 numbers
+    The image's measured light e, every channel > 0.
+mask : numpy.ndarray of bool, shape (H, W), optional
+    True for the pixels to use (default None: every pixel).
+black_level : int or float, default 0
+    Subtracted from every raw sample; negative results become 0.
+saturation : int or float, optional
+    A pixel with any raw channel >= it is dropped (default None: none is).
+dark : int or float, default 0
+    A pixel with a channel below it (after the black level) is dropped.
+dark_fraction, bright_fraction : int, float, Fraction or str, optional
+    A pixel with a channel below dark_fraction·M, or above bright_fraction·M, is dropped; M is
+    the image's largest value after the black level. Default None: no such rule.
+pixel_rule : {'none', 'gijsenij'}, default 'none'
+    'gijsenij': Gijsenij et al. (2010)'s rule, the fractions 5/255 and 245/255.
+)doc" + after);
+  return docs.back();
 }
 
 // gmcc.Canonical3: a 3-D canonical gamut prepared once.
@@ -348,7 +373,7 @@ ValueError
               return 0;
             });
           },
-          py::arg("image"), py::arg("light"), py::kw_only(), GMCC_PIXEL_ARGS, R"doc(Add one training image and its measured light to the gamut.
+          py::arg("image"), py::arg("light"), py::kw_only(), GMCC_PIXEL_ARGS, learner_add_doc(R"doc(Add one training image and its measured light to the gamut.
 
 Its pixel colours p join the gamut as p ⊘ e, scaled (Forsyth 1990 §3; docs/photographs.md §2).
 
@@ -357,22 +382,7 @@ Parameters
 image : numpy.ndarray (H, W, 3), ImageColours, or array_like (n, 3)
     An image goes through the pixel rules below; an ImageColours must hold pixel colours;
     colours are taken as they are.
-light : sequence of 3 numbers
-    The image's measured light e, every channel > 0.
-mask : numpy.ndarray of bool, shape (H, W), optional
-    True for the pixels to use (default None: every pixel).
-black_level : int or float, default 0
-    Subtracted from every raw sample; negative results become 0.
-saturation : int or float, optional
-    A pixel with any raw channel >= it is dropped (default None: none is).
-dark : int or float, default 0
-    A pixel with a channel below it (after the black level) is dropped.
-dark_fraction, bright_fraction : int, float, Fraction or str, optional
-    A pixel with a channel below dark_fraction·M, or above bright_fraction·M, is dropped; M is
-    the image's largest value after the black level. Default None: no such rule.
-pixel_rule : {'none', 'gijsenij'}, default 'none'
-    'gijsenij': Gijsenij et al. (2010)'s rule, the fractions 5/255 and 245/255.
-colour_set : {'hull-3d', 'distinct'}, default 'hull-3d'
+)doc", R"doc(colour_set : {'hull-3d', 'distinct'}, default 'hull-3d'
     The colours an image is reduced to ('hull' gives chromaticity lifts: refused).
 
 Returns
@@ -385,7 +395,7 @@ ValueError
     A bad image or light, chromaticity lifts, or no usable pixel.
 TypeError
     An argument of the wrong type.
-)doc")
+)doc").c_str())
       .def("gamut", [](const CanonicalLearner3& l) {
              const std::vector<Colour> g = released([&] { return l.gamut(); });
              py::list out;
@@ -475,7 +485,7 @@ images : int
           py::arg("image"), py::arg("light"), py::kw_only(), py::arg("mask") = py::none(), py::arg("black_level") = 0,
           py::arg("saturation") = py::none(), py::arg("dark") = 0, py::arg("dark_fraction") = py::none(),
           py::arg("bright_fraction") = py::none(), py::arg("pixel_rule") = "none",
-          R"doc(Add one training image and its measured light to the 2-D gamut.
+          learner_add_doc(R"doc(Add one training image and its measured light to the 2-D gamut.
 
 Its chromaticities, divided by the light, join the hull (Finlayson & Hordley 1999 eq. 10).
 
@@ -484,22 +494,7 @@ Parameters
 image : numpy.ndarray (H, W, 3), ImageColours, or array_like (n, 3)
     An image goes through the pixel rules below (colour set 'hull'); an ImageColours (lifts or
     pixel colours) and colours are taken as they are.
-light : sequence of 3 numbers
-    The image's measured light e, every channel > 0.
-mask : numpy.ndarray of bool, shape (H, W), optional
-    True for the pixels to use (default None: every pixel).
-black_level : int or float, default 0
-    Subtracted from every raw sample; negative results become 0.
-saturation : int or float, optional
-    A pixel with any raw channel >= it is dropped (default None: none is).
-dark : int or float, default 0
-    A pixel with a channel below it (after the black level) is dropped.
-dark_fraction, bright_fraction : int, float, Fraction or str, optional
-    A pixel with a channel below dark_fraction·M, or above bright_fraction·M, is dropped; M is
-    the image's largest value after the black level. Default None: no such rule.
-pixel_rule : {'none', 'gijsenij'}, default 'none'
-    'gijsenij': Gijsenij et al. (2010)'s rule, the fractions 5/255 and 245/255.
-
+)doc", R"doc(
 Returns
 -------
 None
@@ -510,7 +505,7 @@ ValueError
     A bad image or light.
 TypeError
     An argument of the wrong type.
-)doc")
+)doc").c_str())
       .def("gamut", [](const CanonicalLearner2& l) {
              py::list out;
              for (const Point2& p : l.gamut()) out.append(py::make_tuple(to_fraction(p.x), to_fraction(p.y), 1));

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <random>
 #include <set>
 #include <string>
@@ -56,29 +57,42 @@ std::string png8(png_uint_32 format, const std::vector<png_byte>& pixels, png_ui
   return out;
 }
 
-// A one-channel TIFF, written to a temporary file by libtiff.
+// A TIFF that libtiff writes to a temporary file (`write` sets its fields and data); removed
+// when this goes out of scope.
+struct LibtiffFile {
+  char path[32] = "/tmp/gmcc_test_tiff_XXXXXX";
+  explicit LibtiffFile(const std::function<void(TIFF*)>& write) {
+    const int fd = mkstemp(path);
+    BOOST_REQUIRE(fd >= 0);
+    close(fd);
+    TIFF* t = TIFFOpen(path, "w");
+    BOOST_REQUIRE(t);
+    write(t);
+    TIFFClose(t);
+  }
+  ~LibtiffFile() { std::remove(path); }
+  std::string bytes() const {
+    std::FILE* f = std::fopen(path, "rb");
+    std::string out;
+    char buf[4096];
+    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) out.append(buf, n);
+    std::fclose(f);
+    return out;
+  }
+};
+
+// A one-channel TIFF, written by libtiff.
 std::string grey_tiff() {
-  char name[] = "/tmp/gmcc_test_grey_XXXXXX";
-  const int fd = mkstemp(name);
-  BOOST_REQUIRE(fd >= 0);
-  close(fd);
-  TIFF* t = TIFFOpen(name, "w");
-  BOOST_REQUIRE(t);
-  TIFFSetField(t, TIFFTAG_IMAGEWIDTH, 2u);
-  TIFFSetField(t, TIFFTAG_IMAGELENGTH, 1u);
-  TIFFSetField(t, TIFFTAG_SAMPLESPERPIXEL, 1);
-  TIFFSetField(t, TIFFTAG_BITSPERSAMPLE, 16);
-  TIFFSetField(t, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_MINISBLACK);
-  std::uint16_t row[2] = {1, 2};
-  TIFFWriteScanline(t, row, 0, 0);
-  TIFFClose(t);
-  std::FILE* f = std::fopen(name, "rb");
-  std::string bytes;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) bytes.append(buf, n);
-  std::fclose(f);
-  std::remove(name);
-  return bytes;
+  return LibtiffFile([](TIFF* t) {
+           TIFFSetField(t, TIFFTAG_IMAGEWIDTH, 2u);
+           TIFFSetField(t, TIFFTAG_IMAGELENGTH, 1u);
+           TIFFSetField(t, TIFFTAG_SAMPLESPERPIXEL, 1);
+           TIFFSetField(t, TIFFTAG_BITSPERSAMPLE, 16);
+           TIFFSetField(t, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_MINISBLACK);
+           std::uint16_t row[2] = {1, 2};
+           TIFFWriteScanline(t, row, 0, 0);
+         })
+      .bytes();
 }
 
 // CRC-32 of PNG chunks (ISO 3309), bit by bit: for rewriting a header in a test.
@@ -124,31 +138,20 @@ std::string tiff_with(std::string tiff, std::uint16_t tag, std::uint32_t v) {
 
 // A 16×16 RGB 16-bit TIFF in one 16×16 tile, written by libtiff (compression none or deflate).
 std::string tiled_tiff(std::uint16_t compression) {
-  char name[] = "/tmp/gmcc_test_tiled_XXXXXX";
-  const int fd = mkstemp(name);
-  BOOST_REQUIRE(fd >= 0);
-  close(fd);
-  TIFF* t = TIFFOpen(name, "w");
-  BOOST_REQUIRE(t);
-  TIFFSetField(t, TIFFTAG_IMAGEWIDTH, 16u);
-  TIFFSetField(t, TIFFTAG_IMAGELENGTH, 16u);
-  TIFFSetField(t, TIFFTAG_SAMPLESPERPIXEL, 3);
-  TIFFSetField(t, TIFFTAG_BITSPERSAMPLE, 16);
-  TIFFSetField(t, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_RGB);
-  TIFFSetField(t, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
-  TIFFSetField(t, TIFFTAG_COMPRESSION, compression);
-  TIFFSetField(t, TIFFTAG_TILEWIDTH, 16u);
-  TIFFSetField(t, TIFFTAG_TILELENGTH, 16u);
-  std::vector<std::uint16_t> tile(16 * 16 * 3, 1000);
-  BOOST_REQUIRE(TIFFWriteTile(t, tile.data(), 0, 0, 0, 0) > 0);
-  TIFFClose(t);
-  std::FILE* f = std::fopen(name, "rb");
-  std::string bytes;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) bytes.append(buf, n);
-  std::fclose(f);
-  std::remove(name);
-  return bytes;
+  return LibtiffFile([compression](TIFF* t) {
+           TIFFSetField(t, TIFFTAG_IMAGEWIDTH, 16u);
+           TIFFSetField(t, TIFFTAG_IMAGELENGTH, 16u);
+           TIFFSetField(t, TIFFTAG_SAMPLESPERPIXEL, 3);
+           TIFFSetField(t, TIFFTAG_BITSPERSAMPLE, 16);
+           TIFFSetField(t, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_RGB);
+           TIFFSetField(t, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
+           TIFFSetField(t, TIFFTAG_COMPRESSION, compression);
+           TIFFSetField(t, TIFFTAG_TILEWIDTH, 16u);
+           TIFFSetField(t, TIFFTAG_TILELENGTH, 16u);
+           std::vector<std::uint16_t> tile(16 * 16 * 3, 1000);
+           BOOST_REQUIRE(TIFFWriteTile(t, tile.data(), 0, 0, 0, 0) > 0);
+         })
+      .bytes();
 }
 
 // Independent of polygon_cover: is p inside the polygon or on its boundary?
@@ -265,22 +268,16 @@ BOOST_AUTO_TEST_CASE(grey_and_bilevel_tiff_masks) {
       {1, PHOTOMETRIC_MINISBLACK, {0xb2}, {1, 0, 1, 1, 0, 0, 1, 0}},   // 1011 0010
       {1, PHOTOMETRIC_MINISWHITE, {0xb2}, {0, 1, 0, 0, 1, 1, 0, 1}}};  // 1 displays black
   for (const Case& c : cases) {
-    char name[] = "/tmp/gmcc_test_mask_XXXXXX";
-    const int fd = mkstemp(name);
-    BOOST_REQUIRE(fd >= 0);
-    close(fd);
-    TIFF* t = TIFFOpen(name, "w");
-    BOOST_REQUIRE(t);
-    TIFFSetField(t, TIFFTAG_IMAGEWIDTH, 8u);
-    TIFFSetField(t, TIFFTAG_IMAGELENGTH, 1u);
-    TIFFSetField(t, TIFFTAG_SAMPLESPERPIXEL, 1);
-    TIFFSetField(t, TIFFTAG_BITSPERSAMPLE, c.bits);
-    TIFFSetField(t, TIFFTAG_PHOTOMETRIC, c.photometric);
-    std::vector<unsigned char> row = c.row;
-    BOOST_REQUIRE(TIFFWriteScanline(t, row.data(), 0, 0) >= 0);
-    TIFFClose(t);
-    const RgbImage mask = read_mask_image(name);
-    std::remove(name);
+    const LibtiffFile file([&c](TIFF* t) {
+      TIFFSetField(t, TIFFTAG_IMAGEWIDTH, 8u);
+      TIFFSetField(t, TIFFTAG_IMAGELENGTH, 1u);
+      TIFFSetField(t, TIFFTAG_SAMPLESPERPIXEL, 1);
+      TIFFSetField(t, TIFFTAG_BITSPERSAMPLE, c.bits);
+      TIFFSetField(t, TIFFTAG_PHOTOMETRIC, c.photometric);
+      std::vector<unsigned char> row = c.row;
+      BOOST_REQUIRE(TIFFWriteScanline(t, row.data(), 0, 0) >= 0);
+    });
+    const RgbImage mask = read_mask_image(file.path);
     BOOST_TEST((mask.width == 8u && mask.height == 1u));
     for (std::size_t x = 0; x < 8; ++x) {
       const bool kept = mask.samples[3 * x] || mask.samples[3 * x + 1] || mask.samples[3 * x + 2];

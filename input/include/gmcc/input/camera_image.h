@@ -6,6 +6,7 @@
 
 #include <gmcc/input/image_file.h>
 #include <gmcc/input/image_pixels.h>
+#include <gmcc/input/raw_file.h>
 
 #include <cstdint>
 #include <optional>
@@ -24,7 +25,12 @@ struct ImageLevels {
 /// `levels` replacing its metadata; the returned pixels have the black level subtracted, so
 /// `rules.black_level` becomes 0 and `rules.saturation` raw_saturated_value. Any other file is
 /// read by read_image, and `levels` that are present replace `rules`' black level and saturation.
+/// \param path the image file. \param levels the black level and saturation given for it.
+/// \param rules the pixel rules whose black level and saturation are set for the image.
+/// \param raw_metadata when given and the file is raw: what read_raw_image read besides the
+///        pixels (pattern, levels, camera, saturated quads; its `image` is left empty).
 /// \throws InputError naming the file, as read_image and read_raw_image.
-RgbImage read_camera_image(const std::string& path, const ImageLevels& levels, PixelRules& rules);
+RgbImage read_camera_image(const std::string& path, const ImageLevels& levels, PixelRules& rules,
+                           RawImage* raw_metadata = nullptr);
 
 }  // namespace gmcc
