@@ -42,10 +42,12 @@ void png_fail(png_structp png, png_const_charp message) {
 
 void png_quiet(png_structp, png_const_charp) {}
 
-// Decodes into *out; on failure returns false with failure->message set. The
-// buffers live in the caller, so the longjmp of an error skips no destructor.
-bool decode_png(const std::string& bytes, RgbImage* out, std::vector<unsigned char>* buffer,
-                std::vector<png_bytep>* rows, PngFailure* failure, bool mask = false) {
+// Decodes into *out; on failure returns false with failure->message set. The row pointers
+// live in the caller, so the longjmp of an error skips no destructor. The rows are decoded
+// straight into out->samples (8-bit samples packed in its first half, then widened in place), so
+// the image is held once: 6 bytes a pixel.
+bool decode_png(const std::string& bytes, RgbImage* out, std::vector<png_bytep>* rows,
+                PngFailure* failure, bool mask = false) {
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, failure, png_fail, png_quiet);
   if (!png) {
     std::snprintf(failure->message, sizeof failure->message, "libpng could not start");
@@ -98,22 +100,20 @@ bool decode_png(const std::string& bytes, RgbImage* out, std::vector<unsigned ch
   if (png_get_channels(png, info) != 3 || (out_depth != 8 && out_depth != 16))
     png_error(png, "cannot be read as RGB samples");
   const std::size_t row_bytes = png_get_rowbytes(png, info);
-  buffer->resize(row_bytes * height);
+  if (row_bytes != std::size_t(width) * 3 * (out_depth / 8)) png_error(png, "cannot be read as RGB samples");
+  out->samples.resize(std::size_t(width) * height * 3);
+  auto* storage = reinterpret_cast<unsigned char*>(out->samples.data());
   rows->resize(height);
-  for (png_uint_32 y = 0; y < height; ++y) (*rows)[y] = buffer->data() + y * row_bytes;
+  for (png_uint_32 y = 0; y < height; ++y) (*rows)[y] = storage + y * row_bytes;
   png_read_image(png, rows->data());
   png_read_end(png, nullptr);
   png_destroy_read_struct(&png, &info, nullptr);
   out->width = width;
   out->height = height;
   out->bits = out_depth;
-  out->samples.resize(std::size_t(width) * height * 3);
-  for (std::size_t i = 0; i < out->samples.size(); ++i)
-    if (out_depth == 8) {
-      out->samples[i] = (*buffer)[i];
-    } else {
-      std::uint16_t v;
-      std::memcpy(&v, buffer->data() + 2 * i, 2);
+  if (out_depth == 8)  // byte i moves to sample i (bytes 2i, 2i+1): from the end, nothing unread is overwritten
+    for (std::size_t i = out->samples.size(); i-- > 0;) {
+      const unsigned char v = storage[i];
       out->samples[i] = v;
     }
   return true;
@@ -393,10 +393,9 @@ RgbImage decode_image(const std::string& bytes, const std::string& file) {
   static const char png_signature[] = "\x89PNG\r\n\x1a\n";
   if (bytes.compare(0, 8, png_signature, 8) == 0) {
     RgbImage image;
-    std::vector<unsigned char> buffer;
     std::vector<png_bytep> rows;
     PngFailure failure;
-    if (!decode_png(bytes, &image, &buffer, &rows, &failure))
+    if (!decode_png(bytes, &image, &rows, &failure))
       throw InputError(file, 0, std::string("PNG: ") + failure.message);
     return image;
   }
@@ -412,10 +411,9 @@ RgbImage read_mask_image(const std::string& path) {
   const std::string bytes = read_binary_file(path, max_image_file_bytes, "mask image");
   if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n", 8) == 0) {
     RgbImage image;
-    std::vector<unsigned char> buffer;
     std::vector<png_bytep> rows;
     PngFailure failure;
-    if (!decode_png(bytes, &image, &buffer, &rows, &failure, true))
+    if (!decode_png(bytes, &image, &rows, &failure, true))
       throw InputError(path, 0, std::string("PNG: ") + failure.message);
     return image;
   }

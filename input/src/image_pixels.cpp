@@ -2,6 +2,7 @@
 
 #include <gmcc/geometry/chromaticity_hull.h>
 #include <gmcc/geometry/colour_hull_3.h>
+#include <gmcc/geometry/convex_hull.h>
 #include <gmcc/input/image_derivatives.h>
 #include <gmcc/input/colour_csv.h>
 
@@ -28,14 +29,46 @@ long long rounded(const Rational& q, bool up) {
 long long floor_of(const Rational& q) { return rounded(q, false); }
 long long ceil_of(const Rational& q) { return rounded(q, true); }
 
-// Sort 48-bit keys ascending: least-significant-digit radix sort, three passes of 16 bits
-// (a megapixel image's keys in a few milliseconds, against tens for a comparison sort). Small
-// inputs take std::sort. The result is the same sorted sequence either way.
-void sort_keys(std::vector<std::uint64_t>& keys) {
-  if (keys.size() < 4096) {
-    std::sort(keys.begin(), keys.end());
+// Colours a hull is taken of at once (image_colours' working copies: 24 MiB at most).
+constexpr std::size_t colour_chunk = std::size_t(1) << 20;
+
+// Sort 48-bit keys ascending, in place: most-significant-digit radix sort on bytes (American
+// flag sort: McIlroy, Bostic & McIlroy 1993), buckets of fewer than 64 keys by std::sort.
+void sort_keys_from(std::uint64_t* first, std::uint64_t* last, int shift) {
+  const std::size_t n = static_cast<std::size_t>(last - first);
+  if (n < 64 || shift < 0) {
+    std::sort(first, last);
     return;
   }
+  std::size_t count[256] = {}, next[256], end[256];
+  for (const std::uint64_t* k = first; k != last; ++k) ++count[(*k >> shift) & 0xff];
+  std::size_t sum = 0;
+  for (int d = 0; d < 256; ++d) {
+    next[d] = sum;
+    sum += count[d];
+    end[d] = sum;
+  }
+  for (int d = 0; d < 256; ++d)
+    while (next[d] < end[d]) {  // carry the key at next[d] round its cycle until one belongs here
+      std::uint64_t k = first[next[d]];
+      int kd = static_cast<int>((k >> shift) & 0xff);
+      while (kd != d) {
+        std::swap(k, first[next[kd]++]);
+        kd = static_cast<int>((k >> shift) & 0xff);
+      }
+      first[next[d]++] = k;
+    }
+  if (shift == 0) return;
+  std::size_t begin = 0;
+  for (int d = 0; d < 256; ++d) {
+    if (count[d] > 1) sort_keys_from(first + begin, first + begin + count[d], shift - 8);
+    begin += count[d];
+  }
+}
+
+// Least-significant-digit radix sort, three passes of 16 bits through a buffer as large as the
+// keys: faster than the in-place sort (a megapixel image's keys in a few milliseconds).
+void sort_keys_with_buffer(std::vector<std::uint64_t>& keys) {
   std::vector<std::uint64_t> buffer(keys.size());
   std::vector<std::size_t> count(1 << 16);
   for (int shift = 0; shift < 48; shift += 16) {
@@ -50,6 +83,17 @@ void sort_keys(std::vector<std::uint64_t>& keys) {
     for (std::uint64_t k : keys) buffer[count[(k >> shift) & 0xffff]++] = k;
     keys.swap(buffer);
   }
+}
+
+// Sort 48-bit keys ascending: std::sort for a few, through a buffer up to 2^24 keys (128 MiB more),
+// in place beyond (2^28 keys take their own 2 GiB and no more). The same sequence either way.
+void sort_keys(std::vector<std::uint64_t>& keys) {
+  if (keys.size() < 4096)
+    std::sort(keys.begin(), keys.end());
+  else if (keys.size() <= (std::size_t(1) << 24))
+    sort_keys_with_buffer(keys);
+  else
+    internal::sort_keys_in_place(keys);
 }
 
 }  // namespace
@@ -140,32 +184,53 @@ ImageColours colours_of_pixels(std::vector<std::uint64_t>& keys, ColourSet colou
                                         static_cast<std::uint32_t>((key >> 16) & 0xffff),
                                         static_cast<std::uint32_t>(key & 0xffff)};
   };
+  // The hulls are taken chunk by chunk of the sorted keys: a hull's vertices are among its
+  // parts' hulls' vertices, so the hull of the chunks' vertices is the whole set's, while the
+  // working copies stay at a chunk's size (colour_chunk colours) whatever the image's.
   if (colour_set == ColourSet::hull) {
-    std::vector<std::array<std::uint16_t, 3>> colours;
-    colours.reserve(keys.size());
-    for (std::uint64_t key : keys) {
-      const auto c = channels(key);
-      colours.push_back({std::uint16_t(c[0]), std::uint16_t(c[1]), std::uint16_t(c[2])});
-    }
     out.set = ColourSet::hull;
-    const ChromaticityHull hull = chromaticity_hull_of_pixels(colours);
-    out.counts.no_chromaticity = hull.dropped;
-    for (const Point2& p : hull.hull.vertices) out.colours.push_back({p.x, p.y, Rational(1)});
+    std::vector<Point2> vertices;
+    std::vector<std::array<std::uint16_t, 3>> colours;
+    for (std::size_t begin = 0; begin < keys.size(); begin += colour_chunk) {
+      const std::size_t end = std::min(keys.size(), begin + colour_chunk);
+      colours.clear();
+      for (std::size_t i = begin; i < end; ++i) {
+        const auto c = channels(keys[i]);
+        colours.push_back({std::uint16_t(c[0]), std::uint16_t(c[1]), std::uint16_t(c[2])});
+      }
+      ChromaticityHull hull = chromaticity_hull_of_pixels(colours);
+      out.counts.no_chromaticity += hull.dropped;
+      vertices.insert(vertices.end(), hull.hull.vertices.begin(), hull.hull.vertices.end());
+    }
+    if (keys.size() > colour_chunk) vertices = convex_hull(vertices).vertices;
+    for (const Point2& p : vertices) out.colours.push_back({p.x, p.y, Rational(1)});
     out.counts.hull_vertices = out.colours.size();
     return out;
   }
   if (colour_set == ColourSet::hull_3d) {
     // Integers are doubles exactly: the hull's vertices are found without making a rational.
     out.set = ColourSet::hull_3d;
-    if (keys.empty()) return out;
+    std::vector<std::uint64_t> vertex_keys;  // increasing, as the keys
     std::vector<std::array<double, 3>> colours;
-    colours.reserve(keys.size());
-    for (std::uint64_t key : keys) {
-      const auto c = channels(key);
-      colours.push_back({double(c[0]), double(c[1]), double(c[2])});
+    auto hull_of = [&](const std::uint64_t* first, const std::uint64_t* last) {
+      colours.clear();
+      for (const std::uint64_t* k = first; k != last; ++k) {
+        const auto c = channels(*k);
+        colours.push_back({double(c[0]), double(c[1]), double(c[2])});
+      }
+      std::vector<std::uint64_t> chosen;
+      for (std::size_t i : colour_hull_vertex_indices(colours)) chosen.push_back(first[i]);
+      return chosen;
+    };
+    for (std::size_t begin = 0; begin < keys.size(); begin += colour_chunk) {
+      const std::size_t end = std::min(keys.size(), begin + colour_chunk);
+      const std::vector<std::uint64_t> chosen = hull_of(keys.data() + begin, keys.data() + end);
+      vertex_keys.insert(vertex_keys.end(), chosen.begin(), chosen.end());
     }
-    for (std::size_t i : colour_hull_vertex_indices(colours)) {
-      const auto c = channels(keys[i]);
+    if (keys.size() > colour_chunk)
+      vertex_keys = hull_of(vertex_keys.data(), vertex_keys.data() + vertex_keys.size());
+    for (std::uint64_t key : vertex_keys) {
+      const auto c = channels(key);
       out.colours.push_back({Rational(c[0]), Rational(c[1]), Rational(c[2])});
     }
     out.counts.hull_vertices = out.colours.size();
@@ -184,6 +249,10 @@ ImageColours colours_of_pixels(std::vector<std::uint64_t>& keys, ColourSet colou
 }
 
 }  // namespace
+
+void internal::sort_keys_in_place(std::vector<std::uint64_t>& keys) {
+  sort_keys_from(keys.data(), keys.data() + keys.size(), 40);
+}
 
 std::string to_string(ColourSet set) {
   switch (set) {

@@ -212,6 +212,22 @@ BOOST_AUTO_TEST_CASE(eight_bit_png_read_as_stored) {
   BOOST_TEST((im.samples == std::vector<std::uint16_t>{10, 20, 30, 200, 100, 0}));
 }
 
+// 8-bit samples are decoded into the samples' own storage and widened in place (image_file.cpp):
+// every sample of a multi-row RGB and RGBA image where libpng's simplified writer put it.
+BOOST_AUTO_TEST_CASE(eight_bit_png_widened_in_place) {
+  std::mt19937 rng(8);
+  std::uniform_int_distribution<int> byte(0, 255);
+  for (png_uint_32 format : {png_uint_32(PNG_FORMAT_RGB), png_uint_32(PNG_FORMAT_RGBA)}) {
+    const std::size_t w = 37, h = 23, channels = format == PNG_FORMAT_RGB ? 3 : 4;
+    std::vector<png_byte> px(w * h * channels);
+    for (png_byte& b : px) b = static_cast<png_byte>(byte(rng));
+    const RgbImage im = decode_image(png8(format, px, w, h), "x");
+    BOOST_REQUIRE(im.samples.size() == w * h * 3);
+    for (std::size_t p = 0; p < w * h; ++p)
+      for (std::size_t c = 0; c < 3; ++c) BOOST_TEST(im.samples[3 * p + c] == px[channels * p + c]);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(bad_files_get_clear_messages) {
   BOOST_TEST(error_of("hello, world") ==
              "i.png: not a PNG or TIFF image (its first bytes are neither signature)");
@@ -613,6 +629,64 @@ BOOST_AUTO_TEST_CASE(hull_3d_colour_set) {
   }
   rules.colour_set = ColourSet::hull;
   BOOST_TEST(!pixel_colours(image_colours(im, rules).set));
+}
+
+// More distinct colours than image_colours takes a hull of at once (2^20): the hulls are taken
+// chunk by chunk and then of the chunks' vertices (image_pixels.cpp). The same chromaticity hull,
+// 3-D hull and counts as the floating-point route, which takes each hull of every colour at once.
+BOOST_AUTO_TEST_CASE(hulls_of_more_colours_than_a_chunk) {
+  std::mt19937_64 rng(29);
+  std::uniform_int_distribution<unsigned> channel(0, 65535);
+  RgbImage im;
+  im.width = 1100;
+  im.height = 1000;
+  FloatRgbImage fim;
+  fim.width = im.width;
+  fim.height = im.height;
+  for (std::size_t i = 0; i < im.width * im.height * 3; ++i) {
+    // every 50,000th pixel has b = 0 (no chromaticity), spread over the chunks
+    const unsigned v = (i % 3 == 2 && (i / 3) % 50000 == 7) ? 0 : channel(rng);
+    im.samples.push_back(static_cast<std::uint16_t>(v));
+    fim.samples.push_back(v);
+  }
+  for (ColourSet set : {ColourSet::hull, ColourSet::hull_3d}) {
+    PixelRules rules;
+    rules.colour_set = set;
+    FloatPixelRules frules;
+    frules.colour_set = set;
+    const ImageColours a = image_colours(im, rules), b = image_colours(fim, frules);
+    BOOST_TEST(a.counts.colours > (std::uint64_t(1) << 20));
+    BOOST_TEST(a.counts.colours == b.counts.colours);
+    BOOST_TEST(a.counts.hull_vertices == b.counts.hull_vertices);
+    BOOST_TEST(a.counts.no_chromaticity == b.counts.no_chromaticity);
+    BOOST_TEST((a.colours == b.colours), to_string(set));
+  }
+}
+
+// The in-place sort image_colours takes beyond 2^24 colours: std::sort's order on random keys,
+// keys sharing high bytes (one r channel, one r and g), many repeats, and already sorted or
+// reversed input, at sizes about the small-bucket threshold and above.
+BOOST_AUTO_TEST_CASE(in_place_key_sort) {
+  std::mt19937_64 rng(31);
+  const std::uint64_t below48 = (std::uint64_t(1) << 48) - 1;
+  for (std::size_t n : {0, 1, 63, 64, 65, 1000, 300000}) {
+    for (int kind = 0; kind < 5; ++kind) {
+      std::vector<std::uint64_t> keys(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::uint64_t r = rng() & below48;
+        keys[i] = kind == 0   ? r
+                  : kind == 1 ? (std::uint64_t(4321) << 32) | (r & 0xffffffff)
+                  : kind == 2 ? (std::uint64_t(0x1234abcd) << 16) | (r & 0xffff)
+                  : kind == 3 ? r % 7
+                              : i * 977;
+      }
+      if (kind == 4 && n % 2) std::reverse(keys.begin(), keys.end());
+      std::vector<std::uint64_t> want = keys;
+      std::sort(want.begin(), want.end());
+      internal::sort_keys_in_place(keys);
+      BOOST_TEST((keys == want), "n " << n << " kind " << kind);
+    }
+  }
 }
 
 // The Gaussian pre-filter (image_pixels.h): a constant image stays one colour exactly; a smoothed
