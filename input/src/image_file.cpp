@@ -407,18 +407,21 @@ RgbImage read_image(const std::string& path) {
   return decode_image(read_binary_file(path, max_image_file_bytes, "image file"), path);
 }
 
-RgbImage read_mask_image(const std::string& path) {
-  const std::string bytes = read_binary_file(path, max_image_file_bytes, "mask image");
+RgbImage decode_mask_image(const std::string& bytes, const std::string& file) {
   if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n", 8) == 0) {
     RgbImage image;
     std::vector<png_bytep> rows;
     PngFailure failure;
     if (!decode_png(bytes, &image, &rows, &failure, true))
-      throw InputError(path, 0, std::string("PNG: ") + failure.message);
+      throw InputError(file, 0, std::string("PNG: ") + failure.message);
     return image;
   }
-  if (is_tiff(bytes)) return decode_tiff_mask(bytes, path);
-  return decode_image(bytes, path);
+  if (is_tiff(bytes)) return decode_tiff_mask(bytes, file);
+  return decode_image(bytes, file);
+}
+
+RgbImage read_mask_image(const std::string& path) {
+  return decode_mask_image(read_binary_file(path, max_image_file_bytes, "mask image"), path);
 }
 
 std::string encode_png16(const RgbImage& image) {

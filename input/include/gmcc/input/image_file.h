@@ -56,6 +56,10 @@ RgbImage read_image(const std::string& path);
 /// is kept where any channel is non-zero (image_pixels.h). \throws InputError as read_image.
 RgbImage read_mask_image(const std::string& path);
 
+/// Decode a mask image held in `bytes` as read_mask_image reads its file. \param file the name
+/// used in messages. \throws InputError as decode_image.
+RgbImage decode_mask_image(const std::string& bytes, const std::string& file);
+
 /// A 16-bit RGB PNG of `image` (samples as they are, whatever image.bits), no
 /// gamma chunk. \throws std::invalid_argument if the image is empty or its
 /// samples do not match its size.
