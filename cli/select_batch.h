@@ -11,8 +11,8 @@ namespace gmcc::cli {
 
 /// Largest scene file accepted, in bytes (read whole, like a colour file).
 inline constexpr std::size_t max_scene_file_bytes = std::size_t(1) << 30;
-/// Most scenes in one file: the records are written at once when all are done, a few KB each
-/// (11 colours: about 4 KB), so 10^5 scenes keep the output under about 0.5 GB of memory.
+/// Most scenes in one file (each record is written to stdout as it is made, so memory holds the
+/// scene file and one record, not the output).
 inline constexpr std::size_t max_batch_scenes = 100000;
 
 /// One scene of a scene file, as read from its line.
@@ -29,7 +29,7 @@ struct BatchScene {
 ///         is read, so an error record can carry it.
 void parse_batch_scene(const std::string& text, const std::string& file, BatchScene& scene);
 
-/// Run the batch: one record a scene on stdout, written at once when all are done; returns 0 when
+/// Run the batch: one record a scene on stdout, each written as it is made; returns 0 when
 /// every scene was selected, 2 when any line gave an error record. Problems with the canonical
 /// side or the scene file as a whole throw InputError (exit 2, nothing written).
 int run_select_batch(const SelectOptions& options, const SelectSettings& settings);
