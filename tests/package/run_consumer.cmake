@@ -8,7 +8,16 @@ function(step)
   endif()
 endfunction()
 step(${CMAKE_COMMAND} --install "${GMCC_BUILD}" --prefix "${WORK}/prefix")
+# Eigen and Google Benchmark hidden: the installed package must not need them.
 step(${CMAKE_COMMAND} -S "${CONSUMER_SRC}" -B "${WORK}/build" -G Ninja
-     -DCMAKE_BUILD_TYPE=Release "-DCMAKE_PREFIX_PATH=${WORK}/prefix")
+     -DCMAKE_BUILD_TYPE=Release "-DCMAKE_PREFIX_PATH=${WORK}/prefix"
+     -DCMAKE_DISABLE_FIND_PACKAGE_Eigen3=ON -DCMAKE_DISABLE_FIND_PACKAGE_benchmark=ON)
 step(${CMAKE_COMMAND} --build "${WORK}/build")
 step("${WORK}/build/consumer")
+file(GLOB_RECURSE exported "${WORK}/prefix/*.cmake")
+foreach(f ${exported})
+  file(READ "${f}" text)
+  if(text MATCHES "Eigen|benchmark")
+    message(FATAL_ERROR "the installed package names Eigen or Google Benchmark: ${f}")
+  endif()
+endforeach()

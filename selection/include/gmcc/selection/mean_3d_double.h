@@ -1,6 +1,6 @@
 #pragma once
 /// \file mean_3d_double.h
-/// The same closed form as mean_3d evaluated naively in double precision (Eigen 3-vectors).
+/// The same closed form as mean_3d evaluated naively in double precision (plain 3-vectors of doubles).
 /// An inexact baseline, named as such: on a polygon of angular width ε the edge terms are O(ε)
 /// while τ is O(ε²), so the sum cancels and the relative error grows like 2^-53/ε²
 /// (docs/derivations.md §1.6). It exists for benchmarks and for tests that show why gmcc does not
