@@ -154,9 +154,13 @@ bool encode_png(const RgbImage& image, std::string* out, std::vector<std::uint16
 
 thread_local std::string tiff_message;
 
+// libtiff's first error of a read, kept for the message: one line (its texts may hold newlines)
+// of at most 200 bytes.
 void tiff_error(const char*, const char* format, va_list args) {
-  char text[512];
+  char text[201];
   std::vsnprintf(text, sizeof text, format, args);
+  for (char* c = text; *c; ++c)
+    if (static_cast<unsigned char>(*c) < 0x20) *c = ' ';
   if (tiff_message.empty()) tiff_message = text;
 }
 void tiff_warning(const char*, const char*, va_list) {}

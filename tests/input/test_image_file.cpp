@@ -12,7 +12,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <functional>
+#include <iterator>
 #include <random>
 #include <set>
 #include <string>
@@ -242,6 +244,16 @@ BOOST_AUTO_TEST_CASE(bad_files_get_clear_messages) {
   const std::string tiff = encode_tiff16(ramp(40, 40, 16));
   BOOST_TEST(error_of(tiff.substr(0, 200)) != "");
   BOOST_CHECK_THROW(encode_png16(RgbImage{}), std::invalid_argument);
+  // fuzz_image's finding: libtiff's text for a bad InkNames tag holds a newline; the message is
+  // still one line (the finding's file bytes, after the target's nine option bytes).
+  std::ifstream finding(std::string(GMCC_DATA_DIR) + "/../fuzz/corpus/image/finding_multiline_libtiff_message",
+                        std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(finding)), std::istreambuf_iterator<char>());
+  BOOST_REQUIRE(bytes.size() > 9);
+  const std::string message = error_of(bytes.substr(9));
+  BOOST_TEST(message.find("i.png: ") == 0u);
+  BOOST_TEST(message.find("InkNames") != std::string::npos);
+  BOOST_TEST(message.find('\n') == std::string::npos);
 }
 
 // Memory follows the data, not the header (issue 30): a header claiming more pixels than the
