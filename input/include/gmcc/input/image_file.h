@@ -56,8 +56,8 @@ RgbImage read_image(const std::string& path);
 /// is kept where any channel is non-zero (image_pixels.h). \throws InputError as read_image.
 RgbImage read_mask_image(const std::string& path);
 
-/// Decode a mask image held in `bytes` as read_mask_image reads its file. \param file the name
-/// used in messages. \throws InputError as decode_image.
+/// Decode a mask image held in `bytes` as read_mask_image reads its file. \param bytes the whole
+/// file's content. \param file the name used in messages. \throws InputError as decode_image.
 RgbImage decode_mask_image(const std::string& bytes, const std::string& file);
 
 /// A 16-bit RGB PNG of `image` (samples as they are, whatever image.bits), no
