@@ -3,12 +3,7 @@
 # objects are those of gmcc's own Release build, so ccache serves most of them) and checks that
 # gmcc kept it.
 file(REMOVE_RECURSE "${WORK}")
-function(step)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "step failed (${rc}): ${ARGN}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/step.cmake)
 step(${CMAKE_COMMAND} -S "${GMCC_SOURCE}/tests/package/subproject" -B "${WORK}" -G Ninja
      -DCMAKE_BUILD_TYPE=Release "-DGMCC_SOURCE=${GMCC_SOURCE}")
 step(${CMAKE_COMMAND} --build "${WORK}" --target consumer)
