@@ -19,6 +19,7 @@ namespace {
 // A slot is one file, or a family of numbered files (path + "0", path + "1", …: members of
 // them), so that a run may stage any number of outputs in one slot.
 struct Slot {
+  std::atomic<bool> claimed{false};  // held by a registration (live or being written)
   std::atomic<bool> live{false};
   std::atomic<int> members{-1};  // -1: one file, `path`; otherwise a family of this many
   char path[4096];
@@ -65,11 +66,17 @@ void install_exit_cleanup() {
 int track_temporary(const std::string& path) {
   if (path.size() >= sizeof slots[0].path)
     throw std::length_error("temporary file name of " + std::to_string(path.size()) + " bytes");
-  const int i = slots_used.fetch_add(1);
-  if (i >= static_cast<int>(sizeof slots / sizeof slots[0]))
-    throw std::length_error("more than 64 temporary files in one run");
-  std::memcpy(slots[i].path, path.c_str(), path.size() + 1);
+  // The first free slot: a slot is freed when its file is committed or removed, so 64 bound the
+  // temporaries alive at once, not those of a whole process (a library or a fuzzer runs many).
+  constexpr int count = static_cast<int>(sizeof slots / sizeof slots[0]);
+  int i = 0;
+  while (i < count && slots[i].claimed.exchange(true)) ++i;
+  if (i == count) throw std::length_error("more than 64 temporary files at once");
+  std::memcpy(slots[i].path, path.c_str(), path.size() + 1);  // not live yet: handlers skip it
+  slots[i].members.store(-1);
   slots[i].live.store(true);
+  for (int used = slots_used.load(); used < i + 1 && !slots_used.compare_exchange_weak(used, i + 1);) {
+  }
   return i;
 }
 
@@ -86,8 +93,10 @@ void family_members(int handle, int members) noexcept {
 std::string family_member(const std::string& prefix, int k) { return prefix + std::to_string(k); }
 
 void untrack_temporary(int handle) noexcept {
-  if (handle >= 0 && handle < static_cast<int>(sizeof slots / sizeof slots[0]))
+  if (handle >= 0 && handle < static_cast<int>(sizeof slots / sizeof slots[0])) {
     slots[handle].live.store(false);
+    slots[handle].claimed.store(false);
+  }
 }
 
 bool is_tracked(const std::string& path) noexcept {

@@ -23,8 +23,9 @@ namespace gmcc::cli {
 void install_exit_cleanup();
 
 /// Register a temporary file (removed on a signal or a limit). Returns the handle for
-/// untrack_temporary. \throws std::length_error beyond 64 registrations or for a path longer
-/// than 4095 bytes (a bug: a run writes a handful of files).
+/// untrack_temporary, which frees the slot for another file. \throws std::length_error beyond 64
+/// registrations alive at once or for a path longer than 4095 bytes (a bug: a run writes a
+/// handful of files at a time).
 int track_temporary(const std::string& path);
 
 /// Register a family of temporary files named prefix + "0", prefix + "1", … (family_member), of

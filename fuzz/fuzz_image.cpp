@@ -6,8 +6,8 @@
 // length starting with the file's name. What decodes must be a non-empty image of at most
 // max_image_pixels pixels, 8 or 16 bits, every sample below 2^bits, whose samples take no more
 // bytes than the file's can decompress to (deflate's 1032:1 bound, which covers PNG; libtiff's
-// other compressions are held to 4096:1 by image_file.cpp), and encode_png16 must give it back
-// sample for sample.
+// other compressions are held to 4096:1 by image_file.cpp; a mask's pixel may be a single bit of
+// that, so 48 times as much for masks), and encode_png16 must give it back sample for sample.
 //
 // A decoded image of at most 2^16 pixels then goes through image_colours with rules from the
 // option bytes (black level, saturation, absolute and relative dark and bright thresholds, a keep
@@ -135,7 +135,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   FUZZ_CHECK(pixels > 0 && pixels <= gmcc::max_image_pixels, "an empty or oversized image");
   FUZZ_CHECK(image.bits == 8 || image.bits == 16, "bits " + std::to_string(image.bits));
   FUZZ_CHECK(image.samples.size() == pixels * 3, "samples do not match the size");
-  FUZZ_CHECK(image.samples.size() * 2 <= 4096 * bytes.size() + 65536,
+  // A camera image's samples (8 or 16 bits) come from at least a byte each of decompressed data;
+  // a mask's pixel may be one bit of it, widened to three 16-bit samples (48 times as large).
+  const std::size_t widening = mask ? 48 : 2;
+  FUZZ_CHECK(image.samples.size() * 2 <= widening * 4096 * bytes.size() + 65536,
              "more samples than the file's bytes can decompress to");
   for (std::uint16_t v : image.samples) FUZZ_CHECK(v < (1u << image.bits), "a sample beyond its bits");
   if (pixels <= 65536) {
