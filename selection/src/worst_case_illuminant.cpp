@@ -3,6 +3,7 @@
 #include <gmcc/selection/worst_case_illuminant.h>
 #include <gmcc/numerics/internal_check.h>
 
+#include "internal/integer_polynomial.h"
 #include "internal/interval.h"
 #include "internal/worst_case_illuminant_route.h"
 
@@ -16,73 +17,16 @@
 namespace gmcc {
 namespace {
 
-// A polynomial over ℤ in the edge parameter t: coefficients, constant term first, no trailing
-// zeros (the zero polynomial is empty). Degrees here are at most 5, so plain loops suffice.
-// Integer coefficients throughout: over ℚ every operation reduces a fraction by a gcd, and
-// Euclid's remainders grow numerators and denominators at every step; on feasible sets with
-// long exact vertices (inputs of 50 digits and more) that cost seconds to minutes per edge.
-using Poly = std::vector<mpz_class>;
-
-void trim(Poly& p) {
-  while (!p.empty() && sgn(p.back()) == 0) p.pop_back();
-}
-
-Poly add(Poly a, const Poly& b) {
-  if (a.size() < b.size()) a.resize(b.size());
-  for (std::size_t i = 0; i < b.size(); ++i) a[i] += b[i];
-  trim(a);
-  return a;
-}
-
-Poly sub(Poly a, const Poly& b) {
-  if (a.size() < b.size()) a.resize(b.size());
-  for (std::size_t i = 0; i < b.size(); ++i) a[i] -= b[i];
-  trim(a);
-  return a;
-}
-
-Poly scaled(Poly a, const mpz_class& k) {
-  for (mpz_class& x : a) x *= k;
-  trim(a);
-  return a;
-}
-
-Poly mul(const Poly& a, const Poly& b) {
-  if (a.empty() || b.empty()) return {};
-  Poly r(a.size() + b.size() - 1);
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = 0; j < b.size(); ++j) r[i + j] += a[i] * b[j];
-  trim(r);
-  return r;
-}
-
-Poly derivative(const Poly& p) {
-  Poly d;
-  for (std::size_t i = 1; i < p.size(); ++i) d.push_back(p[i] * static_cast<unsigned long>(i));
-  trim(d);
-  return d;
-}
-
-// True when p ≠ 0 certainly has no root in the open interval (0, 1): the coefficients of
-// (1 + u)^d · p(1/(1 + u)), d = deg p, have no sign variation. t = 1/(1 + u) maps u ∈ (0, ∞) onto
-// t ∈ (0, 1), and by Descartes' rule of signs a polynomial has at most as many positive roots
-// (with multiplicity) as sign variations in its coefficients (Basu, Pollack & Roy, "Algorithms in
-// Real Algebraic Geometry", Thm 2.33). A Taylor shift of degree ≤ 4: additions only, O(d²) of
-// them, against the Sturm sequence's multiplications of ever longer numbers.
-bool no_root_in_open_unit_interval(const Poly& p) {
-  Poly r(p.rbegin(), p.rend());  // t^d · p(1/t)
-  const std::size_t d = r.size() - 1;
-  for (std::size_t i = 0; i < d; ++i)  // r(x) → r(x + 1)
-    for (std::size_t j = d; j-- > i;) r[j] += r[j + 1];
-  int last = 0;
-  for (const mpz_class& c : r) {
-    const int sc = sgn(c);
-    if (sc == 0) continue;
-    if (last != 0 && sc != last) return false;
-    last = sc;
-  }
-  return true;
-}
+// The edge quartics' algebra: internal/integer_polynomial.h.
+using Poly = internal::IntegerPolynomial;
+using internal::add;
+using internal::derivative;
+using internal::mul;
+using internal::no_root_in_open_unit_interval;
+using internal::roots_in_unit_interval;
+using internal::scaled;
+using internal::sub;
+using internal::trim;
 
 // The rationals xs times the lcm of their denominators: integers in the same proportions
 // (a positive common factor, which changes no sign and no root below).
@@ -96,136 +40,6 @@ std::vector<mpz_class> common_integers(const std::vector<Rational>& xs) {
     out.push_back(x.get_num() * k);
   }
   return out;
-}
-
-// p divided by the gcd of its coefficients (> 0): the same signs everywhere.
-Poly primitive(Poly p) {
-  mpz_class content = 0;
-  for (const mpz_class& c : p) mpz_gcd(content.get_mpz_t(), content.get_mpz_t(), c.get_mpz_t());
-  if (content > 1)
-    for (mpz_class& c : p) mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), content.get_mpz_t());
-  return p;
-}
-
-// k·a mod b for some integer k > 0 (b ≠ 0): pseudo-division, each step scaling a by |lc(b)|
-// so that no division is needed; k > 0 keeps a Sturm sequence's signs.
-Poly pseudo_remainder(Poly a, const Poly& b) {
-  const mpz_class lb = abs(b.back());
-  const int sign_lb = sgn(b.back());
-  while (!a.empty() && a.size() >= b.size()) {
-    const std::size_t shift = a.size() - b.size();
-    const mpz_class la = sign_lb > 0 ? a.back() : mpz_class(-a.back());
-    for (mpz_class& c : a) c *= lb;
-    for (std::size_t i = 0; i < b.size(); ++i) a[i + shift] -= la * b[i];
-    a.pop_back();  // its coefficient is now exactly 0
-    trim(a);
-  }
-  return a;
-}
-
-// A gcd of a and b (up to a constant factor): primitive remainder sequence.
-Poly gcd(Poly a, Poly b) {
-  while (!b.empty()) {
-    Poly r = primitive(pseudo_remainder(a, b));
-    a = std::move(b);
-    b = std::move(r);
-  }
-  return a;
-}
-
-// a / b when b divides a in ℤ[t] (a primitive, b primitive: by Gauss's lemma the quotient then
-// has integer coefficients, so every step divides exactly).
-Poly exact_quotient(Poly a, const Poly& b) {
-  Poly q(a.size() - b.size() + 1);
-  for (std::size_t shift = q.size(); shift-- > 0;) {
-    mpz_class k;
-    mpz_divexact(k.get_mpz_t(), a[shift + b.size() - 1].get_mpz_t(), b.back().get_mpz_t());
-    for (std::size_t i = 0; i < b.size(); ++i) a[i + shift] -= k * b[i];
-    q[shift] = std::move(k);
-  }
-  return q;
-}
-
-// The sign of p at t = a/b (b > 0), from the homogeneous form Σ c_i a^i b^(d−i): integer
-// arithmetic only, no rational normalisation.
-int sign_at(const Poly& p, const Rational& t) {
-  if (p.empty()) return 0;
-  const mpz_class& a = t.get_num();
-  const mpz_class& b = t.get_den();
-  // Horner on the homogeneous form: r ← r·a + c_i·b^(d−i), from i = d − 1 down to 0.
-  mpz_class r = p.back(), b_power = 1;
-  for (std::size_t i = p.size() - 1; i-- > 0;) {
-    b_power *= b;
-    r = r * a + p[i] * b_power;
-  }
-  return sgn(r);
-}
-
-// Sign variations of a Sturm sequence at t, zeros skipped.
-int variations(const std::vector<Poly>& chain, const Rational& t) {
-  int count = 0, last = 0;
-  for (const Poly& p : chain) {
-    const int s = sign_at(p, t);
-    if (s == 0) continue;
-    if (last != 0 && s != last) ++count;
-    last = s;
-  }
-  return count;
-}
-
-// The distinct real roots of p ≠ 0 in (0, 1], each as an exact rational: the root itself when a
-// bisection point hits it, otherwise the right end of an interval (lo, hi] of width ≤ 2^-100
-// holding exactly one root. Sturm's theorem on the square-free part s = p / gcd(p, p′):
-// #roots in (lo, hi] = V(lo) − V(hi), also when lo or hi is a root (Basu, Pollack & Roy,
-// "Algorithms in Real Algebraic Geometry", Thm 2.50 and its proof).
-std::vector<Rational> roots_in_unit_interval(const Poly& p) {
-  const Poly pz = primitive(p);
-  const Poly s = primitive(exact_quotient(pz, primitive(gcd(pz, derivative(pz)))));
-  if (s.size() < 2) return {};
-  const Poly ds = primitive(derivative(s));
-  std::vector<Poly> chain{s, ds};
-  for (;;) {  // positive scalings keep a Sturm sequence's signs
-    Poly r = primitive(pseudo_remainder(chain[chain.size() - 2], chain.back()));
-    if (r.empty()) break;
-    for (mpz_class& c : r) c = -c;
-    chain.push_back(std::move(r));
-  }
-  const Rational width = Rational(1) >> 100;
-  struct Interval {
-    Rational lo, hi;
-    int v_lo, v_hi;
-  };
-  std::vector<Interval> todo{{Rational(0), Rational(1), variations(chain, Rational(0)),
-                              variations(chain, Rational(1))}};
-  std::vector<Rational> roots;
-  while (!todo.empty()) {
-    Interval iv = std::move(todo.back());
-    todo.pop_back();
-    const int count = iv.v_lo - iv.v_hi;
-    if (count == 0) continue;
-    if (count == 1) {
-      // One simple root in (lo, hi]: bisect on the sign of s alone. Just right of lo, s has
-      // the sign of s(lo), or of s′(lo) where lo is itself a (simple) root of s.
-      int sign_lo = sign_at(s, iv.lo);
-      if (sign_lo == 0) sign_lo = sign_at(ds, iv.lo);
-      while (iv.hi - iv.lo > width && sign_at(s, iv.hi) != 0) {
-        Rational mid = (iv.lo + iv.hi) / 2;
-        const int sign_mid = sign_at(s, mid);
-        if (sign_mid == 0) {
-          iv.hi = std::move(mid);
-          break;
-        }
-        (sign_mid == sign_lo ? iv.lo : iv.hi) = std::move(mid);
-      }
-      roots.push_back(iv.hi);
-      continue;
-    }
-    Rational mid = (iv.lo + iv.hi) / 2;
-    const int v_mid = variations(chain, mid);
-    todo.push_back({iv.lo, mid, iv.v_lo, v_mid});
-    todo.push_back({std::move(mid), iv.hi, v_mid, iv.v_hi});
-  }
-  return roots;
 }
 
 // The filters below only skip work whose exact result is known not to matter, so the answer is
