@@ -1,6 +1,7 @@
 // A box clipped by integer half-spaces with filtered exact predicates (docs/derivations.md §4.6).
 #include "internal/polytope_clip.h"
 
+#include <gmcc/geometry/integers_over_lcm.h>
 #include <gmcc/numerics/internal_check.h>
 
 #include <algorithm>
@@ -42,11 +43,8 @@ Filter filter_of(const IntegerPlane3& p) {
 
 // p·L with L > 0 the lcm of p's denominators: (p·L, L), integers.
 std::array<mpz_class, 4> integer_point(const Point3& p) {
-  mpz_class l;
-  mpz_lcm(l.get_mpz_t(), p.x.get_den_mpz_t(), p.y.get_den_mpz_t());
-  mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), p.z.get_den_mpz_t());
-  return {mpz_class(p.x.get_num() * (l / p.x.get_den())), mpz_class(p.y.get_num() * (l / p.y.get_den())),
-          mpz_class(p.z.get_num() * (l / p.z.get_den())), l};
+  const mpz_class l = lcm_of_denominators_of(p.x, p.y, p.z);
+  return {times_lcm(p.x, l), times_lcm(p.y, l), times_lcm(p.z, l), l};
 }
 
 // p·2^-e (e the largest binary exponent of p's channels) truncated to doubles (mpq_get_d:

@@ -1,5 +1,7 @@
 #include "internal/integer_polynomial.h"
 
+#include <gmcc/geometry/integers_over_lcm.h>
+
 #include <utility>
 
 namespace gmcc::internal {
@@ -60,10 +62,7 @@ bool no_root_in_open_unit_interval(const IntegerPolynomial& p) {
 }
 
 IntegerPolynomial primitive(IntegerPolynomial p) {
-  mpz_class content = 0;
-  for (const mpz_class& c : p) mpz_gcd(content.get_mpz_t(), content.get_mpz_t(), c.get_mpz_t());
-  if (content > 1)
-    for (mpz_class& c : p) mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), content.get_mpz_t());
+  divide_by_content(p);
   return p;
 }
 

@@ -1,4 +1,5 @@
 #include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/integers_over_lcm.h>
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/worst_case_illuminant.h>
 #include <gmcc/numerics/internal_check.h>
@@ -27,20 +28,6 @@ using internal::roots_in_unit_interval;
 using internal::scaled;
 using internal::sub;
 using internal::trim;
-
-// The rationals xs times the lcm of their denominators: integers in the same proportions
-// (a positive common factor, which changes no sign and no root below).
-std::vector<mpz_class> common_integers(const std::vector<Rational>& xs) {
-  mpz_class den_lcm = 1;
-  for (const Rational& x : xs) mpz_lcm(den_lcm.get_mpz_t(), den_lcm.get_mpz_t(), x.get_den_mpz_t());
-  std::vector<mpz_class> out;
-  for (const Rational& x : xs) {
-    mpz_class k;
-    mpz_divexact(k.get_mpz_t(), den_lcm.get_mpz_t(), x.get_den_mpz_t());
-    out.push_back(x.get_num() * k);
-  }
-  return out;
-}
 
 // The filters below only skip work whose exact result is known not to matter, so the answer is
 // the exact route's, bit for bit; they make a feasible set of 10^5–10^6 vertices (a many-vertex
@@ -228,8 +215,8 @@ Poly stationary_polynomial(const Point2& p, const Rational& da, const Rational& 
   // v(t) = a·b · (c ⊘ (a, b, 1)) = (c1·b, c2·a, c3·a·b) with a = p.x + t·da, b = p.y + t·db,
   // scaled by a positive integer to integer coefficients (the angle's stationary points are
   // unchanged by positive scalings of v and of e).
-  const std::vector<mpz_class> k = common_integers(
-      {c.r * p.y, c.r * db, c.g * p.x, c.g * da, c.b * p.x * p.y,
+  const std::vector<mpz_class> k = integers_over_lcm(std::vector<Rational>{
+      c.r * p.y, c.r * db, c.g * p.x, c.g * da, c.b * p.x * p.y,
        c.b * (p.x * db + da * p.y), c.b * da * db});
   std::array<Poly, 3> v{Poly{k[0], k[1]}, Poly{k[2], k[3]}, Poly{k[4], k[5], k[6]}};
   for (Poly& vj : v) trim(vj);
@@ -309,7 +296,8 @@ IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const P
   // e: the estimate's illuminant c ⊘ (m, 1). A candidate x implies the direction c ⊘ (x, 1); the
   // angle grows as cos²/|e|² = (e·w)²/|w|² falls, compared exactly (e·w > 0: all positive).
   const std::array<Rational, 3> e{Rational(c.r / m.x), Rational(c.g / m.y), c.b};
-  const std::vector<mpz_class> e_int = common_integers({e[0], e[1], e[2]});
+  // In integers: a positive common factor, which changes no sign and no root.
+  const std::vector<mpz_class> e_int = integers_over_lcm(e);
   auto closeness = [&](const Point2& x) {
     const Rational w0 = c.r / x.x, w1 = c.g / x.y;
     const Rational ew = e[0] * w0 + e[1] * w1 + e[2] * c.b;
