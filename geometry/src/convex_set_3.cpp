@@ -1,9 +1,8 @@
 #include <gmcc/geometry/convex_set_3.h>
 
 #include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/geometry/polytope_moments.h>
-
-#include "internal/vector3.h"
 
 #include <algorithm>
 #include <array>
@@ -12,9 +11,6 @@
 #include <stdexcept>
 
 namespace gmcc {
-using internal::cross;
-using internal::dot;
-using internal::sub;
 namespace {
 // The vertices as coordinate arrays, for polytope_moments.
 std::vector<std::array<Rational, 3>> rational_points(const ConvexSet3& s) {

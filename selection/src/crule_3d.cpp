@@ -1,4 +1,5 @@
 #include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/selection/crule_3d.h>
 #include <gmcc/selection/max_volume.h>
 
@@ -10,8 +11,6 @@
 
 namespace gmcc {
 namespace {
-Rational dot(const Point3& a, const Point3& b) { return Rational(a.x * b.x + a.y * b.y + a.z * b.z); }
-bool is_zero(const Point3& a) { return sgn(a.x) == 0 && sgn(a.y) == 0 && sgn(a.z) == 0; }
 
 // The filter of worst_case_map_deg_3d: the non-zero vertices whose cos² to m (as −(m·v)²/|v|²,
 // cos² times −|m|², in double enclosures) may be the least, in vertex order.

@@ -1,4 +1,5 @@
 #include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/numerics/internal_check.h>
 #include <gmcc/selection/max_volume.h>
 
@@ -15,15 +16,7 @@ namespace gmcc {
 namespace {
 using internal::Interval;
 
-Point3 sub(const Point3& a, const Point3& b) { return {Rational(a.x - b.x), Rational(a.y - b.y), Rational(a.z - b.z)}; }
-Point3 cross(const Point3& a, const Point3& b) {
-  return {Rational(a.y * b.z - a.z * b.y), Rational(a.z * b.x - a.x * b.z), Rational(a.x * b.y - a.y * b.x)};
-}
-Rational dot(const Point3& a, const Point3& b) { return Rational(a.x * b.x + a.y * b.y + a.z * b.z); }
 Rational product(const Point3& d) { return Rational(d.x * d.y * d.z); }
-Point3 along(const Point3& p, const Point3& u, const Rational& t) {
-  return {Rational(p.x + t * u.x), Rational(p.y + t * u.y), Rational(p.z + t * u.z)};
-}
 
 // The exact square root of a non-negative rational, when it is rational.
 std::optional<Rational> rational_sqrt(const Rational& x) {
@@ -95,7 +88,7 @@ Candidates candidates(const ConvexSet3& F, const internal::MaxVolumeCandidates& 
     const Rational C = p.x * p.y * u.z + p.x * u.y * p.z + u.x * p.y * p.z;
     const Rational a = 3 * A, b = 2 * B, c = C;
     auto consider = [&](const Rational& t) {
-      if (sgn(t) > 0 && t < 1) rational.push_back(along(p, u, t));
+      if (sgn(t) > 0 && t < 1) rational.push_back(add(p, scale(u, t)));
     };
     if (sgn(a) == 0) {
       if (sgn(b) != 0) consider(Rational(-c / b));
@@ -127,7 +120,7 @@ MapEstimate3 edge_root_estimate(const EdgeRoot& e, mpfr_prec_t bits) {
     out.error_bound = std::max(out.error_bound, bound);
     out.enclosure[k] = {lo, hi};
   }
-  out.edge_root = MapEstimate3::EdgeRoot{e.p, along(e.p, e.u, 1), e.a, e.b,
+  out.edge_root = MapEstimate3::EdgeRoot{e.p, add(e.p, e.u), e.a, e.b,
                                           Rational((e.b * e.b - e.disc) / (4 * e.a)), e.sign};
   return out;
 }
