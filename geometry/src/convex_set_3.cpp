@@ -32,8 +32,8 @@ std::optional<std::vector<std::size_t>> facets_left_by_filter(const ConvexSet3& 
   std::vector<std::size_t> unsure;
   for (std::size_t k = 0; k < s.faces.size(); ++k) {
     const Enclosure d = side(enclosed_facet_plane(e, s.faces[k]), q);
-    if (d.positive()) return std::nullopt;
-    if (!d.negative()) unsure.push_back(k);
+    if (certainly_positive(d)) return std::nullopt;
+    if (!certainly_negative(d)) unsure.push_back(k);
   }
   return unsure;
 }

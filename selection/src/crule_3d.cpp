@@ -24,7 +24,7 @@ std::vector<std::size_t> worst_case_contenders(const ConvexSet3& F, const Point3
     nonzero.push_back(i);
     const Enclosure3 ev = enclose_point(v);
     const Enclosure mv = gmcc::dot(em, ev), vv = gmcc::dot(ev, ev);
-    minus_cos2.push_back(vv.positive() ? -(mv * mv / vv) : Enclosure{0, Enclosure::unbounded});
+    minus_cos2.push_back(certainly_positive(vv) ? -(mv * mv / vv) : Enclosure{0, Enclosure::unbounded});
   }
   std::vector<std::size_t> out;
   for (std::size_t k : internal::may_be_largest(minus_cos2)) out.push_back(nonzero[k]);

@@ -106,6 +106,18 @@ bool beyond_doubles(const Interval& x) {
 
 bool bounded(const Interval& x) { return !mpfi_nan_p(x.get()) && mpfi_bounded_p(x.get()); }
 
+numerics::UncertainSign sign(const Interval& x) {
+  if (mpfi_nan_p(x.get())) return numerics::UncertainSign::indeterminate();  // mpfr_sgn(NaN) is 0
+  const int l = mpfr_sgn(&x.get()->left), h = mpfr_sgn(&x.get()->right);
+  return {l, h};  // the ends' signs: every point's sign lies between them
+}
+
+numerics::UncertainSign compare(const Interval& x, const Rational& q) {
+  return sign(x - Interval(q, x.precision()));
+}
+
+numerics::UncertainSign compare(const Interval& x, const Interval& y) { return sign(x - y); }
+
 bool tight(const Interval& x, int bits) {
   if (!bounded(x)) return false;
   const mpfr_prec_t p = x.precision();

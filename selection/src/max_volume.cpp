@@ -47,17 +47,6 @@ struct EdgeRoot {
   }
 };
 
-int compare_with(const Interval& x, const Rational& q);
-bool interval_lt(const Interval& x, const Interval& y) {  // every point of x < every point of y
-  return compare_with(y - x, 0) > 0;
-}
-int compare_with(const Interval& x, const Rational& q) {  // −1: x < q surely, +1: x > q, 0: unsure
-  const Interval d = x - Interval(q, x.precision());
-  if (mpfr_sgn(&d.get()->left) > 0) return 1;
-  if (mpfr_sgn(&d.get()->right) < 0) return -1;
-  return 0;
-}
-
 // The candidates for the maximum of d1·d2·d3 on F among `which`: rational ones (vertices, facet
 // stationary points, rational edge roots) and the edges' irrational roots.
 struct Candidates {
@@ -164,9 +153,9 @@ std::optional<Seen> face_candidate(const std::vector<E3>& e, const std::vector<s
   const Seen unplaced{Slot::face, index, 0, hull_bound(e, f), Known::bound_only};
   const Enclosure* c[4] = {&h.n[0], &h.n[1], &h.n[2], &h.k};
   for (const Enclosure* x : c)
-    if (x->uncertain_sign()) return unplaced;
+    if (!certainly_nonzero(*x)) return unplaced;
   for (int k = 0; k < 3; ++k)
-    if (c[k]->positive() != h.k.positive()) return std::nullopt;
+    if (certainly_positive(*c[k]) != certainly_positive(h.k)) return std::nullopt;
   const Enclosure three = Enclosure::exact(3);
   point = {h.k / (three * h.n[0]), h.k / (three * h.n[1]), h.k / (three * h.n[2])};
   const Enclosure value = product(point);
@@ -180,8 +169,8 @@ int placed(const std::vector<EnclosedPlane>& planes, std::size_t self, const E3&
   for (std::size_t g = 0; g < planes.size(); ++g) {
     if (g == self) continue;
     const Enclosure s = side(planes[g], d);
-    if (s.positive()) return -1;
-    if (!s.negative()) unsure = 1;
+    if (certainly_positive(s)) return -1;
+    if (!certainly_negative(s)) unsure = 1;
   }
   return unsure;
 }
@@ -197,17 +186,17 @@ std::vector<Seen> edge_candidates(const std::vector<E3>& e, std::size_t index, s
   const Enclosure c = p[0] * p[1] * u[2] + p[0] * u[1] * p[2] + u[0] * p[1] * p[2];
   const Enclosure disc = b * b - four * a * c;
   const std::vector<Seen> unplaced{{Slot::edge, index, 0, hull_bound(e, std::array<std::size_t, 2>{i, j}), Known::bound_only}};
-  if (a.uncertain_sign() || !disc.finite()) return unplaced;
-  if (disc.negative()) return {};  // no real root
-  if (!disc.positive()) return unplaced;
+  if (!certainly_nonzero(a) || !disc.finite()) return unplaced;
+  if (certainly_negative(disc)) return {};  // no real root
+  if (!certainly_positive(disc)) return unplaced;
   std::vector<Seen> out;
   const Enclosure root = sqrt(disc), one = Enclosure::exact(1);
   for (const Enclosure& t : {(-b + root) / (two * a), (-b - root) / (two * a)}) {
-    if (!t.finite() || t.uncertain_sign()) return unplaced;  // t at 0 unsure
-    if (t.negative()) continue;
+    if (!t.finite() || !certainly_nonzero(t)) return unplaced;  // t at 0 unsure
+    if (certainly_negative(t)) continue;
     const Enclosure beyond = t - one;
-    if (beyond.positive()) continue;
-    if (!beyond.negative()) return unplaced;  // t at 1 unsure
+    if (certainly_positive(beyond)) continue;
+    if (!certainly_negative(beyond)) return unplaced;  // t at 1 unsure
     const Enclosure value = product({p[0] + t * u[0], p[1] + t * u[1], p[2] + t * u[2]});
     if (!value.finite()) return unplaced;
     out.push_back({Slot::edge, index, value.lo(), value.hi(), Known::in_f3});
@@ -326,8 +315,9 @@ MapEstimate3 max_volume_over(const ConvexSet3& F, const MaxVolumeCandidates& whi
     bool unsure = false;
     for (const EdgeRoot& e : irrational) {
       const Interval t = e.t(bits);
-      if (compare_with(t, 0) > 0 && compare_with(t, 1) < 0) inside.push_back(e);
-      else if (compare_with(t, 0) == 0 || compare_with(t, 1) == 0) unsure = true, inside.push_back(e);
+      const numerics::UncertainSign above_0 = compare(t, 0), above_1 = compare(t, 1);
+      if (certainly_positive(above_0) && certainly_negative(above_1)) inside.push_back(e);
+      else if (!certainly_nonzero(above_0) || !certainly_nonzero(above_1)) unsure = true, inside.push_back(e);
     }
     if (unsure) continue;
     irrational = std::move(inside);
@@ -339,14 +329,14 @@ MapEstimate3 max_volume_over(const ConvexSet3& F, const MaxVolumeCandidates& whi
     }
     // Rational winner: every irrational value surely below best_value.
     bool all_below = true;
-    for (const Interval& x : value) all_below = all_below && compare_with(x, best_value) < 0;
+    for (const Interval& x : value) all_below = all_below && certainly_negative(compare(x, best_value));
     if (all_below) break;
     // Irrational winner: above best_value and above every other irrational candidate.
     for (std::size_t i = 0; i < value.size(); ++i) {
-      if (compare_with(value[i], best_value) <= 0) continue;
+      if (!certainly_positive(compare(value[i], best_value))) continue;
       bool wins = true;
       for (std::size_t j = 0; j < value.size() && wins; ++j)
-        wins = j == i || interval_lt(value[j], value[i]);
+        wins = j == i || certainly_positive(compare(value[i], value[j]));
       if (!wins) continue;
       return edge_root_estimate(irrational[i], bits);
     }

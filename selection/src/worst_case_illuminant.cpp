@@ -60,7 +60,7 @@ bool no_stationary_point(const std::array<Enclosure, 3>& e, const std::array<Enc
     vv = vv + v[j] * v[j], vdv = vdv + v[j] * dv[j];
   }
   const Enclosure s = edv * vv - ev * vdv;
-  return s.finite() && !s.uncertain_sign();
+  return s.finite() && certainly_nonzero(s);
 }
 
 // True when every point of the edge is certainly less close (a larger angle's opposite: a larger
