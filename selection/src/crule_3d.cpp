@@ -1,10 +1,10 @@
 #include <gmcc/geometry/enclosure.h>
+#include <gmcc/numerics/may_be_largest.h>
 #include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/selection/crule_3d.h>
 #include <gmcc/selection/max_volume.h>
 
 #include "internal/angle.h"
-#include "internal/may_be_largest.h"
 
 #include <cstddef>
 #include <stdexcept>
@@ -27,7 +27,7 @@ std::vector<std::size_t> worst_case_contenders(const ConvexSet3& F, const Point3
     minus_cos2.push_back(certainly_positive(vv) ? -(mv * mv / vv) : Enclosure{0, Enclosure::unbounded});
   }
   std::vector<std::size_t> out;
-  for (std::size_t k : internal::may_be_largest(minus_cos2)) out.push_back(nonzero[k]);
+  for (std::size_t k : numerics::may_be_largest(minus_cos2)) out.push_back(nonzero[k]);
   return out;
 }
 
