@@ -5,6 +5,7 @@
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/geometry/integers_over_lcm.h>
+#include <gmcc/numerics/rational_to_float.h>
 
 #include "internal/crule_exact.h"
 #include "internal/polytope_clip.h"
@@ -100,7 +101,7 @@ std::vector<std::size_t> hull_candidate_indices(const std::vector<std::array<dou
   for (std::size_t i = 0; i < n; ++i) {
     bool inside = !facets.empty();
     for (int k = 0; k < 3 && inside; ++k)  // magnitudes where the relative bound below holds
-      inside = d[i][k] == 0 || (d[i][k] >= 0x1p-500 && d[i][k] <= 0x1p500);
+      inside = numerics::in_double_range(d[i][k]);
     for (std::size_t j = 0; j < facets.size() && inside; ++j) {
       // s = a·p - b; inputs within 2u each, a 4-term dot product: |s~ - s| <= 8.1u·T.
       const std::array<double, 4>& f = facets[j];

@@ -2,7 +2,9 @@
 #include "internal/polytope_clip.h"
 
 #include <gmcc/geometry/integers_over_lcm.h>
+#include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/numerics/internal_check.h>
+#include <gmcc/numerics/rational_to_float.h>
 
 #include <algorithm>
 #include <array>
@@ -48,7 +50,8 @@ std::array<mpz_class, 4> integer_point(const Point3& p) {
 }
 
 // p·2^-e (e the largest binary exponent of p's channels) truncated to doubles (mpq_get_d:
-// relative error below 2u), and 2^-e; not usable outside [2^-400, 2^400].
+// relative error below 2u), and 2^-e; not usable outside the double range policy
+// (numerics/rational_to_float.h).
 struct ScaledPoint {
   double c[3];
   double scale = 0;
@@ -56,11 +59,11 @@ struct ScaledPoint {
 };
 ScaledPoint scaled_point(const Point3& p) {
   ScaledPoint s;
-  const double d[3] = {mpq_get_d(p.x.get_mpq_t()), mpq_get_d(p.y.get_mpq_t()), mpq_get_d(p.z.get_mpq_t())};
-  double top = 0;
-  for (double x : d) {
-    if (x != 0 && (std::fabs(x) < 0x1p-400 || std::fabs(x) > 0x1p400)) return s;
-    top = std::max(top, std::fabs(x));
+  double d[3], top = 0;
+  for (int k = 0; k < 3; ++k) {
+    const std::optional<double> x = numerics::certified_double(coord(p, k).get_mpq_t());
+    if (!x) return s;
+    d[k] = *x, top = std::max(top, std::fabs(*x));
   }
   if (top == 0) return s;
   int e;

@@ -15,8 +15,10 @@ namespace {
 // a second stage for thin feasible sets. T is its number type, u its unit roundoff; every pad is
 // a multiple of u.
 
-// An exact rational as an enclosure. Doubles: enclose_rational (enclosure.h; an unbounded
-// enclosure outside [2^-138, 2^138], which no result accepts). Extended: numerator and denominator's top 64 bits and a division (internal::enclose_ld).
+// An exact rational as an enclosure, under the range policy of numerics/rational_to_float.h.
+// Doubles: enclose_rational (enclosure.h; an unbounded enclosure outside the policy, which no
+// result accepts). Extended: numerator and denominator's top 64 bits and a division
+// (internal::enclose_ld, from numerics::certified_extended).
 template <class E>
 E enclose(const Rational& q);
 template <>
