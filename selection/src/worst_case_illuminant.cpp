@@ -34,12 +34,14 @@ using internal::trim;
 // canonical gamut, docs/performance.md "Many-vertex canonical gamuts (issue 13)") cost
 // floating-point operations per vertex and edge instead of exact polynomial algebra.
 
-// The cos²-closeness (e·w)²/|w|² of a vertex, w = c ⊘ x, enclosed.
-Enclosure closeness_enclosure(const std::array<Enclosure, 3>& e, const std::array<Enclosure, 3>& c,
-                              const Enclosure& x, const Enclosure& y) {
-  const Enclosure w0 = c[0] / x, w1 = c[1] / y;
-  const Enclosure ew = e[0] * w0 + e[1] * w1 + e[2] * c[2];
-  return ew * ew / (w0 * w0 + w1 * w1 + c[2] * c[2]);
+// The cos²-closeness (e·w)²/|w|² of the map (x, y), w = c ⊘ (x, y, 1), in the number kind T:
+// exactly in ℚ (the exact route's comparisons), or enclosed (the filters). Written once, so the
+// filters enclose exactly what the exact route compares.
+template <class T>
+T closeness_of(const std::array<T, 3>& e, const std::array<T, 3>& c, const T& x, const T& y) {
+  const T w0 = c[0] / x, w1 = c[1] / y;
+  const T ew = e[0] * w0 + e[1] * w1 + e[2] * c[2];
+  return T(ew * ew / (w0 * w0 + w1 * w1 + c[2] * c[2]));
 }
 
 // True when the edge polynomial (e·v′)|v|² − (e·v)(v·v′) certainly has no zero for t in [0, 1]:
@@ -76,7 +78,7 @@ bool edge_cannot_be_worst(const std::array<Enclosure, 3>& e, const std::array<En
   const Enclosure a = Enclosure::between(std::min(px.lo(), qx.lo()), std::max(px.hi(), qx.hi()));
   const Enclosure b = Enclosure::between(std::min(py.lo(), qy.lo()), std::max(py.hi(), qy.hi()));
   if (!(a.lo() > 0) || !(b.lo() > 0)) return false;
-  const Enclosure k = closeness_enclosure(e, c, a, b);
+  const Enclosure k = closeness_of(e, c, a, b);
   return k.finite() && k.lo() > least_upper;
 }
 
@@ -257,7 +259,7 @@ Survivors filter_candidates(const ConvexSet2& F, const Point2& m, const Colour& 
     ve.resize(vs.size());
     for (std::size_t i = 0; i < vs.size(); ++i) {
       ve[i] = {enclose_rational(vs[i].x), enclose_rational(vs[i].y)};
-      const Enclosure k = closeness_enclosure(ee, ce, ve[i][0], ve[i][1]);
+      const Enclosure k = closeness_of(ee, ce, ve[i][0], ve[i][1]);
       if (!k.finite()) continue;
       lower[i] = k.lo();
       least_upper = std::min(least_upper, k.hi());
@@ -298,11 +300,8 @@ IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const P
   const std::array<Rational, 3> e{Rational(c.r / m.x), Rational(c.g / m.y), c.b};
   // In integers: a positive common factor, which changes no sign and no root.
   const std::vector<mpz_class> e_int = integers_over_lcm(e);
-  auto closeness = [&](const Point2& x) {
-    const Rational w0 = c.r / x.x, w1 = c.g / x.y;
-    const Rational ew = e[0] * w0 + e[1] * w1 + e[2] * c.b;
-    return Rational(ew * ew / (w0 * w0 + w1 * w1 + c.b * c.b));
-  };
+  const std::array<Rational, 3> c_q{c.r, c.g, c.b};
+  auto closeness = [&](const Point2& x) { return closeness_of(e, c_q, x.x, x.y); };
   const auto& vs = F.vertices;
   const Survivors survivors = filter_candidates(F, m, c, e, filtered, certified);
   const std::vector<std::size_t>& candidates = survivors.vertices;
