@@ -12,6 +12,15 @@
 namespace gmcc {
 namespace {
 
+// (m·v)²/|v|², which is cos²∠(m, v) times |m|², for v ≠ 0, in the kind of P: Point3 in ℚ (the
+// exact comparisons) or Enclosure3 (the filter). Written once, so the filter encloses exactly
+// what the exact stage compares.
+template <class P>
+auto cos2_times_m2(const P& m, const P& v) {
+  const auto mv = dot(m, v);
+  return decltype(mv)(mv * mv / dot(v, v));
+}
+
 // The filter of worst_case_map_deg_3d: the non-zero vertices whose cos² to m (as −(m·v)²/|v|²,
 // cos² times −|m|², in double enclosures) may be the least, in vertex order.
 std::vector<std::size_t> worst_case_contenders(const ConvexSet3& F, const Point3& m) {
@@ -23,8 +32,7 @@ std::vector<std::size_t> worst_case_contenders(const ConvexSet3& F, const Point3
     if (is_zero(v)) continue;
     nonzero.push_back(i);
     const Enclosure3 ev = enclose_point(v);
-    const Enclosure mv = gmcc::dot(em, ev), vv = gmcc::dot(ev, ev);
-    minus_cos2.push_back(certainly_positive(vv) ? -(mv * mv / vv) : Enclosure{0, Enclosure::unbounded});
+    minus_cos2.push_back(certainly_positive(dot(ev, ev)) ? -cos2_times_m2(em, ev) : Enclosure{0, Enclosure::unbounded});
   }
   std::vector<std::size_t> out;
   for (std::size_t k : numerics::may_be_largest(minus_cos2)) out.push_back(nonzero[k]);
@@ -49,18 +57,15 @@ double diagonal_map_angular_error_deg(const Point3& u, const Point3& v) {
 }
 
 double worst_case_map_deg_3d(const ConvexSet3& F, const Point3& m) {
-  // Largest angle = smallest cos² = (m·v)²/(|m|²|v|²); m·v >= 0 on the octant, so compare
-  // (m·v)²·|w|² against (m·w)²·|v|² exactly, among the filter's contenders (in vertex order, so
-  // that ties go to the first vertex as over all of them).
+  // Largest angle = smallest cos² = (m·v)²/(|m|²|v|²) (m·v >= 0 on the octant), compared exactly
+  // among the filter's contenders (in vertex order, so that ties go to the first vertex as over
+  // all of them).
   const Point3* worst = nullptr;
+  Rational worst_cos2;
   for (std::size_t i : worst_case_contenders(F, m)) {
     const Point3& v = F.vertices[i];
-    if (!worst) {
-      worst = &v;
-      continue;
-    }
-    const Rational dv = dot(m, v), dw = dot(m, *worst);
-    if (dv * dv * dot(*worst, *worst) < dw * dw * dot(v, v)) worst = &v;
+    Rational cos2 = cos2_times_m2(m, v);
+    if (!worst || cos2 < worst_cos2) worst = &v, worst_cos2 = std::move(cos2);
   }
   if (!worst || is_zero(m)) throw std::invalid_argument("worst_case_map_deg_3d: no direction");
   return diagonal_map_angular_error_deg(m, *worst);
