@@ -18,11 +18,12 @@
 
 using namespace gmcc;
 using gmcc::numerics::UncertainSign;
-using gmcc::test::Rng;
-using gmcc::test::random_rational;
 
 namespace {
+using gmcc::test::random_rational;
+using gmcc::test::Rng;
 
+// The kinds, each with of(q): q enclosed.
 struct DoubleKind {
   static Enclosure of(const Rational& q) { return enclose_rational(q); }
 };
