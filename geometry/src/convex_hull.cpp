@@ -41,8 +41,8 @@ struct Approx {
 int turn(const Point2& a, const Point2& b, const Point2& c, const Approx& ea, const Approx& eb, const Approx& ec) {
   const Enclosure d = (eb.x - ea.x) * (ec.y - ea.y) - (eb.y - ea.y) * (ec.x - ea.x);
   if (d.finite()) {
-    if (d.positive()) return 1;
-    if (d.negative()) return -1;
+    if (certainly_positive(d)) return 1;
+    if (certainly_negative(d)) return -1;
   }
   return sgn(orientation(a, b, c));
 }

@@ -1,4 +1,5 @@
 #include <gmcc/geometry/convex_set.h>
+#include <gmcc/geometry/integers_over_lcm.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -24,13 +25,10 @@ struct ScaledVertices {
 };
 ScaledVertices scaled(const std::vector<Point2>& v) {
   ScaledVertices s;
+  for (const Point2& p : v) include_denominator(s.d, p.x), include_denominator(s.d, p.y);
   for (const Point2& p : v) {
-    mpz_lcm(s.d.get_mpz_t(), s.d.get_mpz_t(), p.x.get_den_mpz_t());
-    mpz_lcm(s.d.get_mpz_t(), s.d.get_mpz_t(), p.y.get_den_mpz_t());
-  }
-  for (const Point2& p : v) {
-    s.x.push_back(p.x.get_num() * (s.d / p.x.get_den()));
-    s.y.push_back(p.y.get_num() * (s.d / p.y.get_den()));
+    s.x.push_back(times_lcm(p.x, s.d));
+    s.y.push_back(times_lcm(p.y, s.d));
   }
   return s;
 }
@@ -100,9 +98,8 @@ bool contains(const ConvexSet2& set, const Point2& p) {
     case ConvexKind::polygon: {
       // Orientation tests with p scaled by the same denominator as the vertices: integers only.
       const ScaledVertices s = scaled(v);
-      mpz_class pd;
-      mpz_lcm(pd.get_mpz_t(), p.x.get_den_mpz_t(), p.y.get_den_mpz_t());
-      const mpz_class px = p.x.get_num() * (pd / p.x.get_den()), py = p.y.get_num() * (pd / p.y.get_den());
+      const mpz_class pd = lcm_of_denominators_of(p.x, p.y);
+      const mpz_class px = times_lcm(p.x, pd), py = times_lcm(p.y, pd);
       // p = (px/pd, py/pd): orientation(v_i, v_j, p)·d²·pd = (xj−xi)(py·d − yi·pd) − (yj−yi)(px·d − xi·pd)
       const mpz_class pxd = px * s.d, pyd = py * s.d;
       for (std::size_t i = 0; i < v.size(); ++i) {

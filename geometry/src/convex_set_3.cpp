@@ -1,9 +1,8 @@
 #include <gmcc/geometry/convex_set_3.h>
 
 #include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/geometry/polytope_moments.h>
-
-#include "internal/vector3.h"
 
 #include <algorithm>
 #include <array>
@@ -12,9 +11,6 @@
 #include <stdexcept>
 
 namespace gmcc {
-using internal::cross;
-using internal::dot;
-using internal::sub;
 namespace {
 // The vertices as coordinate arrays, for polytope_moments.
 std::vector<std::array<Rational, 3>> rational_points(const ConvexSet3& s) {
@@ -36,8 +32,8 @@ std::optional<std::vector<std::size_t>> facets_left_by_filter(const ConvexSet3& 
   std::vector<std::size_t> unsure;
   for (std::size_t k = 0; k < s.faces.size(); ++k) {
     const Enclosure d = side(enclosed_facet_plane(e, s.faces[k]), q);
-    if (d.positive()) return std::nullopt;
-    if (!d.negative()) unsure.push_back(k);
+    if (certainly_positive(d)) return std::nullopt;
+    if (!certainly_negative(d)) unsure.push_back(k);
   }
   return unsure;
 }

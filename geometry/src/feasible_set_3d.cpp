@@ -4,12 +4,12 @@
 #include <gmcc/geometry/convex_hull.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
+#include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/numerics/internal_check.h>
 
 #include "internal/crule_exact.h"
 #include "internal/half_plane.h"
 #include "internal/linear_program.h"
-#include "internal/vector3.h"
 
 #include <CGAL/Convex_hull_3/dual/halfspace_intersection_3.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -36,12 +36,7 @@ bool operator<(const HalfSpace3& h, const HalfSpace3& g) {
 bool operator==(const HalfSpace3& h, const HalfSpace3& g) { return h.a == g.a && h.b == g.b; }
 }  // namespace internal
 namespace {
-using internal::coord;
-using internal::cross;
-using internal::dot;
-using internal::is_zero;
 using internal::sorted_unique;
-using internal::sub;
 using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 using KPoint3 = Kernel::Point_3;
 static_assert(std::is_same<Kernel::FT::Exact_type, mpq_class>::value,
@@ -51,7 +46,7 @@ using HalfSpace = internal::HalfSpace3;
 HalfSpace normalised(Point3 a, Rational b) {
   const Rational& first = sgn(a.x) != 0 ? a.x : sgn(a.y) != 0 ? a.y : a.z;
   const Rational s = 1 / abs(first);
-  return {internal::scale(a, s), Rational(b * s)};
+  return {scale(a, s), Rational(b * s)};
 }
 void dedupe(std::vector<HalfSpace>& h) {
   std::sort(h.begin(), h.end());
@@ -99,7 +94,7 @@ std::vector<HalfSpace> hull_half_spaces(const std::vector<Point3>& pts) {
   std::vector<HalfSpace> out;
   auto both_ways = [&out](const Point3& a, const Rational& b) {
     out.push_back(normalised(a, b));
-    out.push_back(normalised(internal::scale(a, -1), Rational(-b)));
+    out.push_back(normalised(scale(a, -1), Rational(-b)));
   };
   if (f.size() == 1) {
     for (int k = 0; k < 3; ++k) both_ways(axis(k), coord(f[0], k));
@@ -114,11 +109,11 @@ std::vector<HalfSpace> hull_half_spaces(const std::vector<Point3>& pts) {
     Rational lo = dot(u, pts[0]), hi = lo;
     for (const Point3& p : pts) lo = std::min(lo, dot(u, p)), hi = std::max(hi, dot(u, p));
     out.push_back(normalised(u, hi));
-    out.push_back(normalised(internal::scale(u, -1), Rational(-lo)));
+    out.push_back(normalised(scale(u, -1), Rational(-lo)));
   } else if (f.size() == 3) {
     const Point3 n = cross(sub(f[1], f[0]), sub(f[2], f[0]));
     both_ways(n, dot(n, f[0]));
-    const int k = internal::largest_coordinate(n);
+    const int k = largest_coordinate(n);
     std::vector<Point2> flat;
     for (const Point3& p : pts) flat.push_back(drop(p, k));
     const int i = k == 0 ? 1 : 0, j = k == 2 ? 1 : 2;
@@ -128,8 +123,8 @@ std::vector<HalfSpace> hull_half_spaces(const std::vector<Point3>& pts) {
       out.push_back(normalised(a, h.c));
     }
   } else {
-    Point3 inside = internal::add(internal::add(f[0], f[1]), internal::add(f[2], f[3]));
-    inside = internal::scale(inside, Rational(1, 4));
+    Point3 inside = add(add(f[0], f[1]), add(f[2], f[3]));
+    inside = scale(inside, Rational(1, 4));
     const CGAL::Polyhedron_3<Kernel> poly = hull_3(pts);
     for (auto fc = poly.facets_begin(); fc != poly.facets_end(); ++fc) {
       auto h = fc->halfedge();
@@ -138,7 +133,7 @@ std::vector<HalfSpace> hull_half_spaces(const std::vector<Point3>& pts) {
       const Point3 r = exact_point(h->next()->next()->vertex()->point());
       Point3 n = cross(sub(q, p), sub(r, p));
       Rational b = dot(n, p);
-      if (dot(n, inside) > b) n = internal::scale(n, -1), b = -b;
+      if (dot(n, inside) > b) n = scale(n, -1), b = -b;
       out.push_back(normalised(n, b));
     }
   }
@@ -173,7 +168,7 @@ std::vector<std::vector<std::size_t>> facets(const std::vector<Point3>& v,
     for (std::size_t i = 0; i < v.size(); ++i)
       if (dot(h.a, v[i]) == h.b) on.push_back(i);
     if (on.size() < 3) continue;
-    const int k = internal::largest_coordinate(h.a);
+    const int k = largest_coordinate(h.a);
     std::vector<Point2> flat;
     for (std::size_t i : on) flat.push_back(drop(v[i], k));
     std::vector<std::size_t> cycle;
@@ -219,13 +214,13 @@ std::optional<Rows> crule_rows(const std::vector<HalfSpace>& canonical, const Po
   Rows out;
   for (const HalfSpace& h : canonical)
     for (const Point3& p : image) {
-      const Point3 a = internal::hadamard(h.a, p);
+      const Point3 a = hadamard(h.a, p);
       if (!is_zero(a)) out.rows.push_back(normalised(a, h.b));
       else if (sgn(h.b) < 0) return std::nullopt;
     }
   for (int k = 0; k < 3; ++k) {
     coord(out.box_max, k) = coord(X, k) / coord(P, k);
-    out.rows.push_back(normalised(internal::scale(axis(k), -1), 0));
+    out.rows.push_back(normalised(scale(axis(k), -1), 0));
     out.rows.push_back(normalised(axis(k), coord(out.box_max, k)));
   }
   dedupe(out.rows);
@@ -312,7 +307,7 @@ ConvexSet3 segment_of(const std::vector<HalfSpace>& rows, const AffineHull& f) {
   GMCC_CHECK(lo && hi, "feasible_set_3d: the box bounds a segment F3");
   return canonical_convex_set_3(
       ConvexKind3::segment,
-      {internal::add(f.inner, internal::scale(u, *lo)), internal::add(f.inner, internal::scale(u, *hi))}, {});
+      {add(f.inner, scale(u, *lo)), add(f.inner, scale(u, *hi))}, {});
 }
 
 // F3 in a plane n·d = c (rank 1): d_k written through the other two coordinates and the box
@@ -320,7 +315,7 @@ ConvexSet3 segment_of(const std::vector<HalfSpace>& rows, const AffineHull& f) {
 ConvexSet3 polygon_of(const std::vector<HalfSpace>& rows, const AffineHull& f, const Point3& box_max) {
   const Point3 n = f.basis[0];
   const Rational c = dot(n, f.inner);
-  const int k = internal::largest_coordinate(n), i = k == 0 ? 1 : 0, j = k == 2 ? 1 : 2;
+  const int k = largest_coordinate(n), i = k == 0 ? 1 : 0, j = k == 2 ? 1 : 2;
   const Rational& nk = coord(n, k);
   std::vector<Point2> cycle{{0, 0}, {coord(box_max, i), 0}, {coord(box_max, i), coord(box_max, j)}, {0, coord(box_max, j)}};
   for (std::size_t r = 0; r < rows.size() && !cycle.empty(); ++r) {

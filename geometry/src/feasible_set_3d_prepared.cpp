@@ -4,6 +4,8 @@
 #include <gmcc/geometry/colour_hull_3.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
+#include <gmcc/geometry/integers_over_lcm.h>
+#include <gmcc/numerics/rational_to_float.h>
 
 #include "internal/crule_exact.h"
 #include "internal/polytope_clip.h"
@@ -45,20 +47,11 @@ namespace {
 
 // (a·L, b·L) with L the lcm of the denominators of a and b: the same half-space, integers.
 IntegerPlane3 integer_plane(const HalfSpace3& h) {
-  mpz_class l;
-  mpz_lcm(l.get_mpz_t(), h.a.x.get_den_mpz_t(), h.a.y.get_den_mpz_t());
-  mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), h.a.z.get_den_mpz_t());
-  mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), h.b.get_den_mpz_t());
-  auto times = [&l](const Rational& q) { return mpz_class(q.get_num() * (l / q.get_den())); };
-  IntegerPlane3 p{{times(h.a.x), times(h.a.y), times(h.a.z)}, times(h.b)};
+  const mpz_class l = lcm_of_denominators_of(h.a.x, h.a.y, h.a.z, h.b);
+  IntegerPlane3 p{{times_lcm(h.a.x, l), times_lcm(h.a.y, l), times_lcm(h.a.z, l)}, times_lcm(h.b, l)};
   // Divided by the coefficients' gcd (once per gamut): every row and vertex built from it is
   // smaller.
-  mpz_class g;
-  mpz_gcd(g.get_mpz_t(), p.a[0].get_mpz_t(), p.a[1].get_mpz_t());
-  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), p.a[2].get_mpz_t());
-  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), p.b.get_mpz_t());
-  if (g > 1)
-    for (mpz_class* z : {&p.a[0], &p.a[1], &p.a[2], &p.b}) mpz_divexact(z->get_mpz_t(), z->get_mpz_t(), g.get_mpz_t());
+  divide_by_content_of(p.a[0], p.a[1], p.a[2], p.b);
   return p;
 }
 
@@ -108,7 +101,7 @@ std::vector<std::size_t> hull_candidate_indices(const std::vector<std::array<dou
   for (std::size_t i = 0; i < n; ++i) {
     bool inside = !facets.empty();
     for (int k = 0; k < 3 && inside; ++k)  // magnitudes where the relative bound below holds
-      inside = d[i][k] == 0 || (d[i][k] >= 0x1p-500 && d[i][k] <= 0x1p500);
+      inside = numerics::in_double_range(d[i][k]);
     for (std::size_t j = 0; j < facets.size() && inside; ++j) {
       // s = a·p - b; inputs within 2u each, a 4-term dot product: |s~ - s| <= 8.1u·T.
       const std::array<double, 4>& f = facets[j];

@@ -3,6 +3,8 @@
 // "The exact LP"). A CGAL translation unit of its own, used by feasible_set_3d and min_violation.
 #include "internal/linear_program.h"
 
+#include <gmcc/geometry/integers_over_lcm.h>
+
 #include <CGAL/Gmpz.h>
 #include <CGAL/QP_functions.h>
 #include <CGAL/QP_models.h>
@@ -18,12 +20,11 @@ CGAL::Gmpz to_gmpz(const mpz_class& z) { return CGAL::Gmpz(z.get_mpz_t()); }
 
 // The integer row k·(a, b) for k the lcm of the denominators: same half-space, integer data.
 std::vector<mpz_class> integer_row(const std::vector<Rational>& a, const Rational* b) {
-  mpz_class l = 1;
-  for (const Rational& x : a) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x.get_den_mpz_t());
-  if (b) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), b->get_den_mpz_t());
+  mpz_class l = lcm_of_denominators(a);
+  if (b) include_denominator(l, *b);
   std::vector<mpz_class> out;
-  for (const Rational& x : a) out.push_back(mpz_class(x.get_num() * (l / x.get_den())));
-  if (b) out.push_back(mpz_class(b->get_num() * (l / b->get_den())));
+  for (const Rational& x : a) out.push_back(times_lcm(x, l));
+  if (b) out.push_back(times_lcm(*b, l));
   return out;
 }
 }  // namespace

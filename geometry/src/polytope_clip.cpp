@@ -1,7 +1,10 @@
 // A box clipped by integer half-spaces with filtered exact predicates (docs/derivations.md §4.6).
 #include "internal/polytope_clip.h"
 
+#include <gmcc/geometry/integers_over_lcm.h>
+#include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/numerics/internal_check.h>
+#include <gmcc/numerics/rational_to_float.h>
 
 #include <algorithm>
 #include <array>
@@ -42,15 +45,13 @@ Filter filter_of(const IntegerPlane3& p) {
 
 // p·L with L > 0 the lcm of p's denominators: (p·L, L), integers.
 std::array<mpz_class, 4> integer_point(const Point3& p) {
-  mpz_class l;
-  mpz_lcm(l.get_mpz_t(), p.x.get_den_mpz_t(), p.y.get_den_mpz_t());
-  mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), p.z.get_den_mpz_t());
-  return {mpz_class(p.x.get_num() * (l / p.x.get_den())), mpz_class(p.y.get_num() * (l / p.y.get_den())),
-          mpz_class(p.z.get_num() * (l / p.z.get_den())), l};
+  const mpz_class l = lcm_of_denominators_of(p.x, p.y, p.z);
+  return {times_lcm(p.x, l), times_lcm(p.y, l), times_lcm(p.z, l), l};
 }
 
 // p·2^-e (e the largest binary exponent of p's channels) truncated to doubles (mpq_get_d:
-// relative error below 2u), and 2^-e; not usable outside [2^-400, 2^400].
+// relative error below 2u), and 2^-e; not usable outside the double range policy
+// (numerics/rational_to_float.h).
 struct ScaledPoint {
   double c[3];
   double scale = 0;
@@ -58,11 +59,11 @@ struct ScaledPoint {
 };
 ScaledPoint scaled_point(const Point3& p) {
   ScaledPoint s;
-  const double d[3] = {mpq_get_d(p.x.get_mpq_t()), mpq_get_d(p.y.get_mpq_t()), mpq_get_d(p.z.get_mpq_t())};
-  double top = 0;
-  for (double x : d) {
-    if (x != 0 && (std::fabs(x) < 0x1p-400 || std::fabs(x) > 0x1p400)) return s;
-    top = std::max(top, std::fabs(x));
+  double d[3], top = 0;
+  for (int k = 0; k < 3; ++k) {
+    const std::optional<double> x = numerics::certified_double(coord(p, k).get_mpq_t());
+    if (!x) return s;
+    d[k] = *x, top = std::max(top, std::fabs(*x));
   }
   if (top == 0) return s;
   int e;

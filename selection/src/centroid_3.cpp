@@ -26,7 +26,7 @@ std::optional<MapEstimate3> certified_centroid_filtered(const ConvexSet3& F) {
   for (const Point3& p : F.vertices) v.push_back(enclose_point(p));
   const PolytopeMoments<Enclosure> m = polytope_moments(v, F.faces, true);
   const Enclosure& w_sum = m.six_volume;
-  if (!w_sum.positive()) return std::nullopt;
+  if (!certainly_positive(w_sum)) return std::nullopt;
   MapEstimate3 e;
   e.rule = "centroid";
   e.method = "certified";

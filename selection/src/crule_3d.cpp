@@ -1,17 +1,25 @@
 #include <gmcc/geometry/enclosure.h>
+#include <gmcc/numerics/may_be_largest.h>
+#include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/selection/crule_3d.h>
 #include <gmcc/selection/max_volume.h>
 
 #include "internal/angle.h"
-#include "internal/may_be_largest.h"
 
 #include <cstddef>
 #include <stdexcept>
 
 namespace gmcc {
 namespace {
-Rational dot(const Point3& a, const Point3& b) { return Rational(a.x * b.x + a.y * b.y + a.z * b.z); }
-bool is_zero(const Point3& a) { return sgn(a.x) == 0 && sgn(a.y) == 0 && sgn(a.z) == 0; }
+
+// (m·v)²/|v|², which is cos²∠(m, v) times |m|², for v ≠ 0, in the kind of P: Point3 in ℚ (the
+// exact comparisons) or Enclosure3 (the filter). Written once, so the filter encloses exactly
+// what the exact stage compares.
+template <class P>
+auto cos2_times_m2(const P& m, const P& v) {
+  const auto mv = dot(m, v);
+  return decltype(mv)(mv * mv / dot(v, v));
+}
 
 // The filter of worst_case_map_deg_3d: the non-zero vertices whose cos² to m (as −(m·v)²/|v|²,
 // cos² times −|m|², in double enclosures) may be the least, in vertex order.
@@ -24,11 +32,10 @@ std::vector<std::size_t> worst_case_contenders(const ConvexSet3& F, const Point3
     if (is_zero(v)) continue;
     nonzero.push_back(i);
     const Enclosure3 ev = enclose_point(v);
-    const Enclosure mv = gmcc::dot(em, ev), vv = gmcc::dot(ev, ev);
-    minus_cos2.push_back(vv.positive() ? -(mv * mv / vv) : Enclosure{0, Enclosure::unbounded});
+    minus_cos2.push_back(certainly_positive(dot(ev, ev)) ? -cos2_times_m2(em, ev) : Enclosure{0, Enclosure::unbounded});
   }
   std::vector<std::size_t> out;
-  for (std::size_t k : internal::may_be_largest(minus_cos2)) out.push_back(nonzero[k]);
+  for (std::size_t k : numerics::may_be_largest(minus_cos2)) out.push_back(nonzero[k]);
   return out;
 }
 
@@ -50,18 +57,15 @@ double diagonal_map_angular_error_deg(const Point3& u, const Point3& v) {
 }
 
 double worst_case_map_deg_3d(const ConvexSet3& F, const Point3& m) {
-  // Largest angle = smallest cos² = (m·v)²/(|m|²|v|²); m·v >= 0 on the octant, so compare
-  // (m·v)²·|w|² against (m·w)²·|v|² exactly, among the filter's contenders (in vertex order, so
-  // that ties go to the first vertex as over all of them).
+  // Largest angle = smallest cos² = (m·v)²/(|m|²|v|²) (m·v >= 0 on the octant), compared exactly
+  // among the filter's contenders (in vertex order, so that ties go to the first vertex as over
+  // all of them).
   const Point3* worst = nullptr;
+  Rational worst_cos2;
   for (std::size_t i : worst_case_contenders(F, m)) {
     const Point3& v = F.vertices[i];
-    if (!worst) {
-      worst = &v;
-      continue;
-    }
-    const Rational dv = dot(m, v), dw = dot(m, *worst);
-    if (dv * dv * dot(*worst, *worst) < dw * dw * dot(v, v)) worst = &v;
+    Rational cos2 = cos2_times_m2(m, v);
+    if (!worst || cos2 < worst_cos2) worst = &v, worst_cos2 = std::move(cos2);
   }
   if (!worst || is_zero(m)) throw std::invalid_argument("worst_case_map_deg_3d: no direction");
   return diagonal_map_angular_error_deg(m, *worst);

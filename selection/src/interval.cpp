@@ -106,6 +106,18 @@ bool beyond_doubles(const Interval& x) {
 
 bool bounded(const Interval& x) { return !mpfi_nan_p(x.get()) && mpfi_bounded_p(x.get()); }
 
+numerics::UncertainSign sign(const Interval& x) {
+  if (mpfi_nan_p(x.get())) return numerics::UncertainSign::indeterminate();  // mpfr_sgn(NaN) is 0
+  const int l = mpfr_sgn(&x.get()->left), h = mpfr_sgn(&x.get()->right);
+  return {l, h};  // the ends' signs: every point's sign lies between them
+}
+
+numerics::UncertainSign compare(const Interval& x, const Rational& q) {
+  return sign(x - Interval(q, x.precision()));
+}
+
+numerics::UncertainSign compare(const Interval& x, const Interval& y) { return sign(x - y); }
+
 bool tight(const Interval& x, int bits) {
   if (!bounded(x)) return false;
   const mpfr_prec_t p = x.precision();
@@ -121,27 +133,23 @@ bool tight(const Interval& x, int bits) {
 
 #include "internal/ld_interval.h"
 
-#include <gmcc/numerics/top_bits.h>
+#include <gmcc/numerics/rational_to_float.h>
+
+#include <limits>
+#include <optional>
 
 namespace gmcc::internal {
-namespace {
-// |z| ≈ t·2^e with t < 2^64 holding the top 64 bits (truncated), as an exact long double.
-long double top_bits(mpz_srcptr z, long& e) {
-  const numerics::TopBits t = numerics::top_bits(z);
-  e = t.shift;
-  return static_cast<long double>(t.mantissa);
-}
-}  // namespace
 
 LDInterval enclose_ld(mpz_srcptr num, mpz_srcptr den) {
   if (mpz_sgn(num) == 0) return {0, 0};
-  long en, ed;
-  const long double n = top_bits(num, en), d = top_bits(den, ed);
-  const long double ratio = mpz_sgn(num) > 0 ? n / d : -(n / d);
-  const long double v = en == ed ? ratio : std::ldexp(ratio, static_cast<int>(en - ed));
+  const std::optional<long double> v = numerics::certified_extended(num, den);
+  if (!v) {  // outside the range policy (numerics/rational_to_float.h): the whole line
+    const long double inf = std::numeric_limits<long double>::infinity();
+    return {-inf, inf};
+  }
   // One-limb numerator and denominator are exact: only the division rounds (2^-64).
   const bool exact_parts = mpz_size(num) <= 1 && mpz_size(den) <= 1;
-  return LDInterval::around(v, v, exact_parts ? LDInterval::push : 0x1p-60L);
+  return LDInterval::around(*v, *v, exact_parts ? LDInterval::push : 0x1p-60L);
 }
 
 LDInterval enclose_ld(const Rational& q) { return enclose_ld(q.get_num_mpz_t(), q.get_den_mpz_t()); }

@@ -17,7 +17,7 @@ namespace {
 // f(t) = (p1 + t·Δa)(p2 + t·Δb) lies inside the edge iff f′(0) = Δa·p2 + Δb·p1 > 0 > f′(1) =
 // Δa·q2 + Δb·q1, and f(t*) = p1·p2 − f′(0)²/(4·Δa·Δb). `Kind` gives N's values: x(i), y(i), dx(i, j),
 // dy(i, j) (the coordinate differences, from the exact values), constant(int), and
-// sign(N) → std::optional<int> (nothing: not decided in N; Rational always decides).
+// sign(N) → numerics::UncertainSign (the family's one decision type; Rational always decides).
 template <class Kind>
 struct VertexCandidates {
   using Number = typename Kind::Number;
@@ -28,9 +28,9 @@ struct VertexCandidates {
     if (cmp(v[j].x, v[i].x) * cmp(v[j].y, v[i].y) >= 0) return std::optional<Number>{};  // an end
     const Number da = k.dx(i, j), db = k.dy(i, j);
     const Number d0 = da * k.y(i) + db * k.x(i), d1 = da * k.y(j) + db * k.x(j);
-    const std::optional<int> s0 = Kind::sign(d0), s1 = Kind::sign(d1);
-    if (!s0 || !s1) return std::nullopt;
-    if (!(*s0 > 0 && *s1 < 0)) return std::optional<Number>{};
+    const numerics::UncertainSign s0 = Kind::sign(d0), s1 = Kind::sign(d1);
+    if (!s0.is_certain() || !s1.is_certain()) return std::nullopt;
+    if (!(numerics::certainly_positive(s0) && numerics::certainly_negative(s1))) return std::optional<Number>{};
     return std::optional<Number>{Number(k.x(i) * k.y(i) - d0 * d0 / (Kind::constant(4) * (da * db)))};
   }
 };
@@ -62,7 +62,7 @@ struct ExactKind {
   Rational dx(std::size_t i, std::size_t j) const { return v[j].x - v[i].x; }
   Rational dy(std::size_t i, std::size_t j) const { return v[j].y - v[i].y; }
   static Rational constant(int c) { return c; }
-  static std::optional<int> sign(const Rational& q) { return sgn(q); }
+  static numerics::UncertainSign sign(const Rational& q) { return numerics::UncertainSign::certain(sgn(q)); }
 };
 
 // F's coordinates as x87 intervals, differences enclosed from their exact values (integer
@@ -84,11 +84,7 @@ struct ExtendedKind {
   LDInterval dx(std::size_t i, std::size_t j) const { return difference(v[j].x, v[i].x); }
   LDInterval dy(std::size_t i, std::size_t j) const { return difference(v[j].y, v[i].y); }
   static LDInterval constant(int c) { return {static_cast<long double>(c), static_cast<long double>(c)}; }
-  static std::optional<int> sign(const LDInterval& a) {
-    if (numerics::certainly_positive(a)) return 1;
-    if (numerics::certainly_negative(a)) return -1;
-    return std::nullopt;
-  }
+  static numerics::UncertainSign sign(const LDInterval& a) { return numerics::sign(a); }
 };
 
 StageCounts& counts() {

@@ -1,7 +1,7 @@
 #include <gmcc/geometry/enclosure.h>
+#include <gmcc/numerics/may_be_largest.h>
 #include <gmcc/selection/max_trace.h>
 
-#include "internal/may_be_largest.h"
 
 #include <cstddef>
 #include <stdexcept>
@@ -14,7 +14,7 @@ std::vector<std::size_t> contenders(const ConvexSet3& F) {
   std::vector<Enclosure> trace;
   for (const Point3& v : F.vertices)
     trace.push_back(enclose_rational(v.x) + enclose_rational(v.y) + enclose_rational(v.z));
-  return internal::may_be_largest(trace);
+  return numerics::may_be_largest(trace);
 }
 }  // namespace
 

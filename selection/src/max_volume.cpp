@@ -1,4 +1,5 @@
 #include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/numerics/internal_check.h>
 #include <gmcc/selection/max_volume.h>
 
@@ -15,15 +16,7 @@ namespace gmcc {
 namespace {
 using internal::Interval;
 
-Point3 sub(const Point3& a, const Point3& b) { return {Rational(a.x - b.x), Rational(a.y - b.y), Rational(a.z - b.z)}; }
-Point3 cross(const Point3& a, const Point3& b) {
-  return {Rational(a.y * b.z - a.z * b.y), Rational(a.z * b.x - a.x * b.z), Rational(a.x * b.y - a.y * b.x)};
-}
-Rational dot(const Point3& a, const Point3& b) { return Rational(a.x * b.x + a.y * b.y + a.z * b.z); }
 Rational product(const Point3& d) { return Rational(d.x * d.y * d.z); }
-Point3 along(const Point3& p, const Point3& u, const Rational& t) {
-  return {Rational(p.x + t * u.x), Rational(p.y + t * u.y), Rational(p.z + t * u.z)};
-}
 
 // The exact square root of a non-negative rational, when it is rational.
 std::optional<Rational> rational_sqrt(const Rational& x) {
@@ -53,17 +46,6 @@ struct EdgeRoot {
             Interval(p.z, bits) + tt * u.z};
   }
 };
-
-int compare_with(const Interval& x, const Rational& q);
-bool interval_lt(const Interval& x, const Interval& y) {  // every point of x < every point of y
-  return compare_with(y - x, 0) > 0;
-}
-int compare_with(const Interval& x, const Rational& q) {  // −1: x < q surely, +1: x > q, 0: unsure
-  const Interval d = x - Interval(q, x.precision());
-  if (mpfr_sgn(&d.get()->left) > 0) return 1;
-  if (mpfr_sgn(&d.get()->right) < 0) return -1;
-  return 0;
-}
 
 // The candidates for the maximum of d1·d2·d3 on F among `which`: rational ones (vertices, facet
 // stationary points, rational edge roots) and the edges' irrational roots.
@@ -95,7 +77,7 @@ Candidates candidates(const ConvexSet3& F, const internal::MaxVolumeCandidates& 
     const Rational C = p.x * p.y * u.z + p.x * u.y * p.z + u.x * p.y * p.z;
     const Rational a = 3 * A, b = 2 * B, c = C;
     auto consider = [&](const Rational& t) {
-      if (sgn(t) > 0 && t < 1) rational.push_back(along(p, u, t));
+      if (sgn(t) > 0 && t < 1) rational.push_back(add(p, scale(u, t)));
     };
     if (sgn(a) == 0) {
       if (sgn(b) != 0) consider(Rational(-c / b));
@@ -127,7 +109,7 @@ MapEstimate3 edge_root_estimate(const EdgeRoot& e, mpfr_prec_t bits) {
     out.error_bound = std::max(out.error_bound, bound);
     out.enclosure[k] = {lo, hi};
   }
-  out.edge_root = MapEstimate3::EdgeRoot{e.p, along(e.p, e.u, 1), e.a, e.b,
+  out.edge_root = MapEstimate3::EdgeRoot{e.p, add(e.p, e.u), e.a, e.b,
                                           Rational((e.b * e.b - e.disc) / (4 * e.a)), e.sign};
   return out;
 }
@@ -171,9 +153,9 @@ std::optional<Seen> face_candidate(const std::vector<E3>& e, const std::vector<s
   const Seen unplaced{Slot::face, index, 0, hull_bound(e, f), Known::bound_only};
   const Enclosure* c[4] = {&h.n[0], &h.n[1], &h.n[2], &h.k};
   for (const Enclosure* x : c)
-    if (x->uncertain_sign()) return unplaced;
+    if (!certainly_nonzero(*x)) return unplaced;
   for (int k = 0; k < 3; ++k)
-    if (c[k]->positive() != h.k.positive()) return std::nullopt;
+    if (certainly_positive(*c[k]) != certainly_positive(h.k)) return std::nullopt;
   const Enclosure three = Enclosure::exact(3);
   point = {h.k / (three * h.n[0]), h.k / (three * h.n[1]), h.k / (three * h.n[2])};
   const Enclosure value = product(point);
@@ -187,8 +169,8 @@ int placed(const std::vector<EnclosedPlane>& planes, std::size_t self, const E3&
   for (std::size_t g = 0; g < planes.size(); ++g) {
     if (g == self) continue;
     const Enclosure s = side(planes[g], d);
-    if (s.positive()) return -1;
-    if (!s.negative()) unsure = 1;
+    if (certainly_positive(s)) return -1;
+    if (!certainly_negative(s)) unsure = 1;
   }
   return unsure;
 }
@@ -204,17 +186,17 @@ std::vector<Seen> edge_candidates(const std::vector<E3>& e, std::size_t index, s
   const Enclosure c = p[0] * p[1] * u[2] + p[0] * u[1] * p[2] + u[0] * p[1] * p[2];
   const Enclosure disc = b * b - four * a * c;
   const std::vector<Seen> unplaced{{Slot::edge, index, 0, hull_bound(e, std::array<std::size_t, 2>{i, j}), Known::bound_only}};
-  if (a.uncertain_sign() || !disc.finite()) return unplaced;
-  if (disc.negative()) return {};  // no real root
-  if (!disc.positive()) return unplaced;
+  if (!certainly_nonzero(a) || !disc.finite()) return unplaced;
+  if (certainly_negative(disc)) return {};  // no real root
+  if (!certainly_positive(disc)) return unplaced;
   std::vector<Seen> out;
   const Enclosure root = sqrt(disc), one = Enclosure::exact(1);
   for (const Enclosure& t : {(-b + root) / (two * a), (-b - root) / (two * a)}) {
-    if (!t.finite() || t.uncertain_sign()) return unplaced;  // t at 0 unsure
-    if (t.negative()) continue;
+    if (!t.finite() || !certainly_nonzero(t)) return unplaced;  // t at 0 unsure
+    if (certainly_negative(t)) continue;
     const Enclosure beyond = t - one;
-    if (beyond.positive()) continue;
-    if (!beyond.negative()) return unplaced;  // t at 1 unsure
+    if (certainly_positive(beyond)) continue;
+    if (!certainly_negative(beyond)) return unplaced;  // t at 1 unsure
     const Enclosure value = product({p[0] + t * u[0], p[1] + t * u[1], p[2] + t * u[2]});
     if (!value.finite()) return unplaced;
     out.push_back({Slot::edge, index, value.lo(), value.hi(), Known::in_f3});
@@ -333,8 +315,9 @@ MapEstimate3 max_volume_over(const ConvexSet3& F, const MaxVolumeCandidates& whi
     bool unsure = false;
     for (const EdgeRoot& e : irrational) {
       const Interval t = e.t(bits);
-      if (compare_with(t, 0) > 0 && compare_with(t, 1) < 0) inside.push_back(e);
-      else if (compare_with(t, 0) == 0 || compare_with(t, 1) == 0) unsure = true, inside.push_back(e);
+      const numerics::UncertainSign above_0 = compare(t, 0), above_1 = compare(t, 1);
+      if (certainly_positive(above_0) && certainly_negative(above_1)) inside.push_back(e);
+      else if (!certainly_nonzero(above_0) || !certainly_nonzero(above_1)) unsure = true, inside.push_back(e);
     }
     if (unsure) continue;
     irrational = std::move(inside);
@@ -346,14 +329,14 @@ MapEstimate3 max_volume_over(const ConvexSet3& F, const MaxVolumeCandidates& whi
     }
     // Rational winner: every irrational value surely below best_value.
     bool all_below = true;
-    for (const Interval& x : value) all_below = all_below && compare_with(x, best_value) < 0;
+    for (const Interval& x : value) all_below = all_below && certainly_negative(compare(x, best_value));
     if (all_below) break;
     // Irrational winner: above best_value and above every other irrational candidate.
     for (std::size_t i = 0; i < value.size(); ++i) {
-      if (compare_with(value[i], best_value) <= 0) continue;
+      if (!certainly_positive(compare(value[i], best_value))) continue;
       bool wins = true;
       for (std::size_t j = 0; j < value.size() && wins; ++j)
-        wins = j == i || interval_lt(value[j], value[i]);
+        wins = j == i || certainly_positive(compare(value[i], value[j]));
       if (!wins) continue;
       return edge_root_estimate(irrational[i], bits);
     }

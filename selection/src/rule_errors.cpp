@@ -15,8 +15,10 @@ namespace {
 // a second stage for thin feasible sets. T is its number type, u its unit roundoff; every pad is
 // a multiple of u.
 
-// An exact rational as an enclosure. Doubles: enclose_rational (enclosure.h; an unbounded
-// enclosure outside [2^-138, 2^138], which no result accepts). Extended: numerator and denominator's top 64 bits and a division (internal::enclose_ld).
+// An exact rational as an enclosure, under the range policy of numerics/rational_to_float.h.
+// Doubles: enclose_rational (enclosure.h; an unbounded enclosure outside the policy, which no
+// result accepts). Extended: numerator and denominator's top 64 bits and a division
+// (internal::enclose_ld, from numerics::certified_extended).
 template <class E>
 E enclose(const Rational& q);
 template <>
@@ -56,8 +58,8 @@ struct EdgeLineCandidates {
     const auto s = point(i);
     if (!s) return std::optional<E>{};
     const E to_p = (*s)[0] - v[i].x, to_q = (*s)[0] - v[j].x;  // strictly inside iff opposite signs
-    if (to_p.uncertain_sign() || to_q.uncertain_sign()) return std::nullopt;
-    if (to_p.positive() == to_q.positive()) return std::optional<E>{};
+    if (!certainly_nonzero(to_p) || !certainly_nonzero(to_q)) return std::nullopt;
+    if (certainly_positive(to_p) == certainly_positive(to_q)) return std::optional<E>{};
     return std::optional<E>{(*s)[2]};
   }
 };
@@ -86,7 +88,7 @@ std::optional<std::array<E, 2>> centroid(const std::vector<V>& v) {
     const E w = ax * by - ay * bx;
     w_sum = w_sum + w, x_sum = x_sum + w * (ax + bx), y_sum = y_sum + w * (ay + by);
   }
-  if (!w_sum.positive()) return std::nullopt;
+  if (!certainly_positive(w_sum)) return std::nullopt;
   const E den = E::exact(3) * w_sum;
   return std::array<E, 2>{v[0].x + x_sum / den, v[0].y + y_sum / den};
 }
@@ -125,7 +127,7 @@ std::optional<std::array<RuleErrors, 3>> stage(const std::vector<V>& v, const st
   for (std::size_t r = 0; r < 3; ++r) {
     if (!maps[r]) return std::nullopt;
     const E m1 = (*maps[r])[0], m2 = (*maps[r])[1];
-    if (!in_range(m1) || !in_range(m2) || m1.uncertain_sign() || m2.uncertain_sign()) return std::nullopt;
+    if (!in_range(m1) || !in_range(m2) || !certainly_nonzero(m1) || !certainly_nonzero(m2)) return std::nullopt;
     const std::array<E, 3> lifted{m1, m2, one};
     const E error = internal::enclosed_angle_deg<E>(lifted, {t1, t2, one});
     // Worst case: every vertex at an acute angle to the map (u·v > 0), so the maximum is at a
@@ -136,7 +138,7 @@ std::optional<std::array<RuleErrors, 3>> stage(const std::vector<V>& v, const st
     T least_hi = E::unbounded;
     for (const V& p : v) {
       const E dot = m1 * p.x + m2 * p.y + one;
-      if (!dot.positive()) return std::nullopt;
+      if (!certainly_positive(dot)) return std::nullopt;
       keys.push_back(dot * dot / (p.x * p.x + p.y * p.y + one));
       least_hi = std::min(least_hi, keys.back().hi());
     }
@@ -152,7 +154,7 @@ std::optional<std::array<RuleErrors, 3>> stage(const std::vector<V>& v, const st
     e.map_error_deg = static_cast<double>(error.mid);
     e.worst_case_deg = static_cast<double>(worst.mid);
     e.map = {static_cast<double>(m1.mid), static_cast<double>(m2.mid)};
-    e.positive_map = m1.positive() && m2.positive();
+    e.positive_map = certainly_positive(m1) && certainly_positive(m2);
     if (e.positive_map) {  // e = c ⊘ (m, 1); the reproduction error compares d_est ⊘ d_true with white
       const E illuminant = internal::enclosed_angle_deg<E>({cr / m1, cg / m2, cb}, {cr / t1, cg / t2, cb});
       const E reproduction = internal::enclosed_angle_deg<E>({m1 / t1, m2 / t2, one}, {one, one, one});

@@ -1,5 +1,6 @@
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/worst_case.h>
+#include <gmcc/numerics/may_be_largest.h>
 
 #include "internal/angle.h"
 #include "internal/ld_interval.h"
@@ -58,16 +59,11 @@ double worst_case_map_deg(const ConvexSet2& F, const Point2& m) {
   std::vector<internal::LDInterval> enclosures;
   enclosures.reserve(candidates.size());
   const internal::LDInterval mx = internal::enclose_ld(m.x), my = internal::enclose_ld(m.y);
-  long double best_lo = 0;
-  for (const Point2& v : candidates) {
+  for (const Point2& v : candidates)
     enclosures.push_back(internal::angle_deg_enclosure(
         {mx, my, {1, 1}}, {internal::enclose_ld(v.x), internal::enclose_ld(v.y), {1, 1}}));
-    best_lo = std::max(best_lo, enclosures.back().lo);
-  }
-  const long double threshold = best_lo * (1 - 0x1p-40L);
-  for (std::size_t i = 0; i < candidates.size(); ++i)
-    if (enclosures[i].hi >= threshold)
-      worst = std::max(worst, internal::angle_deg(lifted_m, lifted(candidates[i])));
+  for (std::size_t i : numerics::may_be_largest(enclosures, 0x1p-40))
+    worst = std::max(worst, internal::angle_deg(lifted_m, lifted(candidates[i])));
   return worst;
 }
 

@@ -1,8 +1,10 @@
 #include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/integers_over_lcm.h>
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/worst_case_illuminant.h>
 #include <gmcc/numerics/internal_check.h>
 
+#include "internal/integer_polynomial.h"
 #include "internal/interval.h"
 #include "internal/worst_case_illuminant_route.h"
 
@@ -16,229 +18,30 @@
 namespace gmcc {
 namespace {
 
-// A polynomial over ℤ in the edge parameter t: coefficients, constant term first, no trailing
-// zeros (the zero polynomial is empty). Degrees here are at most 5, so plain loops suffice.
-// Integer coefficients throughout: over ℚ every operation reduces a fraction by a gcd, and
-// Euclid's remainders grow numerators and denominators at every step; on feasible sets with
-// long exact vertices (inputs of 50 digits and more) that cost seconds to minutes per edge.
-using Poly = std::vector<mpz_class>;
-
-void trim(Poly& p) {
-  while (!p.empty() && sgn(p.back()) == 0) p.pop_back();
-}
-
-Poly add(Poly a, const Poly& b) {
-  if (a.size() < b.size()) a.resize(b.size());
-  for (std::size_t i = 0; i < b.size(); ++i) a[i] += b[i];
-  trim(a);
-  return a;
-}
-
-Poly sub(Poly a, const Poly& b) {
-  if (a.size() < b.size()) a.resize(b.size());
-  for (std::size_t i = 0; i < b.size(); ++i) a[i] -= b[i];
-  trim(a);
-  return a;
-}
-
-Poly scaled(Poly a, const mpz_class& k) {
-  for (mpz_class& x : a) x *= k;
-  trim(a);
-  return a;
-}
-
-Poly mul(const Poly& a, const Poly& b) {
-  if (a.empty() || b.empty()) return {};
-  Poly r(a.size() + b.size() - 1);
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = 0; j < b.size(); ++j) r[i + j] += a[i] * b[j];
-  trim(r);
-  return r;
-}
-
-Poly derivative(const Poly& p) {
-  Poly d;
-  for (std::size_t i = 1; i < p.size(); ++i) d.push_back(p[i] * static_cast<unsigned long>(i));
-  trim(d);
-  return d;
-}
-
-// True when p ≠ 0 certainly has no root in the open interval (0, 1): the coefficients of
-// (1 + u)^d · p(1/(1 + u)), d = deg p, have no sign variation. t = 1/(1 + u) maps u ∈ (0, ∞) onto
-// t ∈ (0, 1), and by Descartes' rule of signs a polynomial has at most as many positive roots
-// (with multiplicity) as sign variations in its coefficients (Basu, Pollack & Roy, "Algorithms in
-// Real Algebraic Geometry", Thm 2.33). A Taylor shift of degree ≤ 4: additions only, O(d²) of
-// them, against the Sturm sequence's multiplications of ever longer numbers.
-bool no_root_in_open_unit_interval(const Poly& p) {
-  Poly r(p.rbegin(), p.rend());  // t^d · p(1/t)
-  const std::size_t d = r.size() - 1;
-  for (std::size_t i = 0; i < d; ++i)  // r(x) → r(x + 1)
-    for (std::size_t j = d; j-- > i;) r[j] += r[j + 1];
-  int last = 0;
-  for (const mpz_class& c : r) {
-    const int sc = sgn(c);
-    if (sc == 0) continue;
-    if (last != 0 && sc != last) return false;
-    last = sc;
-  }
-  return true;
-}
-
-// The rationals xs times the lcm of their denominators: integers in the same proportions
-// (a positive common factor, which changes no sign and no root below).
-std::vector<mpz_class> common_integers(const std::vector<Rational>& xs) {
-  mpz_class den_lcm = 1;
-  for (const Rational& x : xs) mpz_lcm(den_lcm.get_mpz_t(), den_lcm.get_mpz_t(), x.get_den_mpz_t());
-  std::vector<mpz_class> out;
-  for (const Rational& x : xs) {
-    mpz_class k;
-    mpz_divexact(k.get_mpz_t(), den_lcm.get_mpz_t(), x.get_den_mpz_t());
-    out.push_back(x.get_num() * k);
-  }
-  return out;
-}
-
-// p divided by the gcd of its coefficients (> 0): the same signs everywhere.
-Poly primitive(Poly p) {
-  mpz_class content = 0;
-  for (const mpz_class& c : p) mpz_gcd(content.get_mpz_t(), content.get_mpz_t(), c.get_mpz_t());
-  if (content > 1)
-    for (mpz_class& c : p) mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), content.get_mpz_t());
-  return p;
-}
-
-// k·a mod b for some integer k > 0 (b ≠ 0): pseudo-division, each step scaling a by |lc(b)|
-// so that no division is needed; k > 0 keeps a Sturm sequence's signs.
-Poly pseudo_remainder(Poly a, const Poly& b) {
-  const mpz_class lb = abs(b.back());
-  const int sign_lb = sgn(b.back());
-  while (!a.empty() && a.size() >= b.size()) {
-    const std::size_t shift = a.size() - b.size();
-    const mpz_class la = sign_lb > 0 ? a.back() : mpz_class(-a.back());
-    for (mpz_class& c : a) c *= lb;
-    for (std::size_t i = 0; i < b.size(); ++i) a[i + shift] -= la * b[i];
-    a.pop_back();  // its coefficient is now exactly 0
-    trim(a);
-  }
-  return a;
-}
-
-// A gcd of a and b (up to a constant factor): primitive remainder sequence.
-Poly gcd(Poly a, Poly b) {
-  while (!b.empty()) {
-    Poly r = primitive(pseudo_remainder(a, b));
-    a = std::move(b);
-    b = std::move(r);
-  }
-  return a;
-}
-
-// a / b when b divides a in ℤ[t] (a primitive, b primitive: by Gauss's lemma the quotient then
-// has integer coefficients, so every step divides exactly).
-Poly exact_quotient(Poly a, const Poly& b) {
-  Poly q(a.size() - b.size() + 1);
-  for (std::size_t shift = q.size(); shift-- > 0;) {
-    mpz_class k;
-    mpz_divexact(k.get_mpz_t(), a[shift + b.size() - 1].get_mpz_t(), b.back().get_mpz_t());
-    for (std::size_t i = 0; i < b.size(); ++i) a[i + shift] -= k * b[i];
-    q[shift] = std::move(k);
-  }
-  return q;
-}
-
-// The sign of p at t = a/b (b > 0), from the homogeneous form Σ c_i a^i b^(d−i): integer
-// arithmetic only, no rational normalisation.
-int sign_at(const Poly& p, const Rational& t) {
-  if (p.empty()) return 0;
-  const mpz_class& a = t.get_num();
-  const mpz_class& b = t.get_den();
-  // Horner on the homogeneous form: r ← r·a + c_i·b^(d−i), from i = d − 1 down to 0.
-  mpz_class r = p.back(), b_power = 1;
-  for (std::size_t i = p.size() - 1; i-- > 0;) {
-    b_power *= b;
-    r = r * a + p[i] * b_power;
-  }
-  return sgn(r);
-}
-
-// Sign variations of a Sturm sequence at t, zeros skipped.
-int variations(const std::vector<Poly>& chain, const Rational& t) {
-  int count = 0, last = 0;
-  for (const Poly& p : chain) {
-    const int s = sign_at(p, t);
-    if (s == 0) continue;
-    if (last != 0 && s != last) ++count;
-    last = s;
-  }
-  return count;
-}
-
-// The distinct real roots of p ≠ 0 in (0, 1], each as an exact rational: the root itself when a
-// bisection point hits it, otherwise the right end of an interval (lo, hi] of width ≤ 2^-100
-// holding exactly one root. Sturm's theorem on the square-free part s = p / gcd(p, p′):
-// #roots in (lo, hi] = V(lo) − V(hi), also when lo or hi is a root (Basu, Pollack & Roy,
-// "Algorithms in Real Algebraic Geometry", Thm 2.50 and its proof).
-std::vector<Rational> roots_in_unit_interval(const Poly& p) {
-  const Poly pz = primitive(p);
-  const Poly s = primitive(exact_quotient(pz, primitive(gcd(pz, derivative(pz)))));
-  if (s.size() < 2) return {};
-  const Poly ds = primitive(derivative(s));
-  std::vector<Poly> chain{s, ds};
-  for (;;) {  // positive scalings keep a Sturm sequence's signs
-    Poly r = primitive(pseudo_remainder(chain[chain.size() - 2], chain.back()));
-    if (r.empty()) break;
-    for (mpz_class& c : r) c = -c;
-    chain.push_back(std::move(r));
-  }
-  const Rational width = Rational(1) >> 100;
-  struct Interval {
-    Rational lo, hi;
-    int v_lo, v_hi;
-  };
-  std::vector<Interval> todo{{Rational(0), Rational(1), variations(chain, Rational(0)),
-                              variations(chain, Rational(1))}};
-  std::vector<Rational> roots;
-  while (!todo.empty()) {
-    Interval iv = std::move(todo.back());
-    todo.pop_back();
-    const int count = iv.v_lo - iv.v_hi;
-    if (count == 0) continue;
-    if (count == 1) {
-      // One simple root in (lo, hi]: bisect on the sign of s alone. Just right of lo, s has
-      // the sign of s(lo), or of s′(lo) where lo is itself a (simple) root of s.
-      int sign_lo = sign_at(s, iv.lo);
-      if (sign_lo == 0) sign_lo = sign_at(ds, iv.lo);
-      while (iv.hi - iv.lo > width && sign_at(s, iv.hi) != 0) {
-        Rational mid = (iv.lo + iv.hi) / 2;
-        const int sign_mid = sign_at(s, mid);
-        if (sign_mid == 0) {
-          iv.hi = std::move(mid);
-          break;
-        }
-        (sign_mid == sign_lo ? iv.lo : iv.hi) = std::move(mid);
-      }
-      roots.push_back(iv.hi);
-      continue;
-    }
-    Rational mid = (iv.lo + iv.hi) / 2;
-    const int v_mid = variations(chain, mid);
-    todo.push_back({iv.lo, mid, iv.v_lo, v_mid});
-    todo.push_back({std::move(mid), iv.hi, v_mid, iv.v_hi});
-  }
-  return roots;
-}
+// The edge quartics' algebra: internal/integer_polynomial.h.
+using Poly = internal::IntegerPolynomial;
+using internal::add;
+using internal::derivative;
+using internal::mul;
+using internal::no_root_in_open_unit_interval;
+using internal::roots_in_unit_interval;
+using internal::scaled;
+using internal::sub;
+using internal::trim;
 
 // The filters below only skip work whose exact result is known not to matter, so the answer is
 // the exact route's, bit for bit; they make a feasible set of 10^5–10^6 vertices (a many-vertex
 // canonical gamut, docs/performance.md "Many-vertex canonical gamuts (issue 13)") cost
 // floating-point operations per vertex and edge instead of exact polynomial algebra.
 
-// The cos²-closeness (e·w)²/|w|² of a vertex, w = c ⊘ x, enclosed.
-Enclosure closeness_enclosure(const std::array<Enclosure, 3>& e, const std::array<Enclosure, 3>& c,
-                              const Enclosure& x, const Enclosure& y) {
-  const Enclosure w0 = c[0] / x, w1 = c[1] / y;
-  const Enclosure ew = e[0] * w0 + e[1] * w1 + e[2] * c[2];
-  return ew * ew / (w0 * w0 + w1 * w1 + c[2] * c[2]);
+// The cos²-closeness (e·w)²/|w|² of the map (x, y), w = c ⊘ (x, y, 1), in the number kind T:
+// exactly in ℚ (the exact route's comparisons), or enclosed (the filters). Written once, so the
+// filters enclose exactly what the exact route compares.
+template <class T>
+T closeness_of(const std::array<T, 3>& e, const std::array<T, 3>& c, const T& x, const T& y) {
+  const T w0 = c[0] / x, w1 = c[1] / y;
+  const T ew = e[0] * w0 + e[1] * w1 + e[2] * c[2];
+  return T(ew * ew / (w0 * w0 + w1 * w1 + c[2] * c[2]));
 }
 
 // True when the edge polynomial (e·v′)|v|² − (e·v)(v·v′) certainly has no zero for t in [0, 1]:
@@ -259,7 +62,7 @@ bool no_stationary_point(const std::array<Enclosure, 3>& e, const std::array<Enc
     vv = vv + v[j] * v[j], vdv = vdv + v[j] * dv[j];
   }
   const Enclosure s = edv * vv - ev * vdv;
-  return s.finite() && !s.uncertain_sign();
+  return s.finite() && certainly_nonzero(s);
 }
 
 // True when every point of the edge is certainly less close (a larger angle's opposite: a larger
@@ -275,7 +78,7 @@ bool edge_cannot_be_worst(const std::array<Enclosure, 3>& e, const std::array<En
   const Enclosure a = Enclosure::between(std::min(px.lo(), qx.lo()), std::max(px.hi(), qx.hi()));
   const Enclosure b = Enclosure::between(std::min(py.lo(), qy.lo()), std::max(py.hi(), qy.hi()));
   if (!(a.lo() > 0) || !(b.lo() > 0)) return false;
-  const Enclosure k = closeness_enclosure(e, c, a, b);
+  const Enclosure k = closeness_of(e, c, a, b);
   return k.finite() && k.lo() > least_upper;
 }
 
@@ -414,8 +217,8 @@ Poly stationary_polynomial(const Point2& p, const Rational& da, const Rational& 
   // v(t) = a·b · (c ⊘ (a, b, 1)) = (c1·b, c2·a, c3·a·b) with a = p.x + t·da, b = p.y + t·db,
   // scaled by a positive integer to integer coefficients (the angle's stationary points are
   // unchanged by positive scalings of v and of e).
-  const std::vector<mpz_class> k = common_integers(
-      {c.r * p.y, c.r * db, c.g * p.x, c.g * da, c.b * p.x * p.y,
+  const std::vector<mpz_class> k = integers_over_lcm(std::vector<Rational>{
+      c.r * p.y, c.r * db, c.g * p.x, c.g * da, c.b * p.x * p.y,
        c.b * (p.x * db + da * p.y), c.b * da * db});
   std::array<Poly, 3> v{Poly{k[0], k[1]}, Poly{k[2], k[3]}, Poly{k[4], k[5], k[6]}};
   for (Poly& vj : v) trim(vj);
@@ -456,7 +259,7 @@ Survivors filter_candidates(const ConvexSet2& F, const Point2& m, const Colour& 
     ve.resize(vs.size());
     for (std::size_t i = 0; i < vs.size(); ++i) {
       ve[i] = {enclose_rational(vs[i].x), enclose_rational(vs[i].y)};
-      const Enclosure k = closeness_enclosure(ee, ce, ve[i][0], ve[i][1]);
+      const Enclosure k = closeness_of(ee, ce, ve[i][0], ve[i][1]);
       if (!k.finite()) continue;
       lower[i] = k.lo();
       least_upper = std::min(least_upper, k.hi());
@@ -495,12 +298,10 @@ IlluminantWorstCase internal::worst_case_illuminant(const ConvexSet2& F, const P
   // e: the estimate's illuminant c ⊘ (m, 1). A candidate x implies the direction c ⊘ (x, 1); the
   // angle grows as cos²/|e|² = (e·w)²/|w|² falls, compared exactly (e·w > 0: all positive).
   const std::array<Rational, 3> e{Rational(c.r / m.x), Rational(c.g / m.y), c.b};
-  const std::vector<mpz_class> e_int = common_integers({e[0], e[1], e[2]});
-  auto closeness = [&](const Point2& x) {
-    const Rational w0 = c.r / x.x, w1 = c.g / x.y;
-    const Rational ew = e[0] * w0 + e[1] * w1 + e[2] * c.b;
-    return Rational(ew * ew / (w0 * w0 + w1 * w1 + c.b * c.b));
-  };
+  // In integers: a positive common factor, which changes no sign and no root.
+  const std::vector<mpz_class> e_int = integers_over_lcm(e);
+  const std::array<Rational, 3> c_q{c.r, c.g, c.b};
+  auto closeness = [&](const Point2& x) { return closeness_of(e, c_q, x.x, x.y); };
   const auto& vs = F.vertices;
   const Survivors survivors = filter_candidates(F, m, c, e, filtered, certified);
   const std::vector<std::size_t>& candidates = survivors.vertices;

@@ -3,6 +3,7 @@
 // with (docs/derivations.md §4.3, docs/math.md §1a′). Internal to gmcc::geometry.
 
 #include <gmcc/geometry/feasible_polygon.h>
+#include <gmcc/geometry/integers_over_lcm.h>
 
 #include "internal/half_plane.h"
 
@@ -32,15 +33,9 @@ constexpr double filter_min = 0x1p-300, filter_max = 0x1p300;
 inline bool in_filter_range(double x) { return x == 0 || (std::fabs(x) >= filter_min && std::fabs(x) <= filter_max); }
 
 inline Line integer_line(const internal::HalfPlane& h) {
-  mpz_class l;
-  mpz_lcm(l.get_mpz_t(), h.a.get_den_mpz_t(), h.b.get_den_mpz_t());
-  mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), h.c.get_den_mpz_t());
-  Line line{h.a.get_num() * (l / h.a.get_den()), h.b.get_num() * (l / h.b.get_den()),
-            h.c.get_num() * (l / h.c.get_den())};
-  mpz_class g;
-  mpz_gcd(g.get_mpz_t(), line.a.get_mpz_t(), line.b.get_mpz_t());
-  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), line.c.get_mpz_t());
-  if (g > 1) line.a /= g, line.b /= g, line.c /= g;
+  const mpz_class l = lcm_of_denominators_of(h.a, h.b, h.c);
+  Line line{times_lcm(h.a, l), times_lcm(h.b, l), times_lcm(h.c, l)};
+  divide_by_content_of(line.a, line.b, line.c);
   return line;
 }
 
@@ -74,9 +69,9 @@ struct HomogeneousPoint {
 };
 inline HomogeneousPoint homogeneous(const Point2& p) {
   HomogeneousPoint h;
-  mpz_lcm(h.w.get_mpz_t(), p.x.get_den_mpz_t(), p.y.get_den_mpz_t());
-  h.x = p.x.get_num() * (h.w / p.x.get_den());
-  h.y = p.y.get_num() * (h.w / p.y.get_den());
+  h.w = lcm_of_denominators_of(p.x, p.y);
+  h.x = times_lcm(p.x, h.w);
+  h.y = times_lcm(p.y, h.w);
   return h;
 }
 

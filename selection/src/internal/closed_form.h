@@ -129,12 +129,12 @@ std::optional<std::array<E, 2>> mean_3d_direction(const std::vector<V>& v) {
     T s_lo, s_hi;
     norm_bounds(c, s_lo, s_hi);
     const E d = p.x * q.x + p.y * q.y + E::exact(1);
-    if (!d.finite() || !d.positive() || !std::isfinite(s_hi)) return std::nullopt;
+    if (!d.finite() || !certainly_positive(d) || !std::isfinite(s_hi)) return std::nullopt;
     return TauTerm<E>{c, theta_over_s(s_lo, s_hi, d)};
   });
   if (!tau) return std::nullopt;
   const std::array<E, 3>& t = *tau;
-  if (!t[0].finite() || !t[1].finite() || !t[2].finite() || t[2].uncertain_sign()) return std::nullopt;
+  if (!t[0].finite() || !t[1].finite() || !t[2].finite() || !certainly_nonzero(t[2])) return std::nullopt;
   return tau_direction(t);
 }
 

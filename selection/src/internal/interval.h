@@ -3,6 +3,7 @@
 // Internal to gmcc::selection.
 
 #include <gmcc/geometry/rational.h>
+#include <gmcc/numerics/uncertain_sign.h>
 
 #include <mpfi.h>
 
@@ -104,6 +105,23 @@ bool beyond_doubles(const Interval& x);
 
 /// True when neither end is infinite or NaN.
 bool bounded(const Interval& x);
+
+/// \name The enclosure family's questions (numerics/enclosure.h), for MPFI
+///@{
+/// The signs x allows: certain when both ends are on one side of zero (or both zero);
+/// indeterminate when x holds zero and more, or is NaN.
+numerics::UncertainSign sign(const Interval& x);
+/// The sign of x − q, x's precision: certain when every point of x is above q, below q, or q.
+numerics::UncertainSign compare(const Interval& x, const Rational& q);
+/// The sign of x − y: certain when every point of x is above (or below) every point of y.
+numerics::UncertainSign compare(const Interval& x, const Interval& y);
+/// Every point of x is > 0.
+inline bool certainly_positive(const Interval& x) { return numerics::certainly_positive(sign(x)); }
+/// Every point of x is < 0.
+inline bool certainly_negative(const Interval& x) { return numerics::certainly_negative(sign(x)); }
+/// Every point of x is ≠ 0.
+inline bool certainly_nonzero(const Interval& x) { return numerics::certainly_nonzero(sign(x)); }
+///@}
 
 /// True when the interval is bounded and its width is at most 2^-bits times its magnitude (or
 /// it is a point). An unbounded interval is never tight: its width and magnitude are both

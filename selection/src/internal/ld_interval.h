@@ -15,9 +15,10 @@ using numerics::LDInterval;
 // numerics::extended_precision_active() says so, asked at each use (numerics/platform.h), and
 // take MPFI elsewhere.
 
-/// An enclosure of an exact rational, from the top 64 bits of numerator and denominator
-/// (each truncated: relative error < 2^-63; exact when they fit in 64 bits) and one division:
-/// relative error < 2^-61 (2^-64 when both parts fit).
+/// An enclosure of an exact rational, from numerics::certified_extended: the top 64 bits of
+/// numerator and denominator (each truncated: relative error < 2^-63; exact when they fit in 64
+/// bits) and one division: relative error < 2^-61 (2^-64 when both parts fit). The whole line
+/// outside the range policy of numerics/rational_to_float.h (beyond 2^±16000).
 LDInterval enclose_ld(const Rational& q);
 
 /// The same for num/den given as integers (den > 0, not necessarily coprime): an enclosure of

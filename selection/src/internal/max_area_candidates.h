@@ -7,6 +7,7 @@
 // Internal to gmcc::selection.
 
 #include <gmcc/numerics/enclosure.h>
+#include <gmcc/numerics/may_be_largest.h>
 
 #include <cstddef>
 #include <optional>
@@ -42,19 +43,15 @@ auto area_candidates(std::size_t n, std::size_t edges, const Kind& k)
 }
 
 /// The position of the candidate whose enclosure (a kind of numerics/enclosure.h) lies strictly
-/// above every other's: the first largest lower end, kept only when every other upper end is
-/// below it; nothing on a near-tie, which only a finer kind can settle.
+/// above every other's: the one candidate that may be the largest (numerics/may_be_largest.h:
+/// the largest lower end, every other upper end below it); nothing on a near-tie, which only a
+/// finer kind can settle, or when a NaN touched another candidate.
 template <class N>
 std::optional<std::size_t> unique_maximum(const std::vector<AreaCandidate<N>>& c) {
-  using numerics::lower;
-  using numerics::upper;
-  std::size_t best = 0;
-  for (std::size_t k = 1; k < c.size(); ++k)
-    if (lower(c[k].value) > lower(c[best].value)) best = k;
-  const auto floor = lower(c[best].value);  // in N's own type: rounding it could raise it
-  for (std::size_t k = 0; k < c.size(); ++k)
-    if (k != best && upper(c[k].value) >= floor) return std::nullopt;
-  return best;
+  const std::vector<std::size_t> kept =
+      numerics::may_be_largest(c, [](const AreaCandidate<N>& a) -> const N& { return a.value; });
+  if (kept.size() != 1) return std::nullopt;
+  return kept.front();
 }
 
 }  // namespace gmcc::internal

@@ -6,10 +6,12 @@
 #include <gmcc/geometry/convex_set_3.h>
 #include <gmcc/geometry/rational.h>
 #include <gmcc/numerics/enclosure.h>
+#include <gmcc/numerics/rational_to_float.h>
 
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace gmcc {
@@ -21,14 +23,14 @@ using Enclosure = BasicEnclosure<double>;
 /// x87 extended precision (u = 2^-64): their second stage, for thin sets.
 using LongEnclosure = BasicEnclosure<long double>;
 
-/// An exact rational as a certified double enclosure: mpq_get_d truncates (relative error below
-/// 2u) within [2^-138, 2^138]; outside that range an unbounded enclosure, which decides nothing.
+/// An exact rational as a certified double enclosure: numerics::certified_double (relative error
+/// below 2u) within the range policy of numerics/rational_to_float.h; outside it an unbounded
+/// enclosure, which decides nothing.
 inline Enclosure enclose_rational(const Rational& q) {
   if (sgn(q) == 0) return Enclosure::exact(0);
-  const long bits = static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) -
-                    static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
-  if (bits < -138 || bits > 138) return {0, Enclosure::unbounded};
-  return Enclosure::relative(mpq_get_d(q.get_mpq_t()), 2 * Enclosure::u);
+  const std::optional<double> d = numerics::certified_double(q.get_mpq_t());
+  if (!d) return {0, Enclosure::unbounded};
+  return Enclosure::relative(*d, 2 * Enclosure::u);
 }
 
 /// A point of space (a map d or a colour) as double enclosures of its exact coordinates, in the

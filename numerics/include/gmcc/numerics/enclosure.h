@@ -11,9 +11,11 @@
 /// | LDInterval | [lo, hi] in x87, outward | atan2 and the 3-D mean's fast path: monotone functions evaluated at the ends |
 /// | internal::Interval (MPFI) | [lo, hi] at p bits | the certified and correctly rounded results, at any precision |
 ///
-/// They answer the same questions with the same names: lower(x) and upper(x) give certain ends
-/// in the kind's own floating type, certainly_positive(x) and certainly_negative(x) decide a sign
-/// only when the whole enclosure is on one side, so that a rule written once over the family
+/// They answer the same questions with the same free functions: lower(x) and upper(x) give
+/// certain ends in the kind's own floating type (BasicEnclosure, LDInterval), sign(x) the one
+/// decision type UncertainSign (uncertain_sign.h; MPFI's in interval.h), and
+/// certainly_positive(x), certainly_negative(x) and certainly_nonzero(x) decide only when the
+/// whole enclosure is on one side of zero, so that a rule written once over the family
 /// (docs/architecture.md "Exactness, routes and failures") reads the same for each kind.
 ///
 /// BasicEnclosure's error analysis (u the unit roundoff: 2^-53 for double, 2^-64 for x87; round
@@ -22,14 +24,16 @@
 /// evaluated in at most seven rounded operations on non-negative numbers, each of which loses at
 /// most a factor (1 − u); the final factor (1 + 16u) makes up for all of them, and the smallest
 /// normal number for any underflow. Overflow is not guarded as such: an overflowing operation
-/// leaves an infinite midpoint or radius (or NaN), for which finite() is false and positive(),
-/// negative() are false (no sign certain), so every filter then falls back. The 2-D fast paths
+/// leaves an infinite midpoint or radius (or NaN), for which finite() is false and certainly_positive(),
+/// certainly_negative() are false (no sign certain), so every filter then falls back. The 2-D fast paths
 /// keep their magnitudes within 2^±300; CRULE's filters reach about 2^±840 (edge discriminants)
 /// and rely on that fallback beyond. LDInterval's: every operation is done in the
 /// default round-to-nearest mode and its ends are pushed outward by a relative 2^-63 (the
 /// rounding error is at most 2^-64 relative, and the push itself rounds back by at most 2^-64)
 /// plus the smallest normal number (for underflow); atanl/atan2l on x86_64 glibc use the fpatan
 /// instruction (error < 1 ulp <= 2^-63 relative), and their ends are pushed by 2^-61.
+
+#include <gmcc/numerics/uncertain_sign.h>
 
 #include <algorithm>
 #include <cmath>
@@ -71,12 +75,6 @@ struct BasicEnclosure {
   T hi() const { return (mid + rad) + round_up(2 * u * (std::fabs(mid) + rad)); }
   /// A finite midpoint and a finite, non-negative radius (false for anything NaN touched).
   bool finite() const { return std::isfinite(mid) && rad >= 0 && rad < unbounded; }
-  /// Certainly > 0: the whole enclosure lies right of zero (lo() > 0).
-  bool positive() const { return lo() > 0; }
-  /// Certainly < 0: the whole enclosure lies left of zero (hi() < 0).
-  bool negative() const { return hi() < 0; }
-  /// Neither positive nor negative for certain.
-  bool uncertain_sign() const { return !positive() && !negative(); }
 
   /// −x: exact (the midpoint's sign flips, the radius stays).
   friend BasicEnclosure operator-(const BasicEnclosure& a) { return {-a.mid, a.rad}; }
@@ -96,7 +94,7 @@ struct BasicEnclosure {
     return {m, round_up(std::fabs(a.mid) * b.rad + std::fabs(b.mid) * a.rad + a.rad * b.rad + u * std::fabs(m))};
   }
   /// |x/y − a/b| <= (ra + |a/b|·rb) / (|b| − rb) for |b| > rb (and |a/b| <= (1 + 2u)|m|).
-  /// \pre b excludes 0 (check with uncertain_sign()); otherwise the result is unbounded (inf).
+  /// \pre b excludes 0 (check with certainly_nonzero(b)); otherwise the result is unbounded (inf).
   friend BasicEnclosure operator/(const BasicEnclosure& a, const BasicEnclosure& b) {
     const T m = a.mid / b.mid;
     const T gap = std::fabs(b.mid) - b.rad;
@@ -203,12 +201,27 @@ template <class T>
 T upper(const BasicEnclosure<T>& x) { return x.hi(); }
 /// A certain upper end.
 inline long double upper(const LDInterval& x) { return x.hi; }
-/// Every member is > 0.
+/// Every member is > 0 (false when a NaN touched x: no comparison with NaN holds).
 template <class X>
 bool certainly_positive(const X& x) { return lower(x) > 0; }
-/// Every member is < 0.
+/// Every member is < 0 (false when a NaN touched x).
 template <class X>
 bool certainly_negative(const X& x) { return upper(x) < 0; }
+/// Every member is ≠ 0: certainly positive or certainly negative (what a divisor needs).
+template <class X>
+bool certainly_nonzero(const X& x) { return certainly_positive(x) || certainly_negative(x); }
+/// The signs x allows: certain on one side of zero, or for the point zero; indeterminate for an
+/// enclosure that holds zero and more, or that a NaN touched.
+template <class X>
+UncertainSign sign(const X& x) {
+  const auto l = lower(x), h = upper(x);
+  if (l > 0) return UncertainSign::certain(1);
+  if (h < 0) return UncertainSign::certain(-1);
+  if (l == 0 && h == 0) return UncertainSign::certain(0);
+  if (l >= 0 && h >= 0) return {0, 1};
+  if (l <= 0 && h <= 0) return {-1, 0};
+  return UncertainSign::indeterminate();
+}
 ///@}
 
 }  // namespace gmcc::numerics
