@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 namespace gmcc {
 namespace {
@@ -47,6 +48,35 @@ struct EdgeRoot {
   }
 };
 
+// Max-volume's candidate arithmetic, written once for both kinds: ℚ (Point3, the exact stage)
+// and double enclosures (Enclosure3, the filter), in the same operations and order.
+const Rational& at(const Point3& p, int k) { return coord(p, k); }
+const Enclosure& at(const Enclosure3& p, int k) { return p[static_cast<std::size_t>(k)]; }
+Rational constant(const Rational&, int c) { return c; }
+Enclosure constant(const Enclosure&, int c) { return Enclosure::exact(c); }
+
+// On the edge p + t·u, f(t) = ∏_k (p_k + t·u_k) = A t³ + B t² + C t + D has the derivative
+// f′(t) = a t² + b t + c, a = 3A, b = 2B, c = C, of discriminant b² − 4ac (docs/derivations.md §2.4).
+template <class T>
+struct EdgeDerivative {
+  T a, b, c, disc;
+};
+template <class P>
+auto edge_derivative(const P& p, const P& u) {
+  using T = std::decay_t<decltype(at(p, 0))>;
+  const T& p0 = at(p, 0);
+  const T& p1 = at(p, 1);
+  const T& p2 = at(p, 2);
+  const T& u0 = at(u, 0);
+  const T& u1 = at(u, 1);
+  const T& u2 = at(u, 2);
+  const T a = constant(p0, 3) * (u0 * u1 * u2);
+  const T b = constant(p0, 2) * (p0 * u1 * u2 + u0 * p1 * u2 + u0 * u1 * p2);
+  const T c = p0 * p1 * u2 + p0 * u1 * p2 + u0 * p1 * p2;
+  const T disc = b * b - constant(p0, 4) * a * c;
+  return EdgeDerivative<T>{a, b, c, disc};
+}
+
 // The candidates for the maximum of d1·d2·d3 on F among `which`: rational ones (vertices, facet
 // stationary points, rational edge roots) and the edges' irrational roots.
 struct Candidates {
@@ -71,11 +101,7 @@ Candidates candidates(const ConvexSet3& F, const internal::MaxVolumeCandidates& 
   for (const auto& [i, j] : which.edges) {
     const Point3& p = v[i];
     const Point3 u = sub(v[j], p);
-    // f(t) = A t³ + B t² + C t + D; f'(t) = 3A t² + 2B t + C.
-    const Rational A = u.x * u.y * u.z;
-    const Rational B = p.x * u.y * u.z + u.x * p.y * u.z + u.x * u.y * p.z;
-    const Rational C = p.x * p.y * u.z + p.x * u.y * p.z + u.x * p.y * p.z;
-    const Rational a = 3 * A, b = 2 * B, c = C;
+    const auto [a, b, c, disc] = edge_derivative(p, u);
     auto consider = [&](const Rational& t) {
       if (sgn(t) > 0 && t < 1) rational.push_back(add(p, scale(u, t)));
     };
@@ -83,7 +109,6 @@ Candidates candidates(const ConvexSet3& F, const internal::MaxVolumeCandidates& 
       if (sgn(b) != 0) consider(Rational(-c / b));
       continue;
     }
-    const Rational disc = b * b - 4 * a * c;
     if (sgn(disc) < 0) continue;
     if (const auto r = rational_sqrt(disc)) {
       consider(Rational((-b + *r) / (2 * a)));
@@ -180,11 +205,8 @@ int placed(const std::vector<EnclosedPlane>& planes, std::size_t self, const E3&
 std::vector<Seen> edge_candidates(const std::vector<E3>& e, std::size_t index, std::size_t i, std::size_t j) {
   const E3& p = e[i];
   const E3 u = e[j] - p;
-  const Enclosure three = Enclosure::exact(3), two = Enclosure::exact(2), four = Enclosure::exact(4);
-  const Enclosure a = three * (u[0] * u[1] * u[2]);
-  const Enclosure b = two * (p[0] * u[1] * u[2] + u[0] * p[1] * u[2] + u[0] * u[1] * p[2]);
-  const Enclosure c = p[0] * p[1] * u[2] + p[0] * u[1] * p[2] + u[0] * p[1] * p[2];
-  const Enclosure disc = b * b - four * a * c;
+  const auto [a, b, c, disc] = edge_derivative(p, u);
+  const Enclosure two = Enclosure::exact(2);
   const std::vector<Seen> unplaced{{Slot::edge, index, 0, hull_bound(e, std::array<std::size_t, 2>{i, j}), Known::bound_only}};
   if (!certainly_nonzero(a) || !disc.finite()) return unplaced;
   if (certainly_negative(disc)) return {};  // no real root
