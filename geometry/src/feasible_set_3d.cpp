@@ -386,19 +386,36 @@ std::vector<Point3> extreme_points_3(const std::vector<Point3>& points) {
   return sorted_unique(out);
 }
 
+namespace {
+
+using Fast = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+// Whether the points span 3 dimensions, by Epick's exact predicates on the doubles.
+bool full_dimensional(const std::vector<Fast::Point_3>& p) {
+  std::size_t i = 1;
+  while (i < p.size() && p[i] == p[0]) ++i;
+  if (i == p.size()) return false;
+  std::size_t j = i + 1;
+  while (j < p.size() && CGAL::collinear(p[0], p[i], p[j])) ++j;
+  if (j == p.size()) return false;
+  for (std::size_t k = j + 1; k < p.size(); ++k)
+    if (CGAL::orientation(p[0], p[i], p[j], p[k]) != CGAL::COPLANAR) return true;
+  return false;
+}
+
+}  // namespace
+
 std::vector<std::size_t> extreme_point_indices_3(const std::vector<std::array<double, 3>>& points,
                                                  const std::vector<std::size_t>& candidates) {
-  using Fast = CGAL::Exact_predicates_inexact_constructions_kernel;
   // The distinct candidates, sorted, with the first index of each.
   std::vector<std::size_t> order(candidates);
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return points[a] < points[b]; });
   order.erase(std::unique(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return points[a] == points[b]; }),
               order.end());
-  std::vector<Point3> exact;
-  for (std::size_t i : order) exact.push_back({Rational(points[i][0]), Rational(points[i][1]), Rational(points[i][2])});
-  if (order.size() < 4 || affine_frame(exact).size() < 4) return order;
   std::vector<Fast::Point_3> fast;
+  fast.reserve(order.size());
   for (std::size_t i : order) fast.emplace_back(points[i][0], points[i][1], points[i][2]);
+  if (!full_dimensional(fast)) return order;
   std::vector<Fast::Point_3> extreme;
   CGAL::extreme_points_3(fast, std::back_inserter(extreme));
   std::vector<std::array<double, 3>> kept;
@@ -407,6 +424,35 @@ std::vector<std::size_t> extreme_point_indices_3(const std::vector<std::array<do
   std::vector<std::size_t> out;
   for (std::size_t i : order)
     if (std::binary_search(kept.begin(), kept.end(), points[i])) out.push_back(i);
+  return out;
+}
+
+std::vector<std::array<std::size_t, 3>> hull_triangles_3(const std::vector<std::array<double, 3>>& points,
+                                                        const std::vector<std::size_t>& indices) {
+  std::vector<Fast::Point_3> fast;
+  fast.reserve(indices.size());
+  for (std::size_t i : indices) fast.emplace_back(points[i][0], points[i][1], points[i][2]);
+  if (!full_dimensional(fast)) return {};
+  CGAL::Surface_mesh<Fast::Point_3> mesh;
+  CGAL::convex_hull_3(fast.begin(), fast.end(), mesh);
+  // The mesh's points are input points: each is found among `indices` by its exact coordinates.
+  auto index_of = [&](const Fast::Point_3& q) {
+    for (std::size_t k = 0; k < fast.size(); ++k)
+      if (fast[k] == q) return indices[k];
+    GMCC_CHECK(false, "hull_triangles_3: a hull vertex is an input point");
+    return std::size_t(0);
+  };
+  std::vector<std::array<std::size_t, 3>> out;
+  for (const auto f : mesh.faces()) {
+    std::array<std::size_t, 3> t{};
+    std::size_t n = 0;
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      GMCC_CHECK(n < 3, "hull_triangles_3: CGAL's hull is triangulated");
+      t[n++] = index_of(mesh.point(v));
+    }
+    GMCC_CHECK(n == 3, "hull_triangles_3: CGAL's hull is triangulated");
+    out.push_back(t);
+  }
   return out;
 }
 

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -61,27 +62,84 @@ IntegerPlane3 integer_plane(const HalfSpace3& h) {
 constexpr std::size_t prefilter_from = 64;
 constexpr double u = 0x1p-53;
 
+// Whether every channel is an integer in [0, 2^16) (pixel values): then planes through three
+// such points have integer coefficients below 2^33 and offsets below 2^51 in magnitude, and a
+// point's signed distance below 2^52: all exact in double.
+bool small_integers(const std::vector<std::array<double, 3>>& d) {
+  for (const auto& c : d)
+    for (double x : c)
+      if (!(x >= 0 && x < 0x1p16 && x == std::floor(x))) return false;
+  return true;
+}
+
+// An index of a largest v·d[i] for each of the 26 directions v in {-1, 0, 1}^3 \ {0}, without
+// repeats: one pass per pair ±v. The products may round: any point chosen is a point of the set,
+// which is all Q needs.
+std::vector<std::size_t> extreme_indices(const std::vector<std::array<double, 3>>& d) {
+  std::vector<std::size_t> out;
+  for (int x = 0; x <= 1; ++x)
+    for (int y = -1; y <= 1; ++y)
+      for (int z = -1; z <= 1; ++z) {
+        // One of each pair ±v: the first non-zero component positive.
+        if (x == 0 && (y < 0 || (y == 0 && z <= 0))) continue;
+        const double vx = x, vy = y, vz = z;
+        std::size_t hi = 0, lo = 0;
+        double top = -HUGE_VAL, bottom = HUGE_VAL;
+        for (std::size_t i = 0; i < d.size(); ++i) {
+          const double v = vx * d[i][0] + vy * d[i][1] + vz * d[i][2];
+          if (v > top) top = v, hi = i;
+          if (v < bottom) bottom = v, lo = i;
+        }
+        out.push_back(hi), out.push_back(lo);
+      }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// The indices of colours not strictly inside Q = conv(d[i], i in `extreme`), exactly, for small
+// integer colours: Q's triangles (Epick's exact predicates) give planes n·x <= n·a computed
+// exactly in double (small_integers), and a colour strictly inside all of them is no vertex of
+// the colours' hull. When Q is flat every index is kept.
+// (On 64 × 64 photographs about 2,600 colours leave ~630 for the exact hull; a second round with
+// a Q from 98 directions cost as much as it saved.)
+std::vector<std::size_t> outside_small_hull(const std::vector<std::array<double, 3>>& d,
+                                            const std::vector<std::size_t>& extreme) {
+  std::vector<std::array<double, 4>> planes;
+  for (const auto& t : hull_triangles_3(d, extreme)) {
+    const auto &a = d[t[0]], &b = d[t[1]], &c = d[t[2]];
+    const double u0 = b[0] - a[0], u1 = b[1] - a[1], u2 = b[2] - a[2];
+    const double v0 = c[0] - a[0], v1 = c[1] - a[1], v2 = c[2] - a[2];
+    const double n0 = u1 * v2 - u2 * v1, n1 = u2 * v0 - u0 * v2, n2 = u0 * v1 - u1 * v0;
+    planes.push_back({n0, n1, n2, n0 * a[0] + n1 * a[1] + n2 * a[2]});
+  }
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    if (planes.empty()) {
+      out.push_back(i);
+      continue;
+    }
+    bool inside = true;
+    for (std::size_t j = 0; j < planes.size() && inside; ++j) {
+      const std::array<double, 4>& f = planes[j];
+      inside = f[0] * d[i][0] + f[1] * d[i][1] + f[2] * d[i][2] < f[3];
+    }
+    if (!inside) out.push_back(i);
+  }
+  return out;
+}
+
 // The colours that may be vertices of their hull, by index: a handful of extreme colours (the
 // largest along 26 directions in double) span a polytope Q ⊆ hull; a colour certified strictly
 // inside every facet of Q by a double filter is no vertex and is dropped; all others are kept.
 // `d` holds each colour's channels as doubles within 2u relative of the exact ones (exact for
-// double input), `exact(i)` the exact colour.
+// double input, and then `doubles_exact`), `exact(i)` the exact colour. Small integer colours
+// take outside_small_hull.
 template <class Exact>
-std::vector<std::size_t> hull_candidate_indices(const std::vector<std::array<double, 3>>& d, Exact exact) {
-  const std::size_t n = d.size();
-  std::vector<std::size_t> extreme;
-  for (int x = -1; x <= 1; ++x)
-    for (int y = -1; y <= 1; ++y)
-      for (int z = -1; z <= 1; ++z) {
-        if (x == 0 && y == 0 && z == 0) continue;
-        std::size_t best = 0;
-        double top = -HUGE_VAL;
-        for (std::size_t i = 0; i < n; ++i) {
-          const double v = x * d[i][0] + y * d[i][1] + z * d[i][2];
-          if (v > top) top = v, best = i;
-        }
-        extreme.push_back(best);
-      }
+std::vector<std::size_t> hull_candidate_indices(const std::vector<std::array<double, 3>>& d, Exact exact,
+                                                bool doubles_exact) {
+  const std::vector<std::size_t> extreme = extreme_indices(d);
+  if (doubles_exact && small_integers(d)) return outside_small_hull(d, extreme);
   std::vector<Point3> q;
   for (std::size_t i : extreme) q.push_back(exact(i));
   q = sorted_unique(std::move(q));
@@ -98,7 +156,7 @@ std::vector<std::size_t> hull_candidate_indices(const std::vector<std::array<dou
       facets.push_back(*f);
     }
   std::vector<std::size_t> out;
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < d.size(); ++i) {
     bool inside = !facets.empty();
     for (int k = 0; k < 3 && inside; ++k)  // magnitudes where the relative bound below holds
       inside = numerics::in_double_range(d[i][k]);
@@ -121,8 +179,11 @@ std::vector<Point3> hull_candidates(const std::vector<Colour>& image) {
     d[i] = {mpq_get_d(image[i].r.get_mpq_t()), mpq_get_d(image[i].g.get_mpq_t()),
             mpq_get_d(image[i].b.get_mpq_t())};
   const auto exact = [&](std::size_t i) { return Point3{image[i].r, image[i].g, image[i].b}; };
+  bool integers = true;  // then the truncated doubles are the channels (below 2^53)
+  for (std::size_t i = 0; i < image.size() && integers; ++i)
+    integers = image[i].r.get_den() == 1 && image[i].g.get_den() == 1 && image[i].b.get_den() == 1;
   std::vector<Point3> out;
-  for (std::size_t i : hull_candidate_indices(d, exact)) out.push_back(exact(i));
+  for (std::size_t i : hull_candidate_indices(d, exact, integers)) out.push_back(exact(i));
   return out;
 }
 
@@ -214,7 +275,7 @@ std::vector<std::size_t> colour_hull_vertex_indices(const std::vector<std::array
   };
   std::vector<std::size_t> candidates;
   if (colours.size() >= internal::prefilter_from) {
-    candidates = internal::hull_candidate_indices(colours, exact);
+    candidates = internal::hull_candidate_indices(colours, exact, true);
   } else {
     candidates.resize(colours.size());
     for (std::size_t i = 0; i < colours.size(); ++i) candidates[i] = i;

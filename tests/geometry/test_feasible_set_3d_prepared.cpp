@@ -6,6 +6,7 @@
 // images large enough for the filtered image-hull prefilter.
 #include "../test_support.h"
 
+#include <gmcc/geometry/colour_hull_3.h>
 #include <gmcc/geometry/convex_set_3.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
@@ -223,6 +224,39 @@ BOOST_AUTO_TEST_CASE(clip_decides_ties_exactly) {
   BOOST_TEST((internal::clip_polytope({1, 1, 1}, planes).outcome == internal::ClippedPolytope::Outcome::flat));
   planes.back() = plane(-1, -1, -1, -2);
   BOOST_TEST((internal::clip_polytope({1, 1, 1}, planes).outcome == internal::ClippedPolytope::Outcome::empty));
+}
+
+
+// The hull of small integer colours (pixel values below 2^16: the prefilter's planes exact in
+// double) against the general route on the same colours divided by 3 (rationals: the filtered
+// prefilter and CGAL's exact-constructions hull), on sets with many points on the hull's faces
+// and edges, flat and collinear sets, repeats, and the extremes 0 and 65535.
+BOOST_AUTO_TEST_CASE(small_integer_colour_hulls_agree_with_the_general_route) {
+  Rng rng(2611);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int kind = trial % 5;
+    const unsigned top = trial % 2 ? 65535 : 12;  // a small range: many colours on faces and edges
+    std::uniform_int_distribution<unsigned> channel(0, top);
+    std::vector<Colour> colours;
+    const int n = 64 + 97 * trial;
+    for (int i = 0; i < n; ++i) {
+      unsigned c[3] = {channel(rng), channel(rng), channel(rng)};
+      if (kind == 1) c[2] = c[0];                 // flat: the plane b = r
+      if (kind == 2) c[1] = c[0], c[2] = c[0];    // collinear: the grey axis
+      if (kind == 3) c[i % 3] = i % 2 ? 0 : top;  // most colours on the cube's faces
+      colours.push_back({R(c[0]), R(c[1]), R(c[2])});
+    }
+    std::vector<Colour> thirds;
+    for (const Colour& c : colours) thirds.push_back({R(c.r / 3), R(c.g / 3), R(c.b / 3)});
+    std::vector<Colour> expected;
+    for (const Colour& c : colour_hull_vertices(thirds)) expected.push_back({R(c.r * 3), R(c.g * 3), R(c.b * 3)});
+    BOOST_TEST((colour_hull_vertices(colours) == expected), "trial " << trial);
+    std::vector<std::array<double, 3>> d;
+    for (const Colour& c : colours) d.push_back({c.r.get_d(), c.g.get_d(), c.b.get_d()});
+    std::vector<Colour> by_index;
+    for (std::size_t i : colour_hull_vertex_indices(d)) by_index.push_back(colours[i]);
+    BOOST_TEST((by_index == expected), "trial " << trial);
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -42,6 +42,11 @@ std::vector<Point3> extreme_points_3(const std::vector<Point3>& points);
 // Points are doubles taken exactly (CGAL's Epick: exact predicates on double input).
 std::vector<std::size_t> extreme_point_indices_3(const std::vector<std::array<double, 3>>& points,
                                                  const std::vector<std::size_t>& candidates);
+// The triangles of conv(points[i], i in `indices`) as index triples (into `points`), each
+// counter-clockwise seen from outside; empty when those points span fewer than 3 dimensions.
+// Doubles taken exactly (Epick's exact predicates; the triangles' corners are input points).
+std::vector<std::array<std::size_t, 3>> hull_triangles_3(const std::vector<std::array<double, 3>>& points,
+                                                        const std::vector<std::size_t>& indices);
 
 // F3 by the exact LP route: rows (a ⊙ p)·d <= b for every canonical half-space and image point p
 // (any superset of the image hull's vertices), the box 0 <= d_k <= X_k/P_k, the max-slack LP for
