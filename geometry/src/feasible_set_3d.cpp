@@ -458,8 +458,23 @@ std::vector<std::array<std::size_t, 3>> hull_triangles_3(const std::vector<std::
 
 ConvexSet3 feasible_set_3d_lp(const std::vector<HalfSpace3>& canonical, const Point3& canonical_max,
                               const std::vector<Point3>& image) {
-  const std::optional<Rows> rows = crule_rows(canonical, canonical_max, image);
-  if (!rows) return {};
+  return feasible_set_3d_lp({LpPart{&canonical, &canonical_max, &image}});
+}
+
+ConvexSet3 feasible_set_3d_lp(const std::vector<LpPart>& parts) {
+  GMCC_CHECK(!parts.empty(), "feasible_set_3d_lp: at least one part");
+  std::optional<Rows> rows;
+  for (const LpPart& part : parts) {
+    std::optional<Rows> r = crule_rows(*part.canonical, *part.canonical_max, *part.image);
+    if (!r) return {};
+    if (!rows) {
+      rows = std::move(r);
+      continue;
+    }
+    rows->rows.insert(rows->rows.end(), r->rows.begin(), r->rows.end());
+    for (int k = 0; k < 3; ++k) coord(rows->box_max, k) = std::min(coord(rows->box_max, k), coord(r->box_max, k));
+  }
+  if (parts.size() > 1) dedupe(rows->rows);
   const std::optional<AffineHull> f = affine_hull(rows->rows);
   if (!f) return {};
   switch (f->basis.size()) {

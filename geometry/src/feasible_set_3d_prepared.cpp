@@ -5,6 +5,7 @@
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/geometry/integers_over_lcm.h>
+#include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/numerics/rational_to_float.h>
 
 #include "internal/crule_exact.h"
@@ -246,22 +247,44 @@ int CanonicalConstraints3::dimension() const { return planes_->dimension; }
 std::size_t CanonicalConstraints3::half_spaces() const { return planes_->half_spaces.size(); }
 
 ConvexSet3 feasible_set_3d(const CanonicalConstraints3& canonical, const std::vector<Colour>& image) {
-  const internal::CanonicalPlanes3& c = internal::FeasibleSet3Access::planes(canonical);
-  const std::vector<Point3> points = internal::image_points(image);
-  Point3 P{0, 0, 0};
-  for (const Point3& p : points) P.x = std::max(P.x, p.x), P.y = std::max(P.y, p.y), P.z = std::max(P.z, p.z);
-  for (int k = 0; k < 3; ++k)
-    if (sgn(k == 0 ? P.x : k == 1 ? P.y : P.z) == 0)
-      throw UnboundedFeasibleSet(std::string("every image colour has ") + "rgb"[k] +
-                                 " = 0: that map component is unconstrained and the feasible "
-                                 "set is unbounded");
-  if (c.dimension == 3) {
-    const Point3 box{Rational(c.max.x / P.x), Rational(c.max.y / P.y), Rational(c.max.z / P.z)};
-    internal::ClippedPolytope r = internal::clip_polytope(box, c.integer, points);
+  return feasible_set_3d(std::vector<GamutConstraint3>{{&canonical, &image}});
+}
+
+ConvexSet3 feasible_set_3d(const std::vector<GamutConstraint3>& constraints) {
+  if (constraints.empty()) throw std::invalid_argument("feasible_set_3d: no gamut constraint");
+  std::vector<std::vector<Point3>> points;
+  std::optional<Point3> box;  // the smallest X_k/P_k over the types
+  bool all_full = true;       // every G_c3 3-dimensional: the filtered clip applies
+  for (const GamutConstraint3& g : constraints) {
+    const internal::CanonicalPlanes3& c = internal::FeasibleSet3Access::planes(*g.canonical);
+    points.push_back(internal::image_points(*g.image));
+    Point3 P{0, 0, 0};
+    for (const Point3& p : points.back()) P.x = std::max(P.x, p.x), P.y = std::max(P.y, p.y), P.z = std::max(P.z, p.z);
+    for (int k = 0; k < 3; ++k)
+      if (sgn(coord(P, k)) == 0)
+        throw UnboundedFeasibleSet(std::string("every image colour has ") + "rgb"[k] +
+                                   " = 0: that map component is unconstrained and the feasible "
+                                   "set is unbounded");
+    const Point3 b{Rational(c.max.x / P.x), Rational(c.max.y / P.y), Rational(c.max.z / P.z)};
+    if (!box) box = b;
+    else
+      for (int k = 0; k < 3; ++k) coord(*box, k) = std::min(coord(*box, k), coord(b, k));
+    all_full = all_full && c.dimension == 3;
+  }
+  if (all_full) {
+    std::vector<internal::ClipGroup> groups;
+    for (std::size_t i = 0; i < constraints.size(); ++i)
+      groups.push_back({&internal::FeasibleSet3Access::planes(*constraints[i].canonical).integer, &points[i]});
+    internal::ClippedPolytope r = internal::clip_polytope(*box, groups);
     if (r.outcome == internal::ClippedPolytope::Outcome::polytope) return std::move(r.set);
     if (r.outcome == internal::ClippedPolytope::Outcome::empty) return {};
   }
-  return internal::feasible_set_3d_lp(c.half_spaces, c.max, points);
+  std::vector<internal::LpPart> parts;
+  for (std::size_t i = 0; i < constraints.size(); ++i) {
+    const internal::CanonicalPlanes3& c = internal::FeasibleSet3Access::planes(*constraints[i].canonical);
+    parts.push_back({&c.half_spaces, &c.max, &points[i]});
+  }
+  return internal::feasible_set_3d_lp(parts);
 }
 
 std::vector<std::size_t> colour_hull_vertex_indices(const std::vector<std::array<double, 3>>& colours) {

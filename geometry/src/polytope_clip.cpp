@@ -86,9 +86,17 @@ struct Vertex {
 };
 
 class Clipper {
+  // One ClipGroup's rows: its facets, its points exactly, their channels' signs.
+  struct Group {
+    const ClipFacets* facets;
+    int nf;
+    std::size_t first;                              // rows of the groups before it
+    std::vector<std::array<mpz_class, 4>> points;  // the points as (p·L, L)
+    std::vector<std::array<int, 3>> signs;         // their channels' signs
+  };
+
  public:
-  Clipper(const Point3& box, const ClipFacets& facets, const std::vector<Point3>& points, ClipCounts* counts)
-      : counts_(counts), facets_(facets), nf_(static_cast<int>(facets.planes.size())) {
+  Clipper(const Point3& box, const std::vector<ClipGroup>& groups, ClipCounts* counts) : counts_(counts) {
     // The box: planes 0–2 are -x_k <= 0, planes 3–5 are den·x_k <= num.
     for (int k = 0; k < 3; ++k) {
       IntegerPlane3 p;
@@ -104,20 +112,13 @@ class Clipper {
       box_.push_back(p);
     }
     for (const IntegerPlane3& p : box_) filters_.push_back(filter_of(p));
-    // Row 6 + i·F + f is (a_f ⊙ p_i)·x <= b_f; its filter copy a~_f ⊙ p~_i, b~_f·2^-e.
-    for (const Point3& p : points) {
-      points_.push_back(integer_point(p));
-      signs_.push_back({sgn(p.x), sgn(p.y), sgn(p.z)});
-      const ScaledPoint q = scaled_point(p);
-      for (int f = 0; f < nf_; ++f) {
-        Filter r;
-        const std::array<double, 4>& a = facets.filters[static_cast<std::size_t>(f)];
-        if (q.usable && facets.usable[static_cast<std::size_t>(f)]) {
-          r.c[0] = a[0] * q.c[0], r.c[1] = a[1] * q.c[1], r.c[2] = a[2] * q.c[2], r.c[3] = a[3] * q.scale;
-          r.usable = in_range(r.c[0]) && in_range(r.c[1]) && in_range(r.c[2]) && in_range(r.c[3]);
-        }
-        filters_.push_back(r);
-      }
+    // Row 6 + first + i·F + f of a group is (a_f ⊙ p_i)·x <= b_f (F its facets, `first` the
+    // rows of the groups before it); its filter copy a~_f ⊙ p~_i, b~_f·2^-e.
+    for (const ClipGroup& g : groups) {
+      const int nf = static_cast<int>(g.facets->planes.size());
+      if (nf == 0 || g.points->empty()) continue;
+      groups_.push_back({g.facets, nf, filters_.size() - 6, {}, {}});
+      for (const Point3& p : *g.points) add_point(groups_.back(), p);
     }
     rows_.resize(filters_.size());
     // Corner (bx, by, bz) is vertex bx + 2by + 4bz; faces counter-clockwise seen from outside.
@@ -135,6 +136,23 @@ class Clipper {
     std::size_t step = 2654435761u % (n ? n : 1);
     while (n && std::gcd(step, n) != 1) ++step;
     for (std::size_t k = 0, j = 0; k < n; ++k, j = (j + step) % n) order_[k] = 6 + j;
+  }
+
+  // Point p's exact form and signs, and its rows' filter copies, one per facet of the group.
+  void add_point(Group& group, const Point3& p) {
+    group.points.push_back(integer_point(p));
+    group.signs.push_back({sgn(p.x), sgn(p.y), sgn(p.z)});
+    const ScaledPoint q = scaled_point(p);
+    const ClipFacets& facets = *group.facets;
+    for (std::size_t f = 0; f < facets.planes.size(); ++f) {
+      Filter r;
+      const std::array<double, 4>& a = facets.filters[f];
+      if (q.usable && facets.usable[f]) {
+        r.c[0] = a[0] * q.c[0], r.c[1] = a[1] * q.c[1], r.c[2] = a[2] * q.c[2], r.c[3] = a[3] * q.scale;
+        r.usable = in_range(r.c[0]) && in_range(r.c[1]) && in_range(r.c[2]) && in_range(r.c[3]);
+      }
+      filters_.push_back(r);
+    }
   }
 
   // The live vertices' doubles, packed for the all-inside pass: h[0..3], then α and β with
@@ -199,9 +217,9 @@ class Clipper {
   ClippedPolytope run() {
     for (std::size_t i : order_) {
       // A row with a ⊙ p = 0 reads 0 <= b: true, or no map at all.
-      const int f = static_cast<int>((i - 6) % static_cast<std::size_t>(nf_));
-      const std::array<int, 3>& s = signs_[(i - 6) / static_cast<std::size_t>(nf_)];
-      const IntegerPlane3& a = facets_.planes[static_cast<std::size_t>(f)];
+      const RowOf r = row_of(i);
+      const std::array<int, 3>& s = r.group->signs[r.point];
+      const IntegerPlane3& a = r.group->facets->planes[r.facet];
       if (sgn(a.a[0]) * s[0] == 0 && sgn(a.a[1]) * s[1] == 0 && sgn(a.a[2]) * s[2] == 0) {
         if (sgn(a.b) < 0) return {ClippedPolytope::Outcome::empty, {}};
         continue;
@@ -227,9 +245,9 @@ class Clipper {
     if (i < 6) return box_[static_cast<std::size_t>(i)];
     std::unique_ptr<IntegerPlane3>& row = rows_[static_cast<std::size_t>(i)];
     if (!row) {
-      const std::size_t k = static_cast<std::size_t>(i - 6);
-      const IntegerPlane3& a = facets_.planes[k % static_cast<std::size_t>(nf_)];
-      const std::array<mpz_class, 4>& q = points_[k / static_cast<std::size_t>(nf_)];
+      const RowOf r = row_of(static_cast<std::size_t>(i));
+      const IntegerPlane3& a = r.group->facets->planes[r.facet];
+      const std::array<mpz_class, 4>& q = r.group->points[r.point];
       row = std::make_unique<IntegerPlane3>(IntegerPlane3{
           {mpz_class(a.a[0] * q[0]), mpz_class(a.a[1] * q[1]), mpz_class(a.a[2] * q[2])}, mpz_class(a.b * q[3])});
     }
@@ -444,12 +462,20 @@ class Clipper {
     int plane;
     std::vector<int> cycle;
   };
+  // Row i >= 6: its group, facet and point.
+  struct RowOf {
+    const Group* group;
+    std::size_t facet, point;
+  };
+  RowOf row_of(std::size_t i) const {
+    std::size_t g = groups_.size() - 1;
+    while (groups_[g].first > i - 6) --g;
+    const std::size_t k = i - 6 - groups_[g].first, nf = static_cast<std::size_t>(groups_[g].nf);
+    return {&groups_[g], k % nf, k / nf};
+  }
   ClipCounts* counts_;
-  const ClipFacets& facets_;
-  int nf_;
+  std::vector<Group> groups_;
   std::vector<IntegerPlane3> box_;
-  std::vector<std::array<mpz_class, 4>> points_;  // the points as (p·L, L)
-  std::vector<std::array<int, 3>> signs_;         // their channels' signs
   std::vector<Filter> filters_;                   // every plane's, box first
   std::vector<std::unique_ptr<IntegerPlane3>> rows_;  // exact rows, on demand
   std::vector<Vertex> vertices_;
@@ -500,8 +526,11 @@ ClipFacets clip_facets(std::vector<IntegerPlane3> planes) {
 
 ClippedPolytope clip_polytope(const Point3& box, const ClipFacets& facets, const std::vector<Point3>& points,
                               ClipCounts* counts) {
-  if (facets.planes.empty() || points.empty()) return Clipper(box, facets, {}, counts).run();
-  return Clipper(box, facets, points, counts).run();
+  return Clipper(box, {{&facets, &points}}, counts).run();
+}
+
+ClippedPolytope clip_polytope(const Point3& box, const std::vector<ClipGroup>& groups, ClipCounts* counts) {
+  return Clipper(box, groups, counts).run();
 }
 
 ClippedPolytope clip_polytope(const Point3& box, const std::vector<IntegerPlane3>& planes, ClipCounts* counts) {

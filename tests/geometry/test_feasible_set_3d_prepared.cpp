@@ -259,4 +259,80 @@ BOOST_AUTO_TEST_CASE(small_integer_colour_hulls_agree_with_the_general_route) {
   }
 }
 
+// The joint F3 of several gamut types (feasible_set_3d over GamutConstraint3s: one clip over
+// every type's rows) against the LP route over the same rows (the oracle, its own hulls):
+// pixel-like and edge-like types from one scene, with and without black, flat gamuts, noise that
+// empties the set; one type alone is feasible_set_3d, and a type joined with itself is itself.
+BOOST_AUTO_TEST_CASE(joint_feasible_sets_of_several_types_agree_with_the_lp_route) {
+  Rng rng(2610);
+  Tally t;
+  for (int trial = 0; trial < 120; ++trial) {
+    const bool black = trial % 3 != 2;
+    const int types = 2 + trial % 2;
+    const Colour d{test::random_rational(rng, 1, 9, 4), test::random_rational(rng, 1, 9, 4),
+                   test::random_rational(rng, 1, 9, 4)};
+    std::vector<std::vector<Colour>> canonical(types), image(types);
+    for (int k = 0; k < types; ++k) {
+      if (k == 0)  // pixel-like: surfaces
+        for (int i = 0; i < 4 + trial % 9; ++i) canonical[k].push_back(random_colour(rng, 1000, trial % 2 ? 64 : 999983));
+      else  // edge-like: channel-wise magnitudes of differences of surfaces (and of those)
+        for (std::size_t i = 0; i + 1 < canonical[k - 1].size(); ++i) {
+          const Colour &a = canonical[k - 1][i], &b = canonical[k - 1][i + 1];
+          canonical[k].push_back({R(abs(a.r - b.r)), R(abs(a.g - b.g)), R(abs(a.b - b.b))});
+        }
+      if (trial % 11 == 5 && k == 1)  // a flat canonical gamut: the LP route decides
+        for (Colour& c : canonical[k]) c.b = c.r;
+      image[k] = image_of(rng, canonical[k], d, 1 + (trial + 3 * k) % 4, trial % 4 != 0);
+      if (trial % 7 == 3 && k == types - 1) image[k].push_back(random_colour(rng, 3000, 16));
+    }
+    std::vector<std::vector<internal::HalfSpace3>> halves(types);
+    std::vector<Point3> maxima(types);
+    std::vector<std::vector<Point3>> points(types);
+    std::vector<internal::LpPart> parts;
+    std::vector<CanonicalConstraints3> prepared;
+    for (int k = 0; k < types; ++k) {
+      std::vector<Point3> c;
+      for (const Colour& x : canonical[k]) c.push_back({x.r, x.g, x.b});
+      if (black) c.push_back({0, 0, 0});
+      c = internal::sorted_unique(c);
+      halves[k] = internal::hull_half_spaces_3(c);
+      for (const Point3& x : c)
+        maxima[k] = {std::max(maxima[k].x, x.x), std::max(maxima[k].y, x.y), std::max(maxima[k].z, x.z)};
+      for (const Colour& x : image[k]) points[k].push_back({x.r, x.g, x.b});
+      points[k] = internal::sorted_unique(points[k]);
+      prepared.emplace_back(canonical[k], black ? CanonicalBlack::include : CanonicalBlack::exclude);
+    }
+    std::vector<GamutConstraint3> constraints;
+    for (int k = 0; k < types; ++k) {
+      parts.push_back({&halves[k], &maxima[k], &points[k]});
+      constraints.push_back({&prepared[k], &image[k]});
+    }
+    ConvexSet3 oracle;
+    try {
+      oracle = internal::feasible_set_3d_lp(parts);
+    } catch (const UnboundedFeasibleSet&) {
+      ++t.unbounded;
+      BOOST_CHECK_THROW(feasible_set_3d(constraints), UnboundedFeasibleSet);
+      continue;
+    }
+    const ConvexSet3 joint = feasible_set_3d(constraints);
+    BOOST_TEST((joint == oracle), "trial " << trial);
+    BOOST_TEST((feasible_set_3d(std::vector<GamutConstraint3>{constraints[0]}) ==
+                feasible_set_3d(prepared[0], image[0])));
+    BOOST_TEST((feasible_set_3d(std::vector<GamutConstraint3>{constraints[1], constraints[1]}) ==
+                feasible_set_3d(prepared[1], image[1])));
+    switch (joint.kind) {
+      case ConvexKind3::polytope: ++t.polytope; break;
+      case ConvexKind3::polygon: ++t.polygon; break;
+      case ConvexKind3::segment: ++t.segment; break;
+      case ConvexKind3::point: ++t.point; break;
+      case ConvexKind3::empty: ++t.empty; break;
+    }
+  }
+  BOOST_TEST(t.polytope >= 10);  // the joint clip
+  BOOST_TEST(t.segment + t.point + t.polygon > 0);  // the joint LP route
+  BOOST_TEST(t.empty > 0);
+  BOOST_CHECK_THROW(feasible_set_3d(std::vector<GamutConstraint3>{}), std::invalid_argument);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

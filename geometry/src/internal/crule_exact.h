@@ -54,6 +54,14 @@ std::vector<std::array<std::size_t, 3>> hull_triangles_3(const std::vector<std::
 // \pre canonical_max: X, the largest canonical channels; image non-empty with every P_k > 0.
 ConvexSet3 feasible_set_3d_lp(const std::vector<HalfSpace3>& canonical, const Point3& canonical_max,
                               const std::vector<Point3>& image);
+// One gamut type's rows for the joint LP route: its canonical half-spaces, X and image points.
+struct LpPart {
+  const std::vector<HalfSpace3>* canonical;
+  const Point3* canonical_max;
+  const std::vector<Point3>* image;
+};
+// The same over every part's rows at once (the box: each part's, so their intersection).
+ConvexSet3 feasible_set_3d_lp(const std::vector<LpPart>& parts);
 
 // The whole route as it was before the prepared form (canonical hull per call, image hull by
 // CGAL, the LP): the oracle of the tests. Same contract as feasible_set_3d.

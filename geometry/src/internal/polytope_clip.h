@@ -57,6 +57,15 @@ ClipFacets clip_facets(std::vector<IntegerPlane3> planes);
 // only for the final vertices. `counts`, when given, adds the decisions per stage.
 ClippedPolytope clip_polytope(const Point3& box, const ClipFacets& facets, const std::vector<Point3>& points,
                               ClipCounts* counts = nullptr);
+// One group of rows for clip_polytope: (a ⊙ p)·x <= b for every point p and facet a·x <= b.
+struct ClipGroup {
+  const ClipFacets* facets;
+  const std::vector<Point3>* points;
+};
+// The box cut by the rows of every group at once (several gamut types' constraints on one map,
+// feasible_set_3d.h): the same clip, the groups' rows one after another in the fixed order.
+ClippedPolytope clip_polytope(const Point3& box, const std::vector<ClipGroup>& groups,
+                              ClipCounts* counts = nullptr);
 // The same for explicit half-spaces (points = {(1, 1, 1)}).
 ClippedPolytope clip_polytope(const Point3& box, const std::vector<IntegerPlane3>& planes,
                               ClipCounts* counts = nullptr);

@@ -69,6 +69,23 @@ class CanonicalConstraints3 {
 /// facets and v the largest intermediate vertex count.
 ConvexSet3 feasible_set_3d(const CanonicalConstraints3& canonical, const std::vector<Colour>& image);
 
+/// One gamut type's constraint on a map, for the joint feasible set below: a prepared canonical
+/// gamut of that type and the image's colours of the same type (pixel colours, or derivative
+/// magnitudes for edge gamuts; channels >= 0, any superset of their hull's vertices).
+struct GamutConstraint3 {
+  const CanonicalConstraints3* canonical;
+  const std::vector<Colour>* image;
+};
+
+/// The maps d that take every type's image colours into its own canonical gamut at once: the
+/// intersection of the types' F3 (Gijsenij, Gevers & van de Weijer 2010 §4.3, the intersection of
+/// the pixel, edge and 2nd-order feasible sets, there by a float LP). Exact, every kind: the box
+/// of every type (the smallest X_k/P_k) clipped by every type's rows in one pass as above, the LP
+/// route over all the rows for the degenerate kinds. One constraint gives feasible_set_3d above.
+/// 	hrows std::invalid_argument if `constraints` is empty or as feasible_set_3d for any of them.
+/// Complexity: as feasible_set_3d with the rows of every type.
+ConvexSet3 feasible_set_3d(const std::vector<GamutConstraint3>& constraints);
+
 /// F3, exactly, with its kind (polytope, polygon, segment, point or empty): the same as
 /// feasible_set_3d(CanonicalConstraints3(canonical, black), image), which it calls; the route
 /// the prepared form keeps for the degenerate kinds is described here.
