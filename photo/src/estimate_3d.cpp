@@ -1,6 +1,8 @@
 #include <gmcc/photo/estimate_3d.h>
 
+#include <gmcc/selection/centroid_3.h>
 #include <gmcc/selection/max_trace.h>
+#include <gmcc/selection/max_volume.h>
 
 #include "internal/names.h"
 
@@ -49,6 +51,10 @@ ImageEstimate3 estimate_3d(const CanonicalConstraints3& canonical, const ImageCo
         "the image's colours are chromaticity lifts (x, y, 1) of the 2-D hull colour set, not "
         "pixel colours: 3-D gamut mapping needs ColourSet distinct or hull_3d");
   if (image.colours.empty()) throw std::invalid_argument("the image has no colour");
+  return estimate_3d(std::vector<GamutConstraint3>{{&canonical, &image.colours}}, o);
+}
+
+ImageEstimate3 estimate_3d(const std::vector<GamutConstraint3>& constraints, const Estimate3Options& o) {
   const Colour& c = o.canonical_light;
   if (sgn(c.r) <= 0 || sgn(c.g) <= 0 || sgn(c.b) <= 0)
     throw std::invalid_argument("the canonical light needs every channel > 0");
@@ -61,16 +67,11 @@ ImageEstimate3 estimate_3d(const CanonicalConstraints3& canonical, const ImageCo
     i.light = light_of_map_3(measured_map(i.selection.estimate), c);
     return i;
   };
-  if (want[0] || want[1]) {
-    Crule3d r = crule_3d(canonical, image.colours, o.route);
-    out.feasible = std::move(r.feasible);
-    if (want[0] && r.max_volume) out.max_volume = light_of(std::move(*r.max_volume));
-    if (want[1] && r.centroid) out.centroid = light_of(std::move(*r.centroid));
-  } else {
-    out.feasible = feasible_set_3d(canonical, image.colours);
-  }
-  if (want[2] && out.feasible.kind != ConvexKind3::empty)
-    out.max_trace = light_of(with_worst_case(out.feasible, max_trace(out.feasible)));
+  out.feasible = feasible_set_3d(constraints);
+  if (out.feasible.kind == ConvexKind3::empty) return out;
+  if (want[0]) out.max_volume = light_of(with_worst_case(out.feasible, max_volume(out.feasible)));
+  if (want[1]) out.centroid = light_of(with_worst_case(out.feasible, centroid_3(out.feasible, o.route)));
+  if (want[2]) out.max_trace = light_of(with_worst_case(out.feasible, max_trace(out.feasible)));
   return out;
 }
 

@@ -71,6 +71,16 @@ struct Estimate3Options {
 ImageEstimate3 estimate_3d(const CanonicalConstraints3& canonical, const ImageColours& image,
                            const Estimate3Options& options = {});
 
+/// Gamut mapping in 3-D with several gamut types at once: F3 the maps taking every type's image
+/// colours into its own canonical gamut (feasible_set_3d.h, GamutConstraint3), and the rules on
+/// it — Gijsenij, Gevers & van de Weijer (2010) §4.3's intersection of the pixel and edge
+/// feasible sets ("1-jet": pixels and 1st-order edges; "2-jet": with 2nd-order edges too), where
+/// max-trace is their selection. Every type's canonical gamut must share one intensity scale
+/// (docs/photographs.md §5). One constraint is estimate_3d above on its colours.
+/// 	hrows std::invalid_argument if `constraints` is empty or the canonical light has a channel
+///         <= 0, and as feasible_set_3d.
+ImageEstimate3 estimate_3d(const std::vector<GamutConstraint3>& constraints, const Estimate3Options& options = {});
+
 /// The light a 3-D map implies, e = c ⊘ d, with unit length (docs/conventions.md §2); absent
 /// when a component of d is 0. O(1).
 std::optional<std::array<double, 3>> light_of_map_3(const Point3& d, const Colour& canonical_light);
