@@ -73,8 +73,8 @@ ConvexSet3 feasible_set_3d(const CanonicalConstraints3& canonical, const std::ve
 /// gamut of that type and the image's colours of the same type (pixel colours, or derivative
 /// magnitudes for edge gamuts; channels >= 0, any superset of their hull's vertices).
 struct GamutConstraint3 {
-  const CanonicalConstraints3* canonical;
-  const std::vector<Colour>* image;
+  const CanonicalConstraints3* canonical;  ///< the type's prepared canonical gamut
+  const std::vector<Colour>* image;        ///< the image's colours of that type
 };
 
 /// The maps d that take every type's image colours into its own canonical gamut at once: the
