@@ -20,8 +20,8 @@
 #include <gmcc/photo/estimate_3d.h>
 #include <gmcc/photo/grey_edge.h>
 #include <gmcc/photo/learn_canonical.h>
+#include <gmcc/validation/error_statistics.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -39,14 +39,8 @@ struct Image {
   Colour light;
   ImageColours colours, edge1, edge2;
   std::array<double, 3> grey_world{};
-  Rational scale;  // the largest white-balanced channel of its pixel colours
+  Rational scale;  // white_balanced_maximum of its pixel colours
 };
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
 
 std::vector<Colour> scaled(const std::vector<Colour>& colours, const Rational& s) {
   std::vector<Colour> out;
@@ -86,10 +80,7 @@ int main(int argc, char** argv) {
     const KeptPixels kept = kept_pixels(im.pixels, rules);
     const auto g = grey_edge_estimate(linear_image(im.pixels, 0), kept.kept, baseline_parameters(Baseline::grey_world));
     if (g) im.grey_world = *g;
-    Rational top(0);
-    for (const Colour& c : im.colours.colours)
-      top = std::max({top, Rational(c.r / im.light.r), Rational(c.g / im.light.g), Rational(c.b / im.light.b)});
-    im.scale = top;
+    im.scale = white_balanced_maximum(im.colours.colours, im.light);
     images.push_back(std::move(im));
   }
 
@@ -131,9 +122,7 @@ int main(int argc, char** argv) {
   for (const std::string& m : methods)
     for (Rule3 rule : {Rule3::max_trace, Rule3::max_volume}) {
       const std::string name = m + " " + to_string(rule);
-      const std::vector<double>& v = errors[name];
-      double mean = 0;
-      for (double x : v) mean += x;
-      std::printf("  %-22s mean %5.2f  median %5.2f  empty %d\n", name.c_str(), mean / v.size(), median(v), empty[name]);
+      const ErrorStatistics e = error_statistics(errors[name]);
+      std::printf("  %-22s mean %5.2f  median %5.2f  empty %d\n", name.c_str(), e.mean, e.median, empty[name]);
     }
 }

@@ -14,7 +14,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -116,11 +115,7 @@ std::vector<std::size_t> outside_small_hull(const std::vector<std::array<double,
   }
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i < d.size(); ++i) {
-    if (planes.empty()) {
-      out.push_back(i);
-      continue;
-    }
-    bool inside = true;
+    bool inside = !planes.empty();
     for (std::size_t j = 0; j < planes.size() && inside; ++j) {
       const std::array<double, 4>& f = planes[j];
       inside = f[0] * d[i][0] + f[1] * d[i][1] + f[2] * d[i][2] < f[3];

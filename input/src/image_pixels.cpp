@@ -335,24 +335,31 @@ namespace {
 ImageColours prefiltered_colours(const RgbImage& image, const PixelRules& rules, const KeptPixels& kept) {
   const DoubleImage smooth = gaussian_derivative(linear_image(image, rules.black_level), rules.prefilter_sigma,
                                                  DerivativeOrder::zero);
-  ImageColours out;
-  out.counts = kept.counts;
   std::vector<std::array<double, 3>> colours;
   for (std::size_t i = 0; i < kept.kept.size(); ++i)
     if (kept.kept[i]) colours.push_back({smooth.at(i, 0), smooth.at(i, 1), smooth.at(i, 2)});
+  return colour_set_of_doubles(std::move(colours), rules.colour_set, kept.counts);
+}
+
+}  // namespace
+
+ImageColours colour_set_of_doubles(std::vector<std::array<double, 3>> colours, ColourSet colour_set,
+                                   const PixelCounts& counts) {
+  ImageColours out;
+  out.counts = counts;
   std::sort(colours.begin(), colours.end());
   colours.erase(std::unique(colours.begin(), colours.end()), colours.end());
   out.counts.colours = colours.size();
-  out.set = rules.colour_set;
+  out.set = colour_set;
   if (colours.empty()) return out;
-  if (rules.colour_set == ColourSet::hull) {
+  if (colour_set == ColourSet::hull) {
     const ChromaticityHull hull = chromaticity_hull(colours);
     out.counts.no_chromaticity = hull.dropped;
     for (const Point2& p : hull.hull.vertices) out.colours.push_back({p.x, p.y, Rational(1)});
     out.counts.hull_vertices = out.colours.size();
     return out;
   }
-  if (rules.colour_set == ColourSet::hull_3d) {
+  if (colour_set == ColourSet::hull_3d) {
     for (std::size_t i : colour_hull_vertex_indices(colours))
       out.colours.push_back({Rational(colours[i][0]), Rational(colours[i][1]), Rational(colours[i][2])});
     out.counts.hull_vertices = out.colours.size();
@@ -364,8 +371,6 @@ ImageColours prefiltered_colours(const RgbImage& image, const PixelRules& rules,
   for (const auto& c : colours) out.colours.push_back({Rational(c[0]), Rational(c[1]), Rational(c[2])});
   return out;
 }
-
-}  // namespace
 
 ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
   if (rules.bin == 0) throw std::invalid_argument("the binning block size must be at least 1");

@@ -30,6 +30,13 @@ CanonicalIntensity canonical_intensity_from_string(const std::string& text) {
   throw std::invalid_argument("\"" + text + "\" is not one of max, none");
 }
 
+Rational white_balanced_maximum(const std::vector<Colour>& colours, const Colour& light) {
+  Rational top = 0;
+  for (const Colour& c : colours)
+    top = std::max({top, Rational(c.r / light.r), Rational(c.g / light.g), Rational(c.b / light.b)});
+  return top;
+}
+
 CanonicalLearner3::CanonicalLearner3(CanonicalIntensity intensity) : intensity_(intensity) {}
 
 void CanonicalLearner3::add(const std::vector<Colour>& colours, const Colour& light) {
@@ -39,12 +46,9 @@ void CanonicalLearner3::add(const std::vector<Colour>& colours, const Colour& li
   // Only the image's hull vertices can be vertices of the union; the diagonal map and the
   // scaling keep them vertices.
   std::vector<Colour> v = colour_hull_vertices(colours);
-  Rational top = 0;
-  for (Colour& c : v) {
-    c = {c.r / light.r, c.g / light.g, c.b / light.b};
-    top = std::max({top, c.r, c.g, c.b});
-  }
+  const Rational top = white_balanced_maximum(v, light);
   if (sgn(top) == 0) return;  // only black: nothing a hull with black lacks
+  for (Colour& c : v) c = {c.r / light.r, c.g / light.g, c.b / light.b};
   if (intensity_ == CanonicalIntensity::max)
     for (Colour& c : v) c = {c.r / top, c.g / top, c.b / top};
   ++contributing_;

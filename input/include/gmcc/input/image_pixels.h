@@ -28,6 +28,7 @@
 #include <gmcc/geometry/point.h>
 #include <gmcc/input/image_file.h>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -116,6 +117,14 @@ struct KeptPixels {
 /// pixels every method of an image sees, the gamut methods and the statistics alike.
 /// \throws std::invalid_argument as image_colours.
 KeptPixels kept_pixels(const RgbImage& image, const PixelRules& rules);
+
+/// Colours given as doubles (smoothed or derivative values), taken exactly, as `colour_set`
+/// says: distinct (sorted), the 3-D hull's vertices, or the chromaticity hull's lifts; `counts`
+/// as the caller's steps left them, with colours, hull_vertices and no_chromaticity set here.
+/// The last step of the pre-filter route of image_colours and of edge colours (edge_colours.h).
+/// \throws std::length_error for ColourSet::distinct with more than max_colours colours.
+ImageColours colour_set_of_doubles(std::vector<std::array<double, 3>> colours, ColourSet colour_set,
+                                   const PixelCounts& counts);
 
 /// Apply the rules to `image`.
 /// \throws std::length_error for ColourSet::distinct with more than max_colours (colour_csv.h)

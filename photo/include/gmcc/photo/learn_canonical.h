@@ -38,6 +38,12 @@ std::string to_string(CanonicalIntensity intensity);
 /// The inverse of to_string. \throws std::invalid_argument naming the accepted values.
 CanonicalIntensity canonical_intensity_from_string(const std::string& text);
 
+/// The largest channel of the white-balanced colours p ⊘ e: the factor CanonicalIntensity::max
+/// divides an image's colours by (0 for no colour or only black). Edge colours of the same image
+/// are divided by the same factor, so that every gamut type shares one intensity scale
+/// (docs/photographs.md §5). \pre every channel of `light` > 0. O(n).
+Rational white_balanced_maximum(const std::vector<Colour>& colours, const Colour& light);
+
 /// Learns a 3-D canonical gamut image by image (Forsyth's G_c3 from photographs).
 class CanonicalLearner3 {
  public:
