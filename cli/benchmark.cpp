@@ -1,5 +1,6 @@
 #include "benchmark.h"
 
+#include <gmcc/geometry/rational.h>
 #include <gmcc/input/input_error.h>
 #include <gmcc/input/text_file.h>
 #include <gmcc/input/truth_table.h>
@@ -267,7 +268,10 @@ CLI::App* add_benchmark_command(CLI::App& app, BenchmarkCliOptions& o) {
   cmd->add_option("--methods", o.methods,
                   "the methods, of gm3d-max-trace, gm3d-max-volume, gm3d-centroid, gm2d-max-area, "
                   "gm2d-mean-2d, gm2d-mean-3d, grey-world, white-patch, shades-of-grey, grey-edge-1, "
-                  "grey-edge-2 (default all)")
+                  "grey-edge-2 (the default: these eleven), and the edge-based gamut methods with max-trace "
+                  "(Gijsenij et al. 2010): gm3d-edge1-max-trace, gm3d-edge2-max-trace (the gamuts of 1st- and "
+                  "2nd-order derivative magnitudes), gm3d-1jet-max-trace (pixel and 1st-order feasible sets "
+                  "intersected), gm3d-2jet-max-trace (pixel, 1st and 2nd order)")
       ->delimiter(',')
       ->check(CLI::IsMember(benchmark_methods()));
   cmd->add_option("--intensity", o.intensity, "3-D canonical learning: max or none (as gmcc canonical)")
@@ -275,6 +279,9 @@ CLI::App* add_benchmark_command(CLI::App& app, BenchmarkCliOptions& o) {
       ->capture_default_str();
   cmd->add_option("--black", o.black, "include or exclude black in the 3-D canonical gamut")
       ->check(CLI::IsMember({"include", "exclude"}))
+      ->capture_default_str();
+  cmd->add_option("--edge-sigma", o.edge_sigma,
+                  "the edge-based methods' Gaussian derivative scale, in pixels, more than 0 and at most 64")
       ->capture_default_str();
   cmd->add_option("--threads", o.threads, "worker threads, 0 for the machine's cores")->capture_default_str();
   cmd->add_option("--csv", o.csv_path, "write one row per method to this CSV file");
@@ -304,6 +311,17 @@ int run_benchmark_command(const BenchmarkCliOptions& o) {
   options.intensity = canonical_intensity_from_string(o.intensity);
   options.black = o.black == "exclude" ? CanonicalBlack::exclude : CanonicalBlack::include;
   options.threads = static_cast<unsigned>(integer_option("--threads", o.threads, 0, 1024));
+  const bool edges = std::any_of(options.methods.begin(), options.methods.end(), is_edge_gamut_method);
+  Rational sigma;
+  try {
+    sigma = parse_rational(o.edge_sigma);
+  } catch (const std::invalid_argument& e) {
+    throw InputError("--edge-sigma", 0, quoted_text(o.edge_sigma) + ": " + e.what());
+  }
+  if (sgn(sigma) <= 0 || sigma > 64) throw InputError("--edge-sigma", 0, "expected a sigma above 0 and at most 64 pixels");
+  options.edge_sigma = to_double_nearest(sigma);
+  if (edges && options.pixels.prefilter_sigma != 0)
+    throw InputError("--prefilter", 0, "not with the edge-based methods: their derivatives are Gaussian already");
   std::string shard = "1/1";
   if (!o.shard.empty()) {
     const auto slash = o.shard.find('/');

@@ -21,6 +21,7 @@ struct BenchmarkCliOptions {
   std::vector<std::string> methods;
   std::string intensity = "max";
   std::string black = "include";
+  std::string edge_sigma = "1";  // the edge-based methods' derivative scale, pixels
   std::string threads = "0";
   std::string csv_path, json_path, records_path, plot_dir;
   bool no_progress = false;

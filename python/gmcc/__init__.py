@@ -864,7 +864,7 @@ def estimate_3d(canonical, image, truth=None, *, rules=None, centroid="certified
 
 def benchmark(images, truths, *, folds=None, folds_file=None, methods=None, intensity="max",
               black="include", threads=0, black_level=None, saturation=None, dark=0,
-              dark_fraction=None, bright_fraction=None, pixel_rule="none", frame=True):
+              dark_fraction=None, bright_fraction=None, pixel_rule="none", edge_sigma=1.0, frame=True):
     """Benchmark every gamut method and baseline on a dataset of linear images, fold by fold.
 
     ``gmcc benchmark`` from Python (benchmark.h; docs/photographs.md §6): every image is
@@ -884,7 +884,11 @@ def benchmark(images, truths, *, folds=None, folds_file=None, methods=None, inte
     folds_file : str or os.PathLike, optional
         ``image,fold``: the dataset's own split (give this or ``folds``).
     methods : list of str, optional
-        A subset of the benchmark's methods (default None: all).
+        Methods by name (default None: the eleven pixel gamut methods and baselines). The
+        edge-based gamut methods of Gijsenij, Gevers & van de Weijer (2010 §4), each with
+        max-trace, are asked for by name: ``gm3d-edge1-max-trace``, ``gm3d-edge2-max-trace``
+        (1st- and 2nd-order derivative gamuts), ``gm3d-1jet-max-trace`` (pixel and 1st-order
+        feasible sets intersected), ``gm3d-2jet-max-trace`` (and the 2nd order).
     intensity : {'max', 'none'}, default 'max'
         How each training image is scaled before the 3-D union (``gmcc benchmark --intensity``):
         its largest white-balanced channel made 1, or as it is.
@@ -904,6 +908,8 @@ def benchmark(images, truths, *, folds=None, folds_file=None, methods=None, inte
         The dark and bright rules as fractions of the image's maximum (as image_colours).
     pixel_rule : {'none', 'gijsenij'}, default 'none'
         ``'gijsenij'``: Gijsenij et al. (2010)'s rule, the fractions 5/255 and 245/255.
+    edge_sigma : float, default 1.0
+        The edge-based methods' Gaussian derivative scale in pixels, in (0, 64].
     frame : bool, default True
         Return pandas DataFrames (when pandas is installed) rather than lists of dicts.
 
@@ -921,7 +927,7 @@ def benchmark(images, truths, *, folds=None, folds_file=None, methods=None, inte
     ------
     ValueError
         A bad truth table, folds file or image (naming the file and line), neither or both of
-        ``folds`` and ``folds_file``, an unknown method or a bad pixel rule.
+        ``folds`` and ``folds_file``, an unknown method, a bad pixel rule or edge_sigma.
     TypeError
         An argument of the wrong type.
     """
@@ -930,7 +936,7 @@ def benchmark(images, truths, *, folds=None, folds_file=None, methods=None, inte
         folds_file=None if folds_file is None else str(folds_file), methods=methods,
         intensity=intensity, black=black, threads=threads, black_level=black_level,
         saturation=saturation, dark=dark, dark_fraction=dark_fraction,
-        bright_fraction=bright_fraction, pixel_rule=pixel_rule)
+        bright_fraction=bright_fraction, pixel_rule=pixel_rule, edge_sigma=edge_sigma)
     if frame:
         try:
             import pandas

@@ -556,8 +556,9 @@ void bind_benchmark(py::module_& m) {
       [](const std::string& images, const std::string& truths, py::object folds, py::object folds_file,
          py::object methods, const std::string& intensity, const std::string& black, unsigned threads,
          py::object black_level, py::object saturation, py::object dark, py::object dark_fraction,
-         py::object bright_fraction, const std::string& pixel_rule) {
+         py::object bright_fraction, const std::string& pixel_rule, double edge_sigma) {
         BenchmarkOptions o;
+        o.edge_sigma = edge_sigma;
         std::vector<BenchmarkImage> dataset;
         try {
           const std::vector<TruthRow> rows = read_truth_table(truths);
@@ -635,7 +636,7 @@ void bind_benchmark(py::module_& m) {
       py::arg("folds_file") = py::none(), py::arg("methods") = py::none(), py::arg("intensity") = "max",
       py::arg("black") = "include", py::arg("threads") = 0, py::arg("black_level") = py::none(),
       py::arg("saturation") = py::none(), py::arg("dark") = 0, py::arg("dark_fraction") = py::none(),
-      py::arg("bright_fraction") = py::none(), py::arg("pixel_rule") = "none",
+      py::arg("bright_fraction") = py::none(), py::arg("pixel_rule") = "none", py::arg("edge_sigma") = 1.0,
       "run_benchmark (benchmark.h). Public: gmcc.benchmark.");
 }
 

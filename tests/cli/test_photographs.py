@@ -11,7 +11,9 @@ The scene: integer surfaces S under integer lights e, pixel = s ⊙ e exactly. T
 - chromaticity lifts (gmcc canonical's 2-D file, header r/b,g/b,1) fed to the 3-D routes exit 2;
 - `gmcc benchmark`: grey world equals an independent implementation of grey world on the same
   pixels (Gijsenij et al.'s rule written here in integers); --folds K and the equivalent folds file
-  give the same records; the CSV has one row per method; bad tables exit 2 naming file and line.
+  give the same records; the CSV has one row per method; bad tables exit 2 naming file and line;
+  the edge-based methods' feasible sets nest as intersections do (a true light inside a 1-jet or
+  2-jet set is inside each of its types' sets), and their bad options exit 2.
 
     test_photographs.py GMCC_BINARY
 """
@@ -296,8 +298,49 @@ def main():
             rc, out, err = r.run("estimate", "--canonical", canonical2, "--prefilter", "1", "--bin", "2", img, prefix=[])
             expect(rc == 2 and "--prefilter" in err, err)
 
+        def edge_methods_intersect():
+            # The 1-jet's feasible set is the pixel one's intersected with the 1st-order edge one's,
+            # and the 2-jet's is the 1-jet's intersected with the 2nd-order one's: a true light in
+            # a jet's set is in each of its types' sets (each learned from the same fold).
+            edge = ["gm3d-max-trace", "gm3d-edge1-max-trace", "gm3d-edge2-max-trace", "gm3d-1jet-max-trace",
+                    "gm3d-2jet-max-trace"]
+            records = os.path.join(tmp, "edges.jsonl")
+            rc, out, err = r.run(*base, "--folds", "3", "--methods", ",".join(edge), "--records", records, prefix=[])
+            expect(rc == 0, err)
+            by = {}
+            for rec in [json.loads(x) for x in open(records)][2:]:
+                by.setdefault(rec["image"], {})[rec["method"]] = rec
+            expect(len(by) == 12 and all(set(v) == set(edge) for v in by.values()), "every method of every image")
+            jets_with_a_set = 0
+            for image, m in by.items():
+                inside = {k: m[k].get("truth_in_feasible") for k in edge}
+                pixel, e1, e2, j1, j2 = (inside[k] for k in edge)
+                if j1 is not None:
+                    jets_with_a_set += 1
+                    expect(pixel is not None and e1 is not None, (image, inside))
+                    expect(not j1 or (pixel and e1), (image, inside))
+                if j2 is not None:
+                    expect(j1 is not None and e2 is not None, (image, inside))
+                    expect(not j2 or (j1 and e2), (image, inside))
+                for k in edge:  # every record has an error: the method's light or grey world's
+                    expect(m[k]["error_deg"] is not None and (m[k]["answered"] or m[k]["fallback"] == "grey_world"),
+                           m[k])
+            expect(jets_with_a_set >= 3, f"only {jets_with_a_set} images have a 1-jet feasible set")
+            # One thread or two: the same bytes.
+            again = os.path.join(tmp, "edges1.jsonl")
+            rc, out, err = r.run(*base, "--folds", "3", "--methods", ",".join(edge), "--records", again,
+                                 "--threads", "1", prefix=[])
+            expect(rc == 0 and open(again).read() == open(records).read(), "threads change nothing")
+            # Refusals name the option, exit 2 and write nothing.
+            for extra, name in ((["--edge-sigma", "0"], "--edge-sigma"), (["--edge-sigma", "65"], "--edge-sigma"),
+                                (["--edge-sigma", "x"], "--edge-sigma"), (["--prefilter", "1"], "--prefilter")):
+                csv_out = os.path.join(tmp, "refused.csv")
+                rc, out, err = r.run(*base, "--folds", "3", "--methods", "gm3d-1jet-max-trace", "--csv", csv_out,
+                                     *extra, prefix=[])
+                expect(rc == 2 and name in err and out == "" and not os.path.exists(csv_out), (extra, rc, err))
+
         r.check_all(grey_world_independent, folds_file_equals_folds_k, bad_tables, shards_merge_to_the_whole_run,
-                    per_image_rules_in_the_truth_table, grey_and_one_bit_masks)
+                    per_image_rules_in_the_truth_table, grey_and_one_bit_masks, edge_methods_intersect)
         return r.finish()
 
 

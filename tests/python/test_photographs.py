@@ -176,6 +176,40 @@ def test_benchmark_equals_the_command_line(tmp_path):
         gmcc.benchmark(tmp_path, truths, folds=3, methods=["grey-sky"])
 
 
+def test_edge_methods_equal_the_command_line(tmp_path):
+    # The edge-based methods (Gijsenij et al. 2010 §4) at a chosen sigma, from Python and from the
+    # command line, on images of surface patches under integer lights: the same records.
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
+    from png16 import write_png16
+    rng = np.random.default_rng(28)
+    surfaces = rng.integers(50, 900, size=(25, 3))
+    lines = ["image,r,g,b"]
+    for i in range(9):
+        e = rng.integers(3, 60, size=3)
+        patches = surfaces[rng.integers(0, 25, size=(4, 4))]
+        img = np.repeat(np.repeat(patches, 4, axis=0), 4, axis=1) * e
+        write_png16(tmp_path / f"q{i}.png", [[tuple(int(x) for x in px) for px in row] for row in img])
+        lines.append(f"q{i}.png,{e[0]},{e[1]},{e[2]}")
+    truths = tmp_path / "truths.csv"
+    truths.write_text("\n".join(lines) + "\n")
+    methods = ["gm3d-edge1-max-trace", "gm3d-edge2-max-trace", "gm3d-1jet-max-trace", "gm3d-2jet-max-trace"]
+    summary, records = gmcc.benchmark(tmp_path, truths, folds=3, methods=methods, edge_sigma=1.5, frame=False)
+    assert [s["method"] for s in summary] == methods and len(records) == 9 * 4
+    assert sum(r["feasible_kind"] is not None for r in records) >= 18
+    with pytest.raises(ValueError, match="sigma"):
+        gmcc.benchmark(tmp_path, truths, folds=3, methods=methods[:1], edge_sigma=0)
+    cli = os.environ.get("GMCC_CLI")
+    if not cli:
+        pytest.skip("GMCC_CLI not set")
+    out = tmp_path / "r.jsonl"
+    subprocess.run([cli, "benchmark", "--images", str(tmp_path), "--truths", str(truths), "--folds", "3",
+                    "--methods", ",".join(methods), "--edge-sigma", "1.5", "--no-progress", "--records", str(out)],
+                   check=True, capture_output=True)
+    lines = [json.loads(x) for x in out.read_text().splitlines()[2:]]
+    assert [(a["image"], a["method"], a["error_deg"], a["answered"]) for a in records] == \
+        [(b["image"], b["method"], b["error_deg"], b["answered"]) for b in lines]
+
+
 def test_reproduce_refuses_an_expansion_beyond_the_limit():
     # Issue 30 item 4: the 1e150 limit of every command, as a ValueError naming it (not an internal error).
     for expand in ("1e151", "1e400"):

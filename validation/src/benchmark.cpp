@@ -5,6 +5,7 @@
 #include <gmcc/numerics/interrupt.h>
 #include <gmcc/input/image_file.h>
 #include <gmcc/input/input_error.h>
+#include <gmcc/photo/edge_colours.h>
 #include <gmcc/photo/estimate_3d.h>
 #include <gmcc/photo/grey_edge.h>
 #include <gmcc/selection/prepare_canonical.h>
@@ -28,18 +29,26 @@ namespace {
 
 const char* const kGm3d[3] = {"gm3d-max-volume", "gm3d-centroid", "gm3d-max-trace"};
 const char* const kGm2d[3] = {"gm2d-max-area", "gm2d-mean-2d", "gm2d-mean-3d"};
+// The edge-based methods (max-trace): edge-1, edge-2, 1-jet (pixel ∩ edge-1), 2-jet (∩ edge-2).
+const char* const kEdge[4] = {"gm3d-edge1-max-trace", "gm3d-edge2-max-trace", "gm3d-1jet-max-trace",
+                              "gm3d-2jet-max-trace"};
+// Which gamut types edge-based method k intersects: pixel, 1st-order, 2nd-order.
+constexpr bool kEdgeTypes[4][3] = {{false, true, false}, {false, false, true}, {true, true, false}, {true, true, true}};
 
 // What an image is reduced to: all the methods need of it.
 struct Reduced {
   std::vector<Colour> hull3;  // pixel colours on their 3-D hull
   std::vector<Colour> lifts;  // chromaticity lifts of their 2-D hull
+  std::vector<Colour> edges[2];  // 1st- and 2nd-order edge colours on their 3-D hull
   std::array<std::optional<std::array<double, 3>>, all_baselines.size()> baselines;
 };
 
 // Which families the methods asked for need.
 struct Needs {
-  bool gm3d = false, gm2d = false;
+  bool gm3d = false, gm2d = false;  // gm3d: the pixel colours' 3-D hull and canonical gamut
   std::array<bool, 3> rule3{}, rule2{};
+  std::array<bool, 4> edge{};  // the edge-based methods
+  std::array<bool, 2> order{};  // the 1st- and 2nd-order edge colours and canonical gamuts
   std::array<bool, all_baselines.size()> baseline{};
 };
 
@@ -52,6 +61,12 @@ Needs needs_of(const std::vector<std::string>& methods) {
       if (m == kGm3d[k]) n.gm3d = n.rule3[k] = known = true;
       if (m == kGm2d[k]) n.gm2d = n.rule2[k] = known = true;
     }
+    // An edge-based method needs the pixel colours too: their scale is its edge colours' scale.
+    for (int k = 0; k < 4; ++k)
+      if (m == kEdge[k]) {
+        n.gm3d = n.edge[k] = known = true;
+        for (int o = 0; o < 2; ++o) n.order[o] = n.order[o] || kEdgeTypes[k][o + 1];
+      }
     for (std::size_t b = 0; b < all_baselines.size() && !known; ++b)
       if (m == benchmark_methods()[6 + b]) n.baseline[b] = known = true;
     if (!known) throw std::invalid_argument("unknown benchmark method \"" + m + "\"");
@@ -99,6 +114,14 @@ Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs&
     rules.colour_set = ColourSet::hull_3d;
     r.hull3 = image_colours(image, rules).colours;
   }
+  for (int k = 0; k < 2; ++k)
+    if (n.order[k]) {
+      rules.colour_set = ColourSet::hull_3d;
+      EdgeRules edges;
+      edges.order = k == 0 ? DerivativeOrder::first : DerivativeOrder::second;
+      edges.sigma = o.edge_sigma;
+      r.edges[k] = edge_colours(image, rules, edges).colours;
+    }
   if (n.gm2d) {
     rules.colour_set = ColourSet::hull;
     r.lifts = image_colours(image, rules).colours;
@@ -215,9 +238,20 @@ std::vector<BenchmarkImage> benchmark_dataset(const std::string& images_dir, con
 }
 
 const std::vector<std::string>& benchmark_methods() {
-  static const std::vector<std::string> m = {"gm3d-max-trace", "gm3d-max-volume", "gm3d-centroid", "gm2d-max-area",
-                                             "gm2d-mean-2d",   "gm2d-mean-3d",    "grey-world",    "white-patch",
-                                             "shades-of-grey", "grey-edge-1",     "grey-edge-2"};
+  static const std::vector<std::string> m = {
+      "gm3d-max-trace", "gm3d-max-volume",      "gm3d-centroid",        "gm2d-max-area",
+      "gm2d-mean-2d",   "gm2d-mean-3d",         "grey-world",           "white-patch",
+      "shades-of-grey", "grey-edge-1",          "grey-edge-2",          kEdge[0],
+      kEdge[1],         kEdge[2],               kEdge[3]};
+  return m;
+}
+
+bool is_edge_gamut_method(const std::string& method) {
+  return std::find(std::begin(kEdge), std::end(kEdge), method) != std::end(kEdge);
+}
+
+const std::vector<std::string>& default_benchmark_methods() {
+  static const std::vector<std::string> m(benchmark_methods().begin(), benchmark_methods().begin() + 11);
   return m;
 }
 
@@ -226,6 +260,7 @@ namespace {
 // One fold's canonical gamuts, learned from the other folds' reduced images.
 struct FoldCanonicals {
   std::optional<CanonicalConstraints3> gamut3;
+  std::optional<CanonicalConstraints3> edges[2];  // absent when no training image has such colours
   std::optional<PreparedCanonical> gamut2;
 };
 
@@ -233,16 +268,31 @@ FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, c
                           const BenchmarkOptions& o, const Needs& n) {
   CanonicalLearner3 learner3(o.intensity);
   CanonicalLearner2 learner2;
+  // Edge colours scaled by their image's pixel factor (learn_canonical.h), then as they are.
+  CanonicalLearner3 edges[2] = {CanonicalLearner3(CanonicalIntensity::none), CanonicalLearner3(CanonicalIntensity::none)};
   std::size_t training = 0;
   for (std::size_t i = 0; i < images.size(); ++i) {
     if (images[i].fold == fold) continue;
     ++training;
     if (n.gm3d) learner3.add(reduced[i].hull3, images[i].light);
     if (n.gm2d) learner2.add(reduced[i].lifts, images[i].light);
+    if (!n.order[0] && !n.order[1]) continue;
+    Rational scale(1);
+    if (o.intensity == CanonicalIntensity::max) scale = white_balanced_maximum(reduced[i].hull3, images[i].light);
+    if (sgn(scale) == 0) continue;  // only black: the pixel gamut takes nothing of it either
+    for (int k = 0; k < 2; ++k) {
+      if (!n.order[k]) continue;
+      std::vector<Colour> scaled;
+      for (const Colour& p : reduced[i].edges[k])
+        scaled.push_back({Rational(p.r / scale), Rational(p.g / scale), Rational(p.b / scale)});
+      edges[k].add(scaled, images[i].light);
+    }
   }
   if (training == 0) throw std::invalid_argument("fold " + std::to_string(fold) + " has no training image (one fold only)");
   FoldCanonicals c;
   if (n.gm3d) c.gamut3.emplace(learner3.gamut(), o.black);
+  for (int k = 0; k < 2; ++k)
+    if (n.order[k] && edges[k].contributing() > 0) c.edges[k].emplace(edges[k].gamut(), o.black);
   if (n.gm2d) {
     std::vector<Colour> lifts;
     for (const Point2& p : learner2.gamut()) lifts.push_back({p.x, p.y, Rational(1)});
@@ -251,43 +301,81 @@ FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, c
   return c;
 }
 
-// The 3-D rules' records of one image (light absent where the rule gave none).
+// A 3-D estimate from some gamut types' constraints, and whether the true light's map lies in
+// its feasible set; no estimate when F3 is unbounded.
+struct Estimate3InF {
+  std::optional<ImageEstimate3> estimate;
+  std::optional<bool> truth_in_feasible;
+};
+Estimate3InF estimate_in_f(const std::vector<GamutConstraint3>& types, const std::vector<Rule3>& rules,
+                           const Colour& e) {
+  Estimate3InF out;
+  Estimate3Options eo;
+  eo.rules = rules;
+  try {
+    out.estimate = estimate_3d(types, eo);
+  } catch (const std::domain_error&) {  // unbounded F3: no estimate
+    return out;
+  }
+  if (out.estimate->feasible.kind != ConvexKind3::empty) {
+    const std::optional<ConvexSet2> image = perspective_image(out.estimate->feasible);
+    out.truth_in_feasible = image && contains(*image, true_perspective_map(e));
+  } else {
+    out.truth_in_feasible = false;
+  }
+  return out;
+}
+
+// One 3-D rule's record from an estimate (light absent where the rule gave none).
+BenchmarkRecord record_3d(const char* method, const Estimate3InF& est, Rule3 rule) {
+  BenchmarkRecord rec;
+  rec.method = method;
+  if (est.estimate) {
+    rec.feasible_kind = to_string(est.estimate->feasible.kind);
+    rec.feasible_vertices = est.estimate->feasible.vertices.size();
+    rec.truth_in_feasible = est.truth_in_feasible;
+    const std::optional<ImageSelection3>& s = (*est.estimate)[rule];
+    if (s && s->light) {
+      rec.light = s->light;
+      rec.answered = true;
+      rec.worst_case_deg = s->selection.worst_case_deg;
+    }
+  }
+  return rec;
+}
+
+// The 3-D rules' records of one image.
 std::vector<BenchmarkRecord> records_3d(const CanonicalConstraints3& canonical, const Reduced& r, const Colour& e,
                                         const Needs& n) {
-  Estimate3Options eo;
-  eo.rules.clear();
+  std::vector<Rule3> rules;
   for (Rule3 rule : all_rules_3)
-    if (n.rule3[static_cast<int>(rule)]) eo.rules.push_back(rule);
-  ImageColours colours;
-  colours.colours = r.hull3;
-  colours.set = ColourSet::hull_3d;
-  std::optional<ImageEstimate3> est;
-  try {
-    est = estimate_3d(canonical, colours, eo);
-  } catch (const std::domain_error&) {  // unbounded F3: no estimate
-  }
-  std::optional<bool> in_f;
-  if (est && est->feasible.kind != ConvexKind3::empty) {
-    const std::optional<ConvexSet2> image = perspective_image(est->feasible);
-    in_f = image && contains(*image, true_perspective_map(e));
-  } else if (est) {
-    in_f = false;
-  }
+    if (n.rule3[static_cast<int>(rule)]) rules.push_back(rule);
   std::vector<BenchmarkRecord> out;
-  for (Rule3 rule : eo.rules) {
-    BenchmarkRecord rec;
-    rec.method = kGm3d[static_cast<int>(rule)];
-    if (est) {
-      rec.feasible_kind = to_string(est->feasible.kind);
-      rec.feasible_vertices = est->feasible.vertices.size();
-      rec.truth_in_feasible = in_f;
-      const std::optional<ImageSelection3>& s = (*est)[rule];
-      if (s && s->light) {
-        rec.light = s->light;
-        rec.answered = true;
-        rec.worst_case_deg = s->selection.worst_case_deg;
-      }
+  if (rules.empty()) return out;
+  const Estimate3InF est = estimate_in_f({{&canonical, &r.hull3}}, rules, e);
+  for (Rule3 rule : rules) out.push_back(record_3d(kGm3d[static_cast<int>(rule)], est, rule));
+  return out;
+}
+
+// The edge-based methods' records of one image: max-trace on the joint feasible set of their
+// gamut types; no feasible set when a type has no canonical gamut or no colour in this image.
+std::vector<BenchmarkRecord> records_edges(const FoldCanonicals& c, const Reduced& r, const Colour& e,
+                                           const Needs& n) {
+  std::vector<BenchmarkRecord> out;
+  for (int k = 0; k < 4; ++k) {
+    if (!n.edge[k]) continue;
+    std::vector<GamutConstraint3> types;
+    bool available = true;
+    const std::optional<CanonicalConstraints3>* gamuts[3] = {&c.gamut3, &c.edges[0], &c.edges[1]};
+    const std::vector<Colour>* colours[3] = {&r.hull3, &r.edges[0], &r.edges[1]};
+    for (int t = 0; t < 3; ++t) {
+      if (!kEdgeTypes[k][t]) continue;
+      if (!*gamuts[t] || colours[t]->empty()) available = false;
+      else types.push_back({&**gamuts[t], colours[t]});
     }
+    BenchmarkRecord rec;
+    rec.method = kEdge[k];
+    if (available) rec = record_3d(kEdge[k], estimate_in_f(types, {Rule3::max_trace}, e), Rule3::max_trace);
     out.push_back(std::move(rec));
   }
   return out;
@@ -340,6 +428,7 @@ std::vector<BenchmarkRecord> records_of(std::size_t i, const FoldCanonicals& c, 
     }
   };
   if (n.gm3d) keep(records_3d(*c.gamut3, r, e, n));
+  keep(records_edges(c, r, e, n));
   if (n.gm2d) keep(records_2d(*c.gamut2, r, e, n));
   for (std::size_t b = 0; b < all_baselines.size(); ++b) {
     BenchmarkRecord rec;
@@ -369,6 +458,12 @@ BenchmarkResult run_benchmark(const std::vector<BenchmarkImage>& images, const B
   if (o.shard_count < 1 || o.shard_index < 1 || o.shard_index > o.shard_count)
     throw std::invalid_argument("a shard K/N needs 1 <= K <= N");
   const Needs n = needs_of(o.methods);
+  if (n.order[0] || n.order[1]) {
+    if (!(o.edge_sigma > 0 && o.edge_sigma <= 64))
+      throw std::invalid_argument("the edge-based methods' sigma must be in (0, 64] pixels");
+    if (o.pixels.prefilter_sigma != 0)
+      throw std::invalid_argument("the edge-based methods take no pre-filter (their derivatives are Gaussian already)");
+  }
   const unsigned threads = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
   const std::size_t total = images.size();
   std::set<int> folds;

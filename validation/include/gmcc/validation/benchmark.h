@@ -55,16 +55,29 @@ std::vector<BenchmarkImage> benchmark_dataset(const std::string& images_dir, con
 
 /// The methods, by name: `gm3d-max-trace`, `gm3d-max-volume`, `gm3d-centroid`, `gm2d-max-area`,
 /// `gm2d-mean-2d`, `gm2d-mean-3d`, `grey-world`, `white-patch`, `shades-of-grey`,
-/// `grey-edge-1`, `grey-edge-2`, in that order.
+/// `grey-edge-1`, `grey-edge-2`, then the edge-based gamut methods of Gijsenij, Gevers & van de
+/// Weijer (2010 §4), each with max-trace: `gm3d-edge1-max-trace` (the gamut of 1st-order
+/// derivative magnitudes), `gm3d-edge2-max-trace` (2nd order), `gm3d-1jet-max-trace` (the
+/// intersection of the pixel and 1st-order feasible sets), `gm3d-2jet-max-trace` (pixel, 1st and
+/// 2nd order), in that order (docs/photographs.md §5).
 const std::vector<std::string>& benchmark_methods();
+
+/// The methods a run takes when none are named: the first eleven of benchmark_methods() (every
+/// pixel gamut method and baseline; the edge-based methods, which take the image derivatives and
+/// two more canonical gamuts, are asked for by name).
+const std::vector<std::string>& default_benchmark_methods();
 
 /// Whether `method` is a gamut-mapping method (`gm3d-…`, `gm2d-…`): it has a feasible set, an
 /// empty count and a fallback.
 inline bool is_gamut_method(const std::string& method) { return method.rfind("gm", 0) == 0; }
 
+/// Whether `method` is one of the edge-based gamut methods (`gm3d-edge1-max-trace`, …,
+/// `gm3d-2jet-max-trace`): it takes the image's derivatives, so no pre-filter.
+bool is_edge_gamut_method(const std::string& method);
+
 /// How the benchmark runs.
 struct BenchmarkOptions {
-  std::vector<std::string> methods = benchmark_methods();  ///< a subset, in any order
+  std::vector<std::string> methods = default_benchmark_methods();  ///< a subset, in any order
   PixelRules pixels;  ///< the run's pixel rules (colour_set and bin are set per method)
   /// Without a saturation in `pixels` or the image's own: drop pixels with a channel at the
   /// file's largest code, 2^bits − 1 (what `gmcc estimate --saturation max` does).
@@ -74,6 +87,10 @@ struct BenchmarkOptions {
   bool black_level_given = false;
   CanonicalIntensity intensity = CanonicalIntensity::max;  ///< 3-D learning (learn_canonical.h)
   CanonicalBlack black = CanonicalBlack::include;          ///< 3-D canonical gamut with black
+  /// The edge-based methods' derivative scale σ, in pixels, in (0, 64] (edge_colours.h; the
+  /// neighbourhood rule is its default). Their edge colours are scaled by the same factor as the
+  /// image's pixel colours, so that every gamut type shares one intensity scale.
+  double edge_sigma = 1;
   unsigned threads = 0;  ///< worker threads; 0: the machine's cores
   /// Shard K of N: only the images whose index i has i mod N = K − 1 are estimated (every image
   /// is still read and reduced: the canonical gamuts need them all). 1 of 1: the whole run.
@@ -133,9 +150,13 @@ struct BenchmarkResult {
 /// parallel, a few at a time; per fold, the canonical gamuts are learned from the other folds'
 /// reduced images and the fold's images estimated in parallel. Deterministic: the same inputs
 /// give the same records whatever the threads.
+/// An edge-based method's image with no edge colour of a type it needs (no kept pixel whose
+/// neighbourhood is kept), or a fold whose training images have none, has no feasible set: it
+/// takes grey world's light, like an empty one, but has no feasible kind.
 /// \throws InputError (a file: unreadable, not an image, a mask of the wrong size, no usable
 ///         pixel); std::invalid_argument (an unknown method, no image, a fold with no training
-///         image).
+///         image, an edge-based method with binning or a pre-filter in the pixel rules, or
+///         edge_sigma outside (0, 64]).
 BenchmarkResult run_benchmark(const std::vector<BenchmarkImage>& images, const BenchmarkOptions& options);
 
 /// The summaries of some records (of `methods`, over `images` images): what run_benchmark
