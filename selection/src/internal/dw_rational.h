@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 namespace gmcc::internal {
 
@@ -28,6 +29,14 @@ inline std::uint64_t bits_from(mpz_srcptr z, std::size_t low) {
   return v;
 }
 
+// 2^e exactly, for |e| <= 1000, from its bits.
+inline double power_of_two(int e) {
+  const std::uint64_t bits = static_cast<std::uint64_t>(1023 + e) << 52;
+  double p;
+  std::memcpy(&p, &bits, sizeof p);
+  return p;
+}
+
 // |z| > 0 as m·2^shift with m an enclosure in [2^63, 2^64) (or |z| itself, shift 0, below 2^64):
 // the leading 64 bits M1 (numerics::top_bits) as hi + lo exactly (53 and 11 bits), then the next
 // w = min(64, shift) bits M0, its top 53 bits exact at weight 2^-w; what is dropped (M0's low 11
@@ -41,7 +50,7 @@ inline DWEnclosure scaled_integer(mpz_srcptr z, long& shift) {
   const std::size_t w = t.shift < 64 ? static_cast<std::size_t>(t.shift) : 64;
   std::uint64_t m0 = bits_from(z, static_cast<std::size_t>(t.shift) - w);
   if (w < 64) m0 &= (std::uint64_t(1) << w) - 1;
-  const double tail = std::ldexp(static_cast<double>(m0 & ~std::uint64_t(0x7FF)), -static_cast<int>(w));
+  const double tail = static_cast<double>(m0 & ~std::uint64_t(0x7FF)) * power_of_two(-static_cast<int>(w));
   DWEnclosure e = head + DWEnclosure::exact(tail);
   e.rad = DWEnclosure::round_up(e.rad + 0x1p-52);
   return e;
@@ -58,8 +67,10 @@ inline DWEnclosure enclose_dw(mpz_srcptr num, mpz_srcptr den) {
   const long e = sn - sd;
   if (e > 900 || e < -900) return DWEnclosure::unbounded();
   DWEnclosure q = n / d;
-  const double p = std::ldexp(1.0, static_cast<int>(e));  // exact scaling: q is within 2^±65
-  q.mid.hi *= p, q.mid.lo *= p, q.rad = DWEnclosure::round_up(q.rad * p);
+  if (e != 0) {  // exact scaling: q is within 2^±65
+    const double p = dw_detail::power_of_two(static_cast<int>(e));
+    q.mid.hi *= p, q.mid.lo *= p, q.rad = DWEnclosure::round_up(q.rad * p);
+  }
   return mpz_sgn(num) < 0 ? -q : q;
 }
 
