@@ -242,6 +242,36 @@ unsigned middle_stage_bits(std::size_t n) {
   return std::max(80u, 73 + log2n);
 }
 
+// The stages before the exact-product MPFI loop, for an automatic precision: true when one of
+// them decided the rounding and filled e.
+bool decided_early(MapEstimate& e, const ConvexSet2& F) {
+  // First stage: double-word enclosures (about 2^-100 relative per operation, every bound
+  // proven), kept only when each component's enclosure rounds to a single double, from vertex
+  // enclosures and then, for thin polygons, from exactly formed edges. The reported bound and
+  // precision are this stage's (docs/cli.md "JSON output"); the map is the correctly rounded one
+  // whichever stage decides it.
+  if (report_if_rounded(e, direction_map_dw(F))) return true;
+  if (F.kind == ConvexKind::polygon && report_if_rounded(e, direction_map_dw_edges(F))) return true;
+  // Then rigorous extended-precision intervals, kept only when each component's enclosure
+  // rounds to a single double (which is then the correctly rounded map).
+  if (numerics::extended_precision_active()) {
+    if (report_if_rounded(e, direction_map_fast(F))) return true;
+    // Small or thin polygons: the same arithmetic from exactly formed edge vectors.
+    if (F.kind == ConvexKind::polygon && report_if_rounded(e, direction_map_fast_edges(F))) return true;
+    // The x87 enclosures are about an ulp wide (2^-50 … 2^-52 relative on feasible sets of
+    // the synthetic experiment's size), so a rounding boundary usually falls inside. MPFI from
+    // vertex enclosures at 80 bits (~2^-70 wide: a boundary falls inside about once in 2^17
+    // calls), before the exact products, whose gcds dominate on long rationals.
+    const unsigned bits = middle_stage_bits(F.vertices.size());
+    const auto m = direction_map_from_vertices<Interval>(F, [bits](const Rational& q) { return Interval(q, bits); });
+    if (internal::single_rounding(m[0]) && internal::single_rounding(m[1])) {
+      report(e, m, bits);
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options) {
@@ -254,33 +284,7 @@ MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options
   if (F.kind == ConvexKind::point) return e;
   e.enclosure.emplace();
 
-  // First stage: double-word enclosures (about 2^-100 relative per operation, every bound
-  // proven), kept only when each component's enclosure rounds to a single double, from vertex
-  // enclosures and then, for thin polygons, from exactly formed edges. The reported bound and
-  // precision are this stage's (docs/cli.md "JSON output"); the map is the correctly rounded one
-  // whichever stage decides it.
-  if (options.precision_bits == 0) {
-    if (report_if_rounded(e, direction_map_dw(F))) return e;
-    if (F.kind == ConvexKind::polygon && report_if_rounded(e, direction_map_dw_edges(F))) return e;
-  }
-  // Fast path: rigorous extended-precision intervals, kept only when each component's enclosure
-  // rounds to a single double (which is then the correctly rounded map).
-  if (numerics::extended_precision_active() && options.precision_bits == 0) {
-    if (report_if_rounded(e, direction_map_fast(F))) return e;
-    // Small or thin polygons: the same arithmetic from exactly formed edge vectors.
-    if (F.kind == ConvexKind::polygon && report_if_rounded(e, direction_map_fast_edges(F))) return e;
-    // Most polygons land here: the x87 enclosures are about an ulp wide (2^-50 … 2^-52
-    // relative on feasible sets of the synthetic experiment's size), so a rounding boundary
-    // usually falls inside. MPFI from vertex enclosures at 80 bits (~2^-70 wide: a boundary
-    // falls inside about once in 2^17 calls), before the exact products, whose gcds dominate
-    // on long rationals. This stage is what correct rounding costs (docs/performance.md).
-    const unsigned bits = middle_stage_bits(F.vertices.size());
-    const auto m = direction_map_from_vertices<Interval>(F, [bits](const Rational& q) { return Interval(q, bits); });
-    if (internal::single_rounding(m[0]) && internal::single_rounding(m[1])) {
-      report(e, m, bits);
-      return e;
-    }
-  }
+  if (options.precision_bits == 0 && decided_early(e, F)) return e;
   // MPFI: precision chosen from the polygon's size, then doubled until each component's
   // certified enclosure rounds to one double (a forced precision is used once, as given).
   // Far from the origin τ3 is small against its terms; too few bits leave it straddling 0 (or
