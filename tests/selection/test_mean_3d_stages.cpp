@@ -8,8 +8,11 @@
 
 #include <gmcc/selection/mean_3d.h>
 
+#include "internal/dw_rational.h"
+
 #include <boost/test/unit_test.hpp>
 
+#include <cmath>
 #include <map>
 #include <string>
 
@@ -30,7 +33,8 @@ BOOST_AUTO_TEST_CASE(every_stage_gives_the_nearest_double) {
     const test::Mean3dReference ref = test::mean_3d_reference(c.set);
     for (int k = 0; k < 2; ++k) {
       BOOST_TEST(e.correctly_rounded[k], c.name);
-      BOOST_TEST(e.map[k] == ref.nearest_double(k), c.name << " component " << k);
+      BOOST_TEST(e.map[k] == ref.nearest_double(k), c.name << " component " << k << " at " << e.precision_bits
+                                                            << " bits: " << e.map[k] << " vs " << ref.nearest_double(k));
     }
     ++by_stage[c.category][e.precision_bits];
   }
@@ -59,6 +63,28 @@ BOOST_AUTO_TEST_CASE(a_forced_precision_skips_the_double_word_stage) {
   const MapEstimate automatic = mean_3d_analytic(c.set), forced = mean_3d_analytic(c.set, {256});
   BOOST_TEST(forced.precision_bits == 256u);
   BOOST_TEST(automatic.map == forced.map);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(mean_3d_stages_inputs)
+
+// A rational vertex coordinate's double-word enclosure contains it, for numerators and
+// denominators of every length from 1 to 400 bits (both sides of 64 and 128) and either sign.
+BOOST_AUTO_TEST_CASE(rationals_are_enclosed) {
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(28);
+  for (int i = 0; i < 20000; ++i) {
+    const unsigned nb = 1 + static_cast<unsigned>(i % 400), db = 1 + static_cast<unsigned>((i * 7) % 400);
+    mpz_class num = random.get_z_bits(nb), den = random.get_z_bits(db) + 1;
+    if (i % 3 == 0) num = -num;
+    const internal::DWEnclosure e = internal::enclose_dw(num.get_mpz_t(), den.get_mpz_t());
+    if (!e.finite()) continue;  // beyond the range: no claim
+    const mpq_class q(num, den);
+    const mpq_class mid = mpq_class(e.mid.hi) + mpq_class(e.mid.lo);
+    BOOST_TEST(abs(q - mid) <= mpq_class(e.rad), "bits " << nb << "/" << db);
+    BOOST_TEST(e.rad <= std::fabs(e.mid.hi) * 0x1p-96);  // five charges of 2^-100 at most
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -38,21 +38,24 @@ inline double power_of_two(int e) {
 }
 
 // |z| > 0 as m·2^shift with m an enclosure in [2^63, 2^64) (or |z| itself, shift 0, below 2^64):
-// the leading 64 bits M1 (numerics::top_bits) as hi + lo exactly (53 and 11 bits), then the next
-// w = min(64, shift) bits M0, its top 53 bits exact at weight 2^-w; what is dropped (M0's low 11
-// bits, below 2^-53, and the bits below M0, below 2^-64) is charged as the radius 2^-52.
+// the leading 64 bits M1 (numerics::top_bits) and the next w = min(64, shift) bits M0 at weight
+// 2^-w, each split exactly into two doubles (its bits from the 12th up, at most 53, and its low
+// 11 bits) and summed in DWEnclosure arithmetic; the bits below M0 (only when shift > 64) are
+// below 2^-64 and are charged as the radius 2^-64.
 inline DWEnclosure scaled_integer(mpz_srcptr z, long& shift) {
   const numerics::TopBits t = numerics::top_bits(z);
   shift = t.shift;
+  constexpr std::uint64_t low11 = 0x7FF;
   const DWEnclosure head = DWEnclosure::exact(numerics::fast_two_sum(
-      static_cast<double>(t.mantissa & ~std::uint64_t(0x7FF)), static_cast<double>(t.mantissa & 0x7FF)));
+      static_cast<double>(t.mantissa & ~low11), static_cast<double>(t.mantissa & low11)));
   if (t.shift == 0) return head;
   const std::size_t w = t.shift < 64 ? static_cast<std::size_t>(t.shift) : 64;
   std::uint64_t m0 = bits_from(z, static_cast<std::size_t>(t.shift) - w);
   if (w < 64) m0 &= (std::uint64_t(1) << w) - 1;
-  const double tail = static_cast<double>(m0 & ~std::uint64_t(0x7FF)) * power_of_two(-static_cast<int>(w));
-  DWEnclosure e = head + DWEnclosure::exact(tail);
-  e.rad = DWEnclosure::round_up(e.rad + 0x1p-52);
+  const double scale = power_of_two(-static_cast<int>(w));
+  DWEnclosure e = head + DWEnclosure::exact(static_cast<double>(m0 & ~low11) * scale);
+  e = e + DWEnclosure::exact(static_cast<double>(m0 & low11) * scale);
+  if (t.shift > 64) e.rad = DWEnclosure::round_up(e.rad + 0x1p-64);
   return e;
 }
 }  // namespace dw_detail
