@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -250,8 +251,12 @@ bool decided_early(MapEstimate& e, const ConvexSet2& F) {
   // enclosures and then, for thin polygons, from exactly formed edges. The reported bound and
   // precision are this stage's (docs/cli.md "JSON output"); the map is the correctly rounded one
   // whichever stage decides it.
-  if (report_if_rounded(e, direction_map_dw(F))) return true;
-  if (F.kind == ConvexKind::polygon && report_if_rounded(e, direction_map_dw_edges(F))) return true;
+  // Its error-free transformations need doubles evaluated as doubles (FLT_EVAL_METHOD 0: SSE2,
+  // not the x87's double rounding).
+  if (FLT_EVAL_METHOD == 0) {
+    if (report_if_rounded(e, direction_map_dw(F))) return true;
+    if (F.kind == ConvexKind::polygon && report_if_rounded(e, direction_map_dw_edges(F))) return true;
+  }
   // Then rigorous extended-precision intervals, kept only when each component's enclosure
   // rounds to a single double (which is then the correctly rounded map).
   if (numerics::extended_precision_active()) {
