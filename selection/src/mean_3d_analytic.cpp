@@ -147,10 +147,10 @@ std::array<LDInterval, 2> direction_map_fast_edges(const ConvexSet2& F) {
 
 // In double-word enclosures (docs/math.md "The double-word stage"): from vertex enclosures, and
 // from exactly formed edges.
-std::array<DWEnclosure, 2> direction_map_dw(const ConvexSet2& F) {
+GMCC_DW_FMA_CLONES std::array<DWEnclosure, 2> direction_map_dw(const ConvexSet2& F) {
   return direction_map_from_vertices<DWEnclosure>(F, [](const Rational& q) { return internal::enclose_dw(q); });
 }
-std::array<DWEnclosure, 2> direction_map_dw_edges(const ConvexSet2& F) {
+GMCC_DW_FMA_CLONES std::array<DWEnclosure, 2> direction_map_dw_edges(const ConvexSet2& F) {
   return direction_map_edges<DWEnclosure>(
       F, [](const Rational& q) { return internal::enclose_dw(q); },
       [](mpz_srcptr num, mpz_srcptr den) { return internal::enclose_dw(num, den); });

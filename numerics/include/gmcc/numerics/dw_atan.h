@@ -11,14 +11,16 @@
 /// (the addition formula, valid since w·c > −1) [Muller2016Elementary, §6.2]. atan(ρ) is its
 /// Taylor series ρ − ρ³/3 + ρ⁵/5 − …, alternating with terms decreasing in size for |ρ| < 1, so
 /// stopping after the ρ¹³/13 term errs by at most the next term, |ρ|¹⁵/15 < 2^-120
-/// [Abramowitz1964Handbook, 4.4.42]. The series is evaluated by Horner's rule in DWEnclosure
-/// arithmetic, whose every operation bounds its own rounding error, and the truncation bound is
-/// added to the radius. The constants atan(k/128), 1/(2j + 1) and π/2 are double-word numbers
+/// [Abramowitz1964Handbook, 4.4.42]. The series is evaluated by Horner's rule, its tail
+/// 1/7 − ρ²/9 + ρ⁴/11 − ρ⁶/13 (which enters multiplied by ρ⁶ <= 2^-48) in double midpoint–radius
+/// enclosures (enclosure.h, [Rump1999]) and the rest in DWEnclosure arithmetic; every operation
+/// bounds its own rounding error, and the truncation bound is added to the radius. The constants atan(k/128), 1/(2j + 1) and π/2 are double-word numbers
 /// (hi, lo) = (RN(v), RN(v − hi)) printed by scripts/dw_atan_constants.cpp from MPFR at 400 bits:
 /// each is within u·|v − hi| <= u²·|v| < 2^-105·|hi| of v, and is charged 2^-104·|hi|;
 /// tests/numerics/test_double_word.cpp checks every one against MPFR.
 
 #include <gmcc/numerics/dw_enclosure.h>
+#include <gmcc/numerics/enclosure.h>
 
 #include <algorithm>
 #include <array>
@@ -185,9 +187,15 @@ inline DWEnclosure atan_reduced(const DWEnclosure& w) {
   const double bound = rho.magnitude() + rho.rad;  // |ρ| <= bound·(1 + u)
   if (!rho.finite() || !(bound <= 0x1.02p-8)) return DWEnclosure::unbounded();
   const DWEnclosure rho2 = sqr(rho);
-  DWEnclosure p = constant(odd_reciprocals[5]);
-  for (int j = 4; j >= 0; --j) p = constant(odd_reciprocals[static_cast<std::size_t>(j)]) - rho2 * p;
-  p = rho * (DWEnclosure::exact(1) - rho2 * p);
+  // The tail 1/7 − ρ²/9 + ρ⁴/11 − ρ⁶/13 enters multiplied by ρ⁶ <= 2^-48: in double enclosures
+  // (BasicEnclosure, enclosure.h) its relative error of about 2^-50 costs 2^-98 of atan(ρ)/ρ.
+  using D = BasicEnclosure<double>;
+  const D r2{rho2.mid.hi, D::round_up(std::fabs(rho2.mid.lo) + rho2.rad)};
+  D q = D::relative(1.0 / 13, 0x1p-53);  // 1/(2j + 1) rounded to nearest: within u of it
+  for (const double k : {1.0 / 11, 1.0 / 9, 1.0 / 7}) q = D::relative(k, 0x1p-53) - r2 * q;
+  DWEnclosure p = DWEnclosure{{q.mid, 0}, q.rad};
+  for (int j = 2; j >= 0; --j) p = (j == 0 ? DWEnclosure::exact(1) : constant(odd_reciprocals[static_cast<std::size_t>(j - 1)])) - rho2 * p;
+  p = rho * p;
   const double b2 = bound * bound, b4 = b2 * b2, b8 = b4 * b4;
   const double truncation = b8 * b4 * b2 * bound;  // |ρ|^15 >= |ρ|^15/15
   const DWEnclosure head = constant(atan_table[static_cast<std::size_t>(k)]);
