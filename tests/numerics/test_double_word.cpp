@@ -76,6 +76,9 @@ BOOST_AUTO_TEST_CASE(operations_enclose_the_exact_result) {
     BOOST_TEST(contains(x - y, px - py));
     BOOST_TEST(contains(x * y, px * py));
     if (py != 0) BOOST_TEST(contains(x / y, px / py));
+    const double b = y.mid.hi;  // with a double
+    BOOST_TEST(contains(x + b, px + exact(b)));
+    BOOST_TEST(contains(x * b, px * exact(b)));
     const DWEnclosure ax{{std::fabs(x.mid.hi), x.mid.hi < 0 ? -x.mid.lo : x.mid.lo}, x.rad};
     const DWEnclosure r = sqrt(ax);
     if (r.finite()) {

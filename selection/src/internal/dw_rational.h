@@ -43,9 +43,14 @@ inline double power_of_two(int e) {
 // 11 bits) and summed in DWEnclosure arithmetic; the bits below M0 (only when shift > 64) are
 // below 2^-64 and are charged as the radius 2^-64.
 inline DWEnclosure scaled_integer(mpz_srcptr z, long& shift) {
+  constexpr std::uint64_t low11 = 0x7FF;
+  if (mpz_size(z) == 1 && GMP_NUMB_BITS == 64) {  // one limb: |z| itself, exactly, shift 0
+    const auto limb = static_cast<std::uint64_t>(mpz_getlimbn(z, 0));
+    shift = 0;
+    return DWEnclosure::exact(numerics::fast_two_sum(static_cast<double>(limb & ~low11), static_cast<double>(limb & low11)));
+  }
   const numerics::TopBits t = numerics::top_bits(z);
   shift = t.shift;
-  constexpr std::uint64_t low11 = 0x7FF;
   const DWEnclosure head = DWEnclosure::exact(numerics::fast_two_sum(
       static_cast<double>(t.mantissa & ~low11), static_cast<double>(t.mantissa & low11)));
   if (t.shift == 0) return head;

@@ -8,6 +8,8 @@
 ///
 /// | operation | algorithm | relative error bound |
 /// |---|---|---|
+/// | dw_add_double (DW + double) | Alg. 4, DWPlusFP | 2u² |
+/// | dw_mul_double_fma (DW × double) | Alg. 9, DWTimesFP3, with FMA | 2u² |
 /// | dw_add (DW + DW) | Alg. 6, AccurateDWPlusDW | 3u² + 13u³ [Muller2022DoubleWordFormal] (the 2017 paper's 3u²/(1 − 4u) had a gap in its proof) |
 /// | dw_mul (DW × DW) | Alg. 12, DWTimesDW3, with FMA | 5u² (4u² in [Muller2022DoubleWordFormal]) |
 /// | dw_div (DW ÷ DW) | Alg. 17, DWDivDW2 | 15u² + 56u³ (9.8u² in [Muller2022DoubleWordFormal]) |
@@ -72,6 +74,19 @@ inline DoubleWord dw_mul(const DoubleWord& x, const DoubleWord& y) {
   const double tl1 = std::fma(x.hi, y.lo, tl0);
   const double cl2 = std::fma(x.lo, y.hi, tl1);
   return fast_two_sum(c.hi, c.lo + cl2);
+}
+
+/// x + b for a double b, [Joldes2017DoubleWord] Algorithm 4 (DWPlusFP): relative error <= 2u².
+inline DoubleWord dw_add_double(const DoubleWord& x, double b) {
+  const DoubleWord s = two_sum(x.hi, b);
+  return fast_two_sum(s.hi, x.lo + s.lo);
+}
+
+/// x × b for a double b, [Joldes2017DoubleWord] Algorithm 9 (DWTimesFP3, with FMA): relative
+/// error <= 2u².
+inline DoubleWord dw_mul_double_fma(const DoubleWord& x, double b) {
+  const DoubleWord c = two_prod(x.hi, b);
+  return fast_two_sum(c.hi, std::fma(x.lo, b, c.lo));
 }
 
 /// x × b for a double b, [Joldes2017DoubleWord] Algorithm 7 (DWTimesFP1), the step dw_div uses.

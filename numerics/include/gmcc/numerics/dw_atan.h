@@ -182,8 +182,8 @@ inline DWEnclosure constant(const DoubleWord& v) { return {v, std::fabs(v.hi) * 
 inline DWEnclosure atan_reduced(const DWEnclosure& w) {
   const double scaled = std::clamp(w.mid.hi * 128, 0.0, 128.0);
   const int k = static_cast<int>(scaled + 0.5);
-  const DWEnclosure c = DWEnclosure::exact(k / 128.0);  // exact: k/128 is a dyadic double
-  const DWEnclosure rho = (w - c) / (DWEnclosure::exact(1) + w * c);
+  const double c = k / 128.0;  // exact: k/128 is a dyadic double
+  const DWEnclosure rho = (w + (-c)) / (w * c + 1.0);
   const double bound = rho.magnitude() + rho.rad;  // |ρ| <= bound·(1 + u)
   if (!rho.finite() || !(bound <= 0x1.02p-8)) return DWEnclosure::unbounded();
   const DWEnclosure rho2 = sqr(rho);
@@ -194,8 +194,8 @@ inline DWEnclosure atan_reduced(const DWEnclosure& w) {
   D q = D::relative(1.0 / 13, 0x1p-53);  // 1/(2j + 1) rounded to nearest: within u of it
   for (const double k : {1.0 / 11, 1.0 / 9, 1.0 / 7}) q = D::relative(k, 0x1p-53) - r2 * q;
   DWEnclosure p = DWEnclosure{{q.mid, 0}, q.rad};
-  for (int j = 2; j >= 0; --j) p = (j == 0 ? DWEnclosure::exact(1) : constant(odd_reciprocals[static_cast<std::size_t>(j - 1)])) - rho2 * p;
-  p = rho * p;
+  for (int j = 2; j >= 1; --j) p = constant(odd_reciprocals[static_cast<std::size_t>(j - 1)]) - rho2 * p;
+  p = rho * (-(rho2 * p) + 1.0);
   const double b2 = bound * bound, b4 = b2 * b2, b8 = b4 * b4;
   const double truncation = b8 * b4 * b2 * bound;  // |ρ|^15 >= |ρ|^15/15
   const DWEnclosure head = constant(atan_table[static_cast<std::size_t>(k)]);

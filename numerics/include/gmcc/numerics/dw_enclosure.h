@@ -7,7 +7,8 @@
 /// Error analysis (u = 2^-53, round to nearest). Each operation forms the double-word result z
 /// of the operation on the midpoints; its error against that exact result is at most 16u²
 /// relative to the exact result ([Joldes2017DoubleWord] and [Muller2022DoubleWordFormal]: 3u² +
-/// 13u³ for the sum, 5u² for the product, 15u² + 56u³ for the quotient; see double_word.h), hence
+/// 13u³ for the sum, 5u² for the product, 15u² + 56u³ for the quotient, 2u² for a sum or product
+/// with a double; see double_word.h), hence
 /// at most 16u²/(1 − 16u²)·|z| < 2^-101·|z|: each operation charges op_error·|z| = 2^-100·|z|,
 /// twice that. To it the radius adds the propagated radii (the first-order terms and their
 /// product, exact bounds for +, −, ×, ÷ of sets: [Rump1999], §2). The radius itself is
@@ -86,6 +87,14 @@ inline DWEnclosure dw_result(const DoubleWord& z, double prop) {
 /// x + y: the radii add.
 inline DWEnclosure operator+(const DWEnclosure& x, const DWEnclosure& y) {
   return dw_result(dw_add(x.mid, y.mid), x.rad + y.rad);
+}
+
+/// x + b for a double b (exact): the radius carries over.
+inline DWEnclosure operator+(const DWEnclosure& x, double b) { return dw_result(dw_add_double(x.mid, b), x.rad); }
+
+/// x × b for a double b (exact): the radius scales by |b|.
+inline DWEnclosure operator*(const DWEnclosure& x, double b) {
+  return dw_result(dw_mul_double_fma(x.mid, b), std::fabs(b) * x.rad);
 }
 
 /// −x, exact.
