@@ -4,11 +4,12 @@
 /// run time: what the 3-D mean's double-word stage needs for each edge's angle θ_i (docs/math.md
 /// "The double-word stage").
 ///
-/// Method and proof. atan is odd and 1-Lipschitz (|atan′| = 1/(1 + t²) <= 1), so atan of an
-/// enclosure m ± r is atan(m) ± r, and atan(m) for m > 1 is π/2 − atan(1/m). For w in [0, 1]
-/// (an enclosure, 1/m included), with c = k/128 the nearest multiple of 1/128,
-///     atan(w) = atan(c) + atan(ρ),   ρ = (w − c)/(1 + w·c),   |ρ| <= |w − c| <= 2^-8
-/// (the addition formula, valid since w·c > −1) [Muller2016Elementary, §6.2]. atan(ρ) is its
+/// Method and proof. atan2(y, x) for x > 0 is atan(y/x); atan is odd, and atan(t) = π/2 −
+/// atan(1/t) for t > 0, so it suffices to enclose atan(n/d) for enclosures n, d > 0 with n/d about
+/// in [0, 1]. With c = k/128 the nearest multiple of 1/128 to n/d,
+///     atan(n/d) = atan(c) + atan(ρ),   ρ = (n − c·d)/(d + c·n),   |ρ| <= |n/d − c| <= 2^-8
+/// (the addition formula, valid since d + c·n > 0) [Muller2016Elementary, §6.2]. ρ is formed in
+/// DWEnclosure arithmetic from the enclosures of n and d, so it covers every point of them. atan(ρ) is its
 /// Taylor series ρ − ρ³/3 + ρ⁵/5 − …, alternating with terms decreasing in size for |ρ| < 1, so
 /// stopping after the ρ¹³/13 term errs by at most the next term, |ρ|¹⁵/15 < 2^-120
 /// [Abramowitz1964Handbook, 4.4.42]. The series is evaluated by Horner's rule, its tail
@@ -178,12 +179,17 @@ inline constexpr DoubleWord half_pi{0x1.921fb54442d18p+0, 0x1.1a62633145c07p-54}
 /// A tabulated constant as an enclosure: radius 2^-104·|hi| (see the file comment).
 inline DWEnclosure constant(const DoubleWord& v) { return {v, std::fabs(v.hi) * 0x1p-104}; }
 
-/// atan(w) for an enclosure w whose midpoint lies in [0, 1 + 2^-90]: the table and the series.
-inline DWEnclosure atan_reduced(const DWEnclosure& w) {
-  const double scaled = std::clamp(w.mid.hi * 128, 0.0, 128.0);
+/// atan(n/d) for enclosures n, d with d > 0 and n/d about in [0, 1]: with c = k/128 nearest
+/// n/d, atan(n/d) = atan(c) + atan(ρ), ρ = (n − c·d)/(d + c·n), valid where d + c·n > 0 (checked:
+/// certainly nonzero, positive midpoint); the table and the series. Unbounded when |ρ| may
+/// exceed 2^-8 (barely: k is chosen from the leading doubles).
+inline DWEnclosure atan_reduced(const DWEnclosure& n, const DWEnclosure& d) {
+  const double scaled = std::clamp(n.mid.hi / d.mid.hi * 128, 0.0, 128.0);
   const int k = static_cast<int>(scaled + 0.5);
   const double c = k / 128.0;  // exact: k/128 is a dyadic double
-  const DWEnclosure rho = (w + (-c)) / (w * c + 1.0);
+  const DWEnclosure den = d + n * c;
+  if (!(den.mid.hi > 0)) return DWEnclosure::unbounded();
+  const DWEnclosure rho = (n - d * c) / den;
   const double bound = rho.magnitude() + rho.rad;  // |ρ| <= bound·(1 + u)
   if (!rho.finite() || !(bound <= 0x1.02p-8)) return DWEnclosure::unbounded();
   const DWEnclosure rho2 = sqr(rho);
@@ -203,28 +209,25 @@ inline DWEnclosure atan_reduced(const DWEnclosure& w) {
 }
 }  // namespace dw_atan_detail
 
-/// atan(x) for every x in the enclosure ([Muller2016Elementary], §6.2; the proof is the file
-/// comment); unbounded when x is.
-inline DWEnclosure atan(const DWEnclosure& x) {
-  if (!x.finite()) return DWEnclosure::unbounded();
-  const bool negative = x.mid.hi < 0;
-  const DoubleWord m = negative ? dw_neg(x.mid) : x.mid;
+/// atan2(y, x) = atan(y/x) for every (x, y) in the enclosures, x certainly positive (unbounded
+/// otherwise): the angle of (x, y) in (−π/2, π/2) ([Muller2016Elementary], §6.2; the proof is the
+/// file comment). For |y| <= x about, atan_reduced(|y|, x); beyond, π/2 − atan_reduced(x, |y|),
+/// with y certainly nonzero; the sign of y's midpoint restored (atan is odd).
+inline DWEnclosure atan2(const DWEnclosure& y, const DWEnclosure& x) {
+  if (!certainly_positive(x) || !y.finite()) return DWEnclosure::unbounded();
+  const bool negative = y.mid.hi < 0;
+  const DWEnclosure ay = negative ? -y : y;
   DWEnclosure a;
-  if (m.hi > 1 || (m.hi == 1 && m.lo > 0)) {
-    a = dw_atan_detail::constant(dw_atan_detail::half_pi) -
-        dw_atan_detail::atan_reduced(DWEnclosure::exact(1) / DWEnclosure::exact(m));
+  if (ay.mid.hi > x.mid.hi) {
+    if (!certainly_positive(ay)) return DWEnclosure::unbounded();
+    a = dw_atan_detail::constant(dw_atan_detail::half_pi) - dw_atan_detail::atan_reduced(x, ay);
   } else {
-    a = dw_atan_detail::atan_reduced(DWEnclosure::exact(m));
+    a = dw_atan_detail::atan_reduced(ay, x);
   }
-  a.rad = DWEnclosure::round_up(a.rad + x.rad);  // atan is 1-Lipschitz
   return negative ? -a : a;
 }
 
-/// atan2(y, x) = atan(y/x) for x certainly positive (unbounded otherwise): the angle of (x, y)
-/// in (−π/2, π/2).
-inline DWEnclosure atan2(const DWEnclosure& y, const DWEnclosure& x) {
-  if (!certainly_positive(x)) return DWEnclosure::unbounded();
-  return atan(y / x);
-}
+/// atan(x) for every x in the enclosure: atan2(x, 1).
+inline DWEnclosure atan(const DWEnclosure& x) { return atan2(x, DWEnclosure::exact(1.0)); }
 
 }  // namespace gmcc::numerics
