@@ -149,6 +149,30 @@ BOOST_AUTO_TEST_CASE(atan_encloses_mpfr) {
   mpfr_clears(a, m, d, static_cast<mpfr_ptr>(nullptr));
 }
 
+BOOST_AUTO_TEST_CASE(atan2_encloses_mpfr) {
+  std::mt19937_64 rng(1987);
+  mpfr_t a, my, mx, d;
+  mpfr_inits2(400, a, my, mx, d, static_cast<mpfr_ptr>(nullptr));
+  for (int i = 0; i < 20000; ++i) {
+    const int e = static_cast<int>(rng() % 61) - 30;
+    const DWEnclosure y = random_dw(rng, e, i % 2 == 0), x0 = random_dw(rng, e + static_cast<int>(rng() % 21) - 10, i % 3 == 0);
+    const DWEnclosure x{{std::fabs(x0.mid.hi), x0.mid.hi < 0 ? -x0.mid.lo : x0.mid.lo}, x0.rad};
+    const DWEnclosure t = atan2(y, x);
+    if (!t.finite()) continue;
+    for (int w = 0; w < 9; ++w) {  // the corners, edge midpoints and centre of the box
+      const mpq_class py = point_of(y, w % 3), px = point_of(x, w / 3);
+      mpfr_set_q(my, py.get_mpq_t(), MPFR_RNDN);
+      mpfr_set_q(mx, px.get_mpq_t(), MPFR_RNDN);
+      mpfr_atan2(a, my, mx, MPFR_RNDN);
+      mpfr_sub_d(d, a, t.mid.hi, MPFR_RNDN);
+      mpfr_sub_d(d, d, t.mid.lo, MPFR_RNDN);
+      mpfr_abs(d, d, MPFR_RNDN);
+      BOOST_TEST(mpfr_cmp_d(d, t.rad * (1 - 0x1p-60)) <= 0);
+    }
+  }
+  mpfr_clears(a, my, mx, d, static_cast<mpfr_ptr>(nullptr));
+}
+
 BOOST_AUTO_TEST_CASE(rounding_decision_at_and_near_midpoints) {
   std::mt19937_64 rng(754);
   mpfr_t v;

@@ -119,6 +119,7 @@ inline DWEnclosure operator/(const DWEnclosure& x, const DWEnclosure& y) {
   const double den = y.abs_lower();
   if (!(den > 0x1p-900)) return DWEnclosure::unbounded();
   const DoubleWord z = dw_div(x.mid, y.mid);
+  if (x.rad == 0 && y.rad == 0) return dw_result(z, 0);  // exact operands: only the charge
   // |x̃/ỹ| <= |z|·(1 + 2^-101): the factor is one more that round_up's slack covers.
   return dw_result(z, (x.rad + (std::fabs(z.hi) + std::fabs(z.lo)) * y.rad) / den);
 }
