@@ -1,11 +1,16 @@
 #include <gmcc/selection/mean_3d_analytic.h>
 
+#include <gmcc/numerics/dw_atan.h>
+#include <gmcc/numerics/dw_rounding.h>
+
 #include "internal/closed_form.h"
+#include "internal/dw_rational.h"
 #include "internal/interval.h"
 #include "internal/ld_interval.h"
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -15,7 +20,11 @@ namespace gmcc {
 namespace {
 using internal::LDInterval;
 using internal::Interval;
+using numerics::DWEnclosure;
 using Vec3 = std::array<Rational, 3>;
+
+// The precision reported by the double-word stage: a double-word significand.
+constexpr unsigned double_word_bits = 106;
 
 Vec3 lift(const Point2& p) { return {p.x, p.y, Rational(1)}; }
 Vec3 cross(const Vec3& u, const Vec3& v) {
@@ -105,27 +114,66 @@ std::array<LDInterval, 2> direction_map_fast(const ConvexSet2& F) {
 // The same with each edge vector e_i = v_{i+1} − v_i enclosed from its exact value (one integer
 // cross-multiplication per coordinate, no gcd), and c_i = p_i × p_{i+1} = p_i × (e_i, 0)
 // = (−e_y, e_x, a_i·e_y − b_i·e_x) formed from it: no cancellation in c_i, so on a polygon of
-// width w the enclosure loses log2(1/w) bits instead of 2·log2(1/w). Polygons only.
-std::array<LDInterval, 2> direction_map_fast_edges(const ConvexSet2& F) {
+// width w the enclosure loses log2(1/w) bits instead of 2·log2(1/w). Polygons only. `make`
+// encloses a rational, `quotient` an integer quotient num/den (den > 0).
+template <class I, class Make, class Quotient>
+std::array<I, 2> direction_map_edges(const ConvexSet2& F, Make make, Quotient quotient) {
   const auto& v = F.vertices;
   const std::size_t n = v.size();
-  auto difference = [](const Rational& p, const Rational& q) {  // p − q
+  auto difference = [&quotient](const Rational& p, const Rational& q) {  // p − q
     const mpz_class num = p.get_num() * q.get_den() - q.get_num() * p.get_den();
     const mpz_class den = p.get_den() * q.get_den();
-    return internal::enclose_ld(num.get_mpz_t(), den.get_mpz_t());
+    return quotient(num.get_mpz_t(), den.get_mpz_t());
   };
-  const LDInterval one{1, 1};
-  LDInterval a_i = internal::enclose_ld(v[0].x), b_i = internal::enclose_ld(v[0].y);
-  const auto tau = internal::tau_sum<LDInterval>(n, LDInterval{0, 0}, [&](std::size_t i) {
+  const I one = make(Rational(1));
+  I a_i = make(v[0].x), b_i = make(v[0].y);
+  const auto tau = internal::tau_sum<I>(n, make(Rational(0)), [&](std::size_t i) {
     const std::size_t j = (i + 1) % n;
-    const LDInterval a_j = internal::enclose_ld(v[j].x), b_j = internal::enclose_ld(v[j].y);
-    const std::array<LDInterval, 3> c =
+    const I a_j = make(v[j].x), b_j = make(v[j].y);
+    const std::array<I, 3> c =
         internal::cross_from_edge(a_i, b_i, difference(v[j].x, v[i].x), difference(v[j].y, v[i].y));
-    const internal::TauTerm<LDInterval> t{c, internal::theta_over_norm(c, a_i * a_j + b_i * b_j + one)};
+    const internal::TauTerm<I> t{c, internal::theta_over_norm(c, a_i * a_j + b_i * b_j + one)};
     a_i = a_j, b_i = b_j;
     return t;
   });
   return internal::tau_direction(*tau);
+}
+
+std::array<LDInterval, 2> direction_map_fast_edges(const ConvexSet2& F) {
+  return direction_map_edges<LDInterval>(
+      F, [](const Rational& q) { return internal::enclose_ld(q); },
+      [](mpz_srcptr num, mpz_srcptr den) { return internal::enclose_ld(num, den); });
+}
+
+// In double-word enclosures (docs/math.md "The double-word stage"): from vertex enclosures, and
+// from exactly formed edges.
+GMCC_DW_FMA_CLONES std::array<DWEnclosure, 2> direction_map_dw(const ConvexSet2& F) {
+  return direction_map_from_vertices<DWEnclosure>(F, [](const Rational& q) { return internal::enclose_dw(q); });
+}
+GMCC_DW_FMA_CLONES std::array<DWEnclosure, 2> direction_map_dw_edges(const ConvexSet2& F) {
+  return direction_map_edges<DWEnclosure>(
+      F, [](const Rational& q) { return internal::enclose_dw(q); },
+      [](mpz_srcptr num, mpz_srcptr den) { return internal::enclose_dw(num, den); });
+}
+
+// The double-word stage's answer when both components' enclosures round to one double each
+// (numerics::round_to_double): that double (the correctly rounded map), the enclosure's bound
+// and outward ends, at the double-word precision.
+bool report_if_rounded(MapEstimate& e, const std::array<DWEnclosure, 2>& m) {
+  const std::optional<numerics::DWRounding> r0 = numerics::round_to_double(m[0]);
+  if (!r0) return false;
+  const std::optional<numerics::DWRounding> r1 = numerics::round_to_double(m[1]);
+  if (!r1) return false;
+  e.precision_bits = double_word_bits;
+  for (int k = 0; k < 2; ++k) {
+    const numerics::DWRounding& r = k == 0 ? *r0 : *r1;
+    e.map[k] = r.value;
+    e.error_bounds[k] = r.bound;
+    e.correctly_rounded[k] = true;
+    (*e.enclosure)[k] = {r.lo, r.hi};
+  }
+  e.error_bound = std::max(e.error_bounds[0], e.error_bounds[1]);
+  return true;
 }
 
 // The double that every point of an extended-precision enclosure rounds to, if there is one
@@ -195,6 +243,40 @@ unsigned middle_stage_bits(std::size_t n) {
   return std::max(80u, 73 + log2n);
 }
 
+// The stages before the exact-product MPFI loop, for an automatic precision: true when one of
+// them decided the rounding and filled e.
+bool decided_early(MapEstimate& e, const ConvexSet2& F) {
+  // First stage: double-word enclosures (about 2^-100 relative per operation, every bound
+  // proven), kept only when each component's enclosure rounds to a single double, from vertex
+  // enclosures and then, for thin polygons, from exactly formed edges. The reported bound and
+  // precision are this stage's (docs/cli.md "JSON output"); the map is the correctly rounded one
+  // whichever stage decides it.
+  // Its error-free transformations need doubles evaluated as doubles (FLT_EVAL_METHOD 0: SSE2,
+  // not the x87's double rounding).
+  if (FLT_EVAL_METHOD == 0) {
+    if (report_if_rounded(e, direction_map_dw(F))) return true;
+    if (F.kind == ConvexKind::polygon && report_if_rounded(e, direction_map_dw_edges(F))) return true;
+  }
+  // Then rigorous extended-precision intervals, kept only when each component's enclosure
+  // rounds to a single double (which is then the correctly rounded map).
+  if (numerics::extended_precision_active()) {
+    if (report_if_rounded(e, direction_map_fast(F))) return true;
+    // Small or thin polygons: the same arithmetic from exactly formed edge vectors.
+    if (F.kind == ConvexKind::polygon && report_if_rounded(e, direction_map_fast_edges(F))) return true;
+    // The x87 enclosures are about an ulp wide (2^-50 … 2^-52 relative on feasible sets of
+    // the synthetic experiment's size), so a rounding boundary usually falls inside. MPFI from
+    // vertex enclosures at 80 bits (~2^-70 wide: a boundary falls inside about once in 2^17
+    // calls), before the exact products, whose gcds dominate on long rationals.
+    const unsigned bits = middle_stage_bits(F.vertices.size());
+    const auto m = direction_map_from_vertices<Interval>(F, [bits](const Rational& q) { return Interval(q, bits); });
+    if (internal::single_rounding(m[0]) && internal::single_rounding(m[1])) {
+      report(e, m, bits);
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options) {
@@ -207,24 +289,7 @@ MapEstimate mean_3d_analytic(const ConvexSet2& F, const AnalyticOptions& options
   if (F.kind == ConvexKind::point) return e;
   e.enclosure.emplace();
 
-  // Fast path: rigorous extended-precision intervals, kept only when each component's enclosure
-  // rounds to a single double (which is then the correctly rounded map).
-  if (numerics::extended_precision_active() && options.precision_bits == 0) {
-    if (report_if_rounded(e, direction_map_fast(F))) return e;
-    // Small or thin polygons: the same arithmetic from exactly formed edge vectors.
-    if (F.kind == ConvexKind::polygon && report_if_rounded(e, direction_map_fast_edges(F))) return e;
-    // Most polygons land here: the x87 enclosures are about an ulp wide (2^-50 … 2^-52
-    // relative on feasible sets of the synthetic experiment's size), so a rounding boundary
-    // usually falls inside. MPFI from vertex enclosures at 80 bits (~2^-70 wide: a boundary
-    // falls inside about once in 2^17 calls), before the exact products, whose gcds dominate
-    // on long rationals. This stage is what correct rounding costs (docs/performance.md).
-    const unsigned bits = middle_stage_bits(F.vertices.size());
-    const auto m = direction_map_from_vertices<Interval>(F, [bits](const Rational& q) { return Interval(q, bits); });
-    if (internal::single_rounding(m[0]) && internal::single_rounding(m[1])) {
-      report(e, m, bits);
-      return e;
-    }
-  }
+  if (options.precision_bits == 0 && decided_early(e, F)) return e;
   // MPFI: precision chosen from the polygon's size, then doubled until each component's
   // certified enclosure rounds to one double (a forced precision is used once, as given).
   // Far from the origin τ3 is small against its terms; too few bits leave it straddling 0 (or

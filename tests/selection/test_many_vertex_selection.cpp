@@ -89,18 +89,15 @@ BOOST_AUTO_TEST_CASE(illuminant_worst_case_filtered_equals_unfiltered) {
   BOOST_TEST(t.many_vertices > 15);
 }
 
-// On F of 20,000 vertices the middle stage (MPFI from vertex enclosures, 73 + log2(n) = 88 bits)
-// decides both components: the same correctly rounded map as the exact products at a forced
-// 200 bits, without falling through to them.
-BOOST_AUTO_TEST_CASE(mean_3d_middle_stage_decides_on_many_vertices) {
+// On F of 20,000 vertices the double-word stage (106 bits; each c_i from vertex enclosures loses
+// about log2(n) bits, which 106 bits can spare) decides both components: the same correctly
+// rounded map as the exact products at a forced 200 bits, without falling through to the middle
+// MPFI stage (73 + log2(n) = 88 bits) or to them.
+BOOST_AUTO_TEST_CASE(mean_3d_first_stage_decides_on_many_vertices) {
   const ConvexSet2 F = parabola_feasible_set(20000);
   BOOST_REQUIRE(F.vertices.size() > 16384);
   const MapEstimate automatic = mean_3d_analytic(F);
-  // Without the x87 fast path (numerics/platform.h) there is no middle stage: MPFI from 53 + 40 bits.
-  if (gmcc::numerics::extended_precision_compiled)
-    BOOST_TEST(automatic.precision_bits == 88u);
-  else
-    BOOST_TEST(automatic.precision_bits >= 93u);
+  BOOST_TEST(automatic.precision_bits == 106u);
   BOOST_TEST(automatic.correctly_rounded[0]);
   BOOST_TEST(automatic.correctly_rounded[1]);
   AnalyticOptions forced;

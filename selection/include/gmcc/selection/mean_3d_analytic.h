@@ -11,8 +11,9 @@ namespace gmcc {
 
 /// Options of the closed-form route.
 struct AnalyticOptions {
-  /// Working precision in bits, forced; 0 (the default) chooses it: first a rigorous interval
-  /// evaluation in x87 extended precision (from the vertices, then from exactly formed edge
+  /// Working precision in bits, forced; 0 (the default) chooses it: first double-word
+  /// enclosures with proven bounds (Joldes, Muller & Popescu 2017; docs/math.md "The double-word
+  /// stage"; reported as 106 bits), then a rigorous interval evaluation in x87 extended precision (from the vertices, then from exactly formed edge
   /// vectors), kept when each component's enclosure rounds to a single double; otherwise MPFI at
   /// 53 + 40 + 2·log2(1/ε) bits for a polygon of angular width ε (docs/math.md §2), doubled
   /// until each component's enclosure rounds to a single double, up to max(8192, 4 × the start)
