@@ -42,11 +42,6 @@ struct Image {
   Rational scale;  // white_balanced_maximum of its pixel colours
 };
 
-std::vector<Colour> scaled(const std::vector<Colour>& colours, const Rational& s) {
-  std::vector<Colour> out;
-  for (const Colour& c : colours) out.push_back({Rational(c.r / s), Rational(c.g / s), Rational(c.b / s)});
-  return out;
-}
 
 }  // namespace
 
@@ -88,13 +83,13 @@ int main(int argc, char** argv) {
   std::map<std::string, std::vector<double>> errors;
   std::map<std::string, int> empty;
   for (int fold = 0; fold < 3; ++fold) {
-    CanonicalLearner3 pixel(CanonicalIntensity::none), edge1(CanonicalIntensity::none), edge2(CanonicalIntensity::none);
+    CanonicalLearner3 pixel, edge1, edge2;  // every type divided by the pixel factor
     for (std::size_t i = 0; i < images.size(); ++i) {
       const Image& im = images[i];
       if (static_cast<int>(i % 3) == fold || sgn(im.scale) == 0) continue;
-      pixel.add(scaled(im.colours.colours, im.scale), im.light);
-      if (!im.edge1.colours.empty()) edge1.add(scaled(im.edge1.colours, im.scale), im.light);
-      if (!im.edge2.colours.empty()) edge2.add(scaled(im.edge2.colours, im.scale), im.light);
+      pixel.add(im.colours.colours, im.light, im.scale);
+      if (!im.edge1.colours.empty()) edge1.add(im.edge1.colours, im.light, im.scale);
+      if (!im.edge2.colours.empty()) edge2.add(im.edge2.colours, im.light, im.scale);
     }
     const CanonicalConstraints3 cp(pixel.gamut()), ce1(edge1.gamut()), ce2(edge2.gamut());
     for (std::size_t i = fold; i < images.size(); i += 3) {

@@ -40,6 +40,15 @@ Rational white_balanced_maximum(const std::vector<Colour>& colours, const Colour
 CanonicalLearner3::CanonicalLearner3(CanonicalIntensity intensity) : intensity_(intensity) {}
 
 void CanonicalLearner3::add(const std::vector<Colour>& colours, const Colour& light) {
+  add_scaled(colours, light, nullptr);
+}
+
+void CanonicalLearner3::add(const std::vector<Colour>& colours, const Colour& light, const Rational& scale) {
+  if (sgn(scale) <= 0) throw std::invalid_argument("an intensity scale must be > 0");
+  add_scaled(colours, light, &scale);
+}
+
+void CanonicalLearner3::add_scaled(const std::vector<Colour>& colours, const Colour& light, const Rational* scale) {
   check_light(light);
   ++images_;
   if (colours.empty()) return;
@@ -49,8 +58,9 @@ void CanonicalLearner3::add(const std::vector<Colour>& colours, const Colour& li
   const Rational top = white_balanced_maximum(v, light);
   if (sgn(top) == 0) return;  // only black: nothing a hull with black lacks
   for (Colour& c : v) c = {c.r / light.r, c.g / light.g, c.b / light.b};
-  if (intensity_ == CanonicalIntensity::max)
-    for (Colour& c : v) c = {c.r / top, c.g / top, c.b / top};
+  const Rational* divide = scale ? scale : intensity_ == CanonicalIntensity::max ? &top : nullptr;
+  if (divide)
+    for (Colour& c : v) c = {c.r / *divide, c.g / *divide, c.b / *divide};
   ++contributing_;
   points_.insert(points_.end(), std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
   if (points_.size() - hulled_ > std::max(hulled_, compact_from)) compact();

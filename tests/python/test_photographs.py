@@ -140,19 +140,26 @@ def test_dark_and_bright_rules_follow_their_definition():
         gmcc.image_colours(img, dark_fraction=2)
 
 
-def test_benchmark_equals_the_command_line(tmp_path):
+def write_dataset(folder, seed, prefix, surface_indices):
+    """Nine 16-bit PNGs of 25 random surfaces under random integer lights, and their truth table:
+    image i is surfaces[surface_indices(rng)] ⊙ e_i. Returns the truth table's path."""
     sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
     from png16 import write_png16
-    rng = np.random.default_rng(27)
+    rng = np.random.default_rng(seed)
     surfaces = rng.integers(50, 900, size=(25, 3))
     lines = ["image,r,g,b"]
     for i in range(9):
         e = rng.integers(3, 60, size=3)
-        img = surfaces[rng.integers(0, 25, size=(6, 7))] * e
-        write_png16(tmp_path / f"p{i}.png", [[tuple(int(x) for x in px) for px in row] for row in img])
-        lines.append(f"p{i}.png,{e[0]},{e[1]},{e[2]}")
-    truths = tmp_path / "truths.csv"
+        img = surfaces[surface_indices(rng)] * e
+        write_png16(folder / f"{prefix}{i}.png", [[tuple(int(x) for x in px) for px in row] for row in img])
+        lines.append(f"{prefix}{i}.png,{e[0]},{e[1]},{e[2]}")
+    truths = folder / "truths.csv"
     truths.write_text("\n".join(lines) + "\n")
+    return truths
+
+
+def test_benchmark_equals_the_command_line(tmp_path):
+    truths = write_dataset(tmp_path, 27, "p", lambda rng: rng.integers(0, 25, size=(6, 7)))
     summary, records = gmcc.benchmark(tmp_path, truths, folds=3, pixel_rule="gijsenij", frame=False)
     assert [s["method"] for s in summary][:2] == ["gm3d-max-trace", "gm3d-max-volume"]
     assert len(records) == 9 * len(summary)
@@ -179,19 +186,8 @@ def test_benchmark_equals_the_command_line(tmp_path):
 def test_edge_methods_equal_the_command_line(tmp_path):
     # The edge-based methods (Gijsenij et al. 2010 §4) at a chosen sigma, from Python and from the
     # command line, on images of surface patches under integer lights: the same records.
-    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
-    from png16 import write_png16
-    rng = np.random.default_rng(28)
-    surfaces = rng.integers(50, 900, size=(25, 3))
-    lines = ["image,r,g,b"]
-    for i in range(9):
-        e = rng.integers(3, 60, size=3)
-        patches = surfaces[rng.integers(0, 25, size=(4, 4))]
-        img = np.repeat(np.repeat(patches, 4, axis=0), 4, axis=1) * e
-        write_png16(tmp_path / f"q{i}.png", [[tuple(int(x) for x in px) for px in row] for row in img])
-        lines.append(f"q{i}.png,{e[0]},{e[1]},{e[2]}")
-    truths = tmp_path / "truths.csv"
-    truths.write_text("\n".join(lines) + "\n")
+    truths = write_dataset(tmp_path, 28, "q",
+                           lambda rng: np.repeat(np.repeat(rng.integers(0, 25, size=(4, 4)), 4, axis=0), 4, axis=1))
     methods = ["gm3d-edge1-max-trace", "gm3d-edge2-max-trace", "gm3d-1jet-max-trace", "gm3d-2jet-max-trace"]
     summary, records = gmcc.benchmark(tmp_path, truths, folds=3, methods=methods, edge_sigma=1.5, frame=False)
     assert [s["method"] for s in summary] == methods and len(records) == 9 * 4

@@ -268,8 +268,8 @@ FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, c
                           const BenchmarkOptions& o, const Needs& n) {
   CanonicalLearner3 learner3(o.intensity);
   CanonicalLearner2 learner2;
-  // Edge colours scaled by their image's pixel factor (learn_canonical.h), then as they are.
-  CanonicalLearner3 edges[2] = {CanonicalLearner3(CanonicalIntensity::none), CanonicalLearner3(CanonicalIntensity::none)};
+  // Edge colours scaled by their image's pixel factor (learn_canonical.h).
+  CanonicalLearner3 edges[2];
   std::size_t training = 0;
   for (std::size_t i = 0; i < images.size(); ++i) {
     if (images[i].fold == fold) continue;
@@ -280,13 +280,8 @@ FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, c
     Rational scale(1);
     if (o.intensity == CanonicalIntensity::max) scale = white_balanced_maximum(reduced[i].hull3, images[i].light);
     if (sgn(scale) == 0) continue;  // only black: the pixel gamut takes nothing of it either
-    for (int k = 0; k < 2; ++k) {
-      if (!n.order[k]) continue;
-      std::vector<Colour> scaled;
-      for (const Colour& p : reduced[i].edges[k])
-        scaled.push_back({Rational(p.r / scale), Rational(p.g / scale), Rational(p.b / scale)});
-      edges[k].add(scaled, images[i].light);
-    }
+    for (int k = 0; k < 2; ++k)
+      if (n.order[k]) edges[k].add(reduced[i].edges[k], images[i].light, scale);
   }
   if (training == 0) throw std::invalid_argument("fold " + std::to_string(fold) + " has no training image (one fold only)");
   FoldCanonicals c;

@@ -55,6 +55,12 @@ class CanonicalLearner3 {
   ///         channel. An image with no colour, or only black, adds nothing. O(n) filtered tests
   ///         and the exact hull of the survivors (colour_hull_3.h).
   void add(const std::vector<Colour>& colours, const Colour& light);
+  /// Adds one image's colours of another gamut type (edge colours, edge_colours.h) divided by its
+  /// light and then by `scale` instead of the learner's own intensity rule: the factor of the
+  /// image's pixel colours (white_balanced_maximum), so that every gamut type shares one
+  /// intensity scale (docs/photographs.md §5). \throws std::invalid_argument as add above, or if
+  /// `scale` <= 0. Complexity as add.
+  void add(const std::vector<Colour>& colours, const Colour& light, const Rational& scale);
   /// The vertices of the hull of every added image's scaled colours, sorted; empty before any
   /// colour. The canonical light is white (1, 1, 1).
   std::vector<Colour> gamut() const;
@@ -65,6 +71,8 @@ class CanonicalLearner3 {
   ///@}
 
  private:
+  // add, dividing by *scale when given, else by the intensity rule's factor.
+  void add_scaled(const std::vector<Colour>& colours, const Colour& light, const Rational* scale);
   void compact() const;
   CanonicalIntensity intensity_;
   mutable std::vector<Colour> points_;  // vertices of the hull so far, then new candidates
