@@ -42,7 +42,7 @@
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/max_area.h>
 #include <gmcc/selection/mean_2d.h>
-#include <gmcc/selection/rule_errors.h>
+#include <gmcc/selection/certified_rule_errors.h>
 #include <gmcc/selection/select_maps.h>
 #include <gmcc/selection/worst_case.h>
 
@@ -120,13 +120,13 @@ gmcc::Selection rule_selection(const ConvexSet2& F, gmcc::MapEstimate e) {
 // rule_errors against the exact route (as tests/selection/test_rule_errors.cpp: its accuracy,
 // the exact route's 2^-50 and the 3-D mean's rounding to doubles allowed for); the exact route's
 // 3-D mean at the default precision.
-void check_agreement(const std::array<gmcc::RuleErrors, 3>& fast, const gmcc::Selection* const (&exact_route)[3],
+void check_agreement(const gmcc::PerRule<gmcc::RuleErrors>& fast, const gmcc::Selection* const (&exact_route)[3],
                      const Point2& truth, const gmcc::Colour& light, const std::string& where) {
   for (int r = 0; r < 3; ++r) {
     const gmcc::MapEstimate& e = exact_route[r]->estimate;
     FUZZ_CHECK(e.valid && exact_route[r]->worst_case_deg, where + e.rule + ": no exact map at the default precision");
     const Point2 m = e.exact ? *e.exact : Point2{gmcc::rational_from_double(e.map[0]), gmcc::rational_from_double(e.map[1])};
-    const gmcc::RuleErrors& f = fast[r];
+    const gmcc::RuleErrors& f = fast.values[static_cast<std::size_t>(r)];
     auto agree = [&](double fast_value, double exact_value, const char* what) {
       const bool close = std::fabs(fast_value - exact_value) <=
                          gmcc::rule_errors_accuracy * (1 + std::fabs(exact_value)) +
@@ -269,7 +269,7 @@ void check_constrained(ByteReader& in, std::vector<Rational>& pool, const Convex
   }
   FUZZ_CHECK(P.exact() == FC && P.exact().kind == P.kind(), where + "feasible_polygon: exact() is not F ∩ C");
 
-  const auto fast = gmcc::rule_errors(P, truth, light);
+  const auto fast = gmcc::certified_rule_errors(P, truth, light);
   FUZZ_CHECK(P.enclosed() || !fast, where + "rule_errors answered for a set that is not enclosed");
   if (!fast) return;
   FUZZ_CHECK(finite_doubles(FC), where + "rule_errors answered for F ∩ C beyond the double range");
@@ -363,7 +363,7 @@ void check_worst_cases(const ConvexSet2& F, const std::vector<Point2>& in_F, con
   std::vector<Point2> probes = F.vertices;
   for (std::size_t i = F.vertices.size(); i < in_F.size() && i < F.vertices.size() + 2; ++i)
     probes.push_back(in_F[i]);
-  for (const auto* sel : {&*s.max_area, &*s.mean_2d, &*s.mean_3d}) {
+  for (const auto* sel : {&*s[gmcc::Rule::max_area], &*s[gmcc::Rule::mean_2d], &*s[gmcc::Rule::mean_3d]}) {
     const gmcc::MapEstimate& est = sel->estimate;
     if (!est.valid) continue;
     const Point2 m = est.exact ? *est.exact
@@ -452,9 +452,9 @@ std::optional<gmcc::Selections> selections(const ConvexSet2& F, const gmcc::Mean
       FUZZ_CHECK(!fast, "rule_errors answered for F beyond the double range");
       return std::nullopt;
     }
-    s.max_area = rule_selection(F, gmcc::max_area(F));
-    s.mean_2d = rule_selection(F, gmcc::mean_2d(F));
-    s.mean_3d = rule_selection(F, gmcc::mean_3d(F, mean3d));
+    s[gmcc::Rule::max_area] = rule_selection(F, gmcc::max_area(F));
+    s[gmcc::Rule::mean_2d] = rule_selection(F, gmcc::mean_2d(F));
+    s[gmcc::Rule::mean_3d] = rule_selection(F, gmcc::mean_3d(F, mean3d));
   }
   return s;
 }
@@ -520,7 +520,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   // rule_errors against a positive truth and light.
   const auto [truth, light] = truth_and_light(in, pool, in_F);
-  const auto fast = gmcc::rule_errors(P, truth, light);
+  const auto fast = gmcc::certified_rule_errors(P, truth, light);
   FUZZ_CHECK(P.enclosed() || !fast, "rule_errors answered for a feasible set that is not enclosed");
   check_constrained(in, pool, G, image, F, in_F, candidates, truth, light);
   if (F.kind == ConvexKind::empty) return 0;
@@ -536,24 +536,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::optional<gmcc::Selections> selected = selections(F, mean3d, c, whole, fast.has_value());
   if (!selected) return 0;
   const gmcc::Selections& s = *selected;
-  FUZZ_CHECK(s.max_area && s.mean_2d && s.mean_3d, "a rule is missing for a non-empty F");
+  FUZZ_CHECK(s[gmcc::Rule::max_area] && s[gmcc::Rule::mean_2d] && s[gmcc::Rule::mean_3d], "a rule is missing for a non-empty F");
 
-  const Point2 best = *s.max_area->estimate.exact;
+  const Point2 best = *s[gmcc::Rule::max_area]->estimate.exact;
   FUZZ_CHECK(gmcc::contains(F, best), "max-area " + text(best) + " not in F");
   for (const Point2& m : in_F)
     FUZZ_CHECK(m.x * m.y <= best.x * best.y, "max-area beaten by " + text(m));
-  FUZZ_CHECK(*s.mean_2d->estimate.exact == gmcc::centroid(F) && gmcc::contains(F, gmcc::centroid(F)),
+  FUZZ_CHECK(*s[gmcc::Rule::mean_2d]->estimate.exact == gmcc::centroid(F) && gmcc::contains(F, gmcc::centroid(F)),
              "2-D mean not the centroid in F");
 
-  check_mean_3d(F, *s.mean_3d, mean3d);
+  check_mean_3d(F, *s[gmcc::Rule::mean_3d], mean3d);
 
   // rule_errors against the exact route. Its 3-D mean is at the default precision: a forced one
   // is recomputed (only when rule_errors answered).
   if (fast) {
     std::optional<gmcc::Selection> mean_3d_default;
     if (mean3d.precision_bits != 0) mean_3d_default = rule(gmcc::mean_3d(F));
-    const gmcc::Selection* const exact_route[3] = {&*s.max_area, &*s.mean_2d,
-                                                   mean_3d_default ? &*mean_3d_default : &*s.mean_3d};
+    const gmcc::Selection* const exact_route[3] = {&*s[gmcc::Rule::max_area], &*s[gmcc::Rule::mean_2d],
+                                                   mean_3d_default ? &*mean_3d_default : &*s[gmcc::Rule::mean_3d]};
     check_agreement(*fast, exact_route, truth, light, "");
   }
 

@@ -33,11 +33,11 @@ from ._core import (  # noqa: F401  (re-exported result classes)
     ImageSelection3,
     MapEstimate,
     Recovery,
+    RuleErrors,
     SceneResult,
     Selection,
     Selection3,
     Truth,
-    TruthErrors,
 )
 from ._records import records_frame as _records_frame
 
@@ -49,9 +49,8 @@ __all__ = [
     "__version__", "__commit__", "__commit_date__",
     "Canonical", "Canonical3", "CanonicalLearner2", "CanonicalLearner3", "ConvexSet", "ConvexSet3",
     "Constraint", "Crule3d", "ErrorStatistics", "Estimate3", "ImageColours", "ImageSelection3",
-    "MapEstimate", "Recovery", "SceneResult", "Selection", "Selection3", "Truth",
-    "TruthErrors",
-    "prepare_canonical", "canonical_gamut", "feasible_set", "select", "read_image", "image_colours",
+    "MapEstimate", "Recovery", "RuleErrors", "SceneResult", "Selection", "Selection3", "Truth",
+    "rules", "prepare_canonical", "canonical_gamut", "feasible_set", "select", "read_image", "image_colours",
     "select_maps", "max_area", "mean_2d", "mean_3d", "worst_case_map_deg",
     "worst_case_illuminant_deg", "map_angular_error_deg", "illuminant_angular_error_deg",
     "reproduction_angular_error_deg", "illuminant_map", "illumination_constraint", "crule_3d",
@@ -415,6 +414,19 @@ def image_colours(image, *, mask=None, black_level=0, saturation=None, dark=0,
     """
     return _core.image_colours(image, mask, black_level, saturation, dark, dark_fraction,
                                bright_fraction, pixel_rule, colour_set, prefilter)
+
+
+def rules() -> list:
+    """The selection rules on the 2-D feasible set, in report order (Finlayson & Hordley 1999 §3).
+
+    Returns
+    -------
+    list of str
+        Their names, ``['max_area', 'mean_2d', 'mean_3d']``: the keys of ``select_maps``' and
+        ``SceneResult.selections``' dicts, and the names of SceneResult's and Truth's per-rule
+        attributes.
+    """
+    return _core.rules()
 
 
 def select_maps(feasible_set, *, mean3d="analytic", precision=0, order=12, samples=1000000,

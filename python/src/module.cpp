@@ -331,11 +331,7 @@ void bind_scene(py::module_& m) {
         if (!canonical_illuminant.is_none())
           o.illuminant_worst_case_for = light_from(canonical_illuminant, "canonical_illuminant");
         const Selections s = released([&] { return select_maps(F, o); });
-        py::dict d;
-        d["max_area"] = py::cast(s.max_area);
-        d["mean_2d"] = py::cast(s.mean_2d);
-        d["mean_3d"] = py::cast(s.mean_3d);
-        return d;
+        return selections_dict(s);
       },
       py::arg("feasible_set"), py::kw_only(), py::arg("mean3d") = "analytic", py::arg("precision") = 0,
       py::arg("order") = 12, py::arg("samples") = 1000000, py::arg("seed") = 1,
@@ -345,6 +341,18 @@ void bind_scene(py::module_& m) {
 
 // Each rule, worst case and angular error on its own.
 void bind_rules(py::module_& m) {
+  m.def("rules", [] {
+    py::list keys;
+    for (Rule rule : all_rules) keys.append(to_string(rule));
+    return keys;
+  }, R"doc(The selection rules on the 2-D feasible set, in report order (rule.h).
+
+Returns
+-------
+list of str
+    Their names, 'max_area', 'mean_2d', 'mean_3d': the keys of select_maps' and
+    SceneResult.selections' dicts and the names of SceneResult's and Truth's per-rule attributes.
+)doc");
   m.def("max_area", [](const ConvexSet2& F) {
     nonempty(F, "max_area");
     return released([&] { return max_area(F); });

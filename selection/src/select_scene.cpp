@@ -101,12 +101,8 @@ SceneResult select_scene(const PreparedCanonical& pc, const std::vector<Colour>&
     t.light = *truth;
     t.map = *true_map;
     t.in_feasible_set = r.feasible.kind != ConvexKind::empty && contains(r.feasible, *true_map);
-    auto score = [&](const std::optional<Selection>& s) {
-      return s ? truth_errors(*s, *true_map, c) : std::nullopt;
-    };
-    t.max_area = score(r.selections.max_area);
-    t.mean_2d = score(r.selections.mean_2d);
-    t.mean_3d = score(r.selections.mean_3d);
+    for (Rule rule : all_rules)
+      if (const std::optional<Selection>& s = r.selections[rule]) t.errors[rule] = exact_rule_errors(*s, *true_map, c);
     r.truth = std::move(t);
   }
   return r;

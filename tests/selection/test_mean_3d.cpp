@@ -166,9 +166,9 @@ BOOST_AUTO_TEST_CASE(far_from_the_origin) {
   BOOST_TEST(!low.enclosure.has_value());
   BOOST_TEST(low.note.find("too wide to give a map") != std::string::npos);
   const Selections s = select_maps(F, SelectionOptions{Mean3dOptions{Mean3dMethod::analytic, 60}, std::nullopt});
-  BOOST_TEST(!s.mean_3d->estimate.valid);
-  BOOST_TEST(!s.mean_3d->worst_case_deg.has_value());
-  BOOST_TEST(s.max_area->worst_case_deg.has_value());
+  BOOST_TEST(!s[gmcc::Rule::mean_3d]->estimate.valid);
+  BOOST_TEST(!s[gmcc::Rule::mean_3d]->worst_case_deg.has_value());
+  BOOST_TEST(s[gmcc::Rule::max_area]->worst_case_deg.has_value());
 }
 
 // Regression (fuzz_select, 606,436th run): colours (3, 2, 4e2409) and (0, 2, 3), expanded
@@ -186,7 +186,7 @@ BOOST_AUTO_TEST_CASE(forced_precision_too_low_is_not_a_map) {
   BOOST_TEST(!low.valid);
   BOOST_TEST(!low.enclosure.has_value());
   const Selections s = select_maps(F, SelectionOptions{Mean3dOptions{Mean3dMethod::analytic, 60}, std::nullopt});
-  BOOST_TEST(!s.mean_3d->estimate.valid);
+  BOOST_TEST(!s[gmcc::Rule::mean_3d]->estimate.valid);
   const MapEstimate automatic = mean_3d_analytic(F);
   BOOST_TEST_REQUIRE(automatic.valid);
   for (int k = 0; k < 2; ++k) {
