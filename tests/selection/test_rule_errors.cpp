@@ -1,4 +1,4 @@
-// The certified floating-point route for the rules' errors (rule_errors.h) against the exact
+// The certified floating-point route for the rules' errors (certified_rule_errors.h) against the exact
 // route (select_maps, worst_case_map_deg and angular_error.h) on the same feasible sets.
 #include "../test_support.h"
 

@@ -70,7 +70,7 @@ BOOST_AUTO_TEST_CASE(certified_and_exact_routes_agree) {
     BOOST_TEST(std::fabs(fast.area - exact.area) <= 1e-9 * exact.area);
   }
   // The certified route answers many of these scenes (most with the x87 stage; about 60% of
-  // rule_errors' scenes without it, test_rule_errors.cpp).
+  // certified_rule_errors' scenes without it, test_rule_errors.cpp).
   BOOST_TEST(certified > 30);
 }
 

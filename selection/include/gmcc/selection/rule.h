@@ -3,7 +3,7 @@
 /// The selection rules on the 2-D feasible set F of perspective maps (Finlayson & Hordley 1999
 /// §3), named once: the enum every result, report and front end iterates over, their names, and
 /// a container with one value per rule. Adding a rule means a value here, its names and its
-/// dispatch in rule.cpp, and its implementation file (docs/architecture.md "The rules").
+/// dispatch in rule.cpp, and its implementation file (docs/conventions.md §10).
 ///
 /// "3-D mean" is the paper's name for a rule on the 2-D set: the mean of the cone of 3-D maps
 /// over F, seen in perspective (docs/conventions.md §10). CRULE's rules on the 3-D set of

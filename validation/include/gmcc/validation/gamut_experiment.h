@@ -104,7 +104,7 @@ struct ExperimentConfig {
   /// factor k scales CRULE's F3 by 1/k, so no rule's perspective map moves; the true map may
   /// leave F3 (docs/reproduction.md §5b).
   double intensity = 0;
-  /// Score scenes by the certified floating-point route (rule_errors.h) where it applies and
+  /// Score scenes by the certified floating-point route (certified_rule_errors.h) where it applies and
   /// certifies its angles (the default analytic 3-D mean, no constraint), else exactly. false:
   /// the exact route for every scene (for cross-checks; results agree within
   /// rule_errors_accuracy).
