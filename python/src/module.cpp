@@ -84,12 +84,17 @@ SelectSceneOptions scene_options(py::handle expand, const std::string& expand_po
   } catch (const std::invalid_argument& e) {
     throw py::value_error(std::string("mean3d: ") + e.what());
   }
-  m.precision_bits = integer_in<unsigned>(precision, "precision", 0, 1 << 20);
-  if (m.precision_bits != 0 && m.precision_bits < 53)
-    throw py::value_error("precision: must be 0 (automatic) or from 53 to 1048576 bits");
-  m.order = integer_in<unsigned>(order, "order", 1, 256);
-  m.samples = integer_in<std::uint64_t>(samples, "samples", 1, 1000000000);
-  m.seed = integer_in<std::uint64_t>(seed, "seed", 0, ~0ULL);
+  // Read within the library's ranges (mean_3d.h), then the library's own check; only the names
+  // are Python's.
+  m.precision_bits = integer_in<unsigned>(precision, "precision", mean3d_precision_range);
+  m.order = integer_in<unsigned>(order, "order", mean3d_order_range);
+  m.samples = integer_in<std::uint64_t>(samples, "samples", mean3d_samples_range);
+  m.seed = integer_in<std::uint64_t>(seed, "seed", mean3d_seed_range);
+  try {
+    check_options(m);
+  } catch (const OptionError& e) {
+    throw py::value_error(e.option + ": " + e.what());
+  }
   return o;
 }
 
@@ -115,11 +120,16 @@ auto released(F f) {
   }
 }
 
+// The 3-D mean's parameters with the library's defaults (Mean3dOptions).
+#define GMCC_MEAN3D_PARAMETER_ARGS                                                                \
+  py::arg("precision") = Mean3dOptions{}.precision_bits, py::arg("order") = Mean3dOptions{}.order, \
+  py::arg("samples") = Mean3dOptions{}.samples, py::arg("seed") = Mean3dOptions{}.seed
+
 #define GMCC_OPTION_ARGS                                                                          \
   py::arg("expand") = 0, py::arg("expand_policy") = "none", py::arg("illuminants") = py::none(),   \
   py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1), py::arg("on_empty") = "none",        \
-  py::arg("mean3d") = "analytic", py::arg("precision") = 0, py::arg("order") = 12,                 \
-  py::arg("samples") = 1000000, py::arg("seed") = 1, py::arg("illuminant_worst_case") = true,      \
+  py::arg("mean3d") = to_string(Mean3dOptions{}.method), GMCC_MEAN3D_PARAMETER_ARGS,               \
+  py::arg("illuminant_worst_case") = true,                                                         \
   py::arg("nonpositive_blue") = "drop"
 
 std::shared_ptr<PreparedCanonical> prepare(py::handle canonical, py::handle expand, const std::string& expand_policy,
@@ -333,9 +343,8 @@ void bind_scene(py::module_& m) {
         const Selections s = released([&] { return select_maps(F, o); });
         return selections_dict(s);
       },
-      py::arg("feasible_set"), py::kw_only(), py::arg("mean3d") = "analytic", py::arg("precision") = 0,
-      py::arg("order") = 12, py::arg("samples") = 1000000, py::arg("seed") = 1,
-      py::arg("canonical_illuminant") = py::none(),
+      py::arg("feasible_set"), py::kw_only(), py::arg("mean3d") = to_string(Mean3dOptions{}.method),
+      GMCC_MEAN3D_PARAMETER_ARGS, py::arg("canonical_illuminant") = py::none(),
         "The three selection rules with worst cases (select_maps.h; §3, §4). Public: gmcc.select_maps.");
 }
 
@@ -373,8 +382,8 @@ list of str
                                     .mean3d;
         return released([&] { return mean_3d(F, o); });
       },
-      py::arg("feasible_set"), py::kw_only(), py::arg("method") = "analytic", py::arg("precision") = 0,
-      py::arg("order") = 12, py::arg("samples") = 1000000, py::arg("seed") = 1,
+      py::arg("feasible_set"), py::kw_only(), py::arg("method") = to_string(Mean3dOptions{}.method),
+      GMCC_MEAN3D_PARAMETER_ARGS,
         "mean_3d by a route (mean_3d.h; Finlayson & Hordley 1999 §3.2, docs/math.md §2).");
 
   m.def("worst_case_map_deg", [](const ConvexSet2& F, py::handle map) {

@@ -5,6 +5,7 @@
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/selection/mean_3d_analytic.h>
 #include <gmcc/selection/mean_3d_double.h>
+#include <gmcc/selection/prepare_canonical.h>
 #include <gmcc/selection/select_maps.h>
 
 #include <boost/test/unit_test.hpp>
@@ -194,6 +195,45 @@ BOOST_AUTO_TEST_CASE(forced_precision_too_low_is_not_a_map) {
     BOOST_TEST((std::isfinite(lo) && lo <= automatic.map[k] && automatic.map[k] <= hi &&
                 std::isfinite(hi)));
   }
+}
+
+// The 3-D mean's limits are the library's: check_options refuses each parameter just outside its
+// range by its library name, accepts both ends and the defaults, and the select pipeline's
+// prepare_canonical applies it.
+BOOST_AUTO_TEST_CASE(mean_3d_options_checked_in_the_library) {
+  BOOST_CHECK_NO_THROW(check_options(Mean3dOptions{}));
+  auto refused = [](Mean3dOptions o) -> std::string {
+    try {
+      check_options(o);
+    } catch (const OptionError& e) {
+      return e.option;
+    }
+    return "";
+  };
+  Mean3dOptions o;
+  o.order = mean3d_order_range.hi;
+  o.samples = mean3d_samples_range.hi;
+  o.precision_bits = min_forced_precision_bits;
+  BOOST_TEST(refused(o) == "");
+  o.precision_bits = static_cast<unsigned>(mean3d_precision_range.hi);
+  BOOST_TEST(refused(o) == "");
+  o.precision_bits = min_forced_precision_bits - 1;
+  BOOST_TEST(refused(o) == "precision");
+  o.precision_bits = static_cast<unsigned>(mean3d_precision_range.hi + 1);
+  BOOST_TEST(refused(o) == "precision");
+  o = {};
+  o.order = 0;
+  BOOST_TEST(refused(o) == "order");
+  o.order = static_cast<unsigned>(mean3d_order_range.hi + 1);
+  BOOST_TEST(refused(o) == "order");
+  o = {};
+  o.samples = 0;
+  BOOST_TEST(refused(o) == "samples");
+  o.samples = mean3d_samples_range.hi + 1;
+  BOOST_TEST(refused(o) == "samples");
+  SelectSceneOptions scene;
+  scene.mean3d.order = 0;
+  BOOST_CHECK_THROW(prepare_canonical({{1, 1, 1}, {2, 1, 1}, {1, 2, 1}}, scene), OptionError);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
