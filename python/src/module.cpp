@@ -146,8 +146,33 @@ std::shared_ptr<PreparedCanonical> prepare(py::handle canonical, py::handle expa
 }
 
 
+// The prepared canonical side's per-scene choices with those given here (None: keep it).
+SceneChoices scene_choices(const PreparedCanonical& canonical, const py::dict& given) {
+  SceneChoices c = canonical.options;
+  Mean3dOptions& m = c.mean3d;
+  auto has = [&](const char* name) { return given.contains(name) && !given[name].is_none(); };
+  if (has("mean3d")) {
+    try {
+      m.method = mean3d_method_from_string(given["mean3d"].cast<std::string>());
+    } catch (const std::invalid_argument& e) {
+      throw py::value_error(std::string("mean3d: ") + e.what());
+    }
+  }
+  if (has("precision")) m.precision_bits = integer_in<unsigned>(given["precision"], "precision", mean3d_precision_range);
+  if (has("order")) m.order = integer_in<unsigned>(given["order"], "order", mean3d_order_range);
+  if (has("samples")) m.samples = integer_in<std::uint64_t>(given["samples"], "samples", mean3d_samples_range);
+  if (has("seed")) m.seed = integer_in<std::uint64_t>(given["seed"], "seed", mean3d_seed_range);
+  if (has("illuminant_worst_case")) c.illuminant_worst_case = given["illuminant_worst_case"].cast<bool>();
+  try {
+    check_options(m);
+  } catch (const OptionError& e) {
+    throw py::value_error(e.option + ": " + e.what());
+  }
+  return c;
+}
+
 Scene run_scene(const std::shared_ptr<PreparedCanonical>& canonical, py::handle image, py::handle truth,
-                const PixelArgs& pixels, bool select) {
+                const PixelArgs& pixels, bool select, const SceneChoices* choices = nullptr) {
   Scene scene;
   scene.canonical = canonical;
   std::vector<Colour> colours;
@@ -166,7 +191,8 @@ Scene run_scene(const std::shared_ptr<PreparedCanonical>& canonical, py::handle 
   std::optional<Colour> t;
   if (!truth.is_none()) t = light_from(truth, "truth");
   scene.result = released([&] {
-    return select ? select_scene(*canonical, colours, t) : scene_feasible_set(*canonical, colours);
+    if (!select) return scene_feasible_set(*canonical, colours);
+    return choices ? select_scene(*canonical, colours, t, *choices) : select_scene(*canonical, colours, t);
   });
   return scene;
 }
@@ -257,13 +283,15 @@ void bind_scene(py::module_& m) {
       "select_prepared",
       [](const std::shared_ptr<PreparedCanonical>& canonical, py::handle image, py::handle truth, py::object mask,
          py::object black_level, py::object saturation, py::object dark, py::object dark_fraction,
-         py::object bright_fraction, const std::string& pixel_rule) {
+         py::object bright_fraction, const std::string& pixel_rule, const py::dict& choices) {
+        const SceneChoices c = scene_choices(*canonical, choices);
         return run_scene(canonical, image, truth,
-                         {mask, black_level, saturation, dark, dark_fraction, bright_fraction, pixel_rule}, true);
+                         {mask, black_level, saturation, dark, dark_fraction, bright_fraction, pixel_rule}, true, &c);
       },
       py::arg("canonical"), py::arg("image"), py::arg("truth") = py::none(), py::arg("mask") = py::none(),
       py::arg("black_level") = 0, py::arg("saturation") = py::none(), py::arg("dark") = 0,
       py::arg("dark_fraction") = py::none(), py::arg("bright_fraction") = py::none(), py::arg("pixel_rule") = "none",
+      py::arg("choices") = py::dict(),
         "select_scene (select_scene.h) on colours or an H×W×3 image. Public: gmcc.select.");
 
   m.def(

@@ -79,9 +79,18 @@ BOOST_AUTO_TEST_CASE(agrees_with_its_steps_on_random_scenes) {
     const ConvexSet2 F = feasible_set(G, perspective_chromaticities(image, NonPositiveBluePolicy::drop).points);
     BOOST_TEST(r.feasible == F);
     const Selections expected = select_maps(F, {o.mean3d, o.canonical_illuminant});
-    same_selection(r.selections[gmcc::Rule::max_area], expected[gmcc::Rule::max_area]);
-    same_selection(r.selections[gmcc::Rule::mean_2d], expected[gmcc::Rule::mean_2d]);
-    same_selection(r.selections[gmcc::Rule::mean_3d], expected[gmcc::Rule::mean_3d]);
+    for (Rule rule : all_rules) same_selection(r.selections[rule], expected[rule]);
+    // Per-scene choices against the same prepared side equal a side prepared with them.
+    SceneChoices choices;
+    choices.mean3d = {Mean3dMethod::quadrature, 0, 10 + static_cast<unsigned>(s % 3)};
+    choices.illuminant_worst_case = s % 2 == 0;
+    SelectSceneOptions baked = o;
+    static_cast<SceneChoices&>(baked) = choices;
+    const SceneResult per_call = select_scene(pc, image, std::nullopt, choices);
+    const SceneResult prepared_with = select_scene(prepare_canonical(canonical, baked), image);
+    for (Rule rule : all_rules) same_selection(per_call.selections[rule], prepared_with.selections[rule]);
+    if (F.kind != ConvexKind::empty)
+      BOOST_TEST(per_call.selections[Rule::mean_3d]->estimate.method == "quadrature");
     non_empty += F.kind != ConvexKind::empty;
   }
   BOOST_TEST(non_empty > 20);  // noise-free scenes of canonical colours under one light: F ∋ truth

@@ -84,4 +84,10 @@ SceneResult scene_feasible_set(const PreparedCanonical& canonical, const std::ve
 SceneResult select_scene(const PreparedCanonical& canonical, const std::vector<Colour>& image,
                          const std::optional<Colour>& truth = std::nullopt);
 
+/// The same with this call's own choices instead of the ones `canonical` was prepared with (the
+/// 3-D mean's route, the illuminant-space worst cases): everything else as above.
+/// \throws SceneInputError as above; OptionError for a 3-D mean parameter outside its limits.
+SceneResult select_scene(const PreparedCanonical& canonical, const std::vector<Colour>& image,
+                         const std::optional<Colour>& truth, const SceneChoices& choices);
+
 }  // namespace gmcc
