@@ -46,15 +46,7 @@ Settings settings_of(const EstimateOptions& o) {
       throw InputError("--truths", 0, "give --truth (one image) or --truths (a file), not both");
     s.truths = truth_rows_by_image(read_truth_table(o.truths_path));
   }
-  try {
-    s.scene.expansion.policy = expansion_policy_from_string(o.expand_policy);
-    s.scene.expansion.factor = parse_rational(o.expand_factor);
-    if (sgn(s.scene.expansion.factor) < 0) throw std::invalid_argument("must be >= 0");
-    if (sgn(s.scene.expansion.factor) > 0 && s.scene.expansion.policy == ExpansionPolicy::none)
-      throw std::invalid_argument("needs --expand-policy centroid-clip or multiplicative");
-  } catch (const std::invalid_argument& e) {
-    throw InputError("--expand", 0, e.what());
-  }
+  s.scene.expansion = expansion_option(o.expand_factor, o.expand_policy);
   s.scene.on_empty = recovery_policy_from_string(o.on_empty);
   s.scene.illuminant_worst_case = o.illuminant_worst_case != "off";
   return s;

@@ -2,7 +2,7 @@
 // Integer options read exactly, like every number gmcc reads (`1e7` is 10000000), range-checked:
 // CLI11 would silently wrap `-1` into an unsigned option.
 
-#include <gmcc/selection/option_error.h>
+#include <gmcc/geometry/option_error.h>
 
 #include <cstdint>
 #include <string>

@@ -5,6 +5,7 @@
 #include "integer_option.h"
 #include "limit_exit.h"
 #include "output_files.h"
+#include "expansion_option.h"
 #include "provenance.h"
 #include "write_stdout.h"
 
@@ -150,15 +151,7 @@ ExperimentConfig config_from(const ReproduceOptions& o) {
   c.max_surfaces = static_cast<int>(integer_option("--surfaces", o.max_surfaces, 1, 24));
   c.threads = static_cast<unsigned>(integer_option("--threads", o.threads, 0, 256));
   c.mean3d.method = mean3d_method_from_string(o.mean3d_method);
-  try {
-    c.expansion.policy = expansion_policy_from_string(o.expand_policy);
-    c.expansion.factor = parse_rational(o.expand_factor);
-    if (sgn(c.expansion.factor) < 0) throw std::invalid_argument("must be >= 0");
-    if (sgn(c.expansion.factor) > 0 && c.expansion.policy == ExpansionPolicy::none)
-      throw std::invalid_argument("needs --expand-policy centroid-clip or multiplicative");
-  } catch (const std::invalid_argument& e) {
-    throw InputError("--expand", 0, e.what());
-  }
+  c.expansion = expansion_option(o.expand_factor, o.expand_policy);
   c.noise = bounded_option("--noise", o.noise, 1, true, "must be from 0 to 1");
   c.crule = o.crule;
   c.shading = bounded_option("--shading", o.shading, 1, false, "must be from 0 to below 1");

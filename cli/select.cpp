@@ -189,15 +189,7 @@ SelectSettings select_settings(const SelectOptions& o) {
   scene.on_empty = recovery_policy_from_string(o.on_empty);
   scene.nonpositive_blue =
       o.nonpositive_blue == "reject" ? NonPositiveBluePolicy::reject : NonPositiveBluePolicy::drop;
-  try {
-    scene.expansion.policy = expansion_policy_from_string(o.expand_policy);
-    scene.expansion.factor = parse_rational(o.expand_factor);
-    if (sgn(scene.expansion.factor) < 0) throw std::invalid_argument("must be >= 0");
-    if (sgn(scene.expansion.factor) > 0 && scene.expansion.policy == ExpansionPolicy::none)
-      throw std::invalid_argument("needs --expand-policy centroid-clip or multiplicative");
-  } catch (const std::invalid_argument& e) {
-    throw InputError("--expand", 0, e.what());
-  }
+  scene.expansion = expansion_option(o.expand_factor, o.expand_policy);
   if (scene.on_empty == RecoveryPolicy::grow_canonical &&
       scene.expansion.policy == ExpansionPolicy::centroid_clip)
     throw InputError("--on-empty", 0,

@@ -3,6 +3,8 @@
 // gamut and the three selection rules (docs/cli.md "gmcc select"). The pipeline is the library's
 // (gmcc/selection/select_scene.h); this file reads options and files and prints.
 
+#include "expansion_option.h"
+
 #include <gmcc/selection/prepare_canonical.h>
 #include <gmcc/selection/select_scene.h>
 #include <gmcc/input/colour_csv.h>

@@ -1,5 +1,6 @@
 #include <gmcc/geometry/canonical_gamut.h>
 #include <gmcc/geometry/convex_hull.h>
+#include <gmcc/geometry/option_error.h>
 
 #include "internal/half_plane.h"
 
@@ -25,11 +26,14 @@ ExpansionPolicy expansion_policy_from_string(const std::string& name) {
                               "' (expected none, centroid-clip or multiplicative)");
 }
 
-ConvexSet2 canonical_gamut(const std::vector<Point2>& chromaticities, const Expansion& expansion) {
-  if (sgn(expansion.factor) < 0)
-    throw std::invalid_argument("the expansion factor must be >= 0");
+void check_options(const Expansion& expansion) {
+  if (sgn(expansion.factor) < 0) throw OptionError("expand", "must be >= 0");
   if (expansion.policy == ExpansionPolicy::none && sgn(expansion.factor) != 0)
-    throw std::invalid_argument("an expansion factor needs an expansion policy other than none");
+    throw OptionError("expand_policy", "must be centroid-clip or multiplicative for an expansion factor > 0");
+}
+
+ConvexSet2 canonical_gamut(const std::vector<Point2>& chromaticities, const Expansion& expansion) {
+  check_options(expansion);
   ConvexSet2 hull = convex_hull(chromaticities);
   if (expansion.policy == ExpansionPolicy::none || sgn(expansion.factor) == 0 ||
       hull.kind == ConvexKind::empty)

@@ -11,7 +11,7 @@
 #include <gmcc/geometry/point.h>
 #include <gmcc/geometry/rational.h>
 
-#include <gmcc/selection/option_error.h>
+#include <gmcc/geometry/option_error.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>

@@ -41,8 +41,7 @@ namespace {
 
 // ---- options (the command line's checks, with the Python argument names) ----
 
-// The expansion of the canonical gamut (`expand`, `expand_policy`), checked as the command line
-// checks --expand and --expand-policy.
+// The expansion of the canonical gamut (`expand`, `expand_policy`), checked by the library.
 Expansion expansion_from(py::handle expand, const std::string& expand_policy) {
   Expansion x;
   try {
@@ -51,9 +50,11 @@ Expansion expansion_from(py::handle expand, const std::string& expand_policy) {
     throw py::value_error(std::string("expand_policy: ") + e.what());
   }
   x.factor = number_from(expand, "expand");
-  if (sgn(x.factor) < 0) throw py::value_error("expand: must be >= 0");
-  if (sgn(x.factor) > 0 && x.policy == ExpansionPolicy::none)
-    throw py::value_error("expand: needs expand_policy='centroid-clip' or 'multiplicative'");
+  try {
+    check_options(x);
+  } catch (const OptionError& e) {
+    throw py::value_error(e.option + ": " + e.what());
+  }
   return x;
 }
 

@@ -8,12 +8,7 @@ namespace {
 
 void check_options(const SelectSceneOptions& o) {
   const Expansion& e = o.expansion;
-  if (sgn(e.factor) < 0)
-    throw SceneInputError(SceneInput::expansion, SceneProblem::bad_option, std::nullopt,
-                          "the expansion factor must be >= 0");
-  if (sgn(e.factor) > 0 && e.policy == ExpansionPolicy::none)
-    throw SceneInputError(SceneInput::expansion, SceneProblem::bad_option, std::nullopt,
-                          "an expansion factor > 0 needs a policy (centroid-clip or multiplicative)");
+  check_options(e);
   const Colour& c = o.canonical_illuminant;
   if (sgn(c.r) <= 0 || sgn(c.g) <= 0 || sgn(c.b) <= 0)
     throw SceneInputError(SceneInput::canonical_illuminant, SceneProblem::nonpositive_light, std::nullopt,

@@ -126,7 +126,7 @@ def test_exact_kinds_of_numbers():
 def test_options_are_checked():
     for kwargs, message in [
         (dict(expand=-1, expand_policy="multiplicative"), "expand: must be >= 0"),
-        (dict(expand="0.1"), "expand: needs expand_policy"),
+        (dict(expand="0.1"), "expand_policy: must be centroid-clip or multiplicative"),
         (dict(expand_policy="sideways"), "expand_policy"),
         (dict(mean3d="guess"), "mean3d"),
         (dict(order=0, mean3d="quadrature"), "order: must be from 1 to 256"),

@@ -33,8 +33,12 @@ struct Expansion {
   Rational factor = 0;  ///< F >= 0, exact: 0.1 enlarges by 10%; 0 with every policy but `none` is a no-op
 };
 
+/// Checks an expansion: the factor >= 0, and a policy other than none for a factor > 0.
+/// \throws OptionError (option_error.h) naming `expand` or `expand_policy`.
+void check_options(const Expansion& expansion);
+
 /// G_c: the exact hull of `chromaticities`, expanded by `expansion`.
-/// \throws std::invalid_argument if factor < 0, or factor > 0 with policy none.
+/// \throws OptionError (a std::invalid_argument) as check_options.
 /// Complexity O(n log n).
 ConvexSet2 canonical_gamut(const std::vector<Point2>& chromaticities,
                            const Expansion& expansion = {});

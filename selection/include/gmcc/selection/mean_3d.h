@@ -7,7 +7,7 @@
 #include <gmcc/selection/mean_3d_monte_carlo.h>
 #include <gmcc/selection/mean_3d_quadrature.h>
 
-#include <gmcc/selection/option_error.h>
+#include <gmcc/geometry/option_error.h>
 
 #include <cstdint>
 #include <string>

@@ -31,10 +31,9 @@ struct PreparedCanonical {
 /// Hordley 1999 eq. 10), G_c and its expansion (canonical_gamut.h), C (illumination_constraint.h).
 /// \throws SceneInputError (input canonical, illuminants, expansion or on_empty) for input or
 ///         options that admit no answer: no usable colour, b <= 0 under reject, coordinates
-///         beyond max_scene_coordinate, an illuminant or c with a channel <= 0, a negative
-///         factor or a factor with ExpansionPolicy::none, grow-canonical after a centroid-clip
-///         expansion; OptionError for a 3-D mean parameter outside its limits (check_options,
-///         mean_3d.h). Complexity O(n log n) in the colours and lights.
+///         beyond max_scene_coordinate, an illuminant or c with a channel <= 0, grow-canonical
+///         after a centroid-clip expansion; OptionError for an expansion (check_options,
+///         canonical_gamut.h) or a 3-D mean parameter (check_options, mean_3d.h) it refuses. Complexity O(n log n) in the colours and lights.
 PreparedCanonical prepare_canonical(const std::vector<Colour>& canonical,
                                     const SelectSceneOptions& options);
 
