@@ -115,9 +115,9 @@ std::optional<std::array<E, 2>> certified_map(Rule rule, const std::vector<V>& v
   switch (rule) {
     case Rule::max_area: return max_area_map<E>(v, edges);
     case Rule::mean_2d: return centroid<E>(v);
-    case Rule::mean_3d: break;
+    case Rule::mean_3d: return internal::mean_3d_direction<E>(v);
   }
-  return internal::mean_3d_direction<E>(v);
+  return std::nullopt;  // a rule with no certified form: the caller takes the exact route
 }
 
 // One stage: every value in enclosures of type E, from F's vertex enclosures v.

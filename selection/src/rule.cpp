@@ -2,6 +2,8 @@
 #include <gmcc/selection/mean_2d.h>
 #include <gmcc/selection/rule.h>
 
+#include <gmcc/numerics/internal_check.h>
+
 #include <stdexcept>
 
 namespace gmcc {
@@ -10,18 +12,20 @@ std::string to_string(Rule rule) {
   switch (rule) {
     case Rule::max_area: return "max_area";
     case Rule::mean_2d: return "mean_2d";
-    case Rule::mean_3d: break;
+    case Rule::mean_3d: return "mean_3d";
   }
-  return "mean_3d";
+  GMCC_CHECK(false, "to_string(Rule): a rule without a key");
+  return {};
 }
 
 std::string rule_label(Rule rule) {
   switch (rule) {
     case Rule::max_area: return "max-area";
     case Rule::mean_2d: return "2-D mean";
-    case Rule::mean_3d: break;
+    case Rule::mean_3d: return "3-D mean";
   }
-  return "3-D mean";
+  GMCC_CHECK(false, "rule_label: a rule without a label");
+  return {};
 }
 
 Rule rule_from_string(const std::string& text) {
@@ -40,9 +44,10 @@ MapEstimate select_rule(Rule rule, const ConvexSet2& F, const Mean3dOptions& mea
   switch (rule) {
     case Rule::max_area: return max_area(F);
     case Rule::mean_2d: return mean_2d(F);
-    case Rule::mean_3d: break;
+    case Rule::mean_3d: return mean_3d(F, mean3d);
   }
-  return mean_3d(F, mean3d);
+  GMCC_CHECK(false, "select_rule: a rule without an implementation");
+  return {};
 }
 
 }  // namespace gmcc

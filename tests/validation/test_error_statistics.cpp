@@ -114,7 +114,7 @@ BOOST_AUTO_TEST_CASE(shards_partition_the_scenes_and_summarise_to_the_whole) {
     BOOST_TEST((a.light == b.light && a.surfaces == b.surfaces && a.scene == b.scene));
     BOOST_TEST(a.drawn == b.drawn);
     BOOST_TEST(a.drawn.size() == static_cast<std::size_t>(a.surfaces));
-    BOOST_TEST(a.rules.size() == 3u);
+    BOOST_TEST(a.rules.size() == rule_count);
     for (std::size_t r = 0; r < a.rules.size(); ++r) BOOST_TEST(a.rules[r].error_deg == b.rules[r].error_deg);
   }
   // The cell (P2856, 2) summarised from the shards' records is the whole run's cell.

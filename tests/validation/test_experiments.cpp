@@ -177,8 +177,8 @@ ExperimentConfig small_crule_config() {
 BOOST_AUTO_TEST_CASE(crule_contains_the_true_diagonal_map_without_shading) {
   const ExperimentSetup one = one_light_setup();
   const ExperimentResult r = run_gamut_experiment(one, small_crule_config());
-  BOOST_REQUIRE(r.rules.size() == 5u);
-  BOOST_TEST(r.rules[3] == "crule_max_volume");
+  BOOST_REQUIRE(r.rules.size() == rule_count + 2);
+  BOOST_TEST(r.rules[rule_count] == "crule_max_volume");
   for (const ExperimentCell& cell : r.cells)
     for (std::size_t k = 3; k < 5; ++k) {
       BOOST_TEST(cell.rules[k].truth_in_feasible_set == cell.scenes);
@@ -197,9 +197,9 @@ BOOST_AUTO_TEST_CASE(seed_claim_conditions) {
   c.crule_extended = true;
   c.keep_scenes = true;
   const ExperimentResult plain = run_gamut_experiment(one, c);
-  BOOST_REQUIRE(plain.rules.size() == 7u);
-  BOOST_TEST(plain.rules[5] == "crule_max_trace");
-  BOOST_TEST(plain.rules[6] == "crule_cone_mean");
+  BOOST_REQUIRE(plain.rules.size() == rule_count + 4);
+  BOOST_TEST(plain.rules[rule_count + 2] == "crule_max_trace");
+  BOOST_TEST(plain.rules[rule_count + 3] == "crule_cone_mean");
   ExperimentConfig dark = c;
   dark.intensity = 0.25;
   const ExperimentResult darker = run_gamut_experiment(one, dark);
@@ -219,12 +219,12 @@ BOOST_AUTO_TEST_CASE(seed_claim_conditions) {
   // other rules' exactly.
   std::uint64_t truth_bright = 0, scenes = 0;
   for (std::size_t i = 0; i < plain.scenes.size(); ++i) {
-    for (std::size_t k = 0; k < 7; ++k) {
-      const double tolerance = k == 3 || k == 4 ? 1e-9 : 0;
+    for (std::size_t k = 0; k < rule_count + 4; ++k) {
+      const double tolerance = k == rule_count || k == rule_count + 1 ? 1e-9 : 0;  // CRULE max-volume, centroid
       BOOST_TEST(std::abs(plain.scenes[i].rules[k].error_deg - brighter.scenes[i].rules[k].error_deg) <= tolerance);
       BOOST_TEST(std::abs(plain.scenes[i].rules[k].error_deg - darker.scenes[i].rules[k].error_deg) <= tolerance);
     }
-    truth_bright += brighter.scenes[i].rules[3].truth_in_feasible_set;
+    truth_bright += brighter.scenes[i].rules[rule_count].truth_in_feasible_set;
     ++scenes;
   }
   BOOST_TEST(truth_bright < scenes);  // a brighter scene does not fit G_c3 under the true map

@@ -104,7 +104,7 @@ BOOST_AUTO_TEST_CASE(a_point_gamut_gives_a_point_feasible_set_at_the_truth) {
   BOOST_TEST_REQUIRE(r.scenes.size() == 4u * 3u * 3u);
   for (const SceneRecord& rec : r.scenes) {
     BOOST_TEST((rec.kind == ConvexKind::point));
-    BOOST_TEST_REQUIRE(rec.rules.size() == 3u);
+    BOOST_TEST_REQUIRE(rec.rules.size() == rule_count);
     for (const RuleRecord& x : rec.rules) {
       BOOST_TEST(x.error_deg == 0.0);
       BOOST_TEST(x.illuminant_error_deg == 0.0);

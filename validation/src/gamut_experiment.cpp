@@ -182,7 +182,7 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
                                   std::size_t light_index, int n, std::uint64_t s_begin, std::uint64_t s_end,
                                   std::atomic<std::uint64_t>& done) {
   const TestLight& light = setup.lights[light_index];
-  const std::size_t R = 3 + experiment_rules_3d_count(config);
+  const std::size_t R = rule_count + experiment_rules_3d_count(config);
   std::vector<SceneRecord> records;
   if (static_cast<std::size_t>(n) > light.surfaces.size()) {  // setup.skip_short_lights: no scenes
     done += s_end - s_begin;
