@@ -6,6 +6,8 @@
 #include <gmcc/input/image_derivatives.h>
 #include <gmcc/input/colour_csv.h>
 
+#include "sort_keys.h"
+
 #include <algorithm>
 #include <cmath>
 #include <array>

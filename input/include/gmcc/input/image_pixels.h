@@ -177,10 +177,4 @@ inline constexpr std::uint64_t max_polygon_work = std::uint64_t(1) << 25;
 std::vector<bool> polygon_cover(const std::vector<Point2>& polygon, std::size_t width,
                                 std::size_t height);
 
-namespace internal {
-/// Sorts keys below 2^48 ascending in place (American flag sort; McIlroy, Bostic & McIlroy 1993):
-/// how image_colours sorts more than 2^24 colour keys without a second buffer. For tests.
-void sort_keys_in_place(std::vector<std::uint64_t>& keys);
-}  // namespace internal
-
 }  // namespace gmcc
