@@ -26,7 +26,7 @@
 #include <gmcc/selection/centroid_3.h>
 #include <gmcc/selection/crule_3d.h>
 #include <gmcc/selection/max_volume.h>
-#include <gmcc/selection/rule_errors.h>
+#include <gmcc/selection/certified_rule_errors.h>
 #include <gmcc/validation/gamut_experiment.h>
 #include <gmcc/input/spectral_table.h>
 #include <gmcc/validation/synthetic_experiment.h>
@@ -230,7 +230,7 @@ void scene_certified_2d(benchmark::State& state) {
     if (P.kind() == ConvexKind::empty) continue;
     const Point2& truth = w.setup.lights[s.light].true_map;
     benchmark::DoNotOptimize(P.contains(truth));
-    const auto errors = rule_errors(P, truth, w.setup.canonical_light);
+    const auto errors = certified_rule_errors(P, truth, w.setup.canonical_light);
     if (errors)
       for (const RuleErrors& e : *errors) sink += e.map_error_deg + e.worst_case_deg;
   }

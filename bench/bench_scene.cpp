@@ -18,7 +18,7 @@
 #include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/selection/angular_error.h>
-#include <gmcc/selection/rule_errors.h>
+#include <gmcc/selection/certified_rule_errors.h>
 #include <gmcc/selection/select_maps.h>
 #include <gmcc/input/spectral_table.h>
 #include <gmcc/validation/gamut_experiment.h>
@@ -156,7 +156,7 @@ double exact_scene(const CanonicalConstraints& gamut, const std::vector<Point2>&
   truth_inside += contains(F, truth);
   const Selections sel = select_maps(F);
   double sum = 0;
-  for (const auto* x : {&sel.max_area, &sel.mean_2d, &sel.mean_3d}) {
+  for (const auto* x : {&sel[gmcc::Rule::max_area], &sel[gmcc::Rule::mean_2d], &sel[gmcc::Rule::mean_3d]}) {
     const MapEstimate& e = (*x)->estimate;
     const Point2 m = e.exact ? *e.exact : Point2{rational_from_double(e.map[0]), rational_from_double(e.map[1])};
     sum += map_angular_error_deg(m, truth) + *(*x)->worst_case_deg;
@@ -173,7 +173,7 @@ double certified_scene(const CanonicalConstraints& gamut, const std::vector<cons
   const FeasiblePolygon P = feasible_polygon(gamut, colours);
   if (P.kind() == ConvexKind::empty) return 0;
   const bool inside = P.contains(truth);
-  const auto errors = rule_errors(P, truth, c);
+  const auto errors = certified_rule_errors(P, truth, c);
   if (!errors) {
     ++declined;
     return exact_scene(gamut, image, truth, c, truth_inside);

@@ -21,7 +21,7 @@
 #include <gmcc/selection/mean_2d.h>
 #include <gmcc/selection/mean_3d.h>
 #include <gmcc/selection/select_maps.h>
-#include <gmcc/selection/truth_errors.h>
+#include <gmcc/selection/rule_errors.h>
 #include <gmcc/selection/worst_case.h>
 #include <gmcc/selection/select_scene.h>
 #include <gmcc/input/colour_csv.h>
@@ -161,7 +161,7 @@ void library_batch(benchmark::State& state) {
   std::size_t i = 0;
   for (auto _ : state) {
     const SceneResult r = select_scene(*w.prepared, w.scenes[i++ % w.scenes.size()], w.truth);
-    benchmark::DoNotOptimize(r.selections.mean_3d);
+    benchmark::DoNotOptimize(r.selections[gmcc::Rule::mean_3d]);
   }
   rate.report(1);
 }
@@ -175,7 +175,7 @@ void library_batch_no_illuminant_worst_case(benchmark::State& state) {
   std::size_t i = 0;
   for (auto _ : state) {
     const SceneResult r = select_scene(prepared, w.scenes[i++ % w.scenes.size()], w.truth);
-    benchmark::DoNotOptimize(r.selections.mean_3d);
+    benchmark::DoNotOptimize(r.selections[gmcc::Rule::mean_3d]);
   }
   rate.report(1);
 }
@@ -246,10 +246,10 @@ void part_step(benchmark::State& state, int step) {
       case 0: benchmark::DoNotOptimize(max_area(F[k])); break;
       case 1: benchmark::DoNotOptimize(mean_2d(F[k])); break;
       case 2: benchmark::DoNotOptimize(mean_3d(F[k])); break;
-      case 3: benchmark::DoNotOptimize(worst_case_map_deg(F[k], *sel[k].mean_2d->estimate.exact)); break;
+      case 3: benchmark::DoNotOptimize(worst_case_map_deg(F[k], *sel[k][gmcc::Rule::mean_2d]->estimate.exact)); break;
       default:
-        for (const auto* x : {&sel[k].max_area, &sel[k].mean_2d, &sel[k].mean_3d})
-          benchmark::DoNotOptimize(truth_errors(**x, truth, Colour{1, 1, 1}));
+        for (const auto* x : {&sel[k][gmcc::Rule::max_area], &sel[k][gmcc::Rule::mean_2d], &sel[k][gmcc::Rule::mean_3d]})
+          benchmark::DoNotOptimize(exact_rule_errors(**x, truth, Colour{1, 1, 1}));
     }
   }
   rate.report(1);

@@ -95,12 +95,6 @@ RgbImage corrected(const RgbImage& image, const PixelRules& rules, std::uint32_t
   return out;
 }
 
-const char* const kRules[3] = {"max_area", "mean_2d", "mean_3d"};
-
-const std::optional<Selection>& rule(const Selections& s, int k) {
-  return k == 0 ? s.max_area : k == 1 ? s.mean_2d : s.mean_3d;
-}
-
 std::string fixed(double x, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", digits, x);
@@ -387,23 +381,22 @@ int run_estimate(const EstimateOptions& o) {
     Json record = image_record(path, image, colours);
     Json estimates = Json::object();
     describe_image(text, path, image, colours, rules, result);
-    for (int k = 0; k < 3; ++k) {
-      const std::optional<Selection>& sel = rule(result.selections, k);
+    for (Rule k : all_rules) {
+      const std::optional<Selection>& sel = result.selections[k];
       if (!sel || !sel->estimate.valid) continue;
+      const std::string key = to_string(k);
       const std::array<double, 3> e = light_of(sel->estimate.map, prepared.options.canonical_illuminant);
-      estimates[kRules[k]] = {{"map", sel->estimate.map}, {"light", e}};
-      text << "  " << kRules[k] << "  light (" << fixed(e[0], 6) << ", " << fixed(e[1], 6) << ", "
+      estimates[key] = {{"map", sel->estimate.map}, {"light", e}};
+      text << "  " << key << "  light (" << fixed(e[0], 6) << ", " << fixed(e[1], 6) << ", "
            << fixed(e[2], 6) << ")";
       if (result.truth) {
-        const std::optional<TruthErrors>& t =
-            k == 0 ? result.truth->max_area : k == 1 ? result.truth->mean_2d : result.truth->mean_3d;
-        if (t && t->illuminant_error_deg)
-          text << "  recovery error " << fixed(*t->illuminant_error_deg, 3) << " deg";
+        const std::optional<RuleErrors>& t = result.truth->errors[k];
+        if (t && t->positive_map) text << "  recovery error " << fixed(t->illuminant_error_deg, 3) << " deg";
       }
       text << "\n";
       if (outputs) {
         const std::string stem = std::filesystem::path(path).stem().string();
-        outputs->add(stem + "_" + kRules[k] + ".png",
+        outputs->add(stem + "_" + key + ".png",
                      encode_png16(corrected(image, rules, rules.saturation.value_or(65536),
                                             {sel->estimate.map[0], sel->estimate.map[1], 1.0})));
       }

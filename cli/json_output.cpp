@@ -83,17 +83,15 @@ void truth_text(std::ostream& out, const TruthReport& t) {
   out << "against the true light (" << to_string(t.light.r) << ", " << to_string(t.light.g)
       << ", " << to_string(t.light.b) << "): true map (" << fmt(m[0]) << ", " << fmt(m[1]) << "), "
       << (t.in_feasible_set ? "inside" : "outside") << " the feasible set\n";
-  auto line = [&out](const char* name, const std::optional<TruthErrors>& e) {
-    if (!e) return;
-    out << "  " << name << "  map error " << fmt(e->map_error_deg) << " deg";
-    if (e->illuminant_error_deg)
-      out << ", illuminant " << fmt(*e->illuminant_error_deg) << " deg, reproduction "
-          << fmt(*e->reproduction_error_deg) << " deg";
+  for (Rule rule : all_rules) {
+    const std::optional<RuleErrors>& e = t.errors[rule];
+    if (!e) continue;
+    out << "  " << rule_label(rule) << "  map error " << fmt(e->map_error_deg) << " deg";
+    if (e->positive_map)
+      out << ", illuminant " << fmt(e->illuminant_error_deg) << " deg, reproduction "
+          << fmt(e->reproduction_error_deg) << " deg";
     out << "\n";
-  };
-  line("max-area", t.max_area);
-  line("2-D mean", t.mean_2d);
-  line("3-D mean", t.mean_3d);
+  }
 }
 
 Json recovery_json(const RecoveryReport& rec) {
@@ -132,17 +130,15 @@ Json truth_json(const TruthReport& t) {
   j["map_exact"] = exact_pair(t.map);
   j["in_feasible_set"] = t.in_feasible_set;
   Json errors = Json::object();
-  auto add = [&errors](const char* rule, const std::optional<TruthErrors>& e) {
-    if (!e) return;
+  for (Rule rule : all_rules) {
+    const std::optional<RuleErrors>& e = t.errors[rule];
+    if (!e) continue;
     Json x;
     x["map_error_deg"] = e->map_error_deg;
-    x["illuminant_error_deg"] = e->illuminant_error_deg ? Json(*e->illuminant_error_deg) : Json();
-    x["reproduction_error_deg"] = e->reproduction_error_deg ? Json(*e->reproduction_error_deg) : Json();
-    errors[rule] = x;
-  };
-  add("max_area", t.max_area);
-  add("mean_2d", t.mean_2d);
-  add("mean_3d", t.mean_3d);
+    x["illuminant_error_deg"] = e->positive_map ? Json(e->illuminant_error_deg) : Json();
+    x["reproduction_error_deg"] = e->positive_map ? Json(e->reproduction_error_deg) : Json();
+    errors[to_string(rule)] = x;
+  }
   j["errors"] = errors;
   return j;
 }
@@ -169,9 +165,8 @@ Json scene_json(const PreparedCanonical& c, const SceneResult& r, bool canonical
   if (r.constraint) j["constraint"] = constraint_json(*r.constraint);
   if (r.recovery) j["recovery"] = recovery_json(*r.recovery);
   Json sel = Json::object();
-  if (r.selections.max_area) sel["max_area"] = selection_json(*r.selections.max_area);
-  if (r.selections.mean_2d) sel["mean_2d"] = selection_json(*r.selections.mean_2d);
-  if (r.selections.mean_3d) sel["mean_3d"] = selection_json(*r.selections.mean_3d);
+  for (Rule rule : all_rules)
+    if (r.selections[rule]) sel[to_string(rule)] = selection_json(*r.selections[rule]);
   j["selections"] = sel;
   if (r.truth) j["truth"] = truth_json(*r.truth);
   if (canonical_members) {
@@ -267,7 +262,7 @@ void vertices_text(std::ostream& out, const std::vector<Point2>& vertices) {
 }
 
 // One rule's line: its map, worst case, and exact value or error bound.
-void selection_line(std::ostream& out, const char* name, const Selection& s) {
+void selection_line(std::ostream& out, const std::string& name, const Selection& s) {
   if (!s.estimate.valid) {
     out << "  " << name << "  none (" << s.estimate.method << "): " << s.estimate.note << "\n";
     return;
@@ -314,9 +309,7 @@ std::string select_text(const PreparedCanonical& c, const SceneResult& r) {
     return out.str();
   }
   out << "selections (perspective map d1/d3, d2/d3; worst-case map-space error):\n";
-  selection_line(out, "max-area", *r.selections.max_area);
-  selection_line(out, "2-D mean", *r.selections.mean_2d);
-  selection_line(out, "3-D mean", *r.selections.mean_3d);
+  for (Rule rule : all_rules) selection_line(out, rule_label(rule), *r.selections[rule]);
   if (r.truth) truth_text(out, *r.truth);
   return out.str();
 }

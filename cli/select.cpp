@@ -13,6 +13,9 @@
 namespace gmcc::cli {
 namespace {
 
+// The options' defaults, to tell an option given from its default.
+const SelectOptions kDefault{};
+
 // Was the option given on the command line? Without the parsed command (an in-process caller),
 // an option counts as given when it differs from its default.
 bool given(const SelectOptions& o, const std::string& name, const std::string& value,
@@ -40,9 +43,9 @@ void reject_inapplicable(const SelectOptions& o) {
                        "recovery policies are 2-D only, not --space 3d; with --black include the "
                        "3-D feasible set is never empty");
     for (const auto& [name, value, d] :
-         {std::tuple<std::string, std::string, std::string>{"--mean3d", o.mean3d_method, "analytic"},
-          {"--precision", o.precision_bits, "0"}, {"--order", o.order, "12"},
-          {"--samples", o.samples, "1000000"}, {"--seed", o.seed, "1"}})
+         {std::tuple<std::string, std::string, std::string>{"--mean3d", o.mean3d_method, kDefault.mean3d_method},
+          {"--precision", o.precision_bits, kDefault.precision_bits}, {"--order", o.order, kDefault.order},
+          {"--samples", o.samples, kDefault.samples}, {"--seed", o.seed, kDefault.seed}})
       if (is_given(name, value, d))
         throw InputError(name, 0,
                          "the 3-D mean and its routes are 2-D rules; --space 3d selects max-volume "
@@ -69,14 +72,14 @@ void reject_inapplicable(const SelectOptions& o) {
   const std::string route = o.mean3d_method;
   if (route != "monte-carlo")
     for (const auto& [name, value, d] : {std::tuple<std::string, std::string, std::string>{
-                                             "--samples", o.samples, "1000000"},
-                                         {"--seed", o.seed, "1"}})
+                                             "--samples", o.samples, kDefault.samples},
+                                         {"--seed", o.seed, kDefault.seed}})
       if (is_given(name, value, d))
         throw InputError(name, 0, "applies to --mean3d monte-carlo only, not to the " + route +
                                       " route");
-  if (route != "quadrature" && is_given("--order", o.order, "12"))
+  if (route != "quadrature" && is_given("--order", o.order, kDefault.order))
     throw InputError("--order", 0, "applies to --mean3d quadrature only, not to the " + route + " route");
-  if (route != "analytic" && is_given("--precision", o.precision_bits, "0"))
+  if (route != "analytic" && is_given("--precision", o.precision_bits, kDefault.precision_bits))
     throw InputError("--precision", 0,
                      "applies to --mean3d analytic only, not to the " + route + " route");
   if (has_images && !o.truth.empty())
@@ -207,12 +210,17 @@ SelectSettings select_settings(const SelectOptions& o) {
 
   Mean3dOptions& m = scene.mean3d;
   m.method = mean3d_method_from_string(o.mean3d_method);
-  m.precision_bits = static_cast<unsigned>(integer_option("--precision", o.precision_bits, 0, 1u << 20));
-  if (m.precision_bits != 0 && m.precision_bits < 53)
-    throw InputError("--precision", 0, "must be 0 (automatic) or from 53 to 1048576 bits");
-  m.order = static_cast<unsigned>(integer_option("--order", o.order, 1, 256));
-  m.samples = integer_option("--samples", o.samples, 1, 1000000000);
-  m.seed = integer_option("--seed", o.seed, 0, ~std::uint64_t(0));
+  // Each value read exactly within its library range, then the library's own check; the CLI only
+  // names the options its way.
+  m.precision_bits = static_cast<unsigned>(integer_option("--precision", o.precision_bits, mean3d_precision_range));
+  m.order = static_cast<unsigned>(integer_option("--order", o.order, mean3d_order_range));
+  m.samples = integer_option("--samples", o.samples, mean3d_samples_range);
+  m.seed = integer_option("--seed", o.seed, mean3d_seed_range);
+  try {
+    check_options(m);
+  } catch (const OptionError& e) {
+    throw InputError("--" + e.option, 0, e.what());
+  }
   reject_inapplicable(o);  // after each value is checked: a malformed value is named as such
   return s;
 }

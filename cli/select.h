@@ -22,11 +22,13 @@ struct SelectOptions {
   bool json = false;
   std::string expand_policy = "none";
   std::string expand_factor = "0";  // read exactly, like every number gmcc reads
-  std::string mean3d_method = "analytic";
-  std::string precision_bits = "0";
-  std::string order = "12";  // integers are read exactly and range-checked (integer_option)
-  std::string samples = "1000000";
-  std::string seed = "1";
+  // The 3-D mean's defaults are the library's (Mean3dOptions); integers are read exactly and
+  // range-checked (integer_option) against the library's ranges (mean_3d.h).
+  std::string mean3d_method = to_string(Mean3dOptions{}.method);
+  std::string precision_bits = std::to_string(Mean3dOptions{}.precision_bits);
+  std::string order = std::to_string(Mean3dOptions{}.order);
+  std::string samples = std::to_string(Mean3dOptions{}.samples);
+  std::string seed = std::to_string(Mean3dOptions{}.seed);
   std::string nonpositive_blue = "drop";
   std::string canonical_illuminant = "1,1,1";
   std::string illuminants_path;      // plausible lights: Finlayson's illumination constraint

@@ -11,12 +11,12 @@
 //  - max-area and the 2-D mean lie in F, and max-area's m1·m2 beats every candidate in F;
 //  - the 3-D mean's certified enclosure meets F (the mean is irrational: an exact box test);
 //  - every rule's worst cases are at least the angle to every vertex and candidate in F;
-//  - the certified route (feasible_polygon.h, rule_errors.h): feasible_polygon throws
+//  - the certified route (feasible_polygon.h, certified_rule_errors.h): feasible_polygon throws
 //    UnboundedFeasibleSet exactly when feasible_set does; its kind() is F's kind, exact() is F
 //    (also from the image by address); when enclosed(), each vertex of F lies in its enclosure
 //    (mid ± rad, exactly, for one rotation of the cycle) and each edge's approximate line is
 //    within a relative 6·2^-53 of a positive multiple of the exact one; contains() agrees with
-//    F on every candidate; rule_errors answers only when enclosed(), and then every angle (map
+//    F on every candidate; certified_rule_errors answers only when enclosed(), and then every angle (map
 //    error against a positive truth, worst case, illuminant and reproduction errors under a
 //    positive light, all from fuzz bytes) is within its stated accuracy of the exact route's;
 //    each vertex of F also lies in its extended_vertices() enclosure (the same order as
@@ -28,7 +28,7 @@
 //    kind): feasible_set and feasible_polygon with CanonicalConstraints(G, C) give
 //    intersection(F, C), with its kind; contains() agrees with m ∈ F and m ∈ C (brute force) on
 //    the candidates, C's and F ∩ C's vertices and edge midpoints and nudged vertices; when
-//    enclosed(), vertices(), extended_vertices() and edges() hold as above; rule_errors answers
+//    enclosed(), vertices(), extended_vertices() and edges() hold as above; certified_rule_errors answers
 //    only when enclosed(), and then agrees with the exact route on F ∩ C as above.
 
 #include "fuzz_support.h"
@@ -42,7 +42,7 @@
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/max_area.h>
 #include <gmcc/selection/mean_2d.h>
-#include <gmcc/selection/rule_errors.h>
+#include <gmcc/selection/certified_rule_errors.h>
 #include <gmcc/selection/select_maps.h>
 #include <gmcc/selection/worst_case.h>
 
@@ -117,28 +117,28 @@ gmcc::Selection rule_selection(const ConvexSet2& F, gmcc::MapEstimate e) {
   return sel;
 }
 
-// rule_errors against the exact route (as tests/selection/test_rule_errors.cpp: its accuracy,
+// certified_rule_errors against the exact route (as tests/selection/test_rule_errors.cpp: its accuracy,
 // the exact route's 2^-50 and the 3-D mean's rounding to doubles allowed for); the exact route's
 // 3-D mean at the default precision.
-void check_agreement(const std::array<gmcc::RuleErrors, 3>& fast, const gmcc::Selection* const (&exact_route)[3],
+void check_agreement(const gmcc::PerRule<gmcc::RuleErrors>& fast, const gmcc::Selection* const (&exact_route)[3],
                      const Point2& truth, const gmcc::Colour& light, const std::string& where) {
   for (int r = 0; r < 3; ++r) {
     const gmcc::MapEstimate& e = exact_route[r]->estimate;
     FUZZ_CHECK(e.valid && exact_route[r]->worst_case_deg, where + e.rule + ": no exact map at the default precision");
     const Point2 m = e.exact ? *e.exact : Point2{gmcc::rational_from_double(e.map[0]), gmcc::rational_from_double(e.map[1])};
-    const gmcc::RuleErrors& f = fast[r];
+    const gmcc::RuleErrors& f = fast.values[static_cast<std::size_t>(r)];
     auto agree = [&](double fast_value, double exact_value, const char* what) {
       const bool close = std::fabs(fast_value - exact_value) <=
                          gmcc::rule_errors_accuracy * (1 + std::fabs(exact_value)) +
                              0x1p-48 * std::fabs(exact_value) + 1e-13;
       char values[96];
       std::snprintf(values, sizeof values, " %.17g, exact route %.17g", fast_value, exact_value);
-      FUZZ_CHECK(close, where + "rule_errors " + e.rule + " " + what + values + "; truth " + text(truth) +
+      FUZZ_CHECK(close, where + "certified_rule_errors " + e.rule + " " + what + values + "; truth " + text(truth) +
                             ", map " + text(m));
     };
     agree(f.map_error_deg, gmcc::map_angular_error_deg(m, truth), "map error");
     agree(f.worst_case_deg, *exact_route[r]->worst_case_deg, "worst case");
-    FUZZ_CHECK(f.positive_map == positive(m), where + "rule_errors " + e.rule + ": positive_map wrong for " + text(m));
+    FUZZ_CHECK(f.positive_map == positive(m), where + "certified_rule_errors " + e.rule + ": positive_map wrong for " + text(m));
     if (f.positive_map) {
       agree(f.illuminant_error_deg, gmcc::illuminant_angular_error_deg(m, truth, light), "illuminant error");
       agree(f.reproduction_error_deg, gmcc::reproduction_angular_error_deg(m, truth), "reproduction error");
@@ -227,7 +227,7 @@ ConvexSet2 map_constraint(ByteReader& in, std::vector<Rational>& pool, const Con
 }
 
 // The certified route with a map constraint C: F ∩ C as intersection() gives it, contains() on
-// maps in and about it, enclosures, and rule_errors against the exact route on F ∩ C.
+// maps in and about it, enclosures, and certified_rule_errors against the exact route on F ∩ C.
 void check_constrained(ByteReader& in, std::vector<Rational>& pool, const ConvexSet2& G, const std::vector<Point2>& image,
                        const ConvexSet2& F, const std::vector<Point2>& in_F, const std::vector<Point2>& candidates,
                        const Point2& truth, const gmcc::Colour& light) {
@@ -269,10 +269,10 @@ void check_constrained(ByteReader& in, std::vector<Rational>& pool, const Convex
   }
   FUZZ_CHECK(P.exact() == FC && P.exact().kind == P.kind(), where + "feasible_polygon: exact() is not F ∩ C");
 
-  const auto fast = gmcc::rule_errors(P, truth, light);
-  FUZZ_CHECK(P.enclosed() || !fast, where + "rule_errors answered for a set that is not enclosed");
+  const auto fast = gmcc::certified_rule_errors(P, truth, light);
+  FUZZ_CHECK(P.enclosed() || !fast, where + "certified_rule_errors answered for a set that is not enclosed");
   if (!fast) return;
-  FUZZ_CHECK(finite_doubles(FC), where + "rule_errors answered for F ∩ C beyond the double range");
+  FUZZ_CHECK(finite_doubles(FC), where + "certified_rule_errors answered for F ∩ C beyond the double range");
   const gmcc::Selection s[3] = {rule_selection(FC, gmcc::max_area(FC)), rule_selection(FC, gmcc::mean_2d(FC)),
                                 rule_selection(FC, gmcc::mean_3d(FC))};
   const gmcc::Selection* const exact_route[3] = {&s[0], &s[1], &s[2]};
@@ -363,7 +363,7 @@ void check_worst_cases(const ConvexSet2& F, const std::vector<Point2>& in_F, con
   std::vector<Point2> probes = F.vertices;
   for (std::size_t i = F.vertices.size(); i < in_F.size() && i < F.vertices.size() + 2; ++i)
     probes.push_back(in_F[i]);
-  for (const auto* sel : {&*s.max_area, &*s.mean_2d, &*s.mean_3d}) {
+  for (const auto* sel : {&*s[gmcc::Rule::max_area], &*s[gmcc::Rule::mean_2d], &*s[gmcc::Rule::mean_3d]}) {
     const gmcc::MapEstimate& est = sel->estimate;
     if (!est.valid) continue;
     const Point2 m = est.exact ? *est.exact
@@ -414,7 +414,7 @@ std::vector<Point2> candidates_in_F(const std::vector<Point2>& candidates, const
 }
 
 // A positive truth (a positive candidate in F, or one from fuzz bytes) and a positive light from
-// fuzz bytes (huge and tiny ones too: rule_errors must then decline).
+// fuzz bytes (huge and tiny ones too: certified_rule_errors must then decline).
 std::pair<Point2, gmcc::Colour> truth_and_light(ByteReader& in, std::vector<Rational>& pool,
                                                 const std::vector<Point2>& in_F) {
   auto positive_or_one = [](const Rational& x) { return sgn(x) > 0 ? x : Rational(1); };
@@ -443,18 +443,18 @@ std::optional<gmcc::Selections> selections(const ConvexSet2& F, const gmcc::Mean
       s = gmcc::select_maps(F, gmcc::SelectionOptions{mean3d, c});
     } catch (const std::domain_error&) {
       FUZZ_CHECK(!finite_doubles(F), "domain_error though F is within the double range");
-      FUZZ_CHECK(!fast, "rule_errors answered for F beyond the double range");
+      FUZZ_CHECK(!fast, "certified_rule_errors answered for F beyond the double range");
       return std::nullopt;
     }
     FUZZ_CHECK(finite_doubles(F), "no domain_error though F is beyond the double range");
   } else {
     if (!finite_doubles(F)) {
-      FUZZ_CHECK(!fast, "rule_errors answered for F beyond the double range");
+      FUZZ_CHECK(!fast, "certified_rule_errors answered for F beyond the double range");
       return std::nullopt;
     }
-    s.max_area = rule_selection(F, gmcc::max_area(F));
-    s.mean_2d = rule_selection(F, gmcc::mean_2d(F));
-    s.mean_3d = rule_selection(F, gmcc::mean_3d(F, mean3d));
+    s[gmcc::Rule::max_area] = rule_selection(F, gmcc::max_area(F));
+    s[gmcc::Rule::mean_2d] = rule_selection(F, gmcc::mean_2d(F));
+    s[gmcc::Rule::mean_3d] = rule_selection(F, gmcc::mean_3d(F, mean3d));
   }
   return s;
 }
@@ -518,10 +518,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::vector<Point2> candidates = candidate_maps(in, pool, G, image, F);
   const std::vector<Point2> in_F = candidates_in_F(candidates, G, image, F, P);
 
-  // rule_errors against a positive truth and light.
+  // certified_rule_errors against a positive truth and light.
   const auto [truth, light] = truth_and_light(in, pool, in_F);
-  const auto fast = gmcc::rule_errors(P, truth, light);
-  FUZZ_CHECK(P.enclosed() || !fast, "rule_errors answered for a feasible set that is not enclosed");
+  const auto fast = gmcc::certified_rule_errors(P, truth, light);
+  FUZZ_CHECK(P.enclosed() || !fast, "certified_rule_errors answered for a feasible set that is not enclosed");
   check_constrained(in, pool, G, image, F, in_F, candidates, truth, light);
   if (F.kind == ConvexKind::empty) return 0;
 
@@ -536,24 +536,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::optional<gmcc::Selections> selected = selections(F, mean3d, c, whole, fast.has_value());
   if (!selected) return 0;
   const gmcc::Selections& s = *selected;
-  FUZZ_CHECK(s.max_area && s.mean_2d && s.mean_3d, "a rule is missing for a non-empty F");
+  FUZZ_CHECK(s[gmcc::Rule::max_area] && s[gmcc::Rule::mean_2d] && s[gmcc::Rule::mean_3d], "a rule is missing for a non-empty F");
 
-  const Point2 best = *s.max_area->estimate.exact;
+  const Point2 best = *s[gmcc::Rule::max_area]->estimate.exact;
   FUZZ_CHECK(gmcc::contains(F, best), "max-area " + text(best) + " not in F");
   for (const Point2& m : in_F)
     FUZZ_CHECK(m.x * m.y <= best.x * best.y, "max-area beaten by " + text(m));
-  FUZZ_CHECK(*s.mean_2d->estimate.exact == gmcc::centroid(F) && gmcc::contains(F, gmcc::centroid(F)),
+  FUZZ_CHECK(*s[gmcc::Rule::mean_2d]->estimate.exact == gmcc::centroid(F) && gmcc::contains(F, gmcc::centroid(F)),
              "2-D mean not the centroid in F");
 
-  check_mean_3d(F, *s.mean_3d, mean3d);
+  check_mean_3d(F, *s[gmcc::Rule::mean_3d], mean3d);
 
-  // rule_errors against the exact route. Its 3-D mean is at the default precision: a forced one
-  // is recomputed (only when rule_errors answered).
+  // certified_rule_errors against the exact route. Its 3-D mean is at the default precision: a forced one
+  // is recomputed (only when certified_rule_errors answered).
   if (fast) {
     std::optional<gmcc::Selection> mean_3d_default;
     if (mean3d.precision_bits != 0) mean_3d_default = rule(gmcc::mean_3d(F));
-    const gmcc::Selection* const exact_route[3] = {&*s.max_area, &*s.mean_2d,
-                                                   mean_3d_default ? &*mean_3d_default : &*s.mean_3d};
+    const gmcc::Selection* const exact_route[3] = {&*s[gmcc::Rule::max_area], &*s[gmcc::Rule::mean_2d],
+                                                   mean_3d_default ? &*mean_3d_default : &*s[gmcc::Rule::mean_3d]};
     check_agreement(*fast, exact_route, truth, light, "");
   }
 

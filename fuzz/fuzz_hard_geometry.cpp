@@ -319,14 +319,14 @@ void check_selections(const ConvexSet2& F, const std::vector<Point2>& in_F, cons
   const auto& fv = F.vertices;
   const gmcc::Selections s = gmcc::select_maps(F, gmcc::SelectionOptions{{}, light});
   stage("select_maps");
-  FUZZ_CHECK(s.max_area && s.mean_2d && s.mean_3d, "a rule is missing for a non-empty F");
-  const Point2 best = *s.max_area->estimate.exact;
+  FUZZ_CHECK(s[gmcc::Rule::max_area] && s[gmcc::Rule::mean_2d] && s[gmcc::Rule::mean_3d], "a rule is missing for a non-empty F");
+  const Point2 best = *s[gmcc::Rule::max_area]->estimate.exact;
   FUZZ_CHECK(inside(F, best), "max-area " + text(best) + " not in F");
   for (const Point2& m : in_F) FUZZ_CHECK(m.x * m.y <= best.x * best.y, "max-area beaten by " + text(m));
   const Point2 g = gmcc::centroid(F);  // once: on a many-vertex F it has 10^5 digits
-  FUZZ_CHECK(*s.mean_2d->estimate.exact == g, "2-D mean not the centroid");
+  FUZZ_CHECK(*s[gmcc::Rule::mean_2d]->estimate.exact == g, "2-D mean not the centroid");
   FUZZ_CHECK(inside(F, g), "the centroid is not in F");
-  const gmcc::MapEstimate& m3 = s.mean_3d->estimate;
+  const gmcc::MapEstimate& m3 = s[gmcc::Rule::mean_3d]->estimate;
   FUZZ_CHECK(m3.valid && m3.enclosure, "3-D mean not valid: " + m3.note);
   if (F.kind == ConvexKind::point) {
     FUZZ_CHECK(m3.exact && *m3.exact == fv[0], "3-D mean of a point is not the point");
@@ -340,7 +340,7 @@ void check_selections(const ConvexSet2& F, const std::vector<Point2>& in_F, cons
   }
   std::vector<Point2> probes;
   for (std::size_t i : sample(fv.size(), 8)) probes.push_back(fv[i]);
-  for (const auto* sel : {&*s.max_area, &*s.mean_2d, &*s.mean_3d}) {
+  for (const auto* sel : {&*s[gmcc::Rule::max_area], &*s[gmcc::Rule::mean_2d], &*s[gmcc::Rule::mean_3d]}) {
     const gmcc::MapEstimate& est = sel->estimate;
     const Point2 m = est.exact ? *est.exact
                                : Point2{gmcc::rational_from_double(est.map[0]), gmcc::rational_from_double(est.map[1])};

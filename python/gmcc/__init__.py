@@ -33,11 +33,11 @@ from ._core import (  # noqa: F401  (re-exported result classes)
     ImageSelection3,
     MapEstimate,
     Recovery,
+    RuleErrors,
     SceneResult,
     Selection,
     Selection3,
     Truth,
-    TruthErrors,
 )
 from ._records import records_frame as _records_frame
 
@@ -49,9 +49,8 @@ __all__ = [
     "__version__", "__commit__", "__commit_date__",
     "Canonical", "Canonical3", "CanonicalLearner2", "CanonicalLearner3", "ConvexSet", "ConvexSet3",
     "Constraint", "Crule3d", "ErrorStatistics", "Estimate3", "ImageColours", "ImageSelection3",
-    "MapEstimate", "Recovery", "SceneResult", "Selection", "Selection3", "Truth",
-    "TruthErrors",
-    "prepare_canonical", "canonical_gamut", "feasible_set", "select", "read_image", "image_colours",
+    "MapEstimate", "Recovery", "RuleErrors", "SceneResult", "Selection", "Selection3", "Truth",
+    "rules", "prepare_canonical", "canonical_gamut", "feasible_set", "select", "read_image", "image_colours",
     "select_maps", "max_area", "mean_2d", "mean_3d", "worst_case_map_deg",
     "worst_case_illuminant_deg", "map_angular_error_deg", "illuminant_angular_error_deg",
     "reproduction_angular_error_deg", "illuminant_map", "illumination_constraint", "crule_3d",
@@ -210,11 +209,17 @@ def prepare_canonical(canonical, *, expand=0, expand_policy="none", illuminants=
         illuminant_worst_case=illuminant_worst_case, nonpositive_blue=nonpositive_blue)
 
 
-def _prepared(canonical, options) -> Canonical:
+# The per-scene choices (select_scene.h SceneChoices): a select call may give them with a prepared
+# Canonical, for that call only; every other option belongs to the canonical side.
+_SCENE_CHOICES = ("mean3d", "precision", "order", "samples", "seed", "illuminant_worst_case")
+
+
+def _prepared(canonical, options, choices_allowed=False) -> Canonical:
     if isinstance(canonical, Canonical):
-        if options:
+        fixed = sorted(k for k in options if not (choices_allowed and k in _SCENE_CHOICES))
+        if fixed:
             raise TypeError("options (%s) belong to prepare_canonical; a prepared Canonical "
-                            "already has them" % ", ".join(sorted(options)))
+                            "already has them" % ", ".join(fixed))
         return canonical
     return _core.prepare_canonical(canonical, **options)
 
@@ -267,8 +272,8 @@ def select(canonical, image, truth=None, *, mask=None, black_level=0, saturation
     Parameters
     ----------
     canonical : Canonical, or array_like of shape (n, 3)
-        A Canonical from prepare_canonical (then no ``options``), or the canonical colours,
-        prepared here with ``options``.
+        A Canonical from prepare_canonical (then only the per-scene ``options``), or the
+        canonical colours, prepared here with ``options``.
     image : array_like of shape (n, 3), or numpy.ndarray of shape (H, W, 3)
         The image's colours (rows r, g, b), or a linear image (integer samples 0..65535 take
         the exact integer route; float samples are taken as the exact doubles) reduced by the
@@ -277,7 +282,10 @@ def select(canonical, image, truth=None, *, mask=None, black_level=0, saturation
         The true light r, g, b (every channel > 0): the result's ``truth`` report.
     @pixel_rules@
     **options
-        The keyword options of prepare_canonical, when ``canonical`` is colours.
+        The keyword options of prepare_canonical, when ``canonical`` is colours. With a
+        prepared Canonical, only the per-scene choices ``mean3d``, ``precision``, ``order``,
+        ``samples``, ``seed`` and ``illuminant_worst_case``, for this call (the others keep the
+        Canonical's).
 
     Returns
     -------
@@ -289,10 +297,13 @@ def select(canonical, image, truth=None, *, mask=None, black_level=0, saturation
     ValueError
         Bad colours, image, truth or option, naming the argument, the row and the channel.
     TypeError
-        An argument of the wrong type, or ``options`` given with a prepared Canonical.
+        An argument of the wrong type, or a canonical-side option given with a prepared
+        Canonical.
     """
-    return _core.select_prepared(_prepared(canonical, options), image, truth, mask, black_level,
-                                 saturation, dark, dark_fraction, bright_fraction, pixel_rule)
+    choices = {k: options[k] for k in _SCENE_CHOICES if k in options} if isinstance(canonical, Canonical) else {}
+    return _core.select_prepared(_prepared(canonical, options, choices_allowed=True), image, truth, mask,
+                                 black_level, saturation, dark, dark_fraction, bright_fraction, pixel_rule,
+                                 choices)
 
 
 @_doc
@@ -415,6 +426,19 @@ def image_colours(image, *, mask=None, black_level=0, saturation=None, dark=0,
     """
     return _core.image_colours(image, mask, black_level, saturation, dark, dark_fraction,
                                bright_fraction, pixel_rule, colour_set, prefilter)
+
+
+def rules() -> list:
+    """The selection rules on the 2-D feasible set, in report order (Finlayson & Hordley 1999 §3).
+
+    Returns
+    -------
+    list of str
+        Their names, ``['max_area', 'mean_2d', 'mean_3d']``: the keys of ``select_maps``' and
+        ``SceneResult.selections``' dicts, and the names of SceneResult's and Truth's per-rule
+        attributes.
+    """
+    return _core.rules()
 
 
 def select_maps(feasible_set, *, mean3d="analytic", precision=0, order=12, samples=1000000,

@@ -11,6 +11,8 @@
 #include <gmcc/geometry/point.h>
 #include <gmcc/geometry/rational.h>
 
+#include <gmcc/selection/option_error.h>
+
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
@@ -55,6 +57,12 @@ T integer_in(py::handle x, const char* name, unsigned long long lo, unsigned lon
   if (i < py::int_(lo) || i > py::int_(hi))
     throw py::value_error(std::string(name) + ": must be from " + std::to_string(lo) + " to " + std::to_string(hi));
   return i.cast<T>();
+}
+
+/// The same within a library range (e.g. mean_3d.h's).
+template <class T>
+T integer_in(py::handle x, const char* name, IntegerRange range) {
+  return integer_in<T>(x, name, range.lo, range.hi);
 }
 
 py::array_t<double> float_array(const std::vector<double>& values, std::size_t rows, std::size_t cols);

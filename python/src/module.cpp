@@ -84,12 +84,17 @@ SelectSceneOptions scene_options(py::handle expand, const std::string& expand_po
   } catch (const std::invalid_argument& e) {
     throw py::value_error(std::string("mean3d: ") + e.what());
   }
-  m.precision_bits = integer_in<unsigned>(precision, "precision", 0, 1 << 20);
-  if (m.precision_bits != 0 && m.precision_bits < 53)
-    throw py::value_error("precision: must be 0 (automatic) or from 53 to 1048576 bits");
-  m.order = integer_in<unsigned>(order, "order", 1, 256);
-  m.samples = integer_in<std::uint64_t>(samples, "samples", 1, 1000000000);
-  m.seed = integer_in<std::uint64_t>(seed, "seed", 0, ~0ULL);
+  // Read within the library's ranges (mean_3d.h), then the library's own check; only the names
+  // are Python's.
+  m.precision_bits = integer_in<unsigned>(precision, "precision", mean3d_precision_range);
+  m.order = integer_in<unsigned>(order, "order", mean3d_order_range);
+  m.samples = integer_in<std::uint64_t>(samples, "samples", mean3d_samples_range);
+  m.seed = integer_in<std::uint64_t>(seed, "seed", mean3d_seed_range);
+  try {
+    check_options(m);
+  } catch (const OptionError& e) {
+    throw py::value_error(e.option + ": " + e.what());
+  }
   return o;
 }
 
@@ -115,11 +120,16 @@ auto released(F f) {
   }
 }
 
+// The 3-D mean's parameters with the library's defaults (Mean3dOptions).
+#define GMCC_MEAN3D_PARAMETER_ARGS                                                                \
+  py::arg("precision") = Mean3dOptions{}.precision_bits, py::arg("order") = Mean3dOptions{}.order, \
+  py::arg("samples") = Mean3dOptions{}.samples, py::arg("seed") = Mean3dOptions{}.seed
+
 #define GMCC_OPTION_ARGS                                                                          \
   py::arg("expand") = 0, py::arg("expand_policy") = "none", py::arg("illuminants") = py::none(),   \
   py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1), py::arg("on_empty") = "none",        \
-  py::arg("mean3d") = "analytic", py::arg("precision") = 0, py::arg("order") = 12,                 \
-  py::arg("samples") = 1000000, py::arg("seed") = 1, py::arg("illuminant_worst_case") = true,      \
+  py::arg("mean3d") = to_string(Mean3dOptions{}.method), GMCC_MEAN3D_PARAMETER_ARGS,               \
+  py::arg("illuminant_worst_case") = true,                                                         \
   py::arg("nonpositive_blue") = "drop"
 
 std::shared_ptr<PreparedCanonical> prepare(py::handle canonical, py::handle expand, const std::string& expand_policy,
@@ -136,8 +146,33 @@ std::shared_ptr<PreparedCanonical> prepare(py::handle canonical, py::handle expa
 }
 
 
+// The prepared canonical side's per-scene choices with those given here (None: keep it).
+SceneChoices scene_choices(const PreparedCanonical& canonical, const py::dict& given) {
+  SceneChoices c = canonical.options;
+  Mean3dOptions& m = c.mean3d;
+  auto has = [&](const char* name) { return given.contains(name) && !given[name].is_none(); };
+  if (has("mean3d")) {
+    try {
+      m.method = mean3d_method_from_string(given["mean3d"].cast<std::string>());
+    } catch (const std::invalid_argument& e) {
+      throw py::value_error(std::string("mean3d: ") + e.what());
+    }
+  }
+  if (has("precision")) m.precision_bits = integer_in<unsigned>(given["precision"], "precision", mean3d_precision_range);
+  if (has("order")) m.order = integer_in<unsigned>(given["order"], "order", mean3d_order_range);
+  if (has("samples")) m.samples = integer_in<std::uint64_t>(given["samples"], "samples", mean3d_samples_range);
+  if (has("seed")) m.seed = integer_in<std::uint64_t>(given["seed"], "seed", mean3d_seed_range);
+  if (has("illuminant_worst_case")) c.illuminant_worst_case = given["illuminant_worst_case"].cast<bool>();
+  try {
+    check_options(m);
+  } catch (const OptionError& e) {
+    throw py::value_error(e.option + ": " + e.what());
+  }
+  return c;
+}
+
 Scene run_scene(const std::shared_ptr<PreparedCanonical>& canonical, py::handle image, py::handle truth,
-                const PixelArgs& pixels, bool select) {
+                const PixelArgs& pixels, bool select, const SceneChoices* choices = nullptr) {
   Scene scene;
   scene.canonical = canonical;
   std::vector<Colour> colours;
@@ -156,7 +191,8 @@ Scene run_scene(const std::shared_ptr<PreparedCanonical>& canonical, py::handle 
   std::optional<Colour> t;
   if (!truth.is_none()) t = light_from(truth, "truth");
   scene.result = released([&] {
-    return select ? select_scene(*canonical, colours, t) : scene_feasible_set(*canonical, colours);
+    if (!select) return scene_feasible_set(*canonical, colours);
+    return choices ? select_scene(*canonical, colours, t, *choices) : select_scene(*canonical, colours, t);
   });
   return scene;
 }
@@ -247,13 +283,15 @@ void bind_scene(py::module_& m) {
       "select_prepared",
       [](const std::shared_ptr<PreparedCanonical>& canonical, py::handle image, py::handle truth, py::object mask,
          py::object black_level, py::object saturation, py::object dark, py::object dark_fraction,
-         py::object bright_fraction, const std::string& pixel_rule) {
+         py::object bright_fraction, const std::string& pixel_rule, const py::dict& choices) {
+        const SceneChoices c = scene_choices(*canonical, choices);
         return run_scene(canonical, image, truth,
-                         {mask, black_level, saturation, dark, dark_fraction, bright_fraction, pixel_rule}, true);
+                         {mask, black_level, saturation, dark, dark_fraction, bright_fraction, pixel_rule}, true, &c);
       },
       py::arg("canonical"), py::arg("image"), py::arg("truth") = py::none(), py::arg("mask") = py::none(),
       py::arg("black_level") = 0, py::arg("saturation") = py::none(), py::arg("dark") = 0,
       py::arg("dark_fraction") = py::none(), py::arg("bright_fraction") = py::none(), py::arg("pixel_rule") = "none",
+      py::arg("choices") = py::dict(),
         "select_scene (select_scene.h) on colours or an H×W×3 image. Public: gmcc.select.");
 
   m.def(
@@ -331,20 +369,27 @@ void bind_scene(py::module_& m) {
         if (!canonical_illuminant.is_none())
           o.illuminant_worst_case_for = light_from(canonical_illuminant, "canonical_illuminant");
         const Selections s = released([&] { return select_maps(F, o); });
-        py::dict d;
-        d["max_area"] = py::cast(s.max_area);
-        d["mean_2d"] = py::cast(s.mean_2d);
-        d["mean_3d"] = py::cast(s.mean_3d);
-        return d;
+        return selections_dict(s);
       },
-      py::arg("feasible_set"), py::kw_only(), py::arg("mean3d") = "analytic", py::arg("precision") = 0,
-      py::arg("order") = 12, py::arg("samples") = 1000000, py::arg("seed") = 1,
-      py::arg("canonical_illuminant") = py::none(),
+      py::arg("feasible_set"), py::kw_only(), py::arg("mean3d") = to_string(Mean3dOptions{}.method),
+      GMCC_MEAN3D_PARAMETER_ARGS, py::arg("canonical_illuminant") = py::none(),
         "The three selection rules with worst cases (select_maps.h; §3, §4). Public: gmcc.select_maps.");
 }
 
 // Each rule, worst case and angular error on its own.
 void bind_rules(py::module_& m) {
+  m.def("rules", [] {
+    py::list keys;
+    for (Rule rule : all_rules) keys.append(to_string(rule));
+    return keys;
+  }, R"doc(The selection rules on the 2-D feasible set, in report order (rule.h).
+
+Returns
+-------
+list of str
+    Their names, 'max_area', 'mean_2d', 'mean_3d': the keys of select_maps' and
+    SceneResult.selections' dicts and the names of SceneResult's and Truth's per-rule attributes.
+)doc");
   m.def("max_area", [](const ConvexSet2& F) {
     nonempty(F, "max_area");
     return released([&] { return max_area(F); });
@@ -365,8 +410,8 @@ void bind_rules(py::module_& m) {
                                     .mean3d;
         return released([&] { return mean_3d(F, o); });
       },
-      py::arg("feasible_set"), py::kw_only(), py::arg("method") = "analytic", py::arg("precision") = 0,
-      py::arg("order") = 12, py::arg("samples") = 1000000, py::arg("seed") = 1,
+      py::arg("feasible_set"), py::kw_only(), py::arg("method") = to_string(Mean3dOptions{}.method),
+      GMCC_MEAN3D_PARAMETER_ARGS,
         "mean_3d by a route (mean_3d.h; Finlayson & Hordley 1999 §3.2, docs/math.md §2).");
 
   m.def("worst_case_map_deg", [](const ConvexSet2& F, py::handle map) {

@@ -29,6 +29,12 @@ std::string g10(double x) {
   return buf;
 }
 
+py::dict selections_dict(const Selections& selections) {
+  py::dict d;
+  for (Rule rule : all_rules) d[py::str(to_string(rule))] = py::cast(selections[rule]);
+  return d;
+}
+
 py::object optional_double(const std::optional<double>& x) {
   return x ? py::object(py::float_(*x)) : py::object(py::none());
 }
@@ -293,37 +299,56 @@ worst_case_illuminant_deg : float or None
 }
 
 // What a scene is scored and recovered with: truth errors, the illumination constraint, recovery.
-void bind_scene_reports(py::module_& m) {
-  py::class_<TruthErrors>(m, "TruthErrors", R"doc(One rule's errors against the true light, in degrees.
+// A rule's key as a name that outlives the binding (pybind11 keeps the pointer of a name).
+const char* rule_key(Rule rule) {
+  static const PerRule<std::string> keys = [] {
+    PerRule<std::string> k;
+    for (Rule r : all_rules) k[r] = to_string(r);
+    return k;
+  }();
+  return keys[rule].c_str();
+}
 
-The paper's map-space angular error (Finlayson & Hordley 1999 §4), the recovery error (Hordley
-& Finlayson 2006) and the reproduction error (Finlayson & Zakizadeh 2014), as docs/math.md §3
-defines them. Part of a Truth, not constructed.
+// An illuminant or reproduction error: None for a map with a component <= 0 (it implies no light).
+py::object positive_only(const RuleErrors& e, double value) {
+  return e.positive_map ? py::object(py::float_(value)) : py::object(py::none());
+}
+
+void bind_scene_reports(py::module_& m) {
+  py::class_<RuleErrors>(m, "RuleErrors", R"doc(One rule's errors against the true light, in degrees.
+
+The paper's map-space angular error and the rule's worst case over F (Finlayson & Hordley 1999
+§4), the recovery error (Hordley & Finlayson 2006) and the reproduction error (Finlayson &
+Zakizadeh 2014), as docs/math.md §3 defines them. Part of a Truth, not constructed.
 
 Attributes
 ----------
 map_error_deg : float
     The angle between the rule's map and the true map, lifted as (m1, m2, 1).
+worst_case_deg : float
+    The largest such angle from the rule's map to any map of F.
 illuminant_error_deg : float or None
     The recovery (illuminant-space) angular error; None for a map with a component <= 0.
 reproduction_error_deg : float or None
     The reproduction angular error; None likewise.
 )doc")
-      .def_readonly("map_error_deg", &TruthErrors::map_error_deg,
+      .def_readonly("map_error_deg", &RuleErrors::map_error_deg,
                     "The paper's map-space angular error (§4).")
+      .def_readonly("worst_case_deg", &RuleErrors::worst_case_deg,
+                    "The largest map-space angle from the rule's map to any map of F (§4).")
       .def_property_readonly("illuminant_error_deg",
-                             [](const TruthErrors& e) { return optional_double(e.illuminant_error_deg); },
+                             [](const RuleErrors& e) { return positive_only(e, e.illuminant_error_deg); },
                              "Recovery (illuminant) angular error; None for a map with a component <= 0.")
       .def_property_readonly("reproduction_error_deg",
-                             [](const TruthErrors& e) { return optional_double(e.reproduction_error_deg); },
+                             [](const RuleErrors& e) { return positive_only(e, e.reproduction_error_deg); },
                              "Reproduction angular error (Finlayson & Zakizadeh 2014); None likewise.")
-      .def("__repr__", [](const TruthErrors& e) {
-        std::string r = "TruthErrors(map " + g10(e.map_error_deg) + " deg";
-        if (e.illuminant_error_deg) r += ", illuminant " + g10(*e.illuminant_error_deg) + " deg";
-        if (e.reproduction_error_deg) r += ", reproduction " + g10(*e.reproduction_error_deg) + " deg";
+      .def("__repr__", [](const RuleErrors& e) {
+        std::string r = "RuleErrors(map " + g10(e.map_error_deg) + " deg";
+        if (e.positive_map)
+          r += ", illuminant " + g10(e.illuminant_error_deg) + " deg, reproduction " + g10(e.reproduction_error_deg) + " deg";
         return r + ")";
       });
-  py::class_<TruthReport>(m, "Truth", R"doc(A scene scored against its true light: the true map and each rule's errors.
+  py::class_<TruthReport> truth(m, "Truth", R"doc(A scene scored against its true light: the true map and each rule's errors.
 
 The true map c ⊘ e in perspective (Finlayson 1996 §5) and each rule's errors against it
 (Finlayson & Hordley 1999 §4). A SceneResult's ``truth`` when select was given one, not
@@ -339,10 +364,11 @@ map_float : tuple of (float, float)
     The true map as the nearest doubles.
 in_feasible_set : bool
     Whether the true map lies in F (after the constraint and any recovery), exactly.
-max_area, mean_2d, mean_3d : TruthErrors or None
-    Each rule's errors; None when the rule gave no map.
-)doc")
-      .def_property_readonly("light", [](const TruthReport& t) { return colour_tuple(t.light); })
+max_area, mean_2d, mean_3d : RuleErrors or None
+    Each rule's errors (one attribute per rule, named as in gmcc.rules()); None when the rule
+    gave no map.
+)doc");
+  truth.def_property_readonly("light", [](const TruthReport& t) { return colour_tuple(t.light); })
       .def_property_readonly("map", [](const TruthReport& t) { return to_fraction_pair(t.map); },
                              "The true perspective map c ⊘ e, exact.")
       .def_property_readonly("map_float", [](const TruthReport& t) {
@@ -350,14 +376,14 @@ max_area, mean_2d, mean_3d : TruthErrors or None
         return py::make_tuple(d[0], d[1]);
       })
       .def_readonly("in_feasible_set", &TruthReport::in_feasible_set)
-      .def_readonly("max_area", &TruthReport::max_area)
-      .def_readonly("mean_2d", &TruthReport::mean_2d)
-      .def_readonly("mean_3d", &TruthReport::mean_3d)
       .def("__repr__", [](const TruthReport& t) {
         const auto d = to_double_nearest(t.map);
         return "Truth(map (" + g10(d[0]) + ", " + g10(d[1]) + "), " +
                (t.in_feasible_set ? "inside" : "outside") + " F)";
       });
+  for (Rule rule : all_rules)
+    truth.def_property_readonly(rule_key(rule), [rule](const TruthReport& t) { return t.errors[rule]; },
+                                "This rule's errors (RuleErrors); None when it gave no map.");
   py::class_<ConstraintReport>(m, "Constraint", R"doc(Finlayson's illumination constraint as a scene applied it.
 
 C, the hull of the plausible lights' perspective maps, intersected with F (Finlayson 1996 §5).
@@ -468,7 +494,7 @@ chromaticities : numpy.ndarray of float64, shape (n, 2)
         return "Canonical(" + std::to_string(c.colours) + " colours, gamut " + convex_set_repr(c.gamut) +
                (c.constraint ? ", constrained" : "") + ")";
       });
-  py::class_<Scene>(m, "SceneResult", R"doc(Everything select found for one image: F, the selections, their worst cases.
+  py::class_<Scene> scene(m, "SceneResult", R"doc(Everything select found for one image: F, the selections, their worst cases.
 
 The feasible set F (Finlayson & Hordley 1999 eqs. 7–9, in perspective), the three selections
 (§3) with their worst cases (§4), and the truth report when a true light was given. Made by
@@ -495,16 +521,16 @@ constraint : Constraint or None
 recovery : Recovery or None
     What the recovery policy did, when F was empty and a policy was asked for.
 max_area, mean_2d, mean_3d : Selection or None
-    Each rule's answer; None when F is empty.
+    Each rule's answer (one attribute per rule, named as in gmcc.rules()); None when F is empty.
 selections : dict of str to Selection or None
-    The three, keyed 'max_area', 'mean_2d', 'mean_3d'.
+    Every rule's answer, keyed by its name: 'max_area', 'mean_2d', 'mean_3d'.
 truth : Truth or None
     The truth report, when a true light was given.
 pixels : dict of str to int, or None
     For an image: what the pixel rules did (pixels, masked, saturated, dark, bright, kept,
     colours, hull_vertices, no_chromaticity); None for colours.
-)doc")
-      .def_property_readonly("feasible_set", [](const Scene& s) { return s.result.feasible; },
+)doc");
+  scene.def_property_readonly("feasible_set", [](const Scene& s) { return s.result.feasible; },
                              "F (∩ C), or what a recovery policy recovered (ConvexSet).")
       .def_property_readonly("kind", [](const Scene& s) { return to_string(s.result.feasible.kind); })
       .def_property_readonly("canonical", [](const Scene& s) { return std::const_pointer_cast<PreparedCanonical>(s.canonical); })
@@ -514,29 +540,23 @@ pixels : dict of str to int, or None
       .def_property_readonly("empty_reason", [](const Scene& s) { return s.result.empty_reason; })
       .def_property_readonly("constraint", [](const Scene& s) { return s.result.constraint; })
       .def_property_readonly("recovery", [](const Scene& s) { return s.result.recovery; })
-      .def_property_readonly("max_area", [](const Scene& s) { return s.result.selections.max_area; })
-      .def_property_readonly("mean_2d", [](const Scene& s) { return s.result.selections.mean_2d; })
-      .def_property_readonly("mean_3d", [](const Scene& s) { return s.result.selections.mean_3d; })
-      .def_property_readonly("selections", [](const Scene& s) {
-        py::dict d;
-        d["max_area"] = py::cast(s.result.selections.max_area);
-        d["mean_2d"] = py::cast(s.result.selections.mean_2d);
-        d["mean_3d"] = py::cast(s.result.selections.mean_3d);
-        return d;
-      }, "{'max_area': Selection, 'mean_2d': ..., 'mean_3d': ...}; values None when F is empty.")
+      .def_property_readonly("selections", [](const Scene& s) { return selections_dict(s.result.selections); },
+                             "{'max_area': Selection, 'mean_2d': ..., 'mean_3d': ...}; values None when F is empty.")
       .def_property_readonly("truth", [](const Scene& s) { return s.result.truth; })
       .def_property_readonly("pixels", [](const Scene& s) -> py::object {
         return s.pixels ? pixel_counts(*s.pixels) : py::object(py::none());
       }, "For gmcc.select_image: what the pixel rules did (dict of counts), else None.")
       .def("__repr__", [](const Scene& s) {
         std::string r = "SceneResult(feasible set " + convex_set_repr(s.result.feasible);
-        for (const auto* sel : {&s.result.selections.max_area, &s.result.selections.mean_2d,
-                                &s.result.selections.mean_3d})
-          if (*sel) r += ",\n  " + estimate_repr((*sel)->estimate) +
-                         ((*sel)->worst_case_deg ? ", worst case " + g10(*(*sel)->worst_case_deg) + " deg" : "");
+        for (const std::optional<Selection>& sel : s.result.selections)
+          if (sel) r += ",\n  " + estimate_repr(sel->estimate) +
+                        (sel->worst_case_deg ? ", worst case " + g10(*sel->worst_case_deg) + " deg" : "");
         if (!s.result.empty_reason.empty()) r += ", " + s.result.empty_reason;
         return r + ")";
       });
+  for (Rule rule : all_rules)
+    scene.def_property_readonly(rule_key(rule), [rule](const Scene& s) { return s.result.selections[rule]; },
+                                "This rule's answer (Selection); None when F is empty.");
   py::class_<PyImageColours>(m, "ImageColours", R"doc(The colours the pixel rules kept from an image, with the counts.
 
 Pixel colours (colour_set 'distinct' or 'hull-3d': Forsyth 1990 §3, only the 3-D hull's

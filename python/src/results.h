@@ -39,6 +39,10 @@ py::object pixel_counts(const PixelCounts& c);
 std::string g10(double x);
 /// A float, or None when absent.
 py::object optional_double(const std::optional<double>& x);
+
+/// Every rule's Selection keyed by its name (rule.h: 'max_area', 'mean_2d', 'mean_3d'); None
+/// where absent.
+py::dict selections_dict(const Selections& selections);
 /// A colour or a 3-D point as a tuple of three Fractions.
 ///@{
 py::object colour_tuple(const Colour& c);

@@ -20,6 +20,22 @@ Mean3dMethod mean3d_method_from_string(const std::string& name) {
                               "' (expected analytic, quadrature or monte-carlo)");
 }
 
+namespace {
+void check_range(const char* option, unsigned long long value, IntegerRange range) {
+  if (value < range.lo || value > range.hi)
+    throw OptionError(option, "must be from " + std::to_string(range.lo) + " to " + std::to_string(range.hi));
+}
+}  // namespace
+
+void check_options(const Mean3dOptions& o) {
+  check_range("precision", o.precision_bits, mean3d_precision_range);
+  if (o.precision_bits != 0 && o.precision_bits < min_forced_precision_bits)
+    throw OptionError("precision", "must be 0 (automatic) or from " + std::to_string(min_forced_precision_bits) +
+                                       " to " + std::to_string(mean3d_precision_range.hi) + " bits");
+  check_range("order", o.order, mean3d_order_range);
+  check_range("samples", o.samples, mean3d_samples_range);
+}
+
 MapEstimate mean_3d(const ConvexSet2& F, const Mean3dOptions& o) {
   switch (o.method) {
     case Mean3dMethod::analytic: return mean_3d_analytic(F, AnalyticOptions{o.precision_bits});

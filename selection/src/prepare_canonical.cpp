@@ -25,6 +25,7 @@ void check_options(const SelectSceneOptions& o) {
   if (o.illuminants && o.illuminants->empty())
     throw SceneInputError(SceneInput::illuminants, SceneProblem::bad_option, std::nullopt,
                           "no illuminants: the constraint needs at least one light");
+  check_options(o.mean3d);
 }
 
 }  // namespace

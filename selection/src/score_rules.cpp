@@ -1,7 +1,6 @@
 #include <gmcc/selection/score_rules.h>
 
 #include <gmcc/geometry/convex_set.h>
-#include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/select_maps.h>
 
 #include <gmcc/numerics/internal_check.h>
@@ -9,18 +8,6 @@
 #include <stdexcept>
 
 namespace gmcc {
-
-RuleErrors map_errors(const Point2& m, const Point2& truth, const Colour& c) {
-  RuleErrors e{};
-  e.map = {to_double_nearest(m.x), to_double_nearest(m.y)};
-  e.map_error_deg = map_angular_error_deg(m, truth);
-  e.positive_map = sgn(m.x) > 0 && sgn(m.y) > 0;
-  if (e.positive_map) {
-    e.illuminant_error_deg = illuminant_angular_error_deg(m, truth, c);
-    e.reproduction_error_deg = reproduction_angular_error_deg(m, truth);
-  }
-  return e;
-}
 
 ScoredRules score_rules(const FeasiblePolygon& F, const Point2& truth, const Colour& c, const ScoreOptions& options) {
   GMCC_CHECK(F.kind() != ConvexKind::empty, "score_rules: F is not empty (precondition)");
@@ -30,7 +17,7 @@ ScoredRules score_rules(const FeasiblePolygon& F, const Point2& truth, const Col
   const bool applies = options.certified_route && options.mean3d.method == Mean3dMethod::analytic &&
                        options.mean3d.precision_bits == 0;
   if (applies) {
-    if (const auto fast = rule_errors(F, truth, c)) {
+    if (const auto fast = certified_rule_errors(F, truth, c)) {
       out.certified = true;
       // The area from the vertex enclosures' midpoints (shoelace): a description of F.
       const std::vector<EnclosedVertex>& v = F.vertices();
@@ -41,7 +28,7 @@ ScoredRules score_rules(const FeasiblePolygon& F, const Point2& truth, const Col
                  static_cast<double>(q.x.mid) * static_cast<double>(p.y.mid);
       }
       out.area = twice / 2;
-      for (std::size_t r = 0; r < 3; ++r) out.rules[r] = (*fast)[r];
+      for (Rule r : all_rules) out.rules[r] = (*fast)[r];
       return out;
     }
   }
@@ -49,14 +36,7 @@ ScoredRules score_rules(const FeasiblePolygon& F, const Point2& truth, const Col
   SelectionOptions selection;
   selection.mean3d = options.mean3d;
   const Selections sel = select_maps(F.exact(), selection);
-  const std::array<const std::optional<Selection>*, 3> rules{&sel.max_area, &sel.mean_2d, &sel.mean_3d};
-  for (std::size_t r = 0; r < 3; ++r) {
-    const MapEstimate& e = (**rules[r]).estimate;
-    if (!e.valid) continue;
-    RuleErrors x = map_errors(measured_map(e), truth, c);
-    x.worst_case_deg = *(**rules[r]).worst_case_deg;
-    out.rules[r] = x;
-  }
+  for (Rule r : all_rules) out.rules[r] = exact_rule_errors(*sel[r], truth, c);
   return out;
 }
 

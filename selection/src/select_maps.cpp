@@ -1,5 +1,3 @@
-#include <gmcc/selection/max_area.h>
-#include <gmcc/selection/mean_2d.h>
 #include <gmcc/selection/select_maps.h>
 #include <gmcc/selection/worst_case.h>
 #include <gmcc/selection/worst_case_illuminant.h>
@@ -32,9 +30,7 @@ Selections select_maps(const ConvexSet2& F, const SelectionOptions& options) {
                               "(1.8e308), in which the estimates are reported");
   }
   const auto& c = options.illuminant_worst_case_for;
-  s.max_area = with_worst_case(F, max_area(F), c);
-  s.mean_2d = with_worst_case(F, mean_2d(F), c);
-  s.mean_3d = with_worst_case(F, mean_3d(F, options.mean3d), c);
+  for (Rule r : all_rules) s[r] = with_worst_case(F, select_rule(r, F, options.mean3d), c);
   return s;
 }
 

@@ -82,6 +82,12 @@ SceneResult scene_feasible_set(const PreparedCanonical& pc, const std::vector<Co
 
 SceneResult select_scene(const PreparedCanonical& pc, const std::vector<Colour>& image,
                          const std::optional<Colour>& truth) {
+  return select_scene(pc, image, truth, pc.options);
+}
+
+SceneResult select_scene(const PreparedCanonical& pc, const std::vector<Colour>& image,
+                         const std::optional<Colour>& truth, const SceneChoices& choices) {
+  check_options(choices.mean3d);
   const SelectSceneOptions& o = pc.options;
   const Colour& c = o.canonical_illuminant;
   std::optional<Point2> true_map;
@@ -93,20 +99,16 @@ SceneResult select_scene(const PreparedCanonical& pc, const std::vector<Colour>&
   }
   SceneResult r = scene_feasible_set(pc, image);
   SelectionOptions selection;
-  selection.mean3d = o.mean3d;
-  if (o.illuminant_worst_case) selection.illuminant_worst_case_for = c;
+  selection.mean3d = choices.mean3d;
+  if (choices.illuminant_worst_case) selection.illuminant_worst_case_for = c;
   r.selections = select_maps(r.feasible, selection);
   if (true_map) {
     TruthReport t;
     t.light = *truth;
     t.map = *true_map;
     t.in_feasible_set = r.feasible.kind != ConvexKind::empty && contains(r.feasible, *true_map);
-    auto score = [&](const std::optional<Selection>& s) {
-      return s ? truth_errors(*s, *true_map, c) : std::nullopt;
-    };
-    t.max_area = score(r.selections.max_area);
-    t.mean_2d = score(r.selections.mean_2d);
-    t.mean_3d = score(r.selections.mean_3d);
+    for (Rule rule : all_rules)
+      if (const std::optional<Selection>& s = r.selections[rule]) t.errors[rule] = exact_rule_errors(*s, *true_map, c);
     r.truth = std::move(t);
   }
   return r;

@@ -126,15 +126,15 @@ BOOST_AUTO_TEST_CASE(a_53_bit_x87_thread_takes_the_portable_routes) {
   const gmcc::Selections low = gmcc::select_maps(F);
   _FPU_SETCW(saved);
   BOOST_TEST(!active);
-  BOOST_TEST_REQUIRE(full.mean_3d.has_value());
-  BOOST_TEST_REQUIRE(low.mean_3d.has_value());
+  BOOST_TEST_REQUIRE(full[gmcc::Rule::mean_3d].has_value());
+  BOOST_TEST_REQUIRE(low[gmcc::Rule::mean_3d].has_value());
   // The closed form's first stage is double-word arithmetic in SSE2 doubles (106 bits), which
   // the x87 control word does not touch; without it, the x87 stages work at 64 or 80 bits and the
   // portable MPFI route starts at 53 + 40 bits (mean_3d_analytic.cpp, automatic_precision).
-  BOOST_TEST(full.mean_3d->estimate.precision_bits == 106u);
-  BOOST_TEST(low.mean_3d->estimate.precision_bits >= 93u);
-  for (const auto& [a, b] : {std::pair{full.max_area, low.max_area}, std::pair{full.mean_2d, low.mean_2d},
-                             std::pair{full.mean_3d, low.mean_3d}}) {
+  BOOST_TEST(full[gmcc::Rule::mean_3d]->estimate.precision_bits == 106u);
+  BOOST_TEST(low[gmcc::Rule::mean_3d]->estimate.precision_bits >= 93u);
+  for (const auto& [a, b] : {std::pair{full[gmcc::Rule::max_area], low[gmcc::Rule::max_area]}, std::pair{full[gmcc::Rule::mean_2d], low[gmcc::Rule::mean_2d]},
+                             std::pair{full[gmcc::Rule::mean_3d], low[gmcc::Rule::mean_3d]}}) {
     BOOST_TEST(a->estimate.map[0] == b->estimate.map[0]);  // correctly rounded on both routes
     BOOST_TEST(a->estimate.map[1] == b->estimate.map[1]);
     BOOST_TEST(b->estimate.correctly_rounded[0]);

@@ -42,6 +42,33 @@ def test_rules_on_a_feasible_set_match_select():
         gmcc.max_area(gmcc.feasible_set([[10, 10, 10], [11, 10, 10], [10, 11, 10]], [[1, 1, 1], [50, 1, 1]]))
 
 
+def test_rules_named_once_and_per_scene_choices():
+    # Every per-rule attribute, dict key and truth report follows gmcc.rules().
+    assert gmcc.rules() == ["max_area", "mean_2d", "mean_3d"]
+    r = gmcc.select(CANONICAL, IMAGE, truth=(1, 1, 1))
+    assert list(r.selections) == gmcc.rules()
+    for rule in gmcc.rules():
+        assert r.selections[rule].map == getattr(r, rule).map
+        e = getattr(r.truth, rule)
+        assert isinstance(e, gmcc.RuleErrors)
+        assert e.worst_case_deg == getattr(r, rule).worst_case_deg
+    # A prepared Canonical takes the 3-D mean's route per call: the same answer as a Canonical
+    # prepared with it, without preparing again; canonical-side options are still refused.
+    prepared = gmcc.prepare_canonical(CANONICAL)
+    for choice in (dict(mean3d="quadrature", order=20), dict(mean3d="monte-carlo", samples=5000, seed=7),
+                   dict(illuminant_worst_case=False)):
+        per_call = gmcc.select(prepared, IMAGE, **choice)
+        baked = gmcc.select(gmcc.prepare_canonical(CANONICAL, **choice), IMAGE)
+        for rule in gmcc.rules():
+            assert getattr(per_call, rule).map == getattr(baked, rule).map
+            assert getattr(per_call, rule).worst_case_illuminant_deg == getattr(baked, rule).worst_case_illuminant_deg
+    assert gmcc.select(prepared, IMAGE).mean_3d.estimate.method == "analytic"  # the call changed nothing
+    with pytest.raises(TypeError, match="expand"):
+        gmcc.select(prepared, IMAGE, expand="0.1", mean3d="quadrature")
+    with pytest.raises(ValueError, match="order: must be from 1 to 256"):
+        gmcc.select(prepared, IMAGE, mean3d="quadrature", order=0)
+
+
 def test_exact_types_and_reprs():
     r = gmcc.select(CANONICAL, IMAGE)
     F = r.feasible_set

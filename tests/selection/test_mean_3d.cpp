@@ -5,6 +5,7 @@
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/selection/mean_3d_analytic.h>
 #include <gmcc/selection/mean_3d_double.h>
+#include <gmcc/selection/prepare_canonical.h>
 #include <gmcc/selection/select_maps.h>
 
 #include <boost/test/unit_test.hpp>
@@ -166,9 +167,9 @@ BOOST_AUTO_TEST_CASE(far_from_the_origin) {
   BOOST_TEST(!low.enclosure.has_value());
   BOOST_TEST(low.note.find("too wide to give a map") != std::string::npos);
   const Selections s = select_maps(F, SelectionOptions{Mean3dOptions{Mean3dMethod::analytic, 60}, std::nullopt});
-  BOOST_TEST(!s.mean_3d->estimate.valid);
-  BOOST_TEST(!s.mean_3d->worst_case_deg.has_value());
-  BOOST_TEST(s.max_area->worst_case_deg.has_value());
+  BOOST_TEST(!s[gmcc::Rule::mean_3d]->estimate.valid);
+  BOOST_TEST(!s[gmcc::Rule::mean_3d]->worst_case_deg.has_value());
+  BOOST_TEST(s[gmcc::Rule::max_area]->worst_case_deg.has_value());
 }
 
 // Regression (fuzz_select, 606,436th run): colours (3, 2, 4e2409) and (0, 2, 3), expanded
@@ -186,7 +187,7 @@ BOOST_AUTO_TEST_CASE(forced_precision_too_low_is_not_a_map) {
   BOOST_TEST(!low.valid);
   BOOST_TEST(!low.enclosure.has_value());
   const Selections s = select_maps(F, SelectionOptions{Mean3dOptions{Mean3dMethod::analytic, 60}, std::nullopt});
-  BOOST_TEST(!s.mean_3d->estimate.valid);
+  BOOST_TEST(!s[gmcc::Rule::mean_3d]->estimate.valid);
   const MapEstimate automatic = mean_3d_analytic(F);
   BOOST_TEST_REQUIRE(automatic.valid);
   for (int k = 0; k < 2; ++k) {
@@ -194,6 +195,45 @@ BOOST_AUTO_TEST_CASE(forced_precision_too_low_is_not_a_map) {
     BOOST_TEST((std::isfinite(lo) && lo <= automatic.map[k] && automatic.map[k] <= hi &&
                 std::isfinite(hi)));
   }
+}
+
+// The 3-D mean's limits are the library's: check_options refuses each parameter just outside its
+// range by its library name, accepts both ends and the defaults, and the select pipeline's
+// prepare_canonical applies it.
+BOOST_AUTO_TEST_CASE(mean_3d_options_checked_in_the_library) {
+  BOOST_CHECK_NO_THROW(check_options(Mean3dOptions{}));
+  auto refused = [](Mean3dOptions o) -> std::string {
+    try {
+      check_options(o);
+    } catch (const OptionError& e) {
+      return e.option;
+    }
+    return "";
+  };
+  Mean3dOptions o;
+  o.order = mean3d_order_range.hi;
+  o.samples = mean3d_samples_range.hi;
+  o.precision_bits = min_forced_precision_bits;
+  BOOST_TEST(refused(o) == "");
+  o.precision_bits = static_cast<unsigned>(mean3d_precision_range.hi);
+  BOOST_TEST(refused(o) == "");
+  o.precision_bits = min_forced_precision_bits - 1;
+  BOOST_TEST(refused(o) == "precision");
+  o.precision_bits = static_cast<unsigned>(mean3d_precision_range.hi + 1);
+  BOOST_TEST(refused(o) == "precision");
+  o = {};
+  o.order = 0;
+  BOOST_TEST(refused(o) == "order");
+  o.order = static_cast<unsigned>(mean3d_order_range.hi + 1);
+  BOOST_TEST(refused(o) == "order");
+  o = {};
+  o.samples = 0;
+  BOOST_TEST(refused(o) == "samples");
+  o.samples = mean3d_samples_range.hi + 1;
+  BOOST_TEST(refused(o) == "samples");
+  SelectSceneOptions scene;
+  scene.mean3d.order = 0;
+  BOOST_CHECK_THROW(prepare_canonical({{1, 1, 1}, {2, 1, 1}, {1, 2, 1}}, scene), OptionError);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,11 +1,11 @@
-// The certified floating-point route for the rules' errors (rule_errors.h) against the exact
+// The certified floating-point route for the rules' errors (certified_rule_errors.h) against the exact
 // route (select_maps, worst_case_map_deg and angular_error.h) on the same feasible sets.
 #include "../test_support.h"
 
 #include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/numerics/platform.h>
-#include <gmcc/selection/rule_errors.h>
+#include <gmcc/selection/certified_rule_errors.h>
 #include <gmcc/selection/select_maps.h>
 
 #include <cmath>
@@ -46,17 +46,17 @@ BOOST_AUTO_TEST_CASE(agrees_with_the_exact_route_within_its_accuracy) {
     const FeasiblePolygon P = feasible_polygon(CanonicalConstraints(G), image);
     BOOST_REQUIRE(P.kind() != ConvexKind::empty);
     BOOST_TEST(P.contains(truth));
-    const auto fast = rule_errors(P, truth, c);
+    const auto fast = certified_rule_errors(P, truth, c);
     BOOST_TEST((P.enclosed() || !fast));
     scenes += P.enclosed();
     if (!fast) continue;
     ++answered;
     const Selections sel = select_maps(P.exact());
-    const std::array<const std::optional<Selection>*, 3> rules{&sel.max_area, &sel.mean_2d, &sel.mean_3d};
+    const std::array<const std::optional<Selection>*, 3> rules{&sel[gmcc::Rule::max_area], &sel[gmcc::Rule::mean_2d], &sel[gmcc::Rule::mean_3d]};
     for (std::size_t r = 0; r < 3; ++r) {
       const MapEstimate& e = (**rules[r]).estimate;
       const Point2 m = e.exact ? *e.exact : Point2{rational_from_double(e.map[0]), rational_from_double(e.map[1])};
-      const RuleErrors& f = (*fast)[r];
+      const RuleErrors& f = (*fast).values[r];
       auto close = [](double fast_value, double exact_value) {
         return std::fabs(fast_value - exact_value) <=
                rule_errors_accuracy * (1 + std::fabs(exact_value)) + 0x1p-48 * std::fabs(exact_value) + 1e-13;
@@ -98,12 +98,12 @@ BOOST_AUTO_TEST_CASE(near_tied_max_area_candidates) {
     BOOST_REQUIRE(G.vertices.size() == 5u);
     const FeasiblePolygon P = feasible_polygon(CanonicalConstraints(G), std::vector<Point2>{{1, 1}});
     const Point2 truth{Rational(3, 2), 2};
-    const auto fast = rule_errors(P, truth, Colour{1, 1, 1});
+    const auto fast = certified_rule_errors(P, truth, Colour{1, 1, 1});
     if (!fast) continue;
     ++answered;
-    const Point2 m = *select_maps(P.exact()).max_area->estimate.exact;
+    const Point2 m = *select_maps(P.exact())[gmcc::Rule::max_area]->estimate.exact;
     BOOST_TEST(m == v1);
-    BOOST_TEST(std::fabs((*fast)[0].map_error_deg - map_angular_error_deg(m, truth)) <= 1e-12, "j = " << j);
+    BOOST_TEST(std::fabs((*fast).values[0].map_error_deg - map_angular_error_deg(m, truth)) <= 1e-12, "j = " << j);
   }
   BOOST_TEST(answered > 100);  // the extended stage separates most of them
 }
@@ -115,7 +115,7 @@ BOOST_AUTO_TEST_CASE(declines_segments_and_points) {
   for (const std::vector<Point2>& image : {std::vector<Point2>{{1, 1}, {2, 1}}, std::vector<Point2>{{1, 1}, {2, 1}, {1, 2}}}) {
     const FeasiblePolygon P = feasible_polygon(CanonicalConstraints(G), image);
     BOOST_TEST(P.kind() != ConvexKind::polygon);
-    BOOST_TEST(!rule_errors(P, {1, 1}, c).has_value());
+    BOOST_TEST(!certified_rule_errors(P, {1, 1}, c).has_value());
   }
 }
 
@@ -129,18 +129,18 @@ BOOST_AUTO_TEST_CASE(declines_feasible_sets_beyond_its_range) {
   const Rational tiny(1, mpz_class(1) << 137);
   const FeasiblePolygon P = feasible_polygon(CanonicalConstraints(G), std::vector<Point2>{{tiny, tiny}});
   BOOST_TEST(P.kind() == ConvexKind::polygon);
-  BOOST_TEST(!rule_errors(P, {1, 1}, Colour{1, 1, 1}).has_value());
+  BOOST_TEST(!certified_rule_errors(P, {1, 1}, Colour{1, 1, 1}).has_value());
   // The exact route's worst case for the max-area map, for the record: far from 90°.
   const Selections sel = select_maps(P.exact());
-  BOOST_TEST(*sel.max_area->worst_case_deg < 50.0);
+  BOOST_TEST(*sel[gmcc::Rule::max_area]->worst_case_deg < 50.0);
 }
 
 BOOST_AUTO_TEST_CASE(requires_a_positive_truth_and_illuminant) {
   const ConvexSet2 G = convex_hull({{1, 1}, {2, 1}, {2, 2}, {1, 2}});
   const FeasiblePolygon P = feasible_polygon(CanonicalConstraints(G), std::vector<Point2>{{1, 1}});
-  BOOST_CHECK_THROW(rule_errors(P, {1, 1}, Colour{1, 1, 0}), std::invalid_argument);
-  BOOST_CHECK_THROW(rule_errors(P, {-1, 1}, Colour{1, 1, 1}), std::invalid_argument);
-  BOOST_TEST(rule_errors(P, {1, 1}, Colour{1, 1, 1}).has_value());
+  BOOST_CHECK_THROW(certified_rule_errors(P, {1, 1}, Colour{1, 1, 0}), std::invalid_argument);
+  BOOST_CHECK_THROW(certified_rule_errors(P, {-1, 1}, Colour{1, 1, 1}), std::invalid_argument);
+  BOOST_TEST(certified_rule_errors(P, {1, 1}, Colour{1, 1, 1}).has_value());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -56,9 +56,9 @@ BOOST_AUTO_TEST_CASE(certified_and_exact_routes_agree) {
     BOOST_TEST(!exact.certified);
     certified += fast.certified;
     for (std::size_t r = 0; r < 3; ++r) {
-      BOOST_TEST_REQUIRE(fast.rules[r].has_value());
-      BOOST_TEST_REQUIRE(exact.rules[r].has_value());
-      const RuleErrors &a = *fast.rules[r], &b = *exact.rules[r];
+      BOOST_TEST_REQUIRE(fast.rules.values[r].has_value());
+      BOOST_TEST_REQUIRE(exact.rules.values[r].has_value());
+      const RuleErrors &a = *fast.rules.values[r], &b = *exact.rules.values[r];
       BOOST_TEST(close(a.map_error_deg, b.map_error_deg), "rule " << r << " trial " << trial);
       BOOST_TEST(close(a.worst_case_deg, b.worst_case_deg), "rule " << r << " trial " << trial);
       BOOST_TEST(a.positive_map == b.positive_map);
@@ -70,7 +70,7 @@ BOOST_AUTO_TEST_CASE(certified_and_exact_routes_agree) {
     BOOST_TEST(std::fabs(fast.area - exact.area) <= 1e-9 * exact.area);
   }
   // The certified route answers many of these scenes (most with the x87 stage; about 60% of
-  // rule_errors' scenes without it, test_rule_errors.cpp).
+  // certified_rule_errors' scenes without it, test_rule_errors.cpp).
   BOOST_TEST(certified > 30);
 }
 
@@ -83,15 +83,15 @@ BOOST_AUTO_TEST_CASE(exact_route_is_select_maps_and_the_exact_angles) {
     exact_only.certified_route = false;
     const ScoredRules x = score_rules(s.F, s.truth, s.c, exact_only);
     const Selections sel = select_maps(s.F.exact());
-    const std::array<const std::optional<Selection>*, 3> rules{&sel.max_area, &sel.mean_2d, &sel.mean_3d};
+    const std::array<const std::optional<Selection>*, 3> rules{&sel[gmcc::Rule::max_area], &sel[gmcc::Rule::mean_2d], &sel[gmcc::Rule::mean_3d]};
     BOOST_TEST(x.area == to_double_nearest(area(s.F.exact())));
     for (std::size_t r = 0; r < 3; ++r) {
       const MapEstimate& e = (**rules[r]).estimate;
       const Point2 m = e.exact ? *e.exact : Point2{rational_from_double(e.map[0]), rational_from_double(e.map[1])};
-      BOOST_TEST(x.rules[r]->map_error_deg == map_angular_error_deg(m, s.truth));
-      BOOST_TEST(x.rules[r]->worst_case_deg == *(**rules[r]).worst_case_deg);
-      BOOST_TEST(x.rules[r]->map[0] == e.map[0]);
-      BOOST_TEST(x.rules[r]->map[1] == e.map[1]);
+      BOOST_TEST(x.rules.values[r]->map_error_deg == map_angular_error_deg(m, s.truth));
+      BOOST_TEST(x.rules.values[r]->worst_case_deg == *(**rules[r]).worst_case_deg);
+      BOOST_TEST(x.rules.values[r]->map[0] == e.map[0]);
+      BOOST_TEST(x.rules.values[r]->map[1] == e.map[1]);
     }
   }
 }
@@ -109,8 +109,8 @@ BOOST_AUTO_TEST_CASE(options_that_rule_out_the_certified_route) {
   for (const ScoreOptions& o : {mc, forced}) BOOST_TEST(!score_rules(s.F, s.truth, s.c, o).certified);
   mc.mean3d.samples = 1;  // no sample can land in the cone often enough
   const ScoredRules few = score_rules(s.F, s.truth, s.c, mc);
-  BOOST_TEST(few.rules[0].has_value());
-  BOOST_TEST(!few.rules[2].has_value());
+  BOOST_TEST(few.rules.values[0].has_value());
+  BOOST_TEST(!few.rules.values[2].has_value());
   BOOST_CHECK_THROW(score_rules(s.F, s.truth, Colour{1, 1, 0}, {}), std::invalid_argument);
 }
 

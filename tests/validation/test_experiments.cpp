@@ -85,7 +85,7 @@ void check_routes_agree(ExperimentConfig config) {
   }
 }
 
-// The certified fast route (rule_errors.h) and the exact route for every scene give the same
+// The certified fast route (certified_rule_errors.h) and the exact route for every scene give the same
 // statistics within the fast route's accuracy.
 BOOST_AUTO_TEST_CASE(fast_and_exact_routes_agree) {
   ExperimentConfig config;

@@ -28,7 +28,15 @@ namespace gmcc {
 namespace {
 
 const char* const kGm3d[3] = {"gm3d-max-volume", "gm3d-centroid", "gm3d-max-trace"};
-const char* const kGm2d[3] = {"gm2d-max-area", "gm2d-mean-2d", "gm2d-mean-3d"};
+// A key with dashes for underscores: how methods are named.
+std::string dashed(std::string key) {
+  std::replace(key.begin(), key.end(), '_', '-');
+  return key;
+}
+
+// The 2-D perspective route's method for `rule` (gm2d-max-area, …), and a baseline's (grey-world, …).
+std::string gm2d_method(Rule rule) { return "gm2d-" + dashed(to_string(rule)); }
+std::string baseline_method(std::size_t b) { return dashed(to_string(all_baselines[b])); }
 // The edge-based methods (max-trace): edge-1, edge-2, 1-jet (pixel ∩ edge-1), 2-jet (∩ edge-2).
 const char* const kEdge[4] = {"gm3d-edge1-max-trace", "gm3d-edge2-max-trace", "gm3d-1jet-max-trace",
                               "gm3d-2jet-max-trace"};
@@ -46,7 +54,8 @@ struct Reduced {
 // Which families the methods asked for need.
 struct Needs {
   bool gm3d = false, gm2d = false;  // gm3d: the pixel colours' 3-D hull and canonical gamut
-  std::array<bool, 3> rule3{}, rule2{};
+  std::array<bool, 3> rule3{};
+  PerRule<bool> rule2{};
   std::array<bool, 4> edge{};  // the edge-based methods
   std::array<bool, 2> order{};  // the 1st- and 2nd-order edge colours and canonical gamuts
   std::array<bool, all_baselines.size()> baseline{};
@@ -57,10 +66,10 @@ Needs needs_of(const std::vector<std::string>& methods) {
   n.baseline[0] = true;  // grey world: every gamut method's fallback
   for (const std::string& m : methods) {
     bool known = false;
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < 3; ++k)
       if (m == kGm3d[k]) n.gm3d = n.rule3[k] = known = true;
-      if (m == kGm2d[k]) n.gm2d = n.rule2[k] = known = true;
-    }
+    for (Rule rule : all_rules)
+      if (m == gm2d_method(rule)) n.gm2d = n.rule2[rule] = known = true;
     // An edge-based method needs the pixel colours too: their scale is its edge colours' scale.
     for (int k = 0; k < 4; ++k)
       if (m == kEdge[k]) {
@@ -68,7 +77,7 @@ Needs needs_of(const std::vector<std::string>& methods) {
         for (int o = 0; o < 2; ++o) n.order[o] = n.order[o] || kEdgeTypes[k][o + 1];
       }
     for (std::size_t b = 0; b < all_baselines.size() && !known; ++b)
-      if (m == benchmark_methods()[6 + b]) n.baseline[b] = known = true;
+      if (m == baseline_method(b)) n.baseline[b] = known = true;
     if (!known) throw std::invalid_argument("unknown benchmark method \"" + m + "\"");
   }
   return n;
@@ -238,11 +247,13 @@ std::vector<BenchmarkImage> benchmark_dataset(const std::string& images_dir, con
 }
 
 const std::vector<std::string>& benchmark_methods() {
-  static const std::vector<std::string> m = {
-      "gm3d-max-trace", "gm3d-max-volume",      "gm3d-centroid",        "gm2d-max-area",
-      "gm2d-mean-2d",   "gm2d-mean-3d",         "grey-world",           "white-patch",
-      "shades-of-grey", "grey-edge-1",          "grey-edge-2",          kEdge[0],
-      kEdge[1],         kEdge[2],               kEdge[3]};
+  static const std::vector<std::string> m = [] {
+    std::vector<std::string> names = {"gm3d-max-trace", "gm3d-max-volume", "gm3d-centroid"};
+    for (Rule rule : all_rules) names.push_back(gm2d_method(rule));
+    for (std::size_t b = 0; b < all_baselines.size(); ++b) names.push_back(baseline_method(b));
+    names.insert(names.end(), std::begin(kEdge), std::end(kEdge));
+    return names;
+  }();
   return m;
 }
 
@@ -251,7 +262,7 @@ bool is_edge_gamut_method(const std::string& method) {
 }
 
 const std::vector<std::string>& default_benchmark_methods() {
-  static const std::vector<std::string> m(benchmark_methods().begin(), benchmark_methods().begin() + 11);
+  static const std::vector<std::string> m(benchmark_methods().begin(), benchmark_methods().end() - std::size(kEdge));
   return m;
 }
 
@@ -387,16 +398,15 @@ std::vector<BenchmarkRecord> records_2d(const PreparedCanonical& canonical, cons
     }
   }
   std::vector<BenchmarkRecord> out;
-  for (int k = 0; k < 3; ++k) {
+  for (Rule k : all_rules) {
     if (!n.rule2[k]) continue;
     BenchmarkRecord rec;
-    rec.method = kGm2d[k];
+    rec.method = gm2d_method(k);
     if (scene) {
       rec.feasible_kind = to_string(scene->feasible.kind);
       rec.feasible_vertices = scene->feasible.vertices.size();
       if (scene->truth) rec.truth_in_feasible = scene->truth->in_feasible_set;
-      const std::optional<Selection>& s =
-          k == 0 ? scene->selections.max_area : k == 1 ? scene->selections.mean_2d : scene->selections.mean_3d;
+      const std::optional<Selection>& s = scene->selections[k];
       if (s && s->estimate.valid && s->estimate.map[0] > 0 && s->estimate.map[1] > 0) {
         // e = c ⊘ (m1, m2, 1), c white: (1/m1, 1/m2, 1), unit length.
         const double l[3] = {1 / s->estimate.map[0], 1 / s->estimate.map[1], 1.0};
@@ -427,7 +437,7 @@ std::vector<BenchmarkRecord> records_of(std::size_t i, const FoldCanonicals& c, 
   if (n.gm2d) keep(records_2d(*c.gamut2, r, e, n));
   for (std::size_t b = 0; b < all_baselines.size(); ++b) {
     BenchmarkRecord rec;
-    rec.method = benchmark_methods()[6 + b];
+    rec.method = baseline_method(b);
     rec.light = r.baselines[b];
     rec.answered = r.baselines[b].has_value();
     keep({std::move(rec)});

@@ -10,6 +10,16 @@
 namespace gmcc {
 namespace {
 
+// A 2-D rule's position in a cell's or scene's rules (the 2-D rules come first, in all_rules order).
+std::size_t index(Rule rule) { return static_cast<std::size_t>(rule); }
+
+// The 2-D rules' keys, space-separated: "max_area mean_2d mean_3d".
+std::string rule_keys() {
+  std::string keys;
+  for (Rule rule : all_rules) keys += (keys.empty() ? "" : " ") + to_string(rule);
+  return keys;
+}
+
 std::string num(double x, const char* format = "%.6f") {
   if (std::isnan(x)) return "";  // undefined in CSV (no scene in the cell, a spread of one value)
   char b[64];
@@ -275,25 +285,29 @@ std::string experiment_table(const ExperimentResult& r) {
       out << "\n" << light << "\n"
           << "  n   mean error:  max-area  2-D mean  3-D mean   worst case:  max-area  2-D mean  "
              "3-D mean   3-D gain  empty"
-          << (c.rules.size() > 3 ? "   CRULE mean error: max-volume  centroid" : "")
-          << (c.rules.size() > 5 ? " max-trace cone-mean" : "") << "\n";
+          << (c.rules.size() > rule_count ? "   CRULE mean error: max-volume  centroid" : "")
+          << (c.rules.size() > rule_count + 2 ? " max-trace cone-mean" : "") << "\n";
     }
+    // The paper's table: its three rules (a rule added to rule.h is in the CSV, JSON and
+    // records), then CRULE's after every 2-D rule.
     const auto& s = c.rules;
-    const double best_other = std::min(s[0].error.mean, s[1].error.mean);
-    const double gain = s[2].error.mean > 0 ? best_other / s[2].error.mean - 1 : 0;
+    const RuleStats &area = s[index(Rule::max_area)], &mean2 = s[index(Rule::mean_2d)], &mean3 = s[index(Rule::mean_3d)];
+    const std::size_t crule = rule_count;
+    const double best_other = std::min(area.error.mean, mean2.error.mean);
+    const double gain = mean3.error.mean > 0 ? best_other / mean3.error.mean - 1 : 0;
     char line[256];
     std::snprintf(line, sizeof line,
                   "  %-3d %22.3f %9.3f %9.3f %22.3f %9.3f %9.3f %9.0f%% %6llu", c.surfaces,
-                  s[0].error.mean, s[1].error.mean, s[2].error.mean,
-                  s[0].worst_case.mean, s[1].worst_case.mean, s[2].worst_case.mean,
+                  area.error.mean, mean2.error.mean, mean3.error.mean,
+                  area.worst_case.mean, mean2.worst_case.mean, mean3.worst_case.mean,
                   100 * gain, static_cast<unsigned long long>(c.empty));
     out << line;
-    if (s.size() > 3) {
-      std::snprintf(line, sizeof line, " %30.3f %9.3f", s[3].error.mean, s[4].error.mean);
+    if (s.size() > crule) {
+      std::snprintf(line, sizeof line, " %30.3f %9.3f", s[crule].error.mean, s[crule + 1].error.mean);
       out << line;
     }
-    if (s.size() > 6) {
-      std::snprintf(line, sizeof line, " %9.3f %9.3f", s[5].error.mean, s[6].error.mean);
+    if (s.size() > crule + 3) {
+      std::snprintf(line, sizeof line, " %9.3f %9.3f", s[crule + 2].error.mean, s[crule + 3].error.mean);
       out << line;
     }
     out << "\n";
@@ -332,7 +346,7 @@ std::string experiment_plot_data(const ExperimentResult& r) {
     if (c.light != light) {
       if (!light.empty()) out << "\n\n";
       light = c.light;
-      out << "# " << light << ": surfaces, mean error (max_area mean_2d mean_3d), mean worst case (same)"
+      out << "# " << light << ": surfaces, mean error (" << rule_keys() << "), mean worst case (same)"
           << (r.baselines.empty() ? "" : ", mean recovery error (same, then grey_world max_rgb on the same scenes)")
           << "\n";
     }
@@ -366,7 +380,7 @@ std::string experiment_plot_script(const ExperimentResult& r, const std::string&
     << "set style line 3 lc rgb '#2ca02c' lw 2 pt 9\n"
     << "set style line 4 lc rgb '#9467bd' lw 2 pt 11 dt 2\n"
     << "set style line 5 lc rgb '#8c564b' lw 2 pt 13 dt 2\n"
-    << (r.rules.size() > 5 ? "set style line 6 lc rgb '#e377c2' lw 2 pt 15 dt 3\n"
+    << (r.rules.size() > rule_count + 2 ? "set style line 6 lc rgb '#e377c2' lw 2 pt 15 dt 3\n"
                              "set style line 7 lc rgb '#7f7f7f' lw 2 pt 4 dt 3\n"
                            : "")
     << "do for [term = 1:2] {\n"
@@ -376,8 +390,9 @@ std::string experiment_plot_script(const ExperimentResult& r, const std::string&
     << " font 'sans,9'; set output svg_file }\n"
     << "  set multiplot layout " << rows << "," << columns << "\n";
   const std::size_t R = r.rules.size();
-  const char* titles[] = {"max-area",         "2-D mean",       "3-D mean",       "CRULE max-volume",
-                          "CRULE centroid",   "CRULE max-trace", "CRULE cone mean"};
+  std::vector<std::string> titles;
+  for (Rule rule : all_rules) titles.push_back(rule_label(rule));
+  for (const char* t : {"CRULE max-volume", "CRULE centroid", "CRULE max-trace", "CRULE cone mean"}) titles.push_back(t);
   for (std::size_t i = 0; i < rows; ++i)
     for (int panel = 0; panel < 2; ++panel) {  // mean error, then mean worst case
       g << "  set ylabel '" << lights[i] << (panel ? ": mean worst case (deg)'\n" : ": mean error (deg)'\n")

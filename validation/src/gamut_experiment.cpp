@@ -92,7 +92,7 @@ RuleRecord record(const RuleErrors& e, bool truth) {
 RuleRecord score_estimate(const Colour& e, const Point2& truth, const Colour& c) {
   if (sgn(e.r) <= 0 || sgn(e.g) <= 0 || sgn(e.b) <= 0 || sgn(c.b) <= 0) return {};
   const Point2 m{Rational(c.r * e.b / (e.r * c.b)), Rational(c.g * e.b / (e.g * c.b))};
-  return record(map_errors(m, truth, c), false);
+  return record(exact_rule_errors(m, truth, c), false);
 }
 
 // Grey world and max-RGB on a scene's colours as the rules see them (noise, shading): its own
@@ -117,8 +117,8 @@ std::vector<RuleRecord> baseline_records(const ExperimentSetup& setup, const Tes
 
 // The same scene in 3-D (Forsyth's CRULE against crule_gamut, G_c3 prepared once with black in it
 // or not as configured): its rules' maps scored by their perspective (d1/d3, d2/d3) into
-// rec.rules[3], [4] (and with crule_extended [5] max-trace, [6] the cone mean of F3's perspective
-// image), each worst case over F3. CRULE's certified route (crule_3d.h): F3, max-volume and
+// rec.rules after the 2-D rules: max-volume, the centroid (and with crule_extended max-trace and
+// the cone mean of F3's perspective image), each worst case over F3. CRULE's certified route (crule_3d.h): F3, max-volume and
 // max-trace exact, the centroid certified (its double map, taken exactly, is what is scored).
 void score_crule(const ExperimentSetup& setup, const ExperimentConfig& config, const CanonicalConstraints3& crule_gamut,
                  const TestLight& light, const std::vector<Colour>& image_colours, SceneRecord& rec) {
@@ -127,22 +127,22 @@ void score_crule(const ExperimentSetup& setup, const ExperimentConfig& config, c
   // The 3-D map d of a selection, its worst case over F3 given: scored when d3 > 0.
   auto score = [&](std::size_t slot, const Point3& d, double worst_case_deg) {
     if (sgn(d.z) <= 0) return;  // the zero map (or one in the plane d3 = 0) has no perspective
-    RuleErrors x = map_errors({Rational(d.x / d.z), Rational(d.y / d.z)}, light.true_map, setup.canonical_light);
+    RuleErrors x = exact_rule_errors({Rational(d.x / d.z), Rational(d.y / d.z)}, light.true_map, setup.canonical_light);
     x.worst_case_deg = worst_case_deg;
     rec.rules[slot] = record(x, truth3_inside);
   };
   const std::array<const std::optional<Selection3>*, 2> rules3{&c3.max_volume, &c3.centroid};
   for (std::size_t r = 0; r < 2; ++r)
     if (*rules3[r] && (*rules3[r])->worst_case_deg)
-      score(3 + r, measured_map((*rules3[r])->estimate), *(*rules3[r])->worst_case_deg);
+      score(rule_count + r, measured_map((*rules3[r])->estimate), *(*rules3[r])->worst_case_deg);
   if (!config.crule_extended || c3.feasible.kind == ConvexKind3::empty) return;
   const Point3 trace = measured_map(max_trace(c3.feasible));
-  if (sgn(trace.z) > 0) score(5, trace, worst_case_map_deg_3d(c3.feasible, trace));
+  if (sgn(trace.z) > 0) score(rule_count + 2, trace, worst_case_map_deg_3d(c3.feasible, trace));
   const std::optional<MapEstimate> cone = perspective_cone_mean(c3.feasible, config.mean3d);
   if (cone && cone->valid) {
     const Point2 m = measured_map(*cone);
     const Point3 lift{m.x, m.y, Rational(1)};
-    score(6, lift, worst_case_map_deg_3d(c3.feasible, lift));
+    score(rule_count + 3, lift, worst_case_map_deg_3d(c3.feasible, lift));
   }
 }
 
@@ -246,8 +246,8 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
     // The route (certified where it applies and can certify, else exact) is score_rules' choice.
     const ScoredRules scored = score_rules(P, light.true_map, setup.canonical_light, score_options);
     rec.area = scored.area;
-    for (std::size_t r = 0; r < 3; ++r)
-      if (scored.rules[r]) rec.rules[r] = record(*scored.rules[r], truth_inside);
+    for (Rule r : all_rules)
+      if (scored.rules[r]) rec.rules[static_cast<std::size_t>(r)] = record(*scored.rules[r], truth_inside);
     if (crule_gamut) score_crule(setup, config, *crule_gamut, light, image_colours, rec);
   }
   return records;
@@ -349,7 +349,7 @@ ExperimentResult result_header(const ExperimentSetup& setup, const ExperimentCon
   for (const TestLight& l : setup.lights) result.lights.push_back(l.name);
   result.config = config;
   result.config.progress = nullptr;
-  result.rules.assign(experiment_rules.begin(), experiment_rules.end());
+  for (Rule r : all_rules) result.rules.push_back(to_string(r));
   result.rules.insert(result.rules.end(), experiment_rules_3d.begin(),
                       experiment_rules_3d.begin() + static_cast<std::ptrdiff_t>(experiment_rules_3d_count(config)));
   result.surface_indices = setup.surface_indices;

@@ -41,7 +41,7 @@ template <class T>
 constexpr T degrees_per_radian = T(180) / T(numerics::pi);
 
 /// ∠(a, b) in degrees in midpoint–radius enclosures E (geometry/enclosure.h: doubles or x87), for
-/// the certified route (rule_errors.h): atan2(s, d) with s = |a×b| ∈ [s_lo, s_hi] and d = a·b.
+/// the certified route (certified_rule_errors.h): atan2(s, d) with s = |a×b| ∈ [s_lo, s_hi] and d = a·b.
 /// One atan2 at the box's centre; over the box |∂θ/∂s| = |d|/(s² + d²) <= max|d|/R² and
 /// |∂θ/∂d| = s/(s² + d²) <= s_hi/R², R² the least s² + d² on it, which bounds the rest. When the
 /// box reaches the origin (R = 0: the enclosures allow a zero vector) the result is unbounded.

@@ -3,7 +3,7 @@
 // every number kind it is evaluated in: the sum over the edges and the final ratio are
 // tau_direction(); what differs by kind is only how an edge's c_i and its weight θ_i/|c_i| are
 // enclosed (TauTerm). mean_3d_analytic uses x87 intervals (LDInterval) and MPFI, from vertex
-// enclosures, from exactly formed edges or from exact products; rule_errors uses midpoint–radius
+// enclosures, from exactly formed edges or from exact products; certified_rule_errors uses midpoint–radius
 // enclosures (geometry/enclosure.h) in doubles and x87 extended precision. Internal to
 // gmcc::selection.
 

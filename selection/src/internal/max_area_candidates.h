@@ -3,7 +3,7 @@
 // for every number kind and every description of F: argmax m1·m2 over a convex polygon or
 // segment is a vertex, or the stationary point of m1·m2 inside an edge of its north-east chain
 // (Δm1·Δm2 < 0, where m1·m2 is concave along the edge). max_area.cpp enumerates them from exact
-// vertices (in ℚ, and in x87 intervals); rule_errors.cpp from vertex enclosures and edge lines.
+// vertices (in ℚ, and in x87 intervals); certified_rule_errors.cpp from vertex enclosures and edge lines.
 // Internal to gmcc::selection.
 
 #include <gmcc/numerics/enclosure.h>

@@ -7,6 +7,8 @@
 #include <gmcc/selection/mean_3d_monte_carlo.h>
 #include <gmcc/selection/mean_3d_quadrature.h>
 
+#include <gmcc/selection/option_error.h>
+
 #include <cstdint>
 #include <string>
 
@@ -24,7 +26,8 @@ std::string to_string(Mean3dMethod method);
 /// Inverse of to_string. \throws std::invalid_argument listing the valid names.
 Mean3dMethod mean3d_method_from_string(const std::string& name);
 
-/// Which route, and its parameters (each used only by its route).
+/// Which route, and its parameters (each used only by its route). The defaults here are every
+/// front end's defaults; the ranges below are every front end's limits (docs/cli.md "gmcc select").
 struct Mean3dOptions {
   Mean3dMethod method = Mean3dMethod::analytic;  ///< the route: closed form, quadrature or Monte Carlo
   unsigned precision_bits = 0;     ///< analytic: forced precision (0: automatic)
@@ -32,6 +35,22 @@ struct Mean3dOptions {
   std::uint64_t samples = 1000000; ///< monte-carlo: points drawn in the unit cube
   std::uint64_t seed = 1;          ///< monte-carlo: generator seed
 };
+
+/// The limits of Mean3dOptions: the forced precision 0 (automatic) or from
+/// min_forced_precision_bits to 2^20 bits (mean_3d_analytic's cap), the quadrature order 1 to
+/// 256 points per direction, the Monte Carlo sample count 1 to 10^9, any seed.
+///@{
+inline constexpr IntegerRange mean3d_precision_range{0, 1u << 20};
+inline constexpr unsigned min_forced_precision_bits = 53;
+inline constexpr IntegerRange mean3d_order_range{1, 256};
+inline constexpr IntegerRange mean3d_samples_range{1, 1000000000};
+inline constexpr IntegerRange mean3d_seed_range{0, ~0ULL};
+///@}
+
+/// Checks every parameter of `options` against the limits above (the unused ones too: a front
+/// end refuses a parameter given for another route itself).
+/// \throws OptionError naming `precision`, `order` or `samples`.
+void check_options(const Mean3dOptions& options);
 
 /// The 3-D mean of F by the chosen route. \pre F not empty.
 MapEstimate mean_3d(const ConvexSet2& F, const Mean3dOptions& options = {});

@@ -33,7 +33,8 @@ struct PreparedCanonical {
 ///         options that admit no answer: no usable colour, b <= 0 under reject, coordinates
 ///         beyond max_scene_coordinate, an illuminant or c with a channel <= 0, a negative
 ///         factor or a factor with ExpansionPolicy::none, grow-canonical after a centroid-clip
-///         expansion. Complexity O(n log n) in the colours and lights.
+///         expansion; OptionError for a 3-D mean parameter outside its limits (check_options,
+///         mean_3d.h). Complexity O(n log n) in the colours and lights.
 PreparedCanonical prepare_canonical(const std::vector<Colour>& canonical,
                                     const SelectSceneOptions& options);
 

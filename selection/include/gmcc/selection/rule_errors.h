@@ -1,56 +1,48 @@
 #pragma once
 /// \file rule_errors.h
-/// The errors the paper's evaluation records for each rule (Finlayson & Hordley 1999 §4: the
-/// angular error of the selected map and its worst case over F; plus the illuminant and
-/// reproduction errors of angular_error.h), computed from certified enclosures of F's vertices
-/// instead of exact rational vertices. An experiment needs only these angles; this computes them
-/// at nearly the cost of doubles, certified, and says when it cannot (docs/performance.md).
+/// One rule's errors against a known true map: the record every scoring route returns (the
+/// paper's evaluation, Finlayson & Hordley 1999 §4: the angular error of the selected map and its
+/// worst case over F; plus the illuminant and reproduction errors of angular_error.h), and the
+/// exact route that fills it from an exact map (certified_rule_errors.h is the other route).
 
 #include <gmcc/geometry/colour.h>
-#include <gmcc/geometry/feasible_polygon.h>
+#include <gmcc/geometry/point.h>
+#include <gmcc/selection/select_maps.h>
 
 #include <array>
 #include <optional>
 
 namespace gmcc {
 
-/// One rule's errors, in degrees, each within the accuracy stated at rule_errors.
+/// One rule's errors against the true map, in degrees.
 struct RuleErrors {
-  double map_error_deg;             ///< map_angular_error_deg(selected map, truth)
-  double worst_case_deg;            ///< worst_case_map_deg(F, selected map)
-  bool positive_map;                ///< both components of the selected map are > 0
-  double illuminant_error_deg = 0;  ///< illuminant_angular_error_deg (when positive_map)
-  double reproduction_error_deg = 0;///< reproduction_angular_error_deg (when positive_map)
-  /// The selected map's midpoint in doubles: within its certified enclosure, which is narrow
-  /// enough for the angles above, but not necessarily the nearest double (for records only).
+  double map_error_deg = 0;         ///< map_angular_error_deg(selected map, truth): the paper's
+  double worst_case_deg = 0;        ///< worst_case_map_deg(F, selected map)
+  bool positive_map = false;        ///< both components of the selected map are > 0
+  /// illuminant_angular_error_deg (recovery error; Hordley & Finlayson 2006), when positive_map
+  /// (a map with a component <= 0 implies no light); 0 otherwise.
+  double illuminant_error_deg = 0;
+  /// reproduction_angular_error_deg (Finlayson & Zakizadeh 2014), when positive_map; 0 otherwise.
+  double reproduction_error_deg = 0;
+  /// The selected map in doubles: the exact map rounded to nearest on the exact route; on the
+  /// certified route its enclosure's midpoint, narrow enough for the angles above but not
+  /// necessarily the nearest double (for records only).
   std::array<double, 2> map{};
 };
 
-/// The certified accuracy of every angle rule_errors returns: within 2^-36·(1 + θ) degrees of the
-/// exact θ (about 1.5e-11·(1 + θ)); the exact routes are within a relative 2^-50.
-inline constexpr double rule_errors_accuracy = 0x1p-36;
+/// The errors of the exact map m against `truth` for the canonical light c, by the exact
+/// functions of angular_error.h (illuminant and reproduction errors only when m > 0);
+/// `worst_case_deg` is left 0 for the caller, and `map` is m rounded to nearest. What the exact
+/// route records per rule, and how CRULE's maps (in perspective) and the baselines' estimates
+/// are scored. O(1).
+RuleErrors exact_rule_errors(const Point2& m, const Point2& truth, const Colour& canonical_illuminant);
 
-/// Errors of the max-area map (§3.1), the 2-D mean (§3.2) and the 3-D mean by its closed form
-/// (§3.3, docs/derivations.md §1) against a known true map, for F given by feasible_polygon, in
-/// that order.
-///
-/// Every value is computed in midpoint–radius double intervals (enclosure.h) from F's certified
-/// vertex enclosures: the max-area map is the candidate (vertex, or the stationary point
-/// (c/2a, c/2b) of m1·m2 on an edge a·x + b·y = c of the north-east chain) whose m1·m2 is
-/// certainly above all others' (the maximiser is unique: m1·m2 is strictly quasi-concave on the
-/// quadrant); the 2-D mean the fan centroid; the 3-D mean τ = ½ Σ θ_i c_i/|c_i| with θ/|c|
-/// enclosed by its monotonicity (no cancellation for short edges); the worst case the largest
-/// vertex angle (every vertex certainly at an acute angle to the map: docs/derivations.md §3.1).
-/// The map that is scored is each rule's exact map (for the 3-D mean, the exact irrational one).
-///
-/// \returns nothing when F is not enclosed (degenerate or out of the filter's range), when a
-/// decision is uncertain (near-tied max-area candidates, a stationary point at an edge's end, a
-/// map component of uncertain sign) or when an angle's enclosure is wider than the accuracy
-/// above. The caller then uses the exact routes (select_maps and angular_error.h), which agree
-/// within that accuracy (tested on thousands of scenes). Also nothing when F's vertices, the truth,
-/// c or a map leave [2^-100, 2^100] in magnitude, the range its double analysis is made for.
-/// \throws std::invalid_argument unless truth and c are > 0.
-std::optional<std::array<RuleErrors, 3>> rule_errors(const FeasiblePolygon& F, const Point2& truth,
-                                                     const Colour& canonical_illuminant);
+/// The errors of one selection against `truth` (components > 0) for the canonical light c
+/// (components > 0): exact_rule_errors of its measured map (the rule's exact map where it is
+/// rational, else its reported double map taken exactly), with the selection's map-space worst
+/// case. \returns nothing when the selection has no map (estimate not valid).
+/// \throws std::invalid_argument unless truth and c are > 0. O(1).
+std::optional<RuleErrors> exact_rule_errors(const Selection& selection, const Point2& truth,
+                                            const Colour& canonical_illuminant);
 
 }  // namespace gmcc

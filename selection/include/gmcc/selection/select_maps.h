@@ -1,12 +1,13 @@
 #pragma once
 /// \file select_maps.h
-/// The three selection rules of Finlayson & Hordley (1999) §3 applied to one feasible set,
+/// The selection rules of Finlayson & Hordley (1999) §3 (rule.h) applied to one feasible set,
 /// each with its map-space worst case (§4): what `gmcc select` reports and what every
 /// experiment evaluates per scene.
 
 #include <gmcc/geometry/colour.h>
 #include <gmcc/selection/map_estimate.h>
 #include <gmcc/selection/mean_3d.h>
+#include <gmcc/selection/rule.h>
 
 #include <optional>
 
@@ -24,13 +25,9 @@ struct Selection {
   std::optional<double> worst_case_illuminant_deg;
 };
 
-/// max_area, mean_2d and mean_3d of F; all absent when F is empty.
-struct Selections {
-  /// Max-area (max_area.h), the 2-D mean (mean_2d.h) and the 3-D mean (mean_3d.h), §3 of the paper.
-  ///@{
-  std::optional<Selection> max_area, mean_2d, mean_3d;
-  ///@}
-};
+/// Every rule's Selection of F (rule.h: max-area, the 2-D mean and the 3-D mean, §3 of the
+/// paper), indexed by Rule; all absent when F is empty.
+using Selections = PerRule<std::optional<Selection>>;
 
 /// What to compute besides the three maps and their map-space worst cases.
 struct SelectionOptions {
@@ -40,7 +37,7 @@ struct SelectionOptions {
   std::optional<Colour> illuminant_worst_case_for;
 };
 
-/// Apply max_area, mean_2d and mean_3d to F with their worst cases. The worst cases of an
+/// Apply every rule (select_rule) to F with its worst cases. The worst cases of an
 /// irrational estimate are measured from its reported double map, taken exactly.
 /// \throws std::domain_error if a vertex of F exceeds the range of doubles (the maps are
 ///         reported as doubles).

@@ -12,7 +12,7 @@
 #include <gmcc/geometry/min_violation.h>
 #include <gmcc/selection/prepare_canonical.h>
 #include <gmcc/selection/select_maps.h>
-#include <gmcc/selection/truth_errors.h>
+#include <gmcc/selection/rule_errors.h>
 
 #include <cstddef>
 #include <optional>
@@ -44,11 +44,8 @@ struct TruthReport {
   Colour light;         ///< the true light's RGB under which the image was taken
   Point2 map;           ///< its perspective map: illuminant_map(light, c), c ⊘ light in perspective
   bool in_feasible_set = false;  ///< map ∈ F (after the constraint and any recovery), exactly
-  /// Per rule (absent when the rule gave no map), in the order max_area, mean_2d, mean_3d.
-  /// truth_errors of each rule's Selection
-  ///@{
-  std::optional<TruthErrors> max_area, mean_2d, mean_3d;
-  ///@}
+  /// Per rule, exact_rule_errors of its Selection (absent when the rule gave no map).
+  PerRule<std::optional<RuleErrors>> errors;
 };
 
 /// Everything select_scene found; the canonical side is in the PreparedCanonical it was given.
@@ -61,7 +58,7 @@ struct SceneResult {
   std::string empty_reason;  ///< why `feasible` is empty (set only then)
   std::optional<ConstraintReport> constraint;  ///< present when illuminants were given
   std::optional<RecoveryReport> recovery;  ///< present when the policy is not none
-  Selections selections;  ///< the three rules on `feasible` (select_maps); all absent when it is empty
+  Selections selections;  ///< every rule on `feasible` (select_maps); all absent when it is empty
   std::optional<TruthReport> truth;  ///< present when select_scene was given the true light
 };
 
@@ -77,7 +74,7 @@ SceneResult scene_feasible_set(const PreparedCanonical& canonical, const std::ve
 
 /// Run the pipeline on one image: image chromaticities, F against the prepared G_c (and C), the
 /// recovery policy when F is empty, select_maps with the illuminant-space worst cases for c, and
-/// with `truth` (the true light's RGB, channels > 0) truth_errors for each rule against its map
+/// with `truth` (the true light's RGB, channels > 0) exact_rule_errors for each rule against its map
 /// illuminant_map(truth, c).
 /// \throws SceneInputError (input image, truth or on_empty): no usable colour, b <= 0 under
 ///         reject, chromaticities or maps beyond max_scene_coordinate, an unbounded F, a truth
@@ -86,5 +83,11 @@ SceneResult scene_feasible_set(const PreparedCanonical& canonical, const std::ve
 ///         on long exact vertices).
 SceneResult select_scene(const PreparedCanonical& canonical, const std::vector<Colour>& image,
                          const std::optional<Colour>& truth = std::nullopt);
+
+/// The same with this call's own choices instead of the ones `canonical` was prepared with (the
+/// 3-D mean's route, the illuminant-space worst cases): everything else as above.
+/// \throws SceneInputError as above; OptionError for a 3-D mean parameter outside its limits.
+SceneResult select_scene(const PreparedCanonical& canonical, const std::vector<Colour>& image,
+                         const std::optional<Colour>& truth, const SceneChoices& choices);
 
 }  // namespace gmcc

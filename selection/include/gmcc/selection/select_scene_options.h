@@ -29,19 +29,26 @@ std::string to_string(RecoveryPolicy policy);
 /// Inverse of to_string. \throws std::invalid_argument listing the valid names.
 RecoveryPolicy recovery_policy_from_string(const std::string& name);
 
-/// Every option of the 2-D select pipeline (docs/cli.md "gmcc select").
-struct SelectSceneOptions {
+/// What select_scene computes on a feasible set: the per-scene choices. A PreparedCanonical holds
+/// defaults for them (SelectSceneOptions); select_scene takes others per call, so comparing the
+/// 3-D mean's routes needs no second prepare_canonical.
+struct SceneChoices {
+  Mean3dOptions mean3d;  ///< the 3-D mean's route (check_options, mean_3d.h)
+  /// Each rule's illuminant-space worst case (worst_case_illuminant.h). Exact edge quartics where
+  /// double filters cannot decide: on 11-colour scenes of the shipped sample about a third of a
+  /// scene's time (docs/performance.md "Batch selection"); false leaves it out.
+  bool illuminant_worst_case = true;
+};
+
+/// Every option of the 2-D select pipeline (docs/cli.md "gmcc select"): the canonical side's,
+/// fixed by prepare_canonical, and the per-scene choices' defaults (the base class).
+struct SelectSceneOptions : SceneChoices {
   NonPositiveBluePolicy nonpositive_blue = NonPositiveBluePolicy::drop;  ///< both colour sets
   Expansion expansion;                    ///< of the canonical gamut
   Colour canonical_illuminant{1, 1, 1};   ///< c: maps of lights, illuminant-space errors
   /// Plausible lights (Finlayson's illumination constraint): F becomes F ∩ conv{c ⊘ e_j}.
   std::optional<std::vector<Colour>> illuminants;
   RecoveryPolicy on_empty = RecoveryPolicy::none;  ///< what to do when F is empty (docs/math.md §1)
-  Mean3dOptions mean3d;  ///< the 3-D mean's route
-  /// Each rule's illuminant-space worst case (worst_case_illuminant.h). Exact edge quartics where
-  /// double filters cannot decide: on 11-colour scenes of the shipped sample about a third of a
-  /// scene's time (docs/performance.md "Batch selection"); false leaves it out.
-  bool illuminant_worst_case = true;
 };
 
 /// Which input a SceneInputError is about.

@@ -10,6 +10,7 @@
 #include <gmcc/geometry/convex_set_3.h>
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/selection/mean_3d.h>
+#include <gmcc/selection/rule.h>
 #include <gmcc/validation/error_statistics.h>
 
 #include <array>
@@ -103,7 +104,7 @@ struct ExperimentConfig {
   /// factor k scales CRULE's F3 by 1/k, so no rule's perspective map moves; the true map may
   /// leave F3 (docs/reproduction.md §5b).
   double intensity = 0;
-  /// Score scenes by the certified floating-point route (rule_errors.h) where it applies and
+  /// Score scenes by the certified floating-point route (certified_rule_errors.h) where it applies and
   /// certifies its angles (the default analytic 3-D mean, no constraint), else exactly. false:
   /// the exact route for every scene (for cross-checks; results agree within
   /// rule_errors_accuracy).
@@ -122,11 +123,9 @@ struct ExperimentConfig {
   std::function<void(std::uint64_t, std::uint64_t)> progress;
 };
 
-/// The 2-D rules in report order, then (with ExperimentConfig::crule) the 3-D ones.
-inline const std::array<const char*, 3> experiment_rules{"max_area", "mean_2d", "mean_3d"};
-/// CRULE's 3-D rules, after experiment_rules when ExperimentConfig::crule is set: the first two
-/// (crule_3d.h), and all four with ExperimentConfig::crule_extended (max_trace.h,
-/// perspective_cone_mean.h).
+/// CRULE's 3-D rules, after the 2-D rules (all_rules, rule.h) when ExperimentConfig::crule is
+/// set: the first two (crule_3d.h), and all four with ExperimentConfig::crule_extended
+/// (max_trace.h, perspective_cone_mean.h).
 inline const std::array<const char*, 4> experiment_rules_3d{"crule_max_volume", "crule_centroid",
                                                             "crule_max_trace", "crule_cone_mean"};
 /// How many of experiment_rules_3d a run with `config` scores (0 without CRULE).
@@ -198,7 +197,7 @@ struct ExperimentResult {
   std::vector<std::string> lights;    ///< the test lights' names, in setup order
   ExperimentConfig config;  ///< the configuration it ran with (seed, counts, shard, …)
   ConvexSet2 canonical_gamut;  ///< G_c, exactly (after any expansion)
-  std::vector<std::string> rules;     ///< experiment_rules, then experiment_rules_3d_count(config) of experiment_rules_3d
+  std::vector<std::string> rules;     ///< to_string of all_rules, then experiment_rules_3d_count(config) of experiment_rules_3d
   std::vector<std::string> baselines; ///< experiment_baselines when the setup asks for them
   std::string surface_indices = "0-based";  ///< ExperimentSetup::surface_indices
   /// With canonical_chromaticity_sets: every set's gamut (canonical_gamut is then the first).
