@@ -31,7 +31,7 @@
 #include <gmcc/input/spectral_table.h>
 #include <gmcc/validation/synthetic_experiment.h>
 
-#include "internal/crule_exact.h"
+#include "support/cgal_references.h"
 #include "internal/centroid_3_route.h"
 #include "internal/max_volume_route.h"
 
@@ -166,8 +166,8 @@ void crule_lp(benchmark::State& state) {
   const Workload& w = workload();
   std::size_t i = 0, polytopes = 0;
   for (auto _ : state)
-    polytopes += internal::feasible_set_3d_reference(w.setup.canonical_surfaces, w.scenes[i++ % w.scenes.size()].colours,
-                                                     true).kind == ConvexKind3::polytope;
+    polytopes += test::feasible_set_3d_reference(w.setup.canonical_surfaces, w.scenes[i++ % w.scenes.size()].colours,
+                                                 CanonicalBlack::include).kind == ConvexKind3::polytope;
   state.counters["polytope"] = benchmark::Counter(static_cast<double>(polytopes), benchmark::Counter::kAvgIterations);
 }
 void crule_3d_prepared(benchmark::State& state) {

@@ -4,7 +4,7 @@
 #include <gmcc/geometry/chromaticity.h>
 #include <gmcc/geometry/chromaticity_hull.h>
 
-#include "internal/convex_hull_cgal.h"
+#include "support/cgal_references.h"
 
 #include <benchmark/benchmark.h>
 
@@ -33,7 +33,7 @@ void rational_then_cgal(benchmark::State& s) {
     for (const auto& c : input)
       exact.push_back({gmcc::rational_from_double(c[0]), gmcc::rational_from_double(c[1]),
                        gmcc::rational_from_double(c[2])});
-    benchmark::DoNotOptimize(gmcc::internal::convex_hull_cgal(
+    benchmark::DoNotOptimize(gmcc::test::convex_hull_cgal(
         gmcc::perspective_chromaticities(exact, gmcc::NonPositiveBluePolicy::drop).points));
   }
   s.SetItemsProcessed(s.iterations() * s.range(0));

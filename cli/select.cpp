@@ -101,7 +101,7 @@ Colour light_option(const std::string& name, const std::string& text) {
     // Keep the reader's reason (a digit limit, a malformed number, a channel <= 0), without its
     // "NAME:1:" prefix.
     std::string why = e.what();
-    const std::string prefix = e.file() + (e.line() ? ":" + std::to_string(e.line()) : "") + ": ";
+    const std::string prefix = e.source() + (e.line() ? ":" + std::to_string(e.line()) : "") + ": ";
     if (why.compare(0, prefix.size(), prefix) == 0) why.erase(0, prefix.size());
     throw InputError(name, 0, quoted_text(text) + " is not a light r,g,b with channels > 0: " + why);
   }

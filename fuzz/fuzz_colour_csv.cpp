@@ -20,7 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const gmcc::InputError& e) {
     const std::string message = e.what();
     FUZZ_CHECK(message.rfind("fuzz.csv", 0) == 0, "message does not start with the file: " + message);
-    FUZZ_CHECK(e.file() == "fuzz.csv", "InputError::file()");
+    FUZZ_CHECK(e.source() == "fuzz.csv", "InputError::source()");
     FUZZ_CHECK(e.line() <= lines, "line " + std::to_string(e.line()) + " beyond the text");
     FUZZ_CHECK(message.find('\n') == std::string::npos, "a message of more than one line");
     FUZZ_CHECK(message.size() <= 400, "a message of " + std::to_string(message.size()) + " bytes");

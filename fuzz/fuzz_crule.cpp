@@ -1,5 +1,5 @@
 // Fuzz target: Forsyth's CRULE feasible set in 3-D by the prepared route (CanonicalConstraints3,
-// the filtered clip) against the LP route it replaced (internal::feasible_set_3d_reference), on
+// the filtered clip) against the LP route it replaced (test::feasible_set_3d_reference), on
 // recipes of small, huge, tiny and long rationals, duplicates, coplanar and collinear gamuts,
 // images of scaled canonical colours (F3 a point), zero channels (unbounded) and images large
 // enough for the image-hull prefilter (fuzz/README.md). Then the filtered selections on F3:
@@ -17,6 +17,7 @@
 
 #include "fuzz_support.h"
 #include "internal/crule_exact.h"
+#include "support/cgal_references.h"
 #include "internal/max_volume_route.h"
 
 #include <algorithm>
@@ -160,7 +161,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::string old_error, new_error;
   ConvexSet3 old, now;
   try {
-    old = internal::feasible_set_3d_reference(canonical, image, black);
+    old = test::feasible_set_3d_reference(canonical, image, b);
   } catch (const UnboundedFeasibleSet&) {
     old_error = "unbounded";
   } catch (const std::invalid_argument&) {

@@ -1,26 +1,15 @@
-// The 2-D hull: a filtered monotone chain, and CGAL's hull kept as its reference (CGAL stays in
-// this translation unit: keep heavy includes here, docs/math.md).
+// The 2-D hull: a filtered monotone chain. CGAL's convex_hull_2, which it replaced, is the tests'
+// and bench_hull's oracle in tests/support/cgal_references.h, not part of the library.
 #include <gmcc/geometry/convex_hull.h>
 #include <gmcc/geometry/enclosure.h>
 
-#include "internal/convex_hull_cgal.h"
 #include "internal/monotone_chain.h"
-
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/convex_hull_2.h>
 
 #include <algorithm>
 #include <numeric>
-#include <type_traits>
 
 namespace gmcc {
 namespace {
-using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
-using KPoint = Kernel::Point_2;
-// With CGAL::CGAL's -DCGAL_USE_GMPXX=1 the exact type is mpq_class (docs/derivations.md §4.1), so
-// values cross this boundary without conversion.
-static_assert(std::is_same<Kernel::FT::Exact_type, mpq_class>::value,
-              "gmcc expects CGAL built with CGAL_USE_GMPXX (link CGAL::CGAL)");
 
 // The sign of a − b, from the enclosures when they are apart, else exactly (mpq_cmp, no gcd).
 int compare(const Rational& a, const Rational& b, const Enclosure& ea, const Enclosure& eb) {
@@ -47,19 +36,6 @@ int turn(const Point2& a, const Point2& b, const Point2& c, const Approx& ea, co
   return sgn(orientation(a, b, c));
 }
 }  // namespace
-
-ConvexSet2 internal::convex_hull_cgal(const std::vector<Point2>& points) {
-  std::vector<KPoint> in;
-  in.reserve(points.size());
-  for (const Point2& p : points) in.emplace_back(Kernel::FT(p.x), Kernel::FT(p.y));
-  std::vector<KPoint> hull;
-  // Extreme points only (collinear boundary points dropped), counter-clockwise.
-  CGAL::convex_hull_2(in.begin(), in.end(), std::back_inserter(hull));
-  std::vector<Point2> cycle;
-  cycle.reserve(hull.size());
-  for (const KPoint& p : hull) cycle.push_back({CGAL::exact(p.x()), CGAL::exact(p.y())});
-  return canonical_convex_set(std::move(cycle));
-}
 
 // Andrew's monotone chain on indices, with filtered predicates. CGAL's lazy exact kernel spent
 // about 17 µs a point on its lazy numbers' allocations (19 s for the 10^6-point parabola of

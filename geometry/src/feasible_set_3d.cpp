@@ -151,13 +151,6 @@ std::vector<Point3> extreme_points(const std::vector<Point3>& pts) {
   return sorted_unique(out);
 }
 
-std::vector<Point3> colours_to_points(const std::vector<Colour>& cs, const char* what) {
-  internal::check_colours(cs, what);
-  std::vector<Point3> p;
-  for (const Colour& c : cs) p.push_back({c.r, c.g, c.b});
-  return p;
-}
-
 /// Facets of the polytope with vertices `v` cut out by `rows`: every row plane through >= 3
 /// vertices, its vertices counter-clockwise seen from outside (the 2-D hull of their projection).
 std::vector<std::vector<std::size_t>> facets(const std::vector<Point3>& v,
@@ -456,11 +449,6 @@ std::vector<std::array<std::size_t, 3>> hull_triangles_3(const std::vector<std::
   return out;
 }
 
-ConvexSet3 feasible_set_3d_lp(const std::vector<HalfSpace3>& canonical, const Point3& canonical_max,
-                              const std::vector<Point3>& image) {
-  return feasible_set_3d_lp({LpPart{&canonical, &canonical_max, &image}});
-}
-
 ConvexSet3 feasible_set_3d_lp(const std::vector<LpPart>& parts) {
   GMCC_CHECK(!parts.empty(), "feasible_set_3d_lp: at least one part");
   std::optional<Rows> rows;
@@ -483,18 +471,6 @@ ConvexSet3 feasible_set_3d_lp(const std::vector<LpPart>& parts) {
     case 1: return polygon_of(rows->rows, *f, rows->box_max);
     default: return polytope_of(rows->rows, f->inner);
   }
-}
-
-ConvexSet3 feasible_set_3d_reference(const std::vector<Colour>& canonical_colours,
-                                     const std::vector<Colour>& image_colours, bool include_black) {
-  std::vector<Point3> canonical = colours_to_points(canonical_colours, "canonical");
-  if (include_black) canonical.push_back({0, 0, 0});
-  canonical = sorted_unique(canonical);
-  const std::vector<Point3> image = extreme_points(sorted_unique(colours_to_points(image_colours, "image")));
-  Point3 X{0, 0, 0};
-  for (const Point3& c : canonical)
-    for (int k = 0; k < 3; ++k) coord(X, k) = std::max(coord(X, k), coord(c, k));
-  return feasible_set_3d_lp(hull_half_spaces(canonical), X, image);
 }
 
 }  // namespace internal

@@ -362,27 +362,38 @@ class Clipper {
     if (in == 0)
       return live_.size() == static_cast<std::size_t>(out) ? ClippedPolytope::Outcome::empty
                                                            : ClippedPolytope::Outcome::flat;
-    // Every edge crossing the plane strictly lies on exactly two faces; the new vertex is where
-    // their planes meet plane i (independent: the edge crosses plane i transversally).
-    struct Cut {
-      int u, w, faces[2], n, vertex;
-    };
+    const std::vector<Cut> cuts = crossing_edges(i);
+    cut_faces(i, cuts);
+    return ClippedPolytope::Outcome::polytope;
+  }
+
+  // An edge (u < w) crossing a plane strictly: it lies on exactly two faces (n counts those
+  // found), and `vertex` is where their planes meet the plane.
+  struct Cut {
+    int u, w, faces[2], n, vertex;
+  };
+  // The index in `cuts` of the edge {a, b}, or -1.
+  static int find(const std::vector<Cut>& cuts, int a, int b) {
+    if (a > b) std::swap(a, b);
+    for (std::size_t k = 0; k < cuts.size(); ++k)
+      if (cuts[k].u == a && cuts[k].w == b) return static_cast<int>(k);
+    return -1;
+  }
+
+  // The edges that cross plane i strictly (sign_ set for the live vertices), each with its new
+  // vertex: the meet of its two faces' planes and plane i, independent because the edge crosses
+  // plane i transversally.
+  std::vector<Cut> crossing_edges(int i) {
     std::vector<Cut> cuts;
-    auto find = [&cuts](int a, int b) -> Cut* {
-      if (a > b) std::swap(a, b);
-      for (Cut& c : cuts)
-        if (c.u == a && c.w == b) return &c;
-      return nullptr;
-    };
     for (const Face& f : faces_)
       for (std::size_t k = 0; k < f.cycle.size(); ++k) {
         const int a = f.cycle[k], b = f.cycle[(k + 1) % f.cycle.size()];
         if (sign_[a] * sign_[b] >= 0) continue;
-        Cut* c = find(a, b);
-        if (!c) cuts.push_back({std::min(a, b), std::max(a, b), {f.plane, -1}, 1, -1});
+        const int c = find(cuts, a, b);
+        if (c < 0) cuts.push_back({std::min(a, b), std::max(a, b), {f.plane, -1}, 1, -1});
         else {
-          GMCC_CHECK(c->n == 1, "clip_polytope: an edge lies on two faces");
-          c->faces[1] = f.plane, c->n = 2;
+          GMCC_CHECK(cuts[c].n == 1, "clip_polytope: an edge lies on two faces");
+          cuts[c].faces[1] = f.plane, cuts[c].n = 2;
         }
       }
     for (Cut& c : cuts) {
@@ -391,7 +402,13 @@ class Clipper {
       if (sign_.size() < vertices_.size()) sign_.resize(vertices_.size() + 64);
       sign_[c.vertex] = 0;
     }
-    // Faces with no vertex strictly outside are kept as they are; the others are cut.
+    return cuts;
+  }
+
+  // The faces after the cut by plane i (`cuts` its crossing edges): faces with no vertex strictly
+  // outside kept as they are, the others cut, and the cap, the new facet in plane i; then the
+  // live vertices.
+  void cut_faces(int i, const std::vector<Cut>& cuts) {
     kept_.clear();
     next_on_cap_.assign(vertices_.size(), -1);
     int cap_edges = 0, cap_start = -1;
@@ -405,7 +422,7 @@ class Clipper {
         for (std::size_t k = 0; k < f.cycle.size(); ++k) {
           const int a = f.cycle[k], b = f.cycle[(k + 1) % f.cycle.size()];
           if (sign_[a] <= 0) g.cycle.push_back(a);
-          if (sign_[a] * sign_[b] < 0) g.cycle.push_back(find(a, b)->vertex);
+          if (sign_[a] * sign_[b] < 0) g.cycle.push_back(cuts[find(cuts, a, b)].vertex);
         }
         if (g.cycle.size() < 3) continue;
       }
@@ -434,7 +451,6 @@ class Clipper {
       for (int v : f.cycle)
         if (!seen_[v]) seen_[v] = 1, live_.push_back(v);
     pack();
-    return ClippedPolytope::Outcome::polytope;
   }
 
   ConvexSet3 result() {

@@ -22,8 +22,8 @@ std::string location(const std::string& file, std::size_t line) {
 
 }  // namespace
 
-InputError::InputError(std::string file, std::size_t line, const std::string& problem)
-    : std::runtime_error(location(file, line) + ": " + problem), file_(std::move(file)),
+InputError::InputError(std::string source, std::size_t line, const std::string& problem)
+    : std::runtime_error(location(source, line) + ": " + problem), source_(std::move(source)),
       line_(line) {}
 
 ColourTable parse_colour_csv(const std::string& text, const std::string& file) {

@@ -1,7 +1,7 @@
 #pragma once
 // The comma-separated fields of one line of a text data file, each with the blanks around it
 // removed: the one splitter of the colour, chart and light-table readers. Internal to
-// gmcc::validation.
+// gmcc::input.
 
 #include <string_view>
 #include <vector>

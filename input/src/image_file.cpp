@@ -260,56 +260,68 @@ bool is_tiff(const std::string& bytes) {
          bytes.compare(0, 4, "II+\0", 4) == 0 || bytes.compare(0, 4, "MM\0+", 4) == 0;
 }
 
-RgbImage decode_tiff(const std::string& bytes, const std::string& file) {
-  TiffReader reader(bytes, file);
-  TiffHandle& h = reader.h;
+// What decode_tiff needs of a TIFF's header, checked: an RGB image of 8- or 16-bit unsigned
+// samples, interleaved, that the file's bytes can hold.
+struct TiffLayout {
   std::uint32_t width = 0, height = 0;
-  std::uint16_t spp = 1, bps = 1, photometric = 0, planar = PLANARCONFIG_CONTIG,
-                format = SAMPLEFORMAT_UINT;
-  TIFFGetField(h.tif, TIFFTAG_IMAGEWIDTH, &width);
-  TIFFGetField(h.tif, TIFFTAG_IMAGELENGTH, &height);
-  TIFFGetFieldDefaulted(h.tif, TIFFTAG_SAMPLESPERPIXEL, &spp);
-  TIFFGetFieldDefaulted(h.tif, TIFFTAG_BITSPERSAMPLE, &bps);
+  std::uint16_t spp = 1, bps = 1;  // samples per pixel (3, or 4 with alpha), bits per sample
+};
+
+TiffLayout tiff_layout(TiffHandle& h, std::size_t file_bytes, const std::string& file) {
+  TiffLayout t;
+  std::uint16_t photometric = 0, planar = PLANARCONFIG_CONTIG, format = SAMPLEFORMAT_UINT;
+  TIFFGetField(h.tif, TIFFTAG_IMAGEWIDTH, &t.width);
+  TIFFGetField(h.tif, TIFFTAG_IMAGELENGTH, &t.height);
+  TIFFGetFieldDefaulted(h.tif, TIFFTAG_SAMPLESPERPIXEL, &t.spp);
+  TIFFGetFieldDefaulted(h.tif, TIFFTAG_BITSPERSAMPLE, &t.bps);
   TIFFGetFieldDefaulted(h.tif, TIFFTAG_PLANARCONFIG, &planar);
   TIFFGetFieldDefaulted(h.tif, TIFFTAG_SAMPLEFORMAT, &format);
   if (!TIFFGetField(h.tif, TIFFTAG_PHOTOMETRIC, &photometric)) photometric = 0xffff;
   if (photometric != PHOTOMETRIC_RGB)
     tiff_fail(file, "photometric interpretation " + std::to_string(photometric) +
                         ": expected RGB (2), linear samples r, g, b");
-  if (spp != 3 && spp != 4)
+  if (t.spp != 3 && t.spp != 4)
     tiff_fail(file,
-              std::to_string(spp) + " samples per pixel: expected 3 (r, g, b) or 4 (with alpha)");
-  if (bps != 8 && bps != 16)
-    tiff_fail(file, std::to_string(bps) + " bits per sample: expected 8 or 16");
+              std::to_string(t.spp) + " samples per pixel: expected 3 (r, g, b) or 4 (with alpha)");
+  if (t.bps != 8 && t.bps != 16)
+    tiff_fail(file, std::to_string(t.bps) + " bits per sample: expected 8 or 16");
   if (format != SAMPLEFORMAT_UINT) tiff_fail(file, "samples are not unsigned integers");
   if (planar != PLANARCONFIG_CONTIG)
     tiff_fail(file, "separate colour planes: expected interleaved r, g, b");
-  if (width == 0 || height == 0) tiff_fail(file, "an empty image");
-  if (std::size_t(width) * height > max_image_pixels) tiff_fail(file, "more than 2^28 pixels");
+  if (t.width == 0 || t.height == 0) tiff_fail(file, "an empty image");
+  if (std::size_t(t.width) * t.height > max_image_pixels) tiff_fail(file, "more than 2^28 pixels");
   // What the file's bytes can hold decompressed: the samples must fit, and so must one tile
   // (padding included, since a tile is encoded whole), before anything is allocated.
-  const std::size_t capacity = tiff_capacity(h.tif, bytes.size());
-  const std::size_t bytes_per_sample = bps / 8;
-  if (std::size_t(width) * height * spp * bytes_per_sample > capacity)
+  const std::size_t capacity = tiff_capacity(h.tif, file_bytes);
+  const std::size_t bytes_per_sample = t.bps / 8;
+  if (std::size_t(t.width) * t.height * t.spp * bytes_per_sample > capacity)
     tiff_fail(file, "the header declares more pixels than the file's bytes can hold (truncated, or a "
                     "decompression bomb)");
   if (TIFFIsTiled(h.tif)) {
     std::uint32_t tw = 0, th = 0;
     TIFFGetField(h.tif, TIFFTAG_TILEWIDTH, &tw);
     TIFFGetField(h.tif, TIFFTAG_TILELENGTH, &th);
-    if (std::size_t(tw) * th * spp * bytes_per_sample > capacity)
+    if (std::size_t(tw) * th * t.spp * bytes_per_sample > capacity)
       tiff_fail(file, "a " + std::to_string(tw) + "x" + std::to_string(th) +
                           " tile larger than the file's bytes can hold (a decompression bomb)");
   }
+  return t;
+}
+
+RgbImage decode_tiff(const std::string& bytes, const std::string& file) {
+  TiffReader reader(bytes, file);
+  TiffHandle& h = reader.h;
+  const TiffLayout t = tiff_layout(h, bytes.size(), file);
+  const std::uint32_t width = t.width, height = t.height;
   RgbImage image;
   image.width = width;
   image.height = height;
-  image.bits = bps;
+  image.bits = t.bps;
   image.samples.resize(std::size_t(width) * height * 3);
   auto store = [&](const unsigned char* pixel, std::size_t x, std::size_t y) {
     for (int c = 0; c < 3; ++c) {
       std::uint16_t v;
-      if (bps == 8) {
+      if (t.bps == 8) {
         v = pixel[c];
       } else {
         std::memcpy(&v, pixel + 2 * c, 2);  // libtiff gives native byte order
@@ -317,7 +329,7 @@ RgbImage decode_tiff(const std::string& bytes, const std::string& file) {
       image.samples[(y * width + x) * 3 + static_cast<std::size_t>(c)] = v;
     }
   };
-  const std::size_t pixel_bytes = spp * bytes_per_sample;
+  const std::size_t pixel_bytes = std::size_t(t.spp) * (t.bps / 8);
   if (TIFFIsTiled(h.tif)) {
     std::uint32_t tw = 0, th = 0;
     TIFFGetField(h.tif, TIFFTAG_TILEWIDTH, &tw);

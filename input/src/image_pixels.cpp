@@ -6,6 +6,8 @@
 #include <gmcc/input/image_derivatives.h>
 #include <gmcc/input/colour_csv.h>
 
+#include "sort_keys.h"
+
 #include <algorithm>
 #include <cmath>
 #include <array>
@@ -436,115 +438,6 @@ ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
     out.colours = colour_hull_vertices(out.colours);
     out.counts.hull_vertices = out.colours.size();
   }
-  return out;
-}
-
-ImageColours image_colours(const FloatRgbImage& image, const FloatPixelRules& rules) {
-  const std::size_t w = image.width, h = image.height;
-  if (image.samples.size() != w * h * 3)
-    throw std::invalid_argument("the image's samples do not match its size");
-  if (!rules.keep.empty() && rules.keep.size() != w * h)
-    throw std::invalid_argument("the mask has " + std::to_string(rules.keep.size()) +
-                                " pixels, the image " + std::to_string(w * h));
-  const double black = rules.black_level;
-  if (!std::isfinite(black) || black < 0)
-    throw std::invalid_argument("the black level must be finite and >= 0");
-  if (rules.saturation && !(*rules.saturation >= 0))
-    throw std::invalid_argument("the saturation threshold must be >= 0");
-  static const char* names[] = {"r", "g", "b"};
-  for (const std::optional<Rational>* f : {&rules.dark_below_fraction, &rules.bright_above_fraction})
-    if (*f && (sgn(**f) < 0 || **f > 1))
-      throw std::invalid_argument("a dark or bright fraction must lie in [0, 1], not " + to_string(**f));
-  if (rules.dark_below && !(*rules.dark_below >= 0 && std::isfinite(*rules.dark_below)))
-    throw std::invalid_argument("the dark threshold must be finite and >= 0");
-  ImageColours out;
-  out.counts.pixels = w * h;
-  std::vector<std::array<double, 3>> kept;
-  // M for step 4: the largest channel after the black level over the pixels the mask keeps (a
-  // difference at most the sample itself; finite samples are checked again below).
-  Rational dark_threshold = rules.dark_below ? Rational(*rules.dark_below) : Rational(0);
-  std::optional<Rational> bright_threshold;
-  if (rules.dark_below_fraction || rules.bright_above_fraction) {
-    double top = 0;
-    for (std::size_t i = 0; i < w * h; ++i)
-      if (rules.keep.empty() || rules.keep[i])
-        for (int c = 0; c < 3; ++c) {
-          const double v = image.samples[3 * i + static_cast<std::size_t>(c)];
-          if (std::isfinite(v) && v > black) top = std::max(top, v);
-        }
-    const Rational M = top > black ? Rational(top) - Rational(black) : Rational(0);
-    if (rules.dark_below_fraction) dark_threshold = std::max(dark_threshold, Rational(*rules.dark_below_fraction * M));
-    if (rules.bright_above_fraction) bright_threshold = Rational(*rules.bright_above_fraction * M);
-  }
-  for (std::size_t i = 0; i < w * h; ++i) {
-    if (!rules.keep.empty() && !rules.keep[i]) {
-      ++out.counts.masked;
-      continue;
-    }
-    std::array<double, 3> v;
-    bool saturated = false;
-    for (int c = 0; c < 3; ++c) {
-      v[c] = image.samples[3 * i + static_cast<std::size_t>(c)];
-      if (!std::isfinite(v[c]) || v[c] < 0)
-        throw std::invalid_argument("pixel (row " + std::to_string(i / w) + ", column " +
-                                    std::to_string(i % w) + ") channel " + names[c] + ": " +
-                                    (std::isnan(v[c]) ? "NaN" : std::isinf(v[c]) ? "infinity" : "a negative value") +
-                                    " is not a linear sensor response (finite, >= 0)");
-      if (rules.saturation && v[c] >= *rules.saturation) saturated = true;
-    }
-    if (saturated) {
-      ++out.counts.saturated;
-      continue;
-    }
-    ++out.counts.kept;
-    for (int c = 0; c < 3; ++c) {
-      if (v[c] <= black) {
-        v[c] = 0;
-        continue;
-      }
-      // TwoSum (Knuth): s + e = v − black exactly; e = 0 iff the rounded difference is exact.
-      const double s = v[c] - black, bv = s - v[c];
-      const double e = (v[c] - (s - bv)) + (-black - bv);
-      if (e != 0)
-        throw std::invalid_argument("pixel (row " + std::to_string(i / w) + ", column " +
-                                    std::to_string(i % w) + ") channel " + names[c] +
-                                    ": the sample minus the black level is not exact in double; "
-                                    "subtract the black level yourself or give integer samples");
-      v[c] = s;
-    }
-    bool is_dark = false, is_bright = false;
-    for (double x : v) {
-      is_dark = is_dark || (sgn(dark_threshold) > 0 && Rational(x) < dark_threshold);
-      is_bright = is_bright || (bright_threshold && Rational(x) > *bright_threshold);
-    }
-    if (is_dark || is_bright) {
-      --out.counts.kept;
-      ++(is_dark ? out.counts.dark : out.counts.bright);
-      continue;
-    }
-    kept.push_back(v);
-  }
-  std::sort(kept.begin(), kept.end());
-  kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
-  out.counts.colours = kept.size();
-  if (rules.colour_set != ColourSet::hull) {
-    out.set = rules.colour_set;
-    for (const auto& v : kept) out.colours.push_back({Rational(v[0]), Rational(v[1]), Rational(v[2])});
-    if (rules.colour_set == ColourSet::hull_3d && !out.colours.empty()) {
-      out.colours = colour_hull_vertices(out.colours);
-      out.counts.hull_vertices = out.colours.size();
-    } else if (out.colours.size() > max_colours) {
-      throw std::length_error(std::to_string(out.colours.size()) + " distinct colours, more than the " +
-                              std::to_string(max_colours) +
-                              " a colour set may hold: use the hull colour set or binning");
-    }
-    return out;
-  }
-  out.set = ColourSet::hull;
-  const ChromaticityHull hull = chromaticity_hull(kept);
-  out.counts.no_chromaticity = hull.dropped;  // distinct colours with b = 0, as for integer images
-  for (const Point2& p : hull.hull.vertices) out.colours.push_back({p.x, p.y, Rational(1)});
-  out.counts.hull_vertices = out.colours.size();
   return out;
 }
 

@@ -15,11 +15,11 @@ Files scanned: tracked .h, .cpp and .py files outside tests/, bench/ and fuzz/ (
 command line, Python and the scripts' modules). Exit status 0 when every citation resolves, 1 with
 one line per problem (FILE:LINE: problem).
 """
-import argparse
 import os
 import re
-import subprocess
 import sys
+
+from doc_checks import arguments, tracked_texts
 
 NAME = r"[A-Z][A-Za-z'’\-]+"
 CITATION = re.compile(
@@ -63,11 +63,8 @@ def problems(files, bib_text):
     return out
 
 
-def tracked(root):
-    listed = subprocess.run(["git", "-C", root, "ls-files"], capture_output=True, text=True, check=True)
-    for path in listed.stdout.split("\n"):
-        if path.endswith((".h", ".cpp", ".py")) and not path.startswith(("tests/", "bench/", "fuzz/")):
-            yield path
+def scanned(path):
+    return path.endswith((".h", ".cpp", ".py")) and not path.startswith(("tests/", "bench/", "fuzz/"))
 
 
 def self_test():
@@ -88,18 +85,12 @@ def self_test():
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--root", default=os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
-    ap.add_argument("--self-test", action="store_true")
-    a = ap.parse_args()
+    a = arguments()
     if a.self_test:
         return self_test()
     with open(os.path.join(a.root, "docs", "references.bib"), encoding="utf-8") as f:
         bib_text = f.read()
-    files = {}
-    for path in tracked(a.root):
-        with open(os.path.join(a.root, path), encoding="utf-8", errors="replace") as f:
-            files[path] = f.read()
+    files = tracked_texts(a.root, scanned)
     found = problems(files, bib_text)
     for p in found:
         print(p)

@@ -5,7 +5,7 @@
 // range, vertical and horizontal lines, one point, none.
 #include "../test_support.h"
 
-#include "internal/convex_hull_cgal.h"
+#include "support/cgal_references.h"
 
 #include <boost/test/unit_test.hpp>
 
@@ -21,7 +21,7 @@ int compared = 0;
 void same_hull(std::vector<Point2> pts, Rng& rng) {
   std::shuffle(pts.begin(), pts.end(), rng);
   const ConvexSet2 h = convex_hull(pts);
-  BOOST_TEST(h == internal::convex_hull_cgal(pts), pts.size() << " points");
+  BOOST_TEST(h == test::convex_hull_cgal(pts), pts.size() << " points");
   ++compared;
 }
 

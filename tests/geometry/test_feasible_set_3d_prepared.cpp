@@ -1,5 +1,5 @@
 // Forsyth's CRULE feasible set in 3-D from a prepared canonical gamut (the filtered clip) against
-// the LP route it replaced (internal::feasible_set_3d_reference, the oracle): the same canonical
+// the LP route it replaced (test::feasible_set_3d_reference in tests/support, the oracle): the same canonical
 // ConvexSet3 on hundreds of seeded scenes — Munsell-like random gamuts with and without black,
 // planar, collinear and one-colour gamuts, images with zero channels, empty F3, F3 a point, a
 // segment or a polygon, integer grids where many planes meet (the exact stage decides), and
@@ -13,6 +13,7 @@
 
 #include "internal/crule_exact.h"
 #include "internal/polytope_clip.h"
+#include "support/cgal_references.h"
 
 #include <boost/test/unit_test.hpp>
 
@@ -34,7 +35,7 @@ void agree(const std::vector<Colour>& canonical, const std::vector<Colour>& imag
   const CanonicalBlack b = black ? CanonicalBlack::include : CanonicalBlack::exclude;
   ConvexSet3 old;
   try {
-    old = internal::feasible_set_3d_reference(canonical, image, black);
+    old = test::feasible_set_3d_reference(canonical, image, b);
   } catch (const UnboundedFeasibleSet&) {
     ++t.unbounded;
     BOOST_CHECK_THROW(feasible_set_3d(CanonicalConstraints3(canonical, b), image), UnboundedFeasibleSet);
@@ -196,7 +197,7 @@ BOOST_AUTO_TEST_CASE(one_prepared_gamut_shared_by_threads) {
   one.join(), two.join();
   for (std::size_t i = 0; i < images.size(); ++i) {
     BOOST_TEST((a[i] == b[i]));
-    BOOST_TEST((a[i] == internal::feasible_set_3d_reference(canonical, images[i], true)));
+    BOOST_TEST((a[i] == test::feasible_set_3d_reference(canonical, images[i], CanonicalBlack::include)));
   }
 }
 

@@ -5,6 +5,8 @@
 #include <gmcc/input/image_file.h>
 #include <gmcc/input/image_pixels.h>
 #include <gmcc/validation/mondrian.h>
+
+#include "sort_keys.h"
 #include <png.h>
 #include <tiffio.h>
 

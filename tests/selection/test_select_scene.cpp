@@ -258,8 +258,8 @@ BOOST_AUTO_TEST_CASE(illuminant_worst_case_filters_on_munsell_scenes) {
       if (!*sel || !(*sel)->estimate.valid) continue;
       const MapEstimate& e = (*sel)->estimate;
       const Point2 m = e.exact ? *e.exact : Point2{rational_from_double(e.map[0]), rational_from_double(e.map[1])};
-      const IlluminantWorstCase fast = internal::worst_case_illuminant(r.feasible, m, c, true);
-      const IlluminantWorstCase slow = internal::worst_case_illuminant(r.feasible, m, c, false);
+      const IlluminantWorstCase fast = internal::worst_case_illuminant(r.feasible, m, c, internal::IlluminantRoute::certified);
+      const IlluminantWorstCase slow = internal::worst_case_illuminant(r.feasible, m, c, internal::IlluminantRoute::exact);
       BOOST_TEST(fast.angle_deg == slow.angle_deg);
       BOOST_TEST(fast.location == slow.location);
       BOOST_TEST(fast.at_vertex == slow.at_vertex);

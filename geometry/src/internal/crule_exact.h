@@ -3,7 +3,8 @@
 // 3-D CGAL translation unit), behind plain interfaces: the canonical gamut's half-spaces, an
 // exact 3-D hull's vertices, and the LP route for F3 (docs/math.md §1b "The exact LP"), which
 // the prepared route (feasible_set_3d_prepared.cpp) keeps for the degenerate kinds and which the
-// tests use as its oracle. Internal to gmcc::geometry.
+// tests' oracle (tests/support/cgal_references.h, feasible_set_3d_reference) is built on.
+// Internal to gmcc::geometry.
 
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/convex_set_3.h>
@@ -48,24 +49,17 @@ std::vector<std::size_t> extreme_point_indices_3(const std::vector<std::array<do
 std::vector<std::array<std::size_t, 3>> hull_triangles_3(const std::vector<std::array<double, 3>>& points,
                                                         const std::vector<std::size_t>& indices);
 
-// F3 by the exact LP route: rows (a ⊙ p)·d <= b for every canonical half-space and image point p
-// (any superset of the image hull's vertices), the box 0 <= d_k <= X_k/P_k, the max-slack LP for
-// the equalities, then CGAL::halfspace_intersection_3 or the lower-dimensional constructions.
-// \pre canonical_max: X, the largest canonical channels; image non-empty with every P_k > 0.
-ConvexSet3 feasible_set_3d_lp(const std::vector<HalfSpace3>& canonical, const Point3& canonical_max,
-                              const std::vector<Point3>& image);
-// One gamut type's rows for the joint LP route: its canonical half-spaces, X and image points.
+// One gamut type's rows for the LP route: its canonical half-spaces, X (the largest canonical
+// channels) and image points (any superset of the image hull's vertices).
 struct LpPart {
   const std::vector<HalfSpace3>* canonical;
   const Point3* canonical_max;
   const std::vector<Point3>* image;
 };
-// The same over every part's rows at once (the box: each part's, so their intersection).
+// F3 by the exact LP route over every part's rows at once: rows (a ⊙ p)·d <= b for every
+// canonical half-space and image point p, the box 0 <= d_k <= X_k/P_k (each part's, so their
+// intersection), the max-slack LP for the equalities, then CGAL::halfspace_intersection_3 or the
+// lower-dimensional constructions. \pre parts non-empty; each image non-empty with every P_k > 0.
 ConvexSet3 feasible_set_3d_lp(const std::vector<LpPart>& parts);
-
-// The whole route as it was before the prepared form (canonical hull per call, image hull by
-// CGAL, the LP): the oracle of the tests. Same contract as feasible_set_3d.
-ConvexSet3 feasible_set_3d_reference(const std::vector<Colour>& canonical,
-                                     const std::vector<Colour>& image, bool include_black);
 
 }  // namespace gmcc::internal

@@ -32,11 +32,4 @@ struct IlluminantRouteWork {
 IlluminantWorstCase worst_case_illuminant(const ConvexSet2& F, const Point2& m, const Colour& canonical_illuminant,
                                           IlluminantRoute route, IlluminantRouteWork* work = nullptr);
 
-/// The library's route (filtered) or the exact one (not), as this header offered before the routes
-/// had names.
-inline IlluminantWorstCase worst_case_illuminant(const ConvexSet2& F, const Point2& m,
-                                                 const Colour& canonical_illuminant, bool filtered) {
-  return worst_case_illuminant(F, m, canonical_illuminant, filtered ? IlluminantRoute::certified : IlluminantRoute::exact);
-}
-
 }  // namespace gmcc::internal

@@ -23,7 +23,9 @@ inline constexpr std::size_t max_colours = 1000000;
 /// The colours of a file, with the line each came from.
 struct ColourTable {
   std::string file;  ///< the file's name as given, for messages
-  std::vector<Colour> colours;  ///< the colours in file order, exact
+  /// The rows in file order, exact: pixel colours, or chromaticity lifts when
+  /// chromaticity_lifts is set (then not colours).
+  std::vector<Colour> colours;
   std::vector<std::size_t> lines;  ///< 1-based source line of each colour
   /// True when the header is `r/b,g/b,1`: the colours are chromaticity lifts (x, y, 1), as
   /// `gmcc canonical` writes a 2-D gamut, usable by the 2-D perspective route only.

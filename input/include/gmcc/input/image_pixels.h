@@ -15,14 +15,15 @@
 ///      rescaled to a maximum of 255, a channel below 5 or above 245 dropped;
 ///   5. binning (optional): the kept pixels of each b×b block are averaged, exactly, into one
 ///      colour;
-///   6. the colours passed on (ColourSet): every distinct colour (their convex hull is what a
-///      gamut method uses, so repeated colours add nothing); or only the vertices of their exact
-///      3-D hull (colour_hull_3.h: all the 3-D feasible set depends on); or, for the 2-D
-///      perspective route, the chromaticity lifts (x, y, 1) of the vertices of the exact
-///      chromaticity hull (chromaticity_hull.h), which is all the 2-D feasible set depends on: a
-///      10-megapixel image then costs the geometry a few dozen colours. Lifts are not pixel
-///      colours: ImageColours::set says which the colours are, and every 3-D entry point refuses
-///      lifts (docs/conventions.md §8).
+///   6. the colours passed on (ColourSet): every distinct colour, in increasing (r, g, b) order
+///      (their convex hull is what a gamut method uses, so repeated colours add nothing); or only
+///      the vertices of their exact 3-D hull, in the same order (colour_hull_3.h: all the 3-D
+///      feasible set depends on); or, for the 2-D perspective route and without binning, the
+///      chromaticity lifts (x, y, 1) of the vertices of the exact chromaticity hull
+///      (chromaticity_hull.h), counter-clockwise from the lexicographically smallest, which is
+///      all the 2-D feasible set depends on: a 10-megapixel image then costs the geometry a few
+///      dozen colours. Lifts are not pixel colours: ImageColours::set says which the colours
+///      are, and every 3-D entry point refuses lifts (docs/conventions.md §8).
 
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/point.h>
@@ -77,7 +78,8 @@ struct PixelRules {
   /// 1–4). Not with binning.
   double prefilter_sigma = 0;
   std::uint32_t bin = 1;  ///< block size b for binning; 1: every kept pixel is a colour
-  /// With bin > 1 the binned colours are always returned as ColourSet::distinct.
+  /// Step 6. With bin > 1, `hull` is not applied: the block means come back as
+  /// ColourSet::distinct; `hull_3d` still keeps only their 3-D hull's vertices.
   ColourSet colour_set = ColourSet::distinct;
 };
 
@@ -96,7 +98,9 @@ struct PixelCounts {
 
 /// What image_colours returns: the colours for the geometry and how each pixel was accounted for.
 struct ImageColours {
-  std::vector<Colour> colours;  ///< in the order ColourSet describes
+  /// Pixel colours, or for ColourSet::hull chromaticity lifts (x, y, 1), which are not colours;
+  /// in the order ColourSet describes.
+  std::vector<Colour> colours;
   ColourSet set = ColourSet::distinct;  ///< what `colours` are: pixel colours or chromaticity lifts
   PixelCounts counts;  ///< what happened to the pixels
 };
@@ -172,11 +176,5 @@ inline constexpr std::uint64_t max_polygon_work = std::uint64_t(1) << 25;
 /// boundary). Exposed for tests and reports.
 std::vector<bool> polygon_cover(const std::vector<Point2>& polygon, std::size_t width,
                                 std::size_t height);
-
-namespace internal {
-/// Sorts keys below 2^48 ascending in place (American flag sort; McIlroy, Bostic & McIlroy 1993):
-/// how image_colours sorts more than 2^24 colour keys without a second buffer. For tests.
-void sort_keys_in_place(std::vector<std::uint64_t>& keys);
-}  // namespace internal
 
 }  // namespace gmcc

@@ -1,0 +1,14 @@
+#pragma once
+// The in-place key sort of image_colours, reachable by its test (tests/input/test_image_file.cpp,
+// against std::sort). Internal to gmcc::input.
+
+#include <cstdint>
+#include <vector>
+
+namespace gmcc::internal {
+
+// Sorts keys below 2^48 ascending in place (American flag sort; McIlroy, Bostic & McIlroy 1993):
+// how image_colours sorts more than 2^24 colour keys without a second buffer.
+void sort_keys_in_place(std::vector<std::uint64_t>& keys);
+
+}  // namespace gmcc::internal
