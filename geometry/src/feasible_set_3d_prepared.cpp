@@ -246,6 +246,10 @@ ConvexSet3 feasible_set_3d(const CanonicalConstraints3& canonical, const std::ve
 }
 
 ConvexSet3 feasible_set_3d(const std::vector<GamutConstraint3>& constraints) {
+  return feasible_set_3d_lazy(constraints).exact();
+}
+
+LazyConvexSet3 feasible_set_3d_lazy(const std::vector<GamutConstraint3>& constraints) {
   if (constraints.empty()) throw std::invalid_argument("feasible_set_3d: no gamut constraint");
   std::vector<std::vector<Point3>> points;
   std::optional<Point3> box;  // the smallest X_k/P_k over the types
@@ -272,14 +276,14 @@ ConvexSet3 feasible_set_3d(const std::vector<GamutConstraint3>& constraints) {
       groups.push_back({&internal::FeasibleSet3Access::planes(*constraints[i].canonical).integer, &points[i]});
     internal::ClippedPolytope r = internal::clip_polytope(*box, groups);
     if (r.outcome == internal::ClippedPolytope::Outcome::polytope) return std::move(r.set);
-    if (r.outcome == internal::ClippedPolytope::Outcome::empty) return {};
+    if (r.outcome == internal::ClippedPolytope::Outcome::empty) return LazyConvexSet3();
   }
   std::vector<internal::LpPart> parts;
   for (std::size_t i = 0; i < constraints.size(); ++i) {
     const internal::CanonicalPlanes3& c = internal::FeasibleSet3Access::planes(*constraints[i].canonical);
     parts.push_back({&c.half_spaces, &c.max, &points[i]});
   }
-  return internal::feasible_set_3d_lp(parts);
+  return LazyConvexSet3(internal::feasible_set_3d_lp(parts));
 }
 
 std::vector<std::size_t> colour_hull_vertex_indices(const std::vector<std::array<double, 3>>& colours) {

@@ -437,17 +437,14 @@ class Clipper {
     return ClippedPolytope::Outcome::polytope;
   }
 
-  ConvexSet3 result() {
+  LazyConvexSet3 result() {
     std::vector<int> index(vertices_.size(), -1);
-    std::vector<Point3> points;
+    std::vector<std::array<mpz_class, 4>> points;
     for (int v : live_) {
       Vertex& x = vertices_[v];
       if (!x.exact) x.exact = exact_homogeneous(x.planes);
-      const auto& h = *x.exact;
-      Point3 p{Rational(h[0], h[3]), Rational(h[1], h[3]), Rational(h[2], h[3])};
-      p.x.canonicalize(), p.y.canonicalize(), p.z.canonicalize();
       index[v] = static_cast<int>(points.size());
-      points.push_back(std::move(p));
+      points.push_back(std::move(*x.exact));
     }
     std::vector<std::vector<std::size_t>> faces;
     for (const Face& f : faces_) {
@@ -455,7 +452,7 @@ class Clipper {
       for (int v : f.cycle) c.push_back(static_cast<std::size_t>(index[v]));
       faces.push_back(std::move(c));
     }
-    return canonical_convex_set_3(ConvexKind3::polytope, std::move(points), std::move(faces));
+    return LazyConvexSet3::from_homogeneous(ConvexKind3::polytope, std::move(points), std::move(faces));
   }
 
   struct Face {
