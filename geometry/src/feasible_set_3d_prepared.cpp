@@ -189,10 +189,14 @@ std::vector<Point3> hull_candidates(const std::vector<Colour>& image) {
 constexpr std::size_t hull_from = 32;
 
 // The image points that matter: the vertices of their hull (all of them when it is flat), or
-// every distinct colour of a small image.
-std::vector<Point3> image_points(const std::vector<Colour>& image) {
+// every distinct colour of a small image or of one whose colours are its hull's vertices already.
+std::vector<Point3> image_points(const std::vector<Colour>& image, bool hull_vertices) {
   check_colours(image, "image");
   std::vector<Point3> p;
+  if (hull_vertices) {
+    for (const Colour& c : image) p.push_back({c.r, c.g, c.b});
+    return sorted_unique(std::move(p));
+  }
   if (image.size() >= prefilter_from) p = hull_candidates(image);
   else
     for (const Colour& c : image) p.push_back({c.r, c.g, c.b});
@@ -256,7 +260,7 @@ LazyConvexSet3 feasible_set_3d_lazy(const std::vector<GamutConstraint3>& constra
   bool all_full = true;       // every G_c3 3-dimensional: the filtered clip applies
   for (const GamutConstraint3& g : constraints) {
     const internal::CanonicalPlanes3& c = internal::FeasibleSet3Access::planes(*g.canonical);
-    points.push_back(internal::image_points(*g.image));
+    points.push_back(internal::image_points(*g.image, g.hull_vertices));
     Point3 P{0, 0, 0};
     for (const Point3& p : points.back()) P.x = std::max(P.x, p.x), P.y = std::max(P.y, p.y), P.z = std::max(P.z, p.z);
     for (int k = 0; k < 3; ++k)

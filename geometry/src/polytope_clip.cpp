@@ -1,6 +1,8 @@
 // A box clipped by integer half-spaces with filtered exact predicates (docs/derivations.md §4.6).
 #include "internal/polytope_clip.h"
 
+#include "internal/clip_filter.h"
+
 #include <gmcc/geometry/integers_over_lcm.h>
 #include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/numerics/internal_check.h>
@@ -74,13 +76,10 @@ ScaledPoint scaled_point(const Point3& p) {
   return s;
 }
 
-struct Vertex {
+// The filter's doubles (VertexDoubles: homogeneous coordinates of the filter planes' solution,
+// W > 0, each within err[k] of the exact value, docs/derivations.md §4.6), and:
+struct Vertex : VertexDoubles {
   std::array<int, 3> planes;  // three independent planes through it
-  // Homogeneous coordinates (X, Y, Z, W) of the filter planes' solution, W > 0, each within
-  // err[k] of the exact value (docs/derivations.md §4.6); valid when `filtered`.
-  double h[4];
-  double err[4];
-  bool filtered = false;
   // Exact homogeneous coordinates of the integer planes' solution (W of either sign), on demand.
   std::optional<std::array<mpz_class, 4>> exact;
 };
@@ -155,63 +154,23 @@ class Clipper {
     }
   }
 
-  // The live vertices' doubles, packed for the all-inside pass: h[0..3], then α and β with
-  // E + 16u(T + E) <= max_k |a_k|·α + |b|·β for any plane (a, b) (side() has T and E).
+  // The live vertices' filter (clip_filter.h), after every cut.
   void pack() {
-    packed_.clear();
-    all_filtered_ = true;
-    for (int v : live_) {
-      const Vertex& x = vertices_[static_cast<std::size_t>(v)];
-      all_filtered_ = all_filtered_ && x.filtered;
-      for (int k = 0; k < 4; ++k) packed_.push_back(x.h[k]);
-      const double a = std::fabs(x.h[0]) + std::fabs(x.h[1]) + std::fabs(x.h[2]), e = x.err[0] + x.err[1] + x.err[2];
-      packed_.push_back(e + 16 * u * (a + e));
-      packed_.push_back(x.err[3] + 16 * u * (std::fabs(x.h[3]) + x.err[3]));
-    }
-    // An upper bound of every coordinate over the polytope (its vertices'; all are >= 0, the box
-    // rows): (h_k + err_k)/(h_3 - err_3) bounds x_k = X/W from above when X~ + err_k >= 0 and
-    // W~ > err_3 (both settled when the vertex was made); 1 + 8u covers the two roundings.
-    top_ = {0, 0, 0};
-    box_ok_ = all_filtered_;
-    for (std::size_t k = 0; k < packed_.size() && box_ok_; k += 6) {
-      const Vertex& x = vertices_[static_cast<std::size_t>(live_[k / 6])];
-      const double w = x.h[3] - x.err[3];
-      if (!(w > 0)) {
-        box_ok_ = false;
-        break;
-      }
-      for (int c = 0; c < 3; ++c) top_[c] = std::max(top_[c], std::max(0.0, (x.h[c] + x.err[c]) / w * (1 + 8 * u)));
-    }
+    live_doubles_.clear();
+    for (int v : live_) live_doubles_.push_back(&vertices_[static_cast<std::size_t>(v)]);
+    filter_.rebuild(live_doubles_);
   }
 
-  // True when plane i holds on the box [0, top_] ⊇ the polytope: Σ max(a_k, 0)·top_k <= b, with
-  // the filter copy's coefficients within 6u of the exact ones (scaled) and the sum's roundings
-  // covered by 1 + 16u on the left and 1 - 16u on the right.
+  // True when plane i holds on a box containing the polytope.
   bool box_inside(int i) const {
     const Filter& f = filters_[static_cast<std::size_t>(i)];
-    if (!f.usable || !box_ok_) return false;
-    const double* a = f.c;
-    const double lhs = (std::max(a[0], 0.0) * top_[0] + std::max(a[1], 0.0) * top_[1] + std::max(a[2], 0.0) * top_[2]) *
-                       (1 + 16 * u);
-    return lhs <= a[3] * (1 - 16 * u);
+    return f.usable && filter_.box_inside(f.c);
   }
 
-  // True when the filter shows no live vertex strictly outside plane i (each strictly inside, or
-  // exactly on it with a zero bound): s < -bound with the
-  // bound of side() enlarged as in pack() (and 1 + 64u for its evaluation, 1 + 16u more for α, β).
+  // True when the filter shows no live vertex strictly outside plane i.
   bool none_outside(int i) const {
     const Filter& f = filters_[static_cast<std::size_t>(i)];
-    if (!f.usable || !all_filtered_) return false;
-    const double* a = f.c;
-    const double m = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])}) * (1 + 128 * u);
-    const double b = std::fabs(a[3]) * (1 + 128 * u);
-    for (std::size_t k = 0; k < packed_.size(); k += 6) {
-      const double* h = &packed_[k];
-      const double v = a[0] * h[0] + a[1] * h[1] + a[2] * h[2] - a[3] * h[3], bound = m * h[4] + b * h[5];
-      // A zero bound: every term exactly zero (see filtered_sign), the vertex exactly on the plane.
-      if (!(v < -bound || (bound == 0 && v == 0))) return false;
-    }
-    return true;
+    return f.usable && filter_.none_outside(f.c);
   }
 
   ClippedPolytope run() {
@@ -364,10 +323,8 @@ class Clipper {
                                                            : ClippedPolytope::Outcome::flat;
     // Every edge crossing the plane strictly lies on exactly two faces; the new vertex is where
     // their planes meet plane i (independent: the edge crosses plane i transversally).
-    struct Cut {
-      int u, w, faces[2], n, vertex;
-    };
-    std::vector<Cut> cuts;
+    std::vector<Cut>& cuts = cuts_;
+    cuts.clear();
     auto find = [&cuts](int a, int b) -> Cut* {
       if (a > b) std::swap(a, b);
       for (Cut& c : cuts)
@@ -478,13 +435,17 @@ class Clipper {
   std::vector<Vertex> vertices_;
   std::vector<Face> faces_;
   std::vector<int> live_;
+  // An edge crossing the plane being clipped: its ends u < w, the two faces it lies on, how many
+  // were found, and the new vertex on it.
+  struct Cut {
+    int u, w, faces[2], n, vertex;
+  };
+  std::vector<Cut> cuts_;        // scratch for clip()
   std::vector<Face> kept_;       // scratch for clip()
   std::vector<int> next_on_cap_;  // scratch for clip()
   std::vector<char> seen_;        // scratch for clip()
-  std::vector<double> packed_;  // per live vertex: h[0..3], err[0..3]
-  bool all_filtered_ = true;
-  std::array<double, 3> top_{};  // coordinates' upper bounds over the polytope (pack())
-  bool box_ok_ = false;
+  LiveVertexFilter filter_;                         // the live vertices' (pack())
+  std::vector<const VertexDoubles*> live_doubles_;  // scratch for pack()
   std::vector<std::size_t> order_;  // the rows, in clipping order
   std::vector<int> sign_;
 };

@@ -51,7 +51,7 @@ ImageEstimate3 estimate_3d(const CanonicalConstraints3& canonical, const ImageCo
         "the image's colours are chromaticity lifts (x, y, 1) of the 2-D hull colour set, not "
         "pixel colours: 3-D gamut mapping needs ColourSet distinct or hull_3d");
   if (image.colours.empty()) throw std::invalid_argument("the image has no colour");
-  return estimate_3d(std::vector<GamutConstraint3>{{&canonical, &image.colours}}, o);
+  return estimate_3d(std::vector<GamutConstraint3>{{&canonical, &image.colours, image.set == ColourSet::hull_3d}}, o);
 }
 
 ImageEstimate3 estimate_3d(const std::vector<GamutConstraint3>& constraints, const Estimate3Options& o) {

@@ -92,9 +92,10 @@ CanonicalBlack black_from(const std::string& black) {
 // The pixel colours of `x`: an ImageColours of pixel colours, an H×W×3 image through the pixel
 // rules (colour set hull-3d unless asked otherwise), or colours (n×3). Lifts are refused.
 std::vector<Colour> pixel_colours_of(py::handle x, PixelArgs args, const char* what,
-                                     std::optional<PixelCounts>* counts = nullptr) {
+                                     std::optional<PixelCounts>* counts = nullptr, ColourSet* set = nullptr) {
   if (py::isinstance<PyImageColours>(x)) {
     if (counts) *counts = x.cast<const PyImageColours&>().counts;
+    if (set) *set = x.cast<const PyImageColours&>().set;
     return colours_or_pixel_colours(x, what);
   }
   if (is_image(x)) {
@@ -104,6 +105,7 @@ std::vector<Colour> pixel_colours_of(py::handle x, PixelArgs args, const char* w
     PyImageColours c = image_colours_of(x, args);
     if (c.colours.empty()) throw py::value_error(std::string(what) + ": no usable pixel");
     if (counts) *counts = c.counts;
+    if (set) *set = c.set;
     return std::move(c.colours);
   }
   if (!args.plain())
@@ -284,9 +286,10 @@ void bind_functions(py::module_& m) {
          py::object dark, py::object dark_fraction, py::object bright_fraction, const std::string& pixel_rule,
          const std::string& colour_set) {
         PyEstimate3 out;
+        ColourSet set = ColourSet::distinct;  // hull_3d: the colours are their hull's vertices
         const std::vector<Colour> colours = pixel_colours_of(
             image, pixel_args(mask, black_level, saturation, dark, dark_fraction, bright_fraction, pixel_rule, colour_set),
-            "image", &out.pixels);
+            "image", &out.pixels, &set);
         out.colours = colours.size();
         Estimate3Options o;
         o.canonical_light = positive_light(canonical_illuminant, "canonical_illuminant");
@@ -308,7 +311,7 @@ void bind_functions(py::module_& m) {
         if (!truth.is_none()) t = positive_light(truth, "truth");
         ImageColours ic;
         ic.colours = colours;
-        ic.set = ColourSet::distinct;
+        ic.set = set == ColourSet::hull_3d ? ColourSet::hull_3d : ColourSet::distinct;
         ImageEstimate3 r;
         try {
           r = released([&] { return estimate_3d(*canonical.constraints, ic, o); });

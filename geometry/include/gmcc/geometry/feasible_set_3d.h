@@ -76,6 +76,9 @@ ConvexSet3 feasible_set_3d(const CanonicalConstraints3& canonical, const std::ve
 struct GamutConstraint3 {
   const CanonicalConstraints3* canonical;  ///< the type's prepared canonical gamut
   const std::vector<Colour>* image;        ///< the image's colours of that type
+  /// True when `image` holds its hull's vertices already (ColourSet::hull_3d): the hull step is
+  /// skipped. Only a saving: F3 is the same set from any superset of the hull's vertices.
+  bool hull_vertices = false;
 };
 
 /// The maps d that take every type's image colours into its own canonical gamut at once: the
