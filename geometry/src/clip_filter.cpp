@@ -15,32 +15,34 @@ bool box_range(double x) { return x == 0 || (x >= box_min && x <= box_max); }
 
 }  // namespace
 
+// x_k = X/W <= (h_k + err_k)/(h_3 − err_3) when W~ > err_3 (settled when the vertex was made)
+// and >= (h_k − err_k)/(h_3 + err_3) when that is positive, else >= 0 (every vertex satisfies the
+// box rows x_k >= 0); 1 ± 8u covers the roundings.
+void VertexDoubles::settle() {
+  const double a = std::fabs(h[0]) + std::fabs(h[1]) + std::fabs(h[2]), e = err[0] + err[1] + err[2];
+  alpha = e + 16 * u * (a + e);
+  beta = err[3] + 16 * u * (std::fabs(h[3]) + err[3]);
+  const double w_lo = h[3] - err[3], w_hi = h[3] + err[3];
+  bounded = filtered && w_lo > 0;
+  if (!bounded) return;
+  for (std::size_t c = 0; c < 3; ++c) {
+    hi[c] = std::max(0.0, (h[c] + err[c]) / w_lo * (1 + 8 * u));
+    lo[c] = std::max(0.0, (h[c] - err[c]) / w_hi * (1 - 8 * u));
+  }
+}
+
 void LiveVertexFilter::rebuild(const std::vector<const VertexDoubles*>& live) {
   const std::size_t n = live.size();
-  all_filtered_ = true;
-  for (const VertexDoubles* x : live) all_filtered_ = all_filtered_ && x->filtered;
-  // Each vertex's certified bounds: x_k = X/W <= (h_k + err_k)/(h_3 − err_3) when W~ > err_3
-  // (settled when the vertex was made) and >= (h_k − err_k)/(h_3 + err_3) when that is positive,
-  // else >= 0 (every vertex satisfies the box rows x_k >= 0); 1 ± 8u covers the roundings.
-  bounds_.resize(n);
-  box_ok_ = all_filtered_;
+  all_filtered_ = box_ok_ = true;
   top_ = {0, 0, 0};
   double centre[3] = {0, 0, 0};
-  for (std::size_t i = 0; i < n && box_ok_; ++i) {
-    const VertexDoubles& x = *live[i];
-    const double w_lo = x.h[3] - x.err[3], w_hi = x.h[3] + x.err[3];
-    if (!(w_lo > 0)) {
-      box_ok_ = false;
-      break;
-    }
-    for (std::size_t c = 0; c < 3; ++c) {
-      const double hi = std::max(0.0, (x.h[c] + x.err[c]) / w_lo * (1 + 8 * u));
-      const double lo = std::max(0.0, (x.h[c] - x.err[c]) / w_hi * (1 - 8 * u));
-      bounds_[i][c] = lo, bounds_[i][c + 3] = hi;
-      top_[c] = std::max(top_[c], hi);
-      centre[c] += lo + hi;
-    }
+  for (const VertexDoubles* x : live) {
+    all_filtered_ = all_filtered_ && x->filtered;
+    box_ok_ = box_ok_ && x->bounded;
+    if (!box_ok_) continue;
+    for (std::size_t c = 0; c < 3; ++c) top_[c] = std::max(top_[c], x->hi[c]), centre[c] += x->lo[c] + x->hi[c];
   }
+  box_ok_ = box_ok_ && all_filtered_;
   // The groups: the octant of each vertex's box centre about the mean of those centres (one group
   // when the bounds are not known), counted, then placed.
   std::array<std::size_t, 9> start{};
@@ -48,18 +50,16 @@ void LiveVertexFilter::rebuild(const std::vector<const VertexDoubles*>& live) {
   for (std::size_t i = 0; i < n; ++i) {
     if (box_ok_)
       for (std::size_t c = 0; c < 3; ++c)
-        if ((bounds_[i][c] + bounds_[i][c + 3]) * double(n) > centre[c]) octant_[i] |= 1 << c;
+        if ((live[i]->lo[c] + live[i]->hi[c]) * double(n) > centre[c]) octant_[i] |= 1 << c;
     ++start[static_cast<std::size_t>(octant_[i]) + 1];
   }
   for (std::size_t o = 0; o < 8; ++o) start[o + 1] += start[o];
   groups_.clear();
-  for (std::size_t o = 0; o < 8; ++o)
+  std::array<std::size_t, 8> group_of{}, next{};
+  for (std::size_t o = 0; o < 8; ++o) {
+    group_of[o] = groups_.size(), next[o] = 6 * start[o];
     if (start[o + 1] > start[o])
       groups_.push_back({{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {0, 0, 0}, 6 * start[o], 6 * start[o + 1], box_ok_});
-  std::array<std::size_t, 8> group_of{}, next{};
-  for (std::size_t o = 0, g = 0; o < 8; ++o) {
-    group_of[o] = g, next[o] = 6 * start[o];
-    if (start[o + 1] > start[o]) ++g;
   }
   packed_.resize(6 * n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -67,17 +67,12 @@ void LiveVertexFilter::rebuild(const std::vector<const VertexDoubles*>& live) {
     const auto o = static_cast<std::size_t>(octant_[i]);
     double* h = &packed_[next[o]];
     next[o] += 6;
-    for (int k = 0; k < 4; ++k) h[k] = x.h[k];
-    // α and β with E + 16u(T + E) <= max_k |a_k|·α + |b|·β for any plane (a, b): T and E as in
-    // the clip's side test.
-    const double a = std::fabs(x.h[0]) + std::fabs(x.h[1]) + std::fabs(x.h[2]), e = x.err[0] + x.err[1] + x.err[2];
-    h[4] = e + 16 * u * (a + e);
-    h[5] = x.err[3] + 16 * u * (std::fabs(x.h[3]) + x.err[3]);
+    h[0] = x.h[0], h[1] = x.h[1], h[2] = x.h[2], h[3] = x.h[3], h[4] = x.alpha, h[5] = x.beta;
     if (!box_ok_) continue;
     Group& g = groups_[group_of[o]];
     for (std::size_t c = 0; c < 3; ++c) {
-      g.lo[c] = std::min(g.lo[c], bounds_[i][c]), g.hi[c] = std::max(g.hi[c], bounds_[i][c + 3]);
-      g.boxed = g.boxed && box_range(bounds_[i][c]) && box_range(bounds_[i][c + 3]);
+      g.lo[c] = std::min(g.lo[c], x.lo[c]), g.hi[c] = std::max(g.hi[c], x.hi[c]);
+      g.boxed = g.boxed && box_range(x.lo[c]) && box_range(x.hi[c]);
     }
   }
 }

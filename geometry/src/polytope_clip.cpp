@@ -267,6 +267,7 @@ class Clipper {
       v.exact = exact_homogeneous(t);
       GMCC_CHECK(sgn((*v.exact)[3]) != 0, "clip_polytope: a vertex's three planes are independent");
     }
+    v.settle();
     vertices_.push_back(std::move(v));
     return static_cast<int>(vertices_.size()) - 1;
   }

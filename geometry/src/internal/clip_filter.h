@@ -15,9 +15,16 @@ namespace gmcc::internal {
 // A vertex as the filter knows it: homogeneous coordinates (X, Y, Z, W) of the filter planes'
 // solution, W > 0, each within err[k] of the exact value; meaningful when `filtered`.
 struct VertexDoubles {
-  double h[4];
-  double err[4];
+  double h[4] = {0, 0, 0, 0};
+  double err[4] = {0, 0, 0, 0};
   bool filtered = false;
+  // Made once from h and err by settle() (a vertex never changes): α and β with
+  // E + 16u(T + E) <= max_k |a_k|·α + |b|·β for any plane (a, b) (T and E as in the clip's side
+  // test); certified bounds lo <= x_k <= hi of its coordinates, valid when `bounded`.
+  double alpha = 0, beta = 0;
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  bool bounded = false;
+  void settle();
 };
 
 class LiveVertexFilter {
@@ -41,7 +48,6 @@ class LiveVertexFilter {
   std::vector<double> packed_;  // per live vertex, grouped: h[0..3], then α and β (see none_outside)
   std::vector<Group> groups_;
   std::array<double, 3> top_{};  // the coordinates' upper bounds over the polytope
-  std::vector<std::array<double, 6>> bounds_;  // scratch for rebuild: each vertex's lo, hi
   std::vector<int> octant_;                    // scratch for rebuild: each vertex's group
   bool all_filtered_ = false, box_ok_ = false;
 };
