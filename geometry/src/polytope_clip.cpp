@@ -173,20 +173,45 @@ class Clipper {
     return f.usable && filter_.none_outside(f.c);
   }
 
+  // Row i when a ⊙ p = 0: it reads 0 <= b, true (1) or no map at all (0); otherwise -1.
+  int constant_row(std::size_t i) const {
+    const RowOf r = row_of(i);
+    const std::array<int, 3>& s = r.group->signs[r.point];
+    const IntegerPlane3& a = r.group->facets->planes[r.facet];
+    if (sgn(a.a[0]) * s[0] != 0 || sgn(a.a[1]) * s[1] != 0 || sgn(a.a[2]) * s[2] != 0) return -1;
+    return sgn(a.b) >= 0 ? 1 : 0;
+  }
+
   ClippedPolytope run() {
-    for (std::size_t i : order_) {
-      // A row with a ⊙ p = 0 reads 0 <= b: true, or no map at all.
-      const RowOf r = row_of(i);
-      const std::array<int, 3>& s = r.group->signs[r.point];
-      const IntegerPlane3& a = r.group->facets->planes[r.facet];
-      if (sgn(a.a[0]) * s[0] == 0 && sgn(a.a[1]) * s[1] == 0 && sgn(a.a[2]) * s[2] == 0) {
-        if (sgn(a.b) < 0) return {ClippedPolytope::Outcome::empty, {}};
+    for (std::size_t k = 0; k < order_.size(); ++k) {
+      const std::size_t i = order_[k];
+      if (const int c = constant_row(i); c >= 0) {
+        if (c == 0) return {ClippedPolytope::Outcome::empty, {}};
         continue;
       }
       const ClippedPolytope::Outcome o = clip(static_cast<int>(i));
+      if (o == ClippedPolytope::Outcome::flat && flat_point_ >= 0) return point(k + 1);
       if (o != ClippedPolytope::Outcome::polytope) return {o, {}};
     }
     return {ClippedPolytope::Outcome::polytope, result()};
+  }
+
+  // A row left one vertex v of the polytope on it and the others strictly outside: F3 ⊆ {v}, and
+  // v satisfies every row so far; so F3 is {v} if v satisfies the rows from order_[from] on, else
+  // empty (each side decided as every other, by the filter or exactly).
+  ClippedPolytope point(std::size_t from) {
+    Vertex& v = vertices_[static_cast<std::size_t>(flat_point_)];
+    for (std::size_t k = from; k < order_.size(); ++k) {
+      const std::size_t i = order_[k];
+      if (const int c = constant_row(i); c >= 0) {
+        if (c == 0) return {ClippedPolytope::Outcome::empty, {}};
+        continue;
+      }
+      if (side(static_cast<int>(i), v) > 0) return {ClippedPolytope::Outcome::empty, {}};
+    }
+    if (!v.exact) v.exact = exact_homogeneous(v.planes);
+    return {ClippedPolytope::Outcome::polytope,
+            LazyConvexSet3::from_homogeneous(ConvexKind3::point, {*v.exact}, {})};
   }
 
   // The sign of a 3×3 determinant-like value from the filter, or nothing when the bound is hit.
@@ -319,9 +344,13 @@ class Clipper {
       in += s < 0, out += s > 0;
     }
     if (out == 0) return ClippedPolytope::Outcome::polytope;  // nothing to cut
-    if (in == 0)
-      return live_.size() == static_cast<std::size_t>(out) ? ClippedPolytope::Outcome::empty
-                                                           : ClippedPolytope::Outcome::flat;
+    if (in == 0) {
+      if (live_.size() == static_cast<std::size_t>(out)) return ClippedPolytope::Outcome::empty;
+      if (live_.size() == static_cast<std::size_t>(out) + 1)  // one vertex on the plane: see point()
+        for (int v : live_)
+          if (sign_[v] == 0) flat_point_ = v;
+      return ClippedPolytope::Outcome::flat;
+    }
     // Every edge crossing the plane strictly lies on exactly two faces; the new vertex is where
     // their planes meet plane i (independent: the edge crosses plane i transversally).
     std::vector<Cut>& cuts = cuts_;
@@ -442,6 +471,7 @@ class Clipper {
     int u, w, faces[2], n, vertex;
   };
   std::vector<Cut> cuts_;        // scratch for clip()
+  int flat_point_ = -1;          // the one vertex a flat row left (clip()), if it left one
   std::vector<Face> kept_;       // scratch for clip()
   std::vector<int> next_on_cap_;  // scratch for clip()
   std::vector<char> seen_;        // scratch for clip()

@@ -224,6 +224,17 @@ BOOST_AUTO_TEST_CASE(clip_decides_ties_exactly) {
   BOOST_TEST((internal::clip_polytope({1, 1, 1}, planes).outcome == internal::ClippedPolytope::Outcome::flat));
   planes.back() = plane(-1, -1, -1, -2);
   BOOST_TEST((internal::clip_polytope({1, 1, 1}, planes).outcome == internal::ClippedPolytope::Outcome::empty));
+  // One that leaves only the vertex 0 (x + y + z <= 0): the point, when the other rows hold there
+  // (z <= 1, and a row through it), else empty (x >= 1/4) — in whichever order the rows come.
+  planes.back() = plane(1, 1, 1, 0);
+  planes.push_back(plane(0, 0, 1, 1));
+  planes.push_back(plane(2, -1, 0, 0));
+  const internal::ClippedPolytope p = internal::clip_polytope({1, 1, 1}, planes);
+  BOOST_TEST((p.outcome == internal::ClippedPolytope::Outcome::polytope));
+  BOOST_TEST((p.set.kind() == ConvexKind3::point));
+  BOOST_TEST((p.set.exact().vertices == std::vector<Point3>{{0, 0, 0}}));
+  planes.push_back(plane(-4, 0, 0, -1));
+  BOOST_TEST((internal::clip_polytope({1, 1, 1}, planes).outcome == internal::ClippedPolytope::Outcome::empty));
 }
 
 

@@ -26,8 +26,10 @@ struct ClipCounts {
   long exact = 0;     // needed the exact integer evaluation
 };
 
-// What clip_polytope found: a 3-dimensional polytope (in `set`, canonical form, its vertices made
-// exact only on request: lazy_convex_set_3.h), the empty set,
+// What clip_polytope found: a 3-dimensional polytope or a point (in `set`, canonical form, its
+// vertices made exact only on request: lazy_convex_set_3.h; a point when a half-space left one
+// vertex on it and the others strictly outside, and that vertex satisfies every other row), the
+// empty set,
 // or a lower-dimensional non-empty set (`flat`: some half-space left no vertex strictly inside;
 // its exact form is for another route, the LP one).
 struct ClippedPolytope {
