@@ -182,6 +182,29 @@ void crule_3d_certified(benchmark::State& state) {
     benchmark::DoNotOptimize(
         crule_3d(*w.prepared_3d, w.scenes[i++ % w.scenes.size()].colours, Crule3dRoute::certified).centroid);
 }
+// F3 kept symbolic (lazy_convex_set_3.h): no vertex in lowest terms.
+void crule_lazy(benchmark::State& state) {
+  const Workload& w = workload();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const std::vector<Colour>& image = w.scenes[i++ % w.scenes.size()].colours;
+    benchmark::DoNotOptimize(feasible_set_3d_lazy({{w.prepared_3d.get(), &image}}).size());
+  }
+}
+// The certified route of crule_3d_certified on the lazy F3, the exact F3 never made (what
+// estimate_3d runs for the CLI and Python): max-volume and the certified centroid with their
+// worst cases.
+void crule_3d_lazy(benchmark::State& state) {
+  const Workload& w = workload();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const std::vector<Colour>& image = w.scenes[i++ % w.scenes.size()].colours;
+    const LazyConvexSet3 F = feasible_set_3d_lazy({{w.prepared_3d.get(), &image}});
+    if (F.kind() == ConvexKind3::empty) continue;
+    benchmark::DoNotOptimize(with_worst_case(F, max_volume(F)));
+    benchmark::DoNotOptimize(with_worst_case(F, centroid_3(F, Crule3dRoute::certified)));
+  }
+}
 // The scenes' non-empty F3s, built once.
 const std::vector<ConvexSet3>& feasible_sets() {
   static const std::vector<ConvexSet3> sets = [] {
@@ -263,6 +286,8 @@ BENCHMARK(crule_prepared)->Unit(benchmark::kMicrosecond);
 BENCHMARK(crule_lp)->Unit(benchmark::kMicrosecond);
 BENCHMARK(crule_3d_prepared)->Unit(benchmark::kMicrosecond);
 BENCHMARK(crule_3d_certified)->Unit(benchmark::kMicrosecond);
+BENCHMARK(crule_lazy)->Unit(benchmark::kMicrosecond);
+BENCHMARK(crule_3d_lazy)->Unit(benchmark::kMicrosecond);
 BENCHMARK(max_volume_filtered)->Unit(benchmark::kMicrosecond);
 BENCHMARK(max_volume_unfiltered)->Unit(benchmark::kMicrosecond);
 BENCHMARK(centroid_exact)->Unit(benchmark::kMicrosecond);

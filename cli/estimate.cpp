@@ -268,6 +268,7 @@ int run_estimate_3d(const EstimateOptions& o) {
   Estimate3Options options;
   options.canonical_light = s.scene.canonical_illuminant;
   options.route = o.centroid == "exact" ? Crule3dRoute::exact : Crule3dRoute::certified;
+  options.exact_feasible_set = false;  // only its kind and vertex count are printed
   if (!o.rules_3d.empty()) {
     options.rules.clear();
     for (const std::string& r : o.rules_3d) options.rules.push_back(rule_3_from_string(r));
@@ -294,10 +295,10 @@ int run_estimate_3d(const EstimateOptions& o) {
     }
     Json record = image_record(path, image, colours);
     record["space"] = "3d";
-    record["feasible_set"] = {{"kind", to_string(r.feasible.kind)}, {"vertices", r.feasible.vertices.size()}};
+    record["feasible_set"] = {{"kind", to_string(r.lazy_feasible.kind())}, {"vertices", r.lazy_feasible.size()}};
     Json estimates = Json::object();
     describe_pixels(text, path, image, colours, rules);
-    text << "\n  feasible set (3-D): " << to_string(r.feasible.kind) << ", " << r.feasible.vertices.size()
+    text << "\n  feasible set (3-D): " << to_string(r.lazy_feasible.kind()) << ", " << r.lazy_feasible.size()
          << " vertices\n";
     for (Rule3 rule : options.rules) {
       const std::optional<ImageSelection3>& sel = r[rule];
@@ -327,7 +328,7 @@ int run_estimate_3d(const EstimateOptions& o) {
                      encode_png16(corrected(image, rules, rules.saturation.value_or(65536), m.map)));
       }
     }
-    if (r.feasible.kind == ConvexKind3::empty)
+    if (r.lazy_feasible.kind() == ConvexKind3::empty)
       text << "  no estimate: no diagonal map takes every kept colour into the canonical gamut\n";
     record["estimates"] = std::move(estimates);
     images.push_back(std::move(record));

@@ -4,6 +4,8 @@
 #include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/geometry/polytope_moments.h>
 
+#include "internal/facet_filter.h"
+
 #include <algorithm>
 #include <array>
 #include <numeric>
@@ -20,23 +22,6 @@ std::vector<std::array<Rational, 3>> rational_points(const ConvexSet3& s) {
   return out;
 }
 
-// contains()'s filter for a polytope: p against each facet's enclosed outward plane
-// (geometry/enclosure.h). False as soon as p is certainly outside one; otherwise the facets whose
-// side it could not decide (p on or near them), which the exact test then takes in ℚ (none: p is
-// inside).
-std::optional<std::vector<std::size_t>> facets_left_by_filter(const ConvexSet3& s, const Point3& p) {
-  std::vector<Enclosure3> e;
-  e.reserve(s.vertices.size());
-  for (const Point3& v : s.vertices) e.push_back(enclose_point(v));
-  const Enclosure3 q = enclose_point(p);
-  std::vector<std::size_t> unsure;
-  for (std::size_t k = 0; k < s.faces.size(); ++k) {
-    const Enclosure d = side(enclosed_facet_plane(e, s.faces[k]), q);
-    if (certainly_positive(d)) return std::nullopt;
-    if (!certainly_negative(d)) unsure.push_back(k);
-  }
-  return unsure;
-}
 }  // namespace
 
 std::string to_string(ConvexKind3 kind) {
@@ -49,6 +34,21 @@ std::string to_string(ConvexKind3 kind) {
   }
   return "empty";
 }
+
+namespace internal {
+std::vector<std::vector<std::size_t>> canonical_faces(ConvexKind3 kind, std::vector<std::vector<std::size_t>> faces,
+                                                      const std::vector<std::size_t>& rank) {
+  if (kind != ConvexKind3::polytope && kind != ConvexKind3::polygon) return {};
+  for (auto& f : faces) {
+    for (std::size_t& i : f) i = rank[i];
+    std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+    if (kind == ConvexKind3::polygon && f.size() > 2 && f.back() < f[1])
+      std::reverse(f.begin() + 1, f.end());
+  }
+  std::sort(faces.begin(), faces.end());
+  return faces;
+}
+}  // namespace internal
 
 ConvexSet3 canonical_convex_set_3(ConvexKind3 kind, std::vector<Point3> vertices,
                                   std::vector<std::vector<std::size_t>> faces) {
@@ -63,16 +63,7 @@ ConvexSet3 canonical_convex_set_3(ConvexKind3 kind, std::vector<Point3> vertices
     rank[order[i]] = i;
     out.vertices.push_back(vertices[order[i]]);
   }
-  for (auto& f : faces) {
-    for (std::size_t& i : f) i = rank[i];
-    std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
-    if (kind == ConvexKind3::polygon && f.size() > 2 && f.back() < f[1])
-      std::reverse(f.begin() + 1, f.end());
-  }
-  if (kind == ConvexKind3::polytope || kind == ConvexKind3::polygon) {
-    std::sort(faces.begin(), faces.end());
-    out.faces = std::move(faces);
-  }
+  out.faces = internal::canonical_faces(kind, std::move(faces), rank);
   return out;
 }
 
@@ -138,7 +129,10 @@ bool contains(const ConvexSet3& s, const Point3& p) {
       return true;
     }
     case ConvexKind3::polytope: {
-      const std::optional<std::vector<std::size_t>> unsure = facets_left_by_filter(s, p);
+      std::vector<Enclosure3> e;
+      e.reserve(s.vertices.size());
+      for (const Point3& x : s.vertices) e.push_back(enclose_point(x));
+      const std::optional<std::vector<std::size_t>> unsure = internal::facets_left_by_filter(e, s.faces, p);
       if (!unsure) return false;
       for (std::size_t k : *unsure) {
         const auto& f = s.faces[k];

@@ -189,10 +189,14 @@ std::vector<Point3> hull_candidates(const std::vector<Colour>& image) {
 constexpr std::size_t hull_from = 32;
 
 // The image points that matter: the vertices of their hull (all of them when it is flat), or
-// every distinct colour of a small image.
-std::vector<Point3> image_points(const std::vector<Colour>& image) {
+// every distinct colour of a small image or of one whose colours are its hull's vertices already.
+std::vector<Point3> image_points(const std::vector<Colour>& image, bool hull_vertices) {
   check_colours(image, "image");
   std::vector<Point3> p;
+  if (hull_vertices) {
+    for (const Colour& c : image) p.push_back({c.r, c.g, c.b});
+    return sorted_unique(std::move(p));
+  }
   if (image.size() >= prefilter_from) p = hull_candidates(image);
   else
     for (const Colour& c : image) p.push_back({c.r, c.g, c.b});
@@ -246,13 +250,17 @@ ConvexSet3 feasible_set_3d(const CanonicalConstraints3& canonical, const std::ve
 }
 
 ConvexSet3 feasible_set_3d(const std::vector<GamutConstraint3>& constraints) {
+  return feasible_set_3d_lazy(constraints).exact();
+}
+
+LazyConvexSet3 feasible_set_3d_lazy(const std::vector<GamutConstraint3>& constraints) {
   if (constraints.empty()) throw std::invalid_argument("feasible_set_3d: no gamut constraint");
   std::vector<std::vector<Point3>> points;
   std::optional<Point3> box;  // the smallest X_k/P_k over the types
   bool all_full = true;       // every G_c3 3-dimensional: the filtered clip applies
   for (const GamutConstraint3& g : constraints) {
     const internal::CanonicalPlanes3& c = internal::FeasibleSet3Access::planes(*g.canonical);
-    points.push_back(internal::image_points(*g.image));
+    points.push_back(internal::image_points(*g.image, g.hull_vertices));
     Point3 P{0, 0, 0};
     for (const Point3& p : points.back()) P.x = std::max(P.x, p.x), P.y = std::max(P.y, p.y), P.z = std::max(P.z, p.z);
     for (int k = 0; k < 3; ++k)
@@ -272,14 +280,14 @@ ConvexSet3 feasible_set_3d(const std::vector<GamutConstraint3>& constraints) {
       groups.push_back({&internal::FeasibleSet3Access::planes(*constraints[i].canonical).integer, &points[i]});
     internal::ClippedPolytope r = internal::clip_polytope(*box, groups);
     if (r.outcome == internal::ClippedPolytope::Outcome::polytope) return std::move(r.set);
-    if (r.outcome == internal::ClippedPolytope::Outcome::empty) return {};
+    if (r.outcome == internal::ClippedPolytope::Outcome::empty) return LazyConvexSet3();
   }
   std::vector<internal::LpPart> parts;
   for (std::size_t i = 0; i < constraints.size(); ++i) {
     const internal::CanonicalPlanes3& c = internal::FeasibleSet3Access::planes(*constraints[i].canonical);
     parts.push_back({&c.half_spaces, &c.max, &points[i]});
   }
-  return internal::feasible_set_3d_lp(parts);
+  return LazyConvexSet3(internal::feasible_set_3d_lp(parts));
 }
 
 std::vector<std::size_t> colour_hull_vertex_indices(const std::vector<std::array<double, 3>>& colours) {

@@ -1,6 +1,8 @@
 // A box clipped by integer half-spaces with filtered exact predicates (docs/derivations.md §4.6).
 #include "internal/polytope_clip.h"
 
+#include "internal/clip_filter.h"
+
 #include <gmcc/geometry/integers_over_lcm.h>
 #include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/numerics/internal_check.h>
@@ -74,13 +76,10 @@ ScaledPoint scaled_point(const Point3& p) {
   return s;
 }
 
-struct Vertex {
+// The filter's doubles (VertexDoubles: homogeneous coordinates of the filter planes' solution,
+// W > 0, each within err[k] of the exact value, docs/derivations.md §4.6), and:
+struct Vertex : VertexDoubles {
   std::array<int, 3> planes;  // three independent planes through it
-  // Homogeneous coordinates (X, Y, Z, W) of the filter planes' solution, W > 0, each within
-  // err[k] of the exact value (docs/derivations.md §4.6); valid when `filtered`.
-  double h[4];
-  double err[4];
-  bool filtered = false;
   // Exact homogeneous coordinates of the integer planes' solution (W of either sign), on demand.
   std::optional<std::array<mpz_class, 4>> exact;
 };
@@ -155,79 +154,64 @@ class Clipper {
     }
   }
 
-  // The live vertices' doubles, packed for the all-inside pass: h[0..3], then α and β with
-  // E + 16u(T + E) <= max_k |a_k|·α + |b|·β for any plane (a, b) (side() has T and E).
+  // The live vertices' filter (clip_filter.h), after every cut.
   void pack() {
-    packed_.clear();
-    all_filtered_ = true;
-    for (int v : live_) {
-      const Vertex& x = vertices_[static_cast<std::size_t>(v)];
-      all_filtered_ = all_filtered_ && x.filtered;
-      for (int k = 0; k < 4; ++k) packed_.push_back(x.h[k]);
-      const double a = std::fabs(x.h[0]) + std::fabs(x.h[1]) + std::fabs(x.h[2]), e = x.err[0] + x.err[1] + x.err[2];
-      packed_.push_back(e + 16 * u * (a + e));
-      packed_.push_back(x.err[3] + 16 * u * (std::fabs(x.h[3]) + x.err[3]));
-    }
-    // An upper bound of every coordinate over the polytope (its vertices'; all are >= 0, the box
-    // rows): (h_k + err_k)/(h_3 - err_3) bounds x_k = X/W from above when X~ + err_k >= 0 and
-    // W~ > err_3 (both settled when the vertex was made); 1 + 8u covers the two roundings.
-    top_ = {0, 0, 0};
-    box_ok_ = all_filtered_;
-    for (std::size_t k = 0; k < packed_.size() && box_ok_; k += 6) {
-      const Vertex& x = vertices_[static_cast<std::size_t>(live_[k / 6])];
-      const double w = x.h[3] - x.err[3];
-      if (!(w > 0)) {
-        box_ok_ = false;
-        break;
-      }
-      for (int c = 0; c < 3; ++c) top_[c] = std::max(top_[c], std::max(0.0, (x.h[c] + x.err[c]) / w * (1 + 8 * u)));
-    }
+    live_doubles_.clear();
+    for (int v : live_) live_doubles_.push_back(&vertices_[static_cast<std::size_t>(v)]);
+    filter_.rebuild(live_doubles_);
   }
 
-  // True when plane i holds on the box [0, top_] ⊇ the polytope: Σ max(a_k, 0)·top_k <= b, with
-  // the filter copy's coefficients within 6u of the exact ones (scaled) and the sum's roundings
-  // covered by 1 + 16u on the left and 1 - 16u on the right.
+  // True when plane i holds on a box containing the polytope.
   bool box_inside(int i) const {
     const Filter& f = filters_[static_cast<std::size_t>(i)];
-    if (!f.usable || !box_ok_) return false;
-    const double* a = f.c;
-    const double lhs = (std::max(a[0], 0.0) * top_[0] + std::max(a[1], 0.0) * top_[1] + std::max(a[2], 0.0) * top_[2]) *
-                       (1 + 16 * u);
-    return lhs <= a[3] * (1 - 16 * u);
+    return f.usable && filter_.box_inside(f.c);
   }
 
-  // True when the filter shows no live vertex strictly outside plane i (each strictly inside, or
-  // exactly on it with a zero bound): s < -bound with the
-  // bound of side() enlarged as in pack() (and 1 + 64u for its evaluation, 1 + 16u more for α, β).
+  // True when the filter shows no live vertex strictly outside plane i.
   bool none_outside(int i) const {
     const Filter& f = filters_[static_cast<std::size_t>(i)];
-    if (!f.usable || !all_filtered_) return false;
-    const double* a = f.c;
-    const double m = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])}) * (1 + 128 * u);
-    const double b = std::fabs(a[3]) * (1 + 128 * u);
-    for (std::size_t k = 0; k < packed_.size(); k += 6) {
-      const double* h = &packed_[k];
-      const double v = a[0] * h[0] + a[1] * h[1] + a[2] * h[2] - a[3] * h[3], bound = m * h[4] + b * h[5];
-      // A zero bound: every term exactly zero (see filtered_sign), the vertex exactly on the plane.
-      if (!(v < -bound || (bound == 0 && v == 0))) return false;
-    }
-    return true;
+    return f.usable && filter_.none_outside(f.c);
+  }
+
+  // Row i when a ⊙ p = 0: it reads 0 <= b, true (1) or no map at all (0); otherwise -1.
+  int constant_row(std::size_t i) const {
+    const RowOf r = row_of(i);
+    const std::array<int, 3>& s = r.group->signs[r.point];
+    const IntegerPlane3& a = r.group->facets->planes[r.facet];
+    if (sgn(a.a[0]) * s[0] != 0 || sgn(a.a[1]) * s[1] != 0 || sgn(a.a[2]) * s[2] != 0) return -1;
+    return sgn(a.b) >= 0 ? 1 : 0;
   }
 
   ClippedPolytope run() {
-    for (std::size_t i : order_) {
-      // A row with a ⊙ p = 0 reads 0 <= b: true, or no map at all.
-      const RowOf r = row_of(i);
-      const std::array<int, 3>& s = r.group->signs[r.point];
-      const IntegerPlane3& a = r.group->facets->planes[r.facet];
-      if (sgn(a.a[0]) * s[0] == 0 && sgn(a.a[1]) * s[1] == 0 && sgn(a.a[2]) * s[2] == 0) {
-        if (sgn(a.b) < 0) return {ClippedPolytope::Outcome::empty, {}};
+    for (std::size_t k = 0; k < order_.size(); ++k) {
+      const std::size_t i = order_[k];
+      if (const int c = constant_row(i); c >= 0) {
+        if (c == 0) return {ClippedPolytope::Outcome::empty, {}};
         continue;
       }
       const ClippedPolytope::Outcome o = clip(static_cast<int>(i));
+      if (o == ClippedPolytope::Outcome::flat && flat_point_ >= 0) return point(k + 1);
       if (o != ClippedPolytope::Outcome::polytope) return {o, {}};
     }
     return {ClippedPolytope::Outcome::polytope, result()};
+  }
+
+  // A row left one vertex v of the polytope on it and the others strictly outside: F3 ⊆ {v}, and
+  // v satisfies every row so far; so F3 is {v} if v satisfies the rows from order_[from] on, else
+  // empty (each side decided as every other, by the filter or exactly).
+  ClippedPolytope point(std::size_t from) {
+    Vertex& v = vertices_[static_cast<std::size_t>(flat_point_)];
+    for (std::size_t k = from; k < order_.size(); ++k) {
+      const std::size_t i = order_[k];
+      if (const int c = constant_row(i); c >= 0) {
+        if (c == 0) return {ClippedPolytope::Outcome::empty, {}};
+        continue;
+      }
+      if (side(static_cast<int>(i), v) > 0) return {ClippedPolytope::Outcome::empty, {}};
+    }
+    if (!v.exact) v.exact = exact_homogeneous(v.planes);
+    return {ClippedPolytope::Outcome::polytope,
+            LazyConvexSet3::from_homogeneous(ConvexKind3::point, {*v.exact}, {})};
   }
 
   // The sign of a 3×3 determinant-like value from the filter, or nothing when the bound is hit.
@@ -308,6 +292,7 @@ class Clipper {
       v.exact = exact_homogeneous(t);
       GMCC_CHECK(sgn((*v.exact)[3]) != 0, "clip_polytope: a vertex's three planes are independent");
     }
+    v.settle();
     vertices_.push_back(std::move(v));
     return static_cast<int>(vertices_.size()) - 1;
   }
@@ -359,11 +344,15 @@ class Clipper {
       in += s < 0, out += s > 0;
     }
     if (out == 0) return ClippedPolytope::Outcome::polytope;  // nothing to cut
-    if (in == 0)
-      return live_.size() == static_cast<std::size_t>(out) ? ClippedPolytope::Outcome::empty
-                                                           : ClippedPolytope::Outcome::flat;
-    const std::vector<Cut> cuts = crossing_edges(i);
-    cut_faces(i, cuts);
+    if (in == 0) {
+      if (live_.size() == static_cast<std::size_t>(out)) return ClippedPolytope::Outcome::empty;
+      if (live_.size() == static_cast<std::size_t>(out) + 1)  // one vertex on the plane: see point()
+        for (int v : live_)
+          if (sign_[v] == 0) flat_point_ = v;
+      return ClippedPolytope::Outcome::flat;
+    }
+    crossing_edges(i);
+    cut_faces(i, cuts_);
     return ClippedPolytope::Outcome::polytope;
   }
 
@@ -380,11 +369,12 @@ class Clipper {
     return -1;
   }
 
-  // The edges that cross plane i strictly (sign_ set for the live vertices), each with its new
-  // vertex: the meet of its two faces' planes and plane i, independent because the edge crosses
-  // plane i transversally.
-  std::vector<Cut> crossing_edges(int i) {
-    std::vector<Cut> cuts;
+  // The edges that cross plane i strictly (sign_ set for the live vertices), into cuts_, each with
+  // its new vertex: the meet of its two faces' planes and plane i, independent because the edge
+  // crosses plane i transversally.
+  void crossing_edges(int i) {
+    std::vector<Cut>& cuts = cuts_;
+    cuts.clear();
     for (const Face& f : faces_)
       for (std::size_t k = 0; k < f.cycle.size(); ++k) {
         const int a = f.cycle[k], b = f.cycle[(k + 1) % f.cycle.size()];
@@ -402,7 +392,6 @@ class Clipper {
       if (sign_.size() < vertices_.size()) sign_.resize(vertices_.size() + 64);
       sign_[c.vertex] = 0;
     }
-    return cuts;
   }
 
   // The faces after the cut by plane i (`cuts` its crossing edges): faces with no vertex strictly
@@ -453,17 +442,14 @@ class Clipper {
     pack();
   }
 
-  ConvexSet3 result() {
+  LazyConvexSet3 result() {
     std::vector<int> index(vertices_.size(), -1);
-    std::vector<Point3> points;
+    std::vector<std::array<mpz_class, 4>> points;
     for (int v : live_) {
       Vertex& x = vertices_[v];
       if (!x.exact) x.exact = exact_homogeneous(x.planes);
-      const auto& h = *x.exact;
-      Point3 p{Rational(h[0], h[3]), Rational(h[1], h[3]), Rational(h[2], h[3])};
-      p.x.canonicalize(), p.y.canonicalize(), p.z.canonicalize();
       index[v] = static_cast<int>(points.size());
-      points.push_back(std::move(p));
+      points.push_back(std::move(*x.exact));
     }
     std::vector<std::vector<std::size_t>> faces;
     for (const Face& f : faces_) {
@@ -471,7 +457,7 @@ class Clipper {
       for (int v : f.cycle) c.push_back(static_cast<std::size_t>(index[v]));
       faces.push_back(std::move(c));
     }
-    return canonical_convex_set_3(ConvexKind3::polytope, std::move(points), std::move(faces));
+    return LazyConvexSet3::from_homogeneous(ConvexKind3::polytope, std::move(points), std::move(faces));
   }
 
   struct Face {
@@ -497,13 +483,13 @@ class Clipper {
   std::vector<Vertex> vertices_;
   std::vector<Face> faces_;
   std::vector<int> live_;
+  std::vector<Cut> cuts_;        // scratch for clip(): the crossing edges
+  int flat_point_ = -1;          // the one vertex a flat row left (clip()), if it left one
   std::vector<Face> kept_;       // scratch for clip()
   std::vector<int> next_on_cap_;  // scratch for clip()
   std::vector<char> seen_;        // scratch for clip()
-  std::vector<double> packed_;  // per live vertex: h[0..3], err[0..3]
-  bool all_filtered_ = true;
-  std::array<double, 3> top_{};  // coordinates' upper bounds over the polytope (pack())
-  bool box_ok_ = false;
+  LiveVertexFilter filter_;                         // the live vertices' (pack())
+  std::vector<const VertexDoubles*> live_doubles_;  // scratch for pack()
   std::vector<std::size_t> order_;  // the rows, in clipping order
   std::vector<int> sign_;
 };

@@ -51,7 +51,7 @@ ImageEstimate3 estimate_3d(const CanonicalConstraints3& canonical, const ImageCo
         "the image's colours are chromaticity lifts (x, y, 1) of the 2-D hull colour set, not "
         "pixel colours: 3-D gamut mapping needs ColourSet distinct or hull_3d");
   if (image.colours.empty()) throw std::invalid_argument("the image has no colour");
-  return estimate_3d(std::vector<GamutConstraint3>{{&canonical, &image.colours}}, o);
+  return estimate_3d(std::vector<GamutConstraint3>{{&canonical, &image.colours, image.set == ColourSet::hull_3d}}, o);
 }
 
 ImageEstimate3 estimate_3d(const std::vector<GamutConstraint3>& constraints, const Estimate3Options& o) {
@@ -67,11 +67,14 @@ ImageEstimate3 estimate_3d(const std::vector<GamutConstraint3>& constraints, con
     i.light = light_of_map_3(measured_map(i.selection.estimate), c);
     return i;
   };
-  out.feasible = feasible_set_3d(constraints);
-  if (out.feasible.kind == ConvexKind3::empty) return out;
-  if (want[0]) out.max_volume = light_of(with_worst_case(out.feasible, max_volume(out.feasible)));
-  if (want[1]) out.centroid = light_of(with_worst_case(out.feasible, centroid_3(out.feasible, o.route)));
-  if (want[2]) out.max_trace = light_of(with_worst_case(out.feasible, max_trace(out.feasible)));
+  out.lazy_feasible = feasible_set_3d_lazy(constraints);
+  const LazyConvexSet3& F = out.lazy_feasible;
+  if (F.kind() != ConvexKind3::empty) {
+    if (want[0]) out.max_volume = light_of(with_worst_case(F, max_volume(F)));
+    if (want[1]) out.centroid = light_of(with_worst_case(F, centroid_3(F, o.route)));
+    if (want[2]) out.max_trace = light_of(with_worst_case(F, max_trace(F)));
+  }
+  if (o.exact_feasible_set) out.feasible = F.exact();
   return out;
 }
 

@@ -869,7 +869,9 @@ def estimate_3d(canonical, image, truth=None, *, rules=None, centroid="certified
     Returns
     -------
     Estimate3
-        F3, its kind, each rule's ImageSelection3 and the pixel counts.
+        F3, its kind, each rule's ImageSelection3 and the pixel counts. F3's vertices in lowest
+        terms are made on the first read of ``feasible_set`` (the rules do not need them:
+        docs/math.md §1b "The lazy form").
 
     Raises
     ------

@@ -72,7 +72,12 @@ struct PySelection3 {
 
 // gmcc.Estimate3: F3 of one image and the rules' answers.
 struct PyEstimate3 {
-  ConvexSet3 feasible;
+  LazyConvexSet3 feasible;                     // F3, its vertices made exact on request
+  std::shared_ptr<const ConvexSet3> exact;     // F3 exactly, made on the first feasible_set read
+  const ConvexSet3& feasible_set() {
+    if (!exact) exact = std::make_shared<const ConvexSet3>(feasible.exact());
+    return *exact;
+  }
   std::optional<PySelection3> max_volume, centroid, max_trace;
   std::optional<PixelCounts> pixels;
   std::size_t colours = 0;
@@ -87,9 +92,10 @@ CanonicalBlack black_from(const std::string& black) {
 // The pixel colours of `x`: an ImageColours of pixel colours, an H×W×3 image through the pixel
 // rules (colour set hull-3d unless asked otherwise), or colours (n×3). Lifts are refused.
 std::vector<Colour> pixel_colours_of(py::handle x, PixelArgs args, const char* what,
-                                     std::optional<PixelCounts>* counts = nullptr) {
+                                     std::optional<PixelCounts>* counts = nullptr, ColourSet* set = nullptr) {
   if (py::isinstance<PyImageColours>(x)) {
     if (counts) *counts = x.cast<const PyImageColours&>().counts;
+    if (set) *set = x.cast<const PyImageColours&>().set;
     return colours_or_pixel_colours(x, what);
   }
   if (is_image(x)) {
@@ -99,6 +105,7 @@ std::vector<Colour> pixel_colours_of(py::handle x, PixelArgs args, const char* w
     PyImageColours c = image_colours_of(x, args);
     if (c.colours.empty()) throw py::value_error(std::string(what) + ": no usable pixel");
     if (counts) *counts = c.counts;
+    if (set) *set = c.set;
     return std::move(c.colours);
   }
   if (!args.plain())
@@ -218,7 +225,8 @@ gamut (Forsyth 1990 §3; Gijsenij, Gevers & van de Weijer 2010 §3) and the sele
 Attributes
 ----------
 feasible_set : ConvexSet3
-    F3, exactly.
+    F3, exactly (its vertices in lowest terms are made on the first read: the rules do not need
+    them).
 kind : str
     F3's kind: 'polytope', 'polygon', 'segment', 'point' or 'empty'.
 max_volume, centroid, max_trace : ImageSelection3 or None
@@ -230,8 +238,8 @@ colours : int
 pixels : dict of str to int, or None
     For an image: what the pixel rules did (counts as ImageColours.counts); else None.
 )doc")
-      .def_readonly("feasible_set", &PyEstimate3::feasible)
-      .def_property_readonly("kind", [](const PyEstimate3& e) { return to_string(e.feasible.kind); })
+      .def_property_readonly("feasible_set", &PyEstimate3::feasible_set, py::return_value_policy::reference_internal)
+      .def_property_readonly("kind", [](const PyEstimate3& e) { return to_string(e.feasible.kind()); })
       .def_readonly("max_volume", &PyEstimate3::max_volume)
       .def_readonly("centroid", &PyEstimate3::centroid)
       .def_readonly("max_trace", &PyEstimate3::max_trace)
@@ -248,7 +256,7 @@ pixels : dict of str to int, or None
         return e.pixels ? pixel_counts(*e.pixels) : py::object(py::none());
       }, "For an image: what the pixel rules did (dict of counts), else None.")
       .def("__repr__", [](const PyEstimate3& e) {
-        return "Estimate3(" + to_string(e.feasible.kind) + ", " + std::to_string(e.feasible.vertices.size()) + " vertices)";
+        return "Estimate3(" + to_string(e.feasible.kind()) + ", " + std::to_string(e.feasible.size()) + " vertices)";
       });
 }
 
@@ -278,15 +286,17 @@ void bind_functions(py::module_& m) {
          py::object dark, py::object dark_fraction, py::object bright_fraction, const std::string& pixel_rule,
          const std::string& colour_set) {
         PyEstimate3 out;
+        ColourSet set = ColourSet::distinct;  // hull_3d: the colours are their hull's vertices
         const std::vector<Colour> colours = pixel_colours_of(
             image, pixel_args(mask, black_level, saturation, dark, dark_fraction, bright_fraction, pixel_rule, colour_set),
-            "image", &out.pixels);
+            "image", &out.pixels, &set);
         out.colours = colours.size();
         Estimate3Options o;
         o.canonical_light = positive_light(canonical_illuminant, "canonical_illuminant");
         if (centroid != "certified" && centroid != "exact")
           throw py::value_error("centroid: " + quoted_text(centroid) + " is not one of certified, exact");
         o.route = centroid == "exact" ? Crule3dRoute::exact : Crule3dRoute::certified;
+        o.exact_feasible_set = false;  // made on the first read of feasible_set
         if (!rules.is_none()) {
           o.rules.clear();
           for (py::handle r : rules) {
@@ -301,7 +311,7 @@ void bind_functions(py::module_& m) {
         if (!truth.is_none()) t = positive_light(truth, "truth");
         ImageColours ic;
         ic.colours = colours;
-        ic.set = ColourSet::distinct;
+        ic.set = set == ColourSet::hull_3d ? ColourSet::hull_3d : ColourSet::distinct;
         ImageEstimate3 r;
         try {
           r = released([&] { return estimate_3d(*canonical.constraints, ic, o); });
@@ -310,7 +320,7 @@ void bind_functions(py::module_& m) {
         } catch (const std::domain_error& e) {
           throw py::value_error(std::string("image: ") + e.what());
         }
-        out.feasible = std::move(r.feasible);
+        out.feasible = std::move(r.lazy_feasible);
         auto wrap = [&](std::optional<ImageSelection3>& s, Rule3 rule) -> std::optional<PySelection3> {
           if (!s) return std::nullopt;
           PySelection3 p{std::move(*s), to_string(rule), std::nullopt};

@@ -20,11 +20,12 @@ StageCounts& counts() {
 }  // namespace
 
 std::optional<MapEstimate3> certified_centroid_filtered(const ConvexSet3& F) {
-  if (F.kind != ConvexKind3::polytope) return std::nullopt;
-  std::vector<Enclosure3> v;
-  v.reserve(F.vertices.size());
-  for (const Point3& p : F.vertices) v.push_back(enclose_point(p));
-  const PolytopeMoments<Enclosure> m = polytope_moments(v, F.faces, true);
+  return certified_centroid_filtered(LazyConvexSet3(F));
+}
+
+std::optional<MapEstimate3> certified_centroid_filtered(const LazyConvexSet3& F) {
+  if (F.kind() != ConvexKind3::polytope) return std::nullopt;
+  const PolytopeMoments<Enclosure> m = polytope_moments(F.enclosures(), F.faces(), true);
   const Enclosure& w_sum = m.six_volume;
   if (!certainly_positive(w_sum)) return std::nullopt;
   MapEstimate3 e;
@@ -47,7 +48,13 @@ const StageCounts& certified_centroid_stage_counts() { return counts(); }
 
 MapEstimate3 centroid_3(const ConvexSet3& F, Crule3dRoute route) {
   if (F.kind == ConvexKind3::empty) throw std::invalid_argument("centroid_3: empty feasible set");
-  auto exact = [&] { return exact_map_estimate_3("centroid", centroid(F)); };
+  if (route == Crule3dRoute::exact) return exact_map_estimate_3("centroid", centroid(F));
+  return centroid_3(LazyConvexSet3(F), route);
+}
+
+MapEstimate3 centroid_3(const LazyConvexSet3& F, Crule3dRoute route) {
+  if (F.kind() == ConvexKind3::empty) throw std::invalid_argument("centroid_3: empty feasible set");
+  auto exact = [&] { return exact_map_estimate_3("centroid", centroid(F.exact())); };
   if (route == Crule3dRoute::exact) return exact();
   return internal::staged(internal::counts(), [&] { return internal::certified_centroid_filtered(F); }, exact);
 }

@@ -23,15 +23,14 @@ auto cos2_times_m2(const P& m, const P& v) {
 
 // The filter of worst_case_map_deg_3d: the non-zero vertices whose cos² to m (as −(m·v)²/|v|²,
 // cos² times −|m|², in double enclosures) may be the least, in vertex order.
-std::vector<std::size_t> worst_case_contenders(const ConvexSet3& F, const Point3& m) {
+std::vector<std::size_t> worst_case_contenders(const LazyConvexSet3& F, const Point3& m) {
   std::vector<std::size_t> nonzero;
   std::vector<Enclosure> minus_cos2;
   const Enclosure3 em = enclose_point(m);
-  for (std::size_t i = 0; i < F.vertices.size(); ++i) {
-    const Point3& v = F.vertices[i];
-    if (is_zero(v)) continue;
+  for (std::size_t i = 0; i < F.size(); ++i) {
+    if (F.is_zero(i)) continue;
     nonzero.push_back(i);
-    const Enclosure3 ev = enclose_point(v);
+    const Enclosure3& ev = F.enclosures()[i];
     minus_cos2.push_back(certainly_positive(dot(ev, ev)) ? -cos2_times_m2(em, ev) : Enclosure{0, Enclosure::unbounded});
   }
   std::vector<std::size_t> out;
@@ -42,10 +41,14 @@ std::vector<std::size_t> worst_case_contenders(const ConvexSet3& F, const Point3
 }  // namespace
 
 Selection3 with_worst_case(const ConvexSet3& F, MapEstimate3 e) {
+  return with_worst_case(LazyConvexSet3(F), std::move(e));
+}
+
+Selection3 with_worst_case(const LazyConvexSet3& F, MapEstimate3 e) {
   const Point3 m = measured_map(e);
   Selection3 s{std::move(e), std::nullopt};
   bool nonzero_vertex = false;
-  for (const Point3& v : F.vertices) nonzero_vertex = nonzero_vertex || !is_zero(v);
+  for (std::size_t i = 0; i < F.size(); ++i) nonzero_vertex = nonzero_vertex || !F.is_zero(i);
   if (!is_zero(m) && nonzero_vertex) s.worst_case_deg = worst_case_map_deg_3d(F, m);
   return s;
 }
@@ -57,13 +60,17 @@ double diagonal_map_angular_error_deg(const Point3& u, const Point3& v) {
 }
 
 double worst_case_map_deg_3d(const ConvexSet3& F, const Point3& m) {
+  return worst_case_map_deg_3d(LazyConvexSet3(F), m);
+}
+
+double worst_case_map_deg_3d(const LazyConvexSet3& F, const Point3& m) {
   // Largest angle = smallest cos² = (m·v)²/(|m|²|v|²) (m·v >= 0 on the octant), compared exactly
   // among the filter's contenders (in vertex order, so that ties go to the first vertex as over
   // all of them).
   const Point3* worst = nullptr;
   Rational worst_cos2;
   for (std::size_t i : worst_case_contenders(F, m)) {
-    const Point3& v = F.vertices[i];
+    const Point3& v = F.vertex(i);
     Rational cos2 = cos2_times_m2(m, v);
     if (!worst || cos2 < worst_cos2) worst = &v, worst_cos2 = std::move(cos2);
   }
@@ -78,11 +85,13 @@ Crule3d crule_3d(const std::vector<Colour>& canonical, const std::vector<Colour>
 
 Crule3d crule_3d(const CanonicalConstraints3& canonical, const std::vector<Colour>& image, Crule3dRoute route) {
   Crule3d r;
-  r.feasible = feasible_set_3d(canonical, image);
+  const LazyConvexSet3 F = feasible_set_3d_lazy({{&canonical, &image}});
+  if (F.kind() != ConvexKind3::empty) {
+    r.max_volume = with_worst_case(F, max_volume(F));
+    r.centroid = with_worst_case(F, centroid_3(F, route));
+  }
+  r.feasible = F.exact();
   if (route == Crule3dRoute::exact) r.volume = volume(r.feasible);
-  if (r.feasible.kind == ConvexKind3::empty) return r;
-  r.max_volume = with_worst_case(r.feasible, max_volume(r.feasible));
-  r.centroid = with_worst_case(r.feasible, centroid_3(r.feasible, route));
   return r;
 }
 

@@ -83,24 +83,24 @@ struct Candidates {
   std::vector<Point3> rational;
   std::vector<EdgeRoot> irrational;
 };
-Candidates candidates(const ConvexSet3& F, const internal::MaxVolumeCandidates& which) {
-  const auto& v = F.vertices;
+Candidates candidates(const LazyConvexSet3& F, const internal::MaxVolumeCandidates& which) {
+  const auto v = [&F](std::size_t i) -> const Point3& { return F.vertex(i); };
   Candidates out;
   std::vector<Point3>& rational = out.rational;
   std::vector<EdgeRoot>& irrational = out.irrational;
-  for (std::size_t i : which.vertices) rational.push_back(v[i]);
+  for (std::size_t i : which.vertices) rational.push_back(v(i));
   for (std::size_t face : which.faces) {  // polytope facets, or the polygon
-    const auto& f = F.faces[face];
-    const Point3 n = cross(sub(v[f[1]], v[f[0]]), sub(v[f[2]], v[f[0]]));
-    const Rational k = dot(n, v[f[0]]);
+    const auto& f = F.faces()[face];
+    const Point3 n = cross(sub(v(f[1]), v(f[0])), sub(v(f[2]), v(f[0])));
+    const Rational k = dot(n, v(f[0]));
     if (sgn(n.x) == 0 || sgn(n.y) == 0 || sgn(n.z) == 0) continue;
     if (sgn(k) * sgn(n.x) <= 0 || sgn(k) * sgn(n.y) <= 0 || sgn(k) * sgn(n.z) <= 0) continue;
     const Point3 d{Rational(k / (3 * n.x)), Rational(k / (3 * n.y)), Rational(k / (3 * n.z))};
     if (contains(F, d)) rational.push_back(d);
   }
   for (const auto& [i, j] : which.edges) {
-    const Point3& p = v[i];
-    const Point3 u = sub(v[j], p);
+    const Point3& p = v(i);
+    const Point3 u = sub(v(j), p);
     const auto [a, b, c, disc] = edge_derivative(p, u);
     auto consider = [&](const Rational& t) {
       if (sgn(t) > 0 && t < 1) rational.push_back(add(p, scale(u, t)));
@@ -227,11 +227,11 @@ std::vector<Seen> edge_candidates(const std::vector<E3>& e, std::size_t index, s
 }
 
 // F's edges, each (smaller index, larger), sorted.
-std::vector<std::pair<std::size_t, std::size_t>> edges_of(const ConvexSet3& F) {
+std::vector<std::pair<std::size_t, std::size_t>> edges_of(const LazyConvexSet3& F) {
   std::vector<std::pair<std::size_t, std::size_t>> edges;
-  for (const auto& f : F.faces)
+  for (const auto& f : F.faces())
     for (std::size_t i = 0; i < f.size(); ++i) edges.push_back(std::minmax(f[i], f[(i + 1) % f.size()]));
-  if (F.kind == ConvexKind3::segment) edges.push_back({0, 1});
+  if (F.kind() == ConvexKind3::segment) edges.push_back({0, 1});
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   return edges;
@@ -247,21 +247,26 @@ internal::StageCounts& counts() {
 namespace internal {
 
 MaxVolumeCandidates all_max_volume_candidates(const ConvexSet3& F) {
+  return all_max_volume_candidates(LazyConvexSet3(F));
+}
+
+MaxVolumeCandidates all_max_volume_candidates(const LazyConvexSet3& F) {
   MaxVolumeCandidates all;
-  for (std::size_t i = 0; i < F.vertices.size(); ++i) all.vertices.push_back(i);
-  for (std::size_t f = 0; f < F.faces.size(); ++f) all.faces.push_back(f);
+  for (std::size_t i = 0; i < F.size(); ++i) all.vertices.push_back(i);
+  for (std::size_t f = 0; f < F.faces().size(); ++f) all.faces.push_back(f);
   all.edges = edges_of(F);
   return all;
 }
 
 std::optional<MaxVolumeCandidates> max_volume_contenders(const ConvexSet3& F) {
-  if (F.kind != ConvexKind3::polytope) return std::nullopt;
-  std::vector<E3> e;
-  e.reserve(F.vertices.size());
-  for (const Point3& v : F.vertices) {
-    e.push_back(enclose_point(v));
-    if (!finite(e.back())) return std::nullopt;
-  }
+  return max_volume_contenders(LazyConvexSet3(F));
+}
+
+std::optional<MaxVolumeCandidates> max_volume_contenders(const LazyConvexSet3& F) {
+  if (F.kind() != ConvexKind3::polytope) return std::nullopt;
+  const std::vector<E3>& e = F.enclosures();
+  for (const E3& x : e)
+    if (!finite(x)) return std::nullopt;
   std::vector<Seen> seen;
   double best = -std::numeric_limits<double>::infinity();  // the largest value certainly attained
   for (std::size_t i = 0; i < e.size(); ++i) {
@@ -278,11 +283,11 @@ std::optional<MaxVolumeCandidates> max_volume_contenders(const ConvexSet3& F) {
     }
   // Facets: the outward planes, then each stationary point whose value could win, placed.
   std::vector<EnclosedPlane> planes;
-  for (const auto& f : F.faces) planes.push_back(enclosed_facet_plane(e, f));
+  for (const auto& f : F.faces()) planes.push_back(enclosed_facet_plane(e, f));
   std::vector<std::pair<Seen, E3>> faces;
-  for (std::size_t f = 0; f < F.faces.size(); ++f) {
+  for (std::size_t f = 0; f < F.faces().size(); ++f) {
     E3 point{};
-    const std::optional<Seen> s = face_candidate(e, F.faces[f], planes[f], f, point);
+    const std::optional<Seen> s = face_candidate(e, F.faces()[f], planes[f], f, point);
     if (s && s->upper >= best) faces.push_back({*s, point});
   }
   for (auto& [s, point] : faces) {  // `best` grows as facets are placed
@@ -318,6 +323,10 @@ std::optional<MaxVolumeCandidates> max_volume_contenders(const ConvexSet3& F) {
 }
 
 MapEstimate3 max_volume_over(const ConvexSet3& F, const MaxVolumeCandidates& which) {
+  return max_volume_over(LazyConvexSet3(F), which);
+}
+
+MapEstimate3 max_volume_over(const LazyConvexSet3& F, const MaxVolumeCandidates& which) {
   Candidates c = candidates(F, which);
   std::vector<Point3>& rational = c.rational;
   std::vector<EdgeRoot>& irrational = c.irrational;
@@ -370,8 +379,10 @@ const StageCounts& max_volume_stage_counts() { return counts(); }
 
 }  // namespace internal
 
-MapEstimate3 max_volume(const ConvexSet3& F) {
-  if (F.kind == ConvexKind3::empty) throw std::invalid_argument("max_volume: empty feasible set");
+MapEstimate3 max_volume(const ConvexSet3& F) { return max_volume(LazyConvexSet3(F)); }
+
+MapEstimate3 max_volume(const LazyConvexSet3& F) {
+  if (F.kind() == ConvexKind3::empty) throw std::invalid_argument("max_volume: empty feasible set");
   const std::optional<internal::MaxVolumeCandidates> contenders = internal::max_volume_contenders(F);
   return internal::staged(
       counts(),
@@ -379,7 +390,7 @@ MapEstimate3 max_volume(const ConvexSet3& F) {
         if (!contenders || !contenders->faces.empty() || !contenders->edges.empty() ||
             contenders->vertices.size() != 1)
           return std::nullopt;
-        return exact_map_estimate_3("max_volume", F.vertices[contenders->vertices.front()]);
+        return exact_map_estimate_3("max_volume", F.vertex(contenders->vertices.front()));
       },
       [&]() -> std::optional<MapEstimate3> {
         if (!contenders) return std::nullopt;

@@ -215,15 +215,26 @@ BOOST_AUTO_TEST_CASE(clip_decides_ties_exactly) {
   const internal::ClippedPolytope r = internal::clip_polytope({1, 1, 1}, planes, &counts);
   BOOST_TEST((r.outcome == internal::ClippedPolytope::Outcome::polytope));
   const std::vector<Point3> want{{0, 0, 0}, {0, 0, 1}, {0, 1, 0}, {R(1, 2), R(1, 2), 0}};
-  BOOST_TEST((r.set.vertices == want));
-  BOOST_TEST(r.set.faces.size() == 4u);
-  BOOST_TEST(volume(r.set) == R(1, 12));
+  BOOST_TEST((r.set.exact().vertices == want));
+  BOOST_TEST(r.set.faces().size() == 4u);
+  BOOST_TEST(volume(r.set.exact()) == R(1, 12));
   BOOST_TEST(counts.exact > 0);
   BOOST_TEST(counts.filtered > 0);
   // A plane that leaves only a face: flat; one that leaves nothing: empty.
   planes.push_back(plane(-1, -1, -1, -1));
   BOOST_TEST((internal::clip_polytope({1, 1, 1}, planes).outcome == internal::ClippedPolytope::Outcome::flat));
   planes.back() = plane(-1, -1, -1, -2);
+  BOOST_TEST((internal::clip_polytope({1, 1, 1}, planes).outcome == internal::ClippedPolytope::Outcome::empty));
+  // One that leaves only the vertex 0 (x + y + z <= 0): the point, when the other rows hold there
+  // (z <= 1, and a row through it), else empty (x >= 1/4) — in whichever order the rows come.
+  planes.back() = plane(1, 1, 1, 0);
+  planes.push_back(plane(0, 0, 1, 1));
+  planes.push_back(plane(2, -1, 0, 0));
+  const internal::ClippedPolytope p = internal::clip_polytope({1, 1, 1}, planes);
+  BOOST_TEST((p.outcome == internal::ClippedPolytope::Outcome::polytope));
+  BOOST_TEST((p.set.kind() == ConvexKind3::point));
+  BOOST_TEST((p.set.exact().vertices == std::vector<Point3>{{0, 0, 0}}));
+  planes.push_back(plane(-4, 0, 0, -1));
   BOOST_TEST((internal::clip_polytope({1, 1, 1}, planes).outcome == internal::ClippedPolytope::Outcome::empty));
 }
 

@@ -134,6 +134,24 @@ BOOST_AUTO_TEST_CASE(estimate_3d_on_pixel_colours) {
   BOOST_TEST(!t.max_volume.has_value());
   BOOST_TEST((t.max_trace->selection.estimate.exact == r.max_trace->selection.estimate.exact));
   BOOST_TEST((t.feasible == r.feasible));
+  // Without the exact F3 (what the CLI and Python ask): the same answers, F3 empty of vertices
+  // until asked for, then the same set; fewer of its vertices were made exact than it has.
+  Estimate3Options lazy;
+  lazy.exact_feasible_set = false;
+  const ImageEstimate3 z = estimate_3d(canonical, image, lazy);
+  BOOST_TEST(z.feasible.vertices.empty());
+  BOOST_TEST((z.lazy_feasible.kind() == r.feasible.kind));
+  BOOST_TEST(z.lazy_feasible.size() == r.feasible.vertices.size());
+  BOOST_TEST(z.lazy_feasible.exact_vertices() < z.lazy_feasible.size());
+  for (Rule3 rule : all_rules_3) {
+    const MapEstimate3 &a = z[rule]->selection.estimate, &b = r[rule]->selection.estimate;
+    BOOST_TEST(a.map == b.map);
+    BOOST_TEST(a.error_bound == b.error_bound);
+    BOOST_TEST((a.exact == b.exact));
+    BOOST_TEST(*z[rule]->selection.worst_case_deg == *r[rule]->selection.worst_case_deg);
+    BOOST_TEST(*z[rule]->light == *r[rule]->light);
+  }
+  BOOST_TEST((z.lazy_feasible.exact() == r.feasible));
 }
 
 BOOST_AUTO_TEST_CASE(estimate_3d_refuses_chromaticity_lifts) {

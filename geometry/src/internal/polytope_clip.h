@@ -4,7 +4,7 @@
 // (docs/derivations.md §4.6): the full-dimensional route of Forsyth's CRULE feasible set.
 // Internal to gmcc::geometry.
 
-#include <gmcc/geometry/convex_set_3.h>
+#include <gmcc/geometry/lazy_convex_set_3.h>
 
 #include <gmpxx.h>
 
@@ -26,12 +26,15 @@ struct ClipCounts {
   long exact = 0;     // needed the exact integer evaluation
 };
 
-// What clip_polytope found: a 3-dimensional polytope (in `set`, canonical form), the empty set,
+// What clip_polytope found: a 3-dimensional polytope or a point (in `set`, canonical form, its
+// vertices made exact only on request: lazy_convex_set_3.h; a point when a half-space left one
+// vertex on it and the others strictly outside, and that vertex satisfies every other row), the
+// empty set,
 // or a lower-dimensional non-empty set (`flat`: some half-space left no vertex strictly inside;
 // its exact form is for another route, the LP one).
 struct ClippedPolytope {
   enum class Outcome { polytope, empty, flat } outcome = Outcome::empty;
-  ConvexSet3 set;
+  LazyConvexSet3 set;
 };
 
 // A plane's filter copy: a_k·2^-E and b·2^-E (E the largest binary exponent among them), each
@@ -53,8 +56,8 @@ ClipFacets clip_facets(std::vector<IntegerPlane3> planes);
 // Vertices are kept as triples of planes through them and faces as cycles of vertices
 // counter-clockwise seen from outside; each half-space removes the vertices strictly outside it,
 // cuts the edges that cross it and closes the cut with a new facet. A half-space's exact
-// coefficients are built only when a decision or a final vertex needs them, exact coordinates
-// only for the final vertices. `counts`, when given, adds the decisions per stage.
+// coefficients are built only when a decision or a final vertex needs them, exact homogeneous
+// coordinates only for the final vertices (and lowest terms only when asked, LazyConvexSet3). `counts`, when given, adds the decisions per stage.
 ClippedPolytope clip_polytope(const Point3& box, const ClipFacets& facets, const std::vector<Point3>& points,
                               ClipCounts* counts = nullptr);
 // One group of rows for clip_polytope: (a ⊙ p)·x <= b for every point p and facet a·x <= b.

@@ -3,6 +3,7 @@
 // (docs/derivations.md §2.4). Internal to gmcc::selection.
 
 #include <gmcc/geometry/convex_set_3.h>
+#include <gmcc/geometry/lazy_convex_set_3.h>
 #include <gmcc/selection/map_estimate_3.h>
 
 #include "internal/staged.h"
@@ -20,6 +21,8 @@ inline constexpr double certified_centroid_relative_bound = 0x1p-32;
 /// when F3 is not a polytope, the volume is not certainly positive or a component's bound exceeds
 /// certified_centroid_relative_bound of it.
 std::optional<MapEstimate3> certified_centroid_filtered(const ConvexSet3& F3);
+/// The same from F3's enclosures alone (lazy_convex_set_3.h): no vertex is made exact.
+std::optional<MapEstimate3> certified_centroid_filtered(const LazyConvexSet3& F3);
 
 /// How often each stage answered centroid_3's certified route, since the start (0: the filter,
 /// 1: the exact centroid).

@@ -7,6 +7,7 @@
 
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/convex_set_3.h>
+#include <gmcc/geometry/lazy_convex_set_3.h>
 
 #include <cstddef>
 #include <memory>
@@ -75,6 +76,9 @@ ConvexSet3 feasible_set_3d(const CanonicalConstraints3& canonical, const std::ve
 struct GamutConstraint3 {
   const CanonicalConstraints3* canonical;  ///< the type's prepared canonical gamut
   const std::vector<Colour>* image;        ///< the image's colours of that type
+  /// True when `image` holds its hull's vertices already (ColourSet::hull_3d): the hull step is
+  /// skipped. Only a saving: F3 is the same set from any superset of the hull's vertices.
+  bool hull_vertices = false;
 };
 
 /// The maps d that take every type's image colours into its own canonical gamut at once: the
@@ -85,6 +89,14 @@ struct GamutConstraint3 {
 /// 	hrows std::invalid_argument if `constraints` is empty or as feasible_set_3d for any of them.
 /// Complexity: as feasible_set_3d with the rows of every type.
 ConvexSet3 feasible_set_3d(const std::vector<GamutConstraint3>& constraints);
+
+/// The same F3 as feasible_set_3d(constraints) above, its vertices in lowest terms made only on
+/// request (lazy_convex_set_3.h): from the clip, each vertex's homogeneous integer coordinates and
+/// the enclosures of its exact coordinates; exact() is feasible_set_3d(constraints), which calls
+/// this. What estimate_3d's rules read (their filters need only the enclosures, their exact stages
+/// a few vertices: docs/math.md §1b "The lazy form"). Degenerate kinds (the LP route) come exact.
+/// \throws as feasible_set_3d. Complexity: as feasible_set_3d, less the lowest terms.
+LazyConvexSet3 feasible_set_3d_lazy(const std::vector<GamutConstraint3>& constraints);
 
 /// F3, exactly, with its kind (polytope, polygon, segment, point or empty): the same as
 /// feasible_set_3d(CanonicalConstraints3(canonical, black), image), which it calls; the route

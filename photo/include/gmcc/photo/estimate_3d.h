@@ -42,7 +42,12 @@ struct ImageSelection3 {
 
 /// F3 of one image and the rules asked for. Absent rules were not asked for, or F3 is empty.
 struct ImageEstimate3 {
-  ConvexSet3 feasible;  ///< F3, exactly
+  /// F3, exactly: filled when Estimate3Options::exact_feasible_set asks (the default); otherwise
+  /// empty, and F3 is in `lazy_feasible`
+  ConvexSet3 feasible;
+  /// F3 with its vertices made exact only on request (lazy_convex_set_3.h), always filled: its
+  /// kind and vertex count, and exact() for the whole set (equal to `feasible` when that is filled)
+  LazyConvexSet3 lazy_feasible;
   /// the rules' answers
   ///@{
   std::optional<ImageSelection3> max_volume, centroid, max_trace;
@@ -58,6 +63,10 @@ struct Estimate3Options {
   /// F3, max-volume and max-trace are exact on either route.
   Crule3dRoute route = Crule3dRoute::certified;
   Colour canonical_light{Rational(1), Rational(1), Rational(1)};  ///< c, every channel > 0
+  /// Whether ImageEstimate3::feasible is filled with F3 in lowest terms (every vertex's gcds:
+  /// about a third of F3's cost on a photograph). The rules' answers are the same either way; a
+  /// caller that prints only doubles (the CLI, Python) leaves it false and reads lazy_feasible.
+  bool exact_feasible_set = true;
 };
 
 /// Gamut mapping in 3-D on one image's colours.

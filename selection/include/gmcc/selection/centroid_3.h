@@ -4,6 +4,7 @@
 /// 2002, Part I, on Forsyth's 1990 set F3), exact or certified.
 
 #include <gmcc/geometry/convex_set_3.h>
+#include <gmcc/geometry/lazy_convex_set_3.h>
 #include <gmcc/selection/map_estimate_3.h>
 
 namespace gmcc {
@@ -24,5 +25,9 @@ enum class Crule3dRoute { exact, certified };
 ///   lower-dimensional kinds and wherever the volume's sign or a range cannot be certified.
 /// \pre F3 not empty. \throws std::invalid_argument if it is. O(total facet size).
 MapEstimate3 centroid_3(const ConvexSet3& F3, Crule3dRoute route = Crule3dRoute::exact);
+/// The same on F3 with vertices made exact on request (lazy_convex_set_3.h): the certified route
+/// reads only the enclosures; the exact route, and a fallback, make every vertex. Equal to
+/// centroid_3(F3.exact(), route).
+MapEstimate3 centroid_3(const LazyConvexSet3& F3, Crule3dRoute route = Crule3dRoute::exact);
 
 }  // namespace gmcc

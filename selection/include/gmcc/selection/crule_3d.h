@@ -24,6 +24,9 @@ double diagonal_map_angular_error_deg(const Point3& estimate, const Point3& trut
 /// the octant, so it is attained at a non-zero vertex; chosen exactly by cos² in ℚ.
 /// \pre F3 has a non-zero vertex, m != 0. O(|F3|).
 double worst_case_map_deg_3d(const ConvexSet3& F3, const Point3& m);
+/// The same on F3 with vertices made exact on request (lazy_convex_set_3.h): only the filter's
+/// contenders are made exact. Equal to worst_case_map_deg_3d(F3.exact(), m).
+double worst_case_map_deg_3d(const LazyConvexSet3& F3, const Point3& m);
 
 /// One 3-D rule's answer and its worst case within F3.
 struct Selection3 {
@@ -34,6 +37,8 @@ struct Selection3 {
 /// A 3-D rule's map with its worst case within F3 (worst_case_map_deg_3d, from the map as
 /// measured), absent when the map or F3 is only {0}: how every 3-D rule's answer is reported.
 Selection3 with_worst_case(const ConvexSet3& F3, MapEstimate3 estimate);
+/// The same on F3 with vertices made exact on request (lazy_convex_set_3.h).
+Selection3 with_worst_case(const LazyConvexSet3& F3, MapEstimate3 estimate);
 
 /// CRULE in 3-D: F3 and its selections (absent when F3 is empty).
 struct Crule3d {

@@ -5,6 +5,7 @@
 /// (docs/math.md §1c).
 
 #include <gmcc/geometry/convex_set_3.h>
+#include <gmcc/geometry/lazy_convex_set_3.h>
 #include <gmcc/selection/map_estimate_3.h>
 
 namespace gmcc {
@@ -16,5 +17,8 @@ namespace gmcc {
 /// `exact`, rule `max_trace`.
 /// \pre F3 not empty. \throws std::invalid_argument if it is. O(|F3| vertices).
 MapEstimate3 max_trace(const ConvexSet3& F3);
+/// The same on F3 with vertices made exact on request (lazy_convex_set_3.h): only the filter's
+/// contenders are made exact. Equal to max_trace(F3.exact()).
+MapEstimate3 max_trace(const LazyConvexSet3& F3);
 
 }  // namespace gmcc

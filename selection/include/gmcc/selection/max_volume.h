@@ -4,6 +4,7 @@
 /// possible, argmax d1·d2·d3 over the 3-D feasible set (docs/derivations.md §2.4).
 
 #include <gmcc/geometry/convex_set_3.h>
+#include <gmcc/geometry/lazy_convex_set_3.h>
 #include <gmcc/selection/map_estimate_3.h>
 
 namespace gmcc {
@@ -23,5 +24,9 @@ namespace gmcc {
 /// lexicographically smallest vertex is returned, as max_area does.
 /// \pre F3 not empty, components >= 0. Complexity O(|F3|) candidates.
 MapEstimate3 max_volume(const ConvexSet3& F3);
+/// The same on F3 with vertices made exact on request (lazy_convex_set_3.h): the filter reads the
+/// enclosures, the exact stage makes only the vertices of the candidates it compares. Equal to
+/// max_volume(F3.exact()).
+MapEstimate3 max_volume(const LazyConvexSet3& F3);
 
 }  // namespace gmcc

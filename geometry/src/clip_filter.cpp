@@ -1,0 +1,124 @@
+// The clip's certified box and all-inside tests over the live vertices (internal/clip_filter.h).
+#include "internal/clip_filter.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gmcc::internal {
+namespace {
+
+constexpr double u = 0x1p-53;
+// Group boxes are used only with non-zero bounds in [2^-400, 2^400]: their products with filter
+// coefficients (0 or in [2^-200, 2^200]) are then normal, so each rounding is within u relative.
+constexpr double box_min = 0x1p-400, box_max = 0x1p400;
+bool box_range(double x) { return x == 0 || (x >= box_min && x <= box_max); }
+
+}  // namespace
+
+// x_k = X/W <= (h_k + err_k)/(h_3 − err_3) when W~ > err_3 (settled when the vertex was made)
+// and >= (h_k − err_k)/(h_3 + err_3) when that is positive, else >= 0 (every vertex satisfies the
+// box rows x_k >= 0); 1 ± 8u covers the roundings.
+void VertexDoubles::settle() {
+  const double a = std::fabs(h[0]) + std::fabs(h[1]) + std::fabs(h[2]), e = err[0] + err[1] + err[2];
+  alpha = e + 16 * u * (a + e);
+  beta = err[3] + 16 * u * (std::fabs(h[3]) + err[3]);
+  const double w_lo = h[3] - err[3], w_hi = h[3] + err[3];
+  bounded = filtered && w_lo > 0;
+  if (!bounded) return;
+  for (std::size_t c = 0; c < 3; ++c) {
+    hi[c] = std::max(0.0, (h[c] + err[c]) / w_lo * (1 + 8 * u));
+    lo[c] = std::max(0.0, (h[c] - err[c]) / w_hi * (1 - 8 * u));
+  }
+}
+
+void LiveVertexFilter::rebuild(const std::vector<const VertexDoubles*>& live) {
+  const std::size_t n = live.size();
+  all_filtered_ = box_ok_ = true;
+  top_ = {0, 0, 0};
+  double centre[3] = {0, 0, 0};
+  for (const VertexDoubles* x : live) {
+    all_filtered_ = all_filtered_ && x->filtered;
+    box_ok_ = box_ok_ && x->bounded;
+    if (!box_ok_) continue;
+    for (std::size_t c = 0; c < 3; ++c) top_[c] = std::max(top_[c], x->hi[c]), centre[c] += x->lo[c] + x->hi[c];
+  }
+  box_ok_ = box_ok_ && all_filtered_;
+  // The groups: the octant of each vertex's box centre about the mean of those centres (one group
+  // when the bounds are not known), counted, then placed.
+  std::array<std::size_t, 9> start{};
+  octant_.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (box_ok_)
+      for (std::size_t c = 0; c < 3; ++c)
+        if ((live[i]->lo[c] + live[i]->hi[c]) * double(n) > centre[c]) octant_[i] |= 1 << c;
+    ++start[static_cast<std::size_t>(octant_[i]) + 1];
+  }
+  for (std::size_t o = 0; o < 8; ++o) start[o + 1] += start[o];
+  groups_.clear();
+  std::array<std::size_t, 8> group_of{}, next{};
+  for (std::size_t o = 0; o < 8; ++o) {
+    group_of[o] = groups_.size(), next[o] = 6 * start[o];
+    if (start[o + 1] > start[o])
+      groups_.push_back({{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {0, 0, 0}, 6 * start[o], 6 * start[o + 1], box_ok_});
+  }
+  packed_.resize(6 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const VertexDoubles& x = *live[i];
+    const auto o = static_cast<std::size_t>(octant_[i]);
+    double* h = &packed_[next[o]];
+    next[o] += 6;
+    h[0] = x.h[0], h[1] = x.h[1], h[2] = x.h[2], h[3] = x.h[3], h[4] = x.alpha, h[5] = x.beta;
+    if (!box_ok_) continue;
+    Group& g = groups_[group_of[o]];
+    for (std::size_t c = 0; c < 3; ++c) {
+      g.lo[c] = std::min(g.lo[c], x.lo[c]), g.hi[c] = std::max(g.hi[c], x.hi[c]);
+      g.boxed = g.boxed && box_range(x.lo[c]) && box_range(x.hi[c]);
+    }
+  }
+}
+
+// True when plane i holds on the box [0, top_] ⊇ the polytope: Σ max(a_k, 0)·top_k <= b, with
+// the filter copy's coefficients within 6u of the exact ones (scaled) and the sum's roundings
+// covered by 1 + 16u on the left and 1 - 16u on the right.
+bool LiveVertexFilter::box_inside(const double* a) const {
+  if (!box_ok_) return false;
+  const double lhs =
+      (std::max(a[0], 0.0) * top_[0] + std::max(a[1], 0.0) * top_[1] + std::max(a[2], 0.0) * top_[2]) * (1 + 16 * u);
+  return lhs <= a[3] * (1 - 16 * u);
+}
+
+// max over the box of a·x is P − N, P = Σ_{a_k > 0} a_k hi_k and N = Σ_{a_k < 0} |a_k| lo_k (both
+// >= 0). With each coefficient within 6u of the exact one and the sums' roundings, the exact
+// maximum is at most P~(1 + 11u) − N~(1 − 11u) and the exact b at least b~ − 6u|b~|; so
+// P~ − (N~ + b~) <= −16u(P~ + N~ + |b~|), evaluated with two roundings of at most u·T each
+// (T = P~ + N~ + |b~|) and an exact product by 16u, shows the maximum <= b.
+bool LiveVertexFilter::group_inside(const Group& g, const double* a) const {
+  if (!g.boxed) return false;
+  double p = 0, n = 0;
+  for (int k = 0; k < 3; ++k) {
+    if (a[k] > 0) p += a[k] * g.hi[k];
+    else n -= a[k] * g.lo[k];
+  }
+  const double t = p + n + std::fabs(a[3]);
+  return p - (n + a[3]) <= -16 * u * t;
+}
+
+// A vertex: s = a·(X, Y, Z) − b·W < −bound with the side test's bound enlarged (1 + 64u for its
+// evaluation, 1 + 16u more for α, β); a zero bound means every term is exactly zero (the vertex
+// exactly on the plane).
+bool LiveVertexFilter::none_outside(const double* a) const {
+  if (!all_filtered_) return false;
+  const double m = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])}) * (1 + 128 * u);
+  const double b = std::fabs(a[3]) * (1 + 128 * u);
+  for (const Group& g : groups_) {
+    if (group_inside(g, a)) continue;
+    for (std::size_t k = g.begin; k < g.end; k += 6) {
+      const double* h = &packed_[k];
+      const double v = a[0] * h[0] + a[1] * h[1] + a[2] * h[2] - a[3] * h[3], bound = m * h[4] + b * h[5];
+      if (!(v < -bound || (bound == 0 && v == 0))) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace gmcc::internal

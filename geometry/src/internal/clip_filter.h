@@ -1,0 +1,55 @@
+#pragma once
+// The clip's cheap tests of a half-space against the live vertices of its polytope
+// (polytope_clip.cpp, docs/derivations.md §4.6): from the vertices' filtered homogeneous
+// coordinates, a bounding box of the polytope and, for the all-inside pass, the vertices grouped
+// by octant about the polytope's centre, each group with a certified box, so that a half-space
+// clear of a group's box skips its vertices. Every answer is certified (a true answer is true of
+// the exact vertices); a false one decides nothing. Internal to gmcc::geometry.
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace gmcc::internal {
+
+// A vertex as the filter knows it: homogeneous coordinates (X, Y, Z, W) of the filter planes'
+// solution, W > 0, each within err[k] of the exact value; meaningful when `filtered`.
+struct VertexDoubles {
+  double h[4] = {0, 0, 0, 0};
+  double err[4] = {0, 0, 0, 0};
+  bool filtered = false;
+  // Made once from h and err by settle() (a vertex never changes): α and β with
+  // E + 16u(T + E) <= max_k |a_k|·α + |b|·β for any plane (a, b) (T and E as in the clip's side
+  // test); certified bounds lo <= x_k <= hi of its coordinates, valid when `bounded`.
+  double alpha = 0, beta = 0;
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  bool bounded = false;
+  void settle();
+};
+
+class LiveVertexFilter {
+ public:
+  // The filter of the polytope whose vertices are `live` (rebuilt after every cut).
+  void rebuild(const std::vector<const VertexDoubles*>& live);
+  // True when the half-space a·x <= b (a filter copy: a0, a1, a2, b, each within a relative 6u
+  // of the exact plane's scaled by a power of 2) holds on a box containing the polytope.
+  bool box_inside(const double* a) const;
+  // True when no live vertex is strictly outside the half-space (each strictly inside, exactly
+  // on it, or in a group whose box holds in it).
+  bool none_outside(const double* a) const;
+
+ private:
+  struct Group {
+    double lo[3], hi[3];  // certified bounds of its vertices' coordinates (lo >= 0)
+    std::size_t begin, end;  // its vertices in packed_, by 6
+    bool boxed;           // the bounds are usable
+  };
+  bool group_inside(const Group& g, const double* a) const;
+  std::vector<double> packed_;  // per live vertex, grouped: h[0..3], then α and β (see none_outside)
+  std::vector<Group> groups_;
+  std::array<double, 3> top_{};  // the coordinates' upper bounds over the polytope
+  std::vector<int> octant_;                    // scratch for rebuild: each vertex's group
+  bool all_filtered_ = false, box_ok_ = false;
+};
+
+}  // namespace gmcc::internal

@@ -1,0 +1,160 @@
+// An exact 3-D convex set whose vertices are made exact on request (lazy_convex_set_3.h).
+#include <gmcc/geometry/lazy_convex_set_3.h>
+
+#include <gmcc/geometry/point3_arithmetic.h>
+#include <gmcc/numerics/internal_check.h>
+#include <gmcc/numerics/rational_to_float.h>
+
+#include "internal/facet_filter.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <numeric>
+#include <optional>
+
+namespace gmcc {
+
+struct LazyConvexSet3::State {
+  ConvexKind3 kind = ConvexKind3::empty;
+  std::vector<std::vector<std::size_t>> faces;
+  std::vector<Enclosure3> enclosures;
+  std::vector<std::array<mpz_class, 4>> homogeneous;  // (X, Y, Z, W), W > 0; empty when built exact
+  std::vector<std::optional<Point3>> exact;           // made so far
+  std::vector<char> zero;
+  std::size_t made = 0;
+};
+
+namespace {
+
+// x/w (w > 0) as enclose_rational(x/w) would give it from the reduced fraction, without reducing:
+// mpq_get_d truncates the quotient whatever the representation, and the range policy's
+// magnitude e = bits(|x|) − bits(w) is within 1 of the reduced one's (both bracket log2 |x/w|:
+// 2^(e−1) < |x/w| < 2^(e+1)), so |e| <= limit − 1 is in range and |e| >= limit + 2 is out either
+// way; between, the fraction is reduced and the policy applied to it. `truncated` gets the
+// truncated double (nothing when outside the range).
+Enclosure enclose_quotient(const mpz_class& x, const mpz_class& w, std::optional<double>& truncated) {
+  if (sgn(x) == 0) {
+    truncated = 0.0;
+    return Enclosure::exact(0);
+  }
+  const long e = std::labs(numerics::binary_magnitude(x.get_mpz_t(), w.get_mpz_t()));
+  const long limit = numerics::double_magnitude_limit;
+  if (e <= limit - 1) {
+    mpq_t q;  // a read-only view of (x, w): mpq_get_d needs no lowest terms
+    *mpq_numref(q) = *x.get_mpz_t();
+    *mpq_denref(q) = *w.get_mpz_t();
+    truncated = mpq_get_d(q);
+  } else if (e >= limit + 2) {
+    truncated = std::nullopt;
+  } else {
+    Rational r(x, w);
+    r.canonicalize();
+    truncated = numerics::certified_double(r.get_mpq_t());
+  }
+  if (!truncated) return {0, Enclosure::unbounded};
+  return Enclosure::relative(*truncated, 2 * Enclosure::u);
+}
+
+// sign(a_k/a_3 − b_k/b_3) for homogeneous points with positive last coordinates, exactly.
+int compare_exactly(const std::array<mpz_class, 4>& a, const std::array<mpz_class, 4>& b, int k) {
+  const auto i = static_cast<std::size_t>(k);
+  return sgn(mpz_class(a[i] * b[3]) - mpz_class(b[i] * a[3]));
+}
+
+}  // namespace
+
+LazyConvexSet3::LazyConvexSet3() : state_(std::make_shared<State>()) {}
+
+LazyConvexSet3::LazyConvexSet3(ConvexSet3 exact) : state_(std::make_shared<State>()) {
+  State& s = *state_;
+  s.kind = exact.kind;
+  s.faces = std::move(exact.faces);
+  for (Point3& p : exact.vertices) {
+    s.enclosures.push_back(enclose_point(p));
+    s.zero.push_back(sgn(p.x) == 0 && sgn(p.y) == 0 && sgn(p.z) == 0);
+    s.exact.emplace_back(std::move(p));
+  }
+  s.made = s.exact.size();
+}
+
+LazyConvexSet3 LazyConvexSet3::from_homogeneous(ConvexKind3 kind, std::vector<std::array<mpz_class, 4>> h,
+                                                std::vector<std::vector<std::size_t>> faces) {
+  const std::size_t n = h.size();
+  std::vector<Enclosure3> enclosures(n);
+  std::vector<std::array<std::optional<double>, 3>> key(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    GMCC_CHECK(sgn(h[i][3]) != 0, "LazyConvexSet3: a homogeneous vertex has W = 0");
+    if (sgn(h[i][3]) < 0)
+      for (mpz_class& c : h[i]) c = -c;
+    for (std::size_t k = 0; k < 3; ++k) enclosures[i][k] = enclose_quotient(h[i][k], h[i][3], key[i][k]);
+  }
+  // Lexicographic order: a truncated double below another's is a smaller value (truncation is
+  // monotone); equal or missing doubles are compared exactly.
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    for (int k = 0; k < 3; ++k) {
+      const auto& x = key[a][static_cast<std::size_t>(k)];
+      const auto& y = key[b][static_cast<std::size_t>(k)];
+      if (x && y && *x != *y) return *x < *y;
+      if (const int c = compare_exactly(h[a], h[b], k)) return c < 0;
+    }
+    return false;
+  });
+  LazyConvexSet3 out;
+  State& s = *out.state_;
+  s.kind = kind;
+  std::vector<std::size_t> rank(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    rank[order[i]] = i;
+    s.enclosures.push_back(enclosures[order[i]]);
+    s.zero.push_back(sgn(h[order[i]][0]) == 0 && sgn(h[order[i]][1]) == 0 && sgn(h[order[i]][2]) == 0);
+    s.homogeneous.push_back(std::move(h[order[i]]));
+  }
+  s.exact.resize(n);
+  s.faces = internal::canonical_faces(kind, std::move(faces), rank);
+  return out;
+}
+
+ConvexKind3 LazyConvexSet3::kind() const { return state_->kind; }
+std::size_t LazyConvexSet3::size() const { return state_->enclosures.size(); }
+const std::vector<std::vector<std::size_t>>& LazyConvexSet3::faces() const { return state_->faces; }
+const std::vector<Enclosure3>& LazyConvexSet3::enclosures() const { return state_->enclosures; }
+bool LazyConvexSet3::is_zero(std::size_t i) const { return state_->zero[i] != 0; }
+std::size_t LazyConvexSet3::exact_vertices() const { return state_->made; }
+
+const Point3& LazyConvexSet3::vertex(std::size_t i) const {
+  State& s = *state_;
+  std::optional<Point3>& v = s.exact[i];
+  if (!v) {
+    const std::array<mpz_class, 4>& h = s.homogeneous[i];
+    Point3 p{Rational(h[0], h[3]), Rational(h[1], h[3]), Rational(h[2], h[3])};
+    p.x.canonicalize(), p.y.canonicalize(), p.z.canonicalize();
+    v = std::move(p);
+    ++s.made;
+  }
+  return *v;
+}
+
+ConvexSet3 LazyConvexSet3::exact() const {
+  ConvexSet3 out;
+  out.kind = state_->kind;
+  out.faces = state_->faces;
+  for (std::size_t i = 0; i < size(); ++i) out.vertices.push_back(vertex(i));
+  return out;
+}
+
+bool contains(const LazyConvexSet3& s, const Point3& p) {
+  if (s.kind() != ConvexKind3::polytope) return contains(s.exact(), p);
+  const std::optional<std::vector<std::size_t>> unsure = internal::facets_left_by_filter(s.enclosures(), s.faces(), p);
+  if (!unsure) return false;
+  for (std::size_t k : *unsure) {
+    const auto& f = s.faces()[k];
+    const Point3 &a = s.vertex(f[0]), &b = s.vertex(f[1]), &c = s.vertex(f[2]);
+    const Point3 n = cross(sub(b, a), sub(c, a));  // outward
+    if (sgn(dot(n, sub(p, a))) > 0) return false;
+  }
+  return true;
+}
+
+}  // namespace gmcc
