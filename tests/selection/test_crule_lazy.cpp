@@ -1,6 +1,6 @@
 // F3 kept symbolic (issue 28 item 3; lazy_convex_set_3.h): the clip's LazyConvexSet3, whose
 // vertices are made exact only when an exact stage asks, against the exact ConvexSet3 of the LP
-// route (internal::feasible_set_3d_reference, the oracle): the same set (exact() equal), the same
+// route (test::feasible_set_3d_reference in tests/support, the oracle): the same set (exact() equal), the same
 // enclosures bit for bit, and every 3-D rule's answer the same map, bound and method — max-volume
 // (against its exact stage over every candidate), max-trace and the worst cases (against oracles
 // written here over every vertex in ℚ), the centroid on both routes — on hundreds of seeded
@@ -20,6 +20,7 @@
 
 #include "internal/crule_exact.h"
 #include "internal/max_volume_route.h"
+#include "support/cgal_references.h"
 
 #include <boost/test/unit_test.hpp>
 
@@ -121,7 +122,7 @@ void agree(const std::vector<GamutConstraint3>& g, const ConvexSet3& E, Rng& rng
 void agree(const std::vector<Colour>& canonical, const std::vector<Colour>& image, CanonicalBlack black, Rng& rng,
            Tally& t) {
   const CanonicalConstraints3 G(canonical, black);
-  const ConvexSet3 E = internal::feasible_set_3d_reference(canonical, image, black == CanonicalBlack::include);
+  const ConvexSet3 E = test::feasible_set_3d_reference(canonical, image, black);
   agree({{&G, &image}}, E, rng, t);
 }
 
