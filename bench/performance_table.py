@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Run every performance benchmark of issue 6 and print the target table (docs/performance.md).
+"""Run every performance benchmark of issues 6 and 28 and print the target table (docs/performance.md).
 
     bench/performance_table.py [--build build] [--threads 2] [--quick]
 
@@ -9,7 +9,12 @@ Rows, each a ratio measured within one run (or one process) so that machine load
   - per scene: bench_scene's certified route (what the experiment runs) and exact route against
     the same pipeline on plain doubles, 11 colours and 1-11 colours, 12-vertex canonical hull;
   - many colours: bench_hull, the exact image-gamut hull of 10 ... 10^7 chromaticities;
-  - 3-D mean: bench_mean_3d, the closed form against the paper's Monte Carlo at 10^6 samples.
+  - 3-D mean: bench_mean_3d, the closed form against the paper's Monte Carlo at 10^6 samples and
+    against the naive double evaluation of the same polygons (issue 28);
+  - batch selection (issue 28): bench_select_batch, scenes per second of `select_scene` in the
+    library and of `gmcc select --images`, every worst case;
+  - CRULE per scene (issue 28): bench_crule, the certified CRULE scene (F3 kept symbolic, both
+    selections and their worst cases) against the 2-D certified scene, same scenes.
 --quick runs 50 scenes per cell for the whole experiment (about 1/10 of it) instead of 500.
 Needs a Release build with the benchmarks (cmake -DCMAKE_BUILD_TYPE=Release; target bench).
 """
@@ -32,6 +37,43 @@ def google_benchmark(binary, *flags, time="cpu_time"):
     unit = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
     return {b["name"]: b[time] * unit[b["time_unit"]] for b in json.loads(out)["benchmarks"]
             if b.get("run_type", "iteration") == "iteration"}
+
+
+def google_counters(binary, counter, *flags):
+    """{benchmark name: value of `counter`} from one run of a Google Benchmark binary."""
+    out = subprocess.run([binary, "--benchmark_format=json", *flags], check=True,
+                         stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True).stdout
+    return {b["name"]: b[counter] for b in json.loads(out)["benchmarks"]
+            if b.get("run_type", "iteration") == "iteration" and counter in b}
+
+
+def issue_28_rows(bench):
+    """The rows of issue 28's targets, each a ratio or a rate within one run."""
+    rows = []
+    m3 = google_benchmark(os.path.join(bench, "bench_mean_3d"),
+                          "--benchmark_filter=analytic_auto|double_naive|monte_carlo/1000000")
+    r = m3["monte_carlo/1000000"] / m3["analytic_auto"]
+    rows.append(("3-D mean: Monte Carlo 10^6 / closed form", "%.0f×" % r, ">= 10^4×", r >= 1e4))
+    r = m3["analytic_auto"] / m3["double_naive"]
+    rows.append(("3-D mean: closed form, correctly rounded / naive double",
+                 "%.2f× (%.2f µs / %.2f µs)" % (r, m3["analytic_auto"] * 1e6, m3["double_naive"] * 1e6),
+                 "<= 2×", r <= 2))
+    rates = google_counters(os.path.join(bench, "bench_select_batch"), "scenes_per_s",
+                            "--benchmark_filter=^library_batch$|cli_batch/all")
+    lib = next(v for k, v in rates.items() if k.startswith("library_batch"))
+    cli = next(v for k, v in rates.items() if k.startswith("cli_batch"))
+    rows.append(("batch selection, every worst case: library", "%.0f scenes/s" % lib, ">= 2×10^4", lib >= 2e4))
+    rows.append(("batch selection, every worst case: gmcc select --images", "%.0f scenes/s" % cli, ">= 10^4",
+                 cli >= 1e4))
+    cr = google_benchmark(os.path.join(bench, "bench_crule"),
+                          "--benchmark_filter=crule_3d_certified|crule_3d_lazy|scene_certified_2d")
+    for name in ("crule_3d_certified", "crule_3d_lazy"):
+        if name in cr:
+            r = cr[name] / cr["scene_certified_2d"]
+            rows.append(("CRULE scene, certified (%s) / 2-D certified scene" % name,
+                         "%.0f× (%.0f µs / %.1f µs)" % (r, cr[name] * 1e6, cr["scene_certified_2d"] * 1e6), "<= 5×",
+                         r <= 5))
+    return rows
 
 
 def main():
@@ -75,9 +117,7 @@ def main():
     scaling = ", ".join("10^%d: %.3g ms" % (len(str(n)[1:]), hull["filtered/%d" % n] * 1e3)
                         for n in (10, 100, 1000, 10**4, 10**5, 10**6, 10**7))
 
-    m3 = google_benchmark(os.path.join(bench, "bench_mean_3d"), "--benchmark_filter=analytic_auto|monte_carlo/1000000")
-    r = m3["monte_carlo/1000000"] / m3["analytic_auto"]
-    rows.append(("3-D mean: Monte Carlo 10^6 / closed form", "%.0f×" % r, ">= 10^4×", r >= 1e4))
+    rows += issue_28_rows(bench)
 
     print("| measurement | result | target | met |")
     print("|---|---|---|---|")

@@ -8,6 +8,7 @@
 // each vertex, which only the exact test can place. The oracles of the worst case and of containment are written here: every non-zero
 // vertex's cos² compared in ℚ, every facet's plane evaluated in ℚ.
 #include "../test_support.h"
+#include "same_estimate_3.h"
 
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/selection/crule_3d.h>
@@ -24,6 +25,7 @@
 
 using namespace gmcc;
 using gmcc::test::Rng;
+using gmcc::test::same_estimate;
 using R = Rational;
 
 namespace {
@@ -75,25 +77,6 @@ void centroid_enclosed(const ConvexSet3& F) {
   }
   BOOST_TEST(c.error_bound <= internal::certified_centroid_relative_bound *
                                  std::max({std::fabs(c.map[0]), std::fabs(c.map[1]), std::fabs(c.map[2])}));
-}
-
-void same_estimate(const MapEstimate3& a, const MapEstimate3& b) {
-  BOOST_TEST(a.rule == b.rule);
-  BOOST_TEST(a.method == b.method);
-  for (int k = 0; k < 3; ++k) {
-    BOOST_TEST(a.map[k] == b.map[k]);
-    BOOST_TEST(a.enclosure[k][0] == b.enclosure[k][0]);
-    BOOST_TEST(a.enclosure[k][1] == b.enclosure[k][1]);
-  }
-  BOOST_TEST(a.error_bound == b.error_bound);
-  BOOST_TEST(a.exact.has_value() == b.exact.has_value());
-  if (a.exact && b.exact) BOOST_TEST((*a.exact == *b.exact));
-  BOOST_TEST(a.edge_root.has_value() == b.edge_root.has_value());
-  if (a.edge_root && b.edge_root) {
-    BOOST_TEST((a.edge_root->from == b.edge_root->from));
-    BOOST_TEST((a.edge_root->to == b.edge_root->to));
-    BOOST_TEST(a.edge_root->sign == b.edge_root->sign);
-  }
 }
 
 std::size_t size(const internal::MaxVolumeCandidates& c) {

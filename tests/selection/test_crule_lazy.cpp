@@ -10,6 +10,7 @@
 // coordinates and magnitudes at the double range policy's edge, and estimate_3d answers the same
 // with or without the exact F3.
 #include "../test_support.h"
+#include "same_estimate_3.h"
 
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/geometry/lazy_convex_set_3.h>
@@ -29,31 +30,13 @@
 
 using namespace gmcc;
 using gmcc::test::Rng;
+using gmcc::test::same_estimate;
 using R = Rational;
 
 namespace {
 
 bool is_zero(const Point3& a) { return sgn(a.x) == 0 && sgn(a.y) == 0 && sgn(a.z) == 0; }
 R dot(const Point3& a, const Point3& b) { return R(a.x * b.x + a.y * b.y + a.z * b.z); }
-
-void same_estimate(const MapEstimate3& a, const MapEstimate3& b) {
-  BOOST_TEST(a.rule == b.rule);
-  BOOST_TEST(a.method == b.method);
-  for (int k = 0; k < 3; ++k) {
-    BOOST_TEST(a.map[k] == b.map[k]);
-    BOOST_TEST(a.enclosure[k][0] == b.enclosure[k][0]);
-    BOOST_TEST(a.enclosure[k][1] == b.enclosure[k][1]);
-  }
-  BOOST_TEST(a.error_bound == b.error_bound);
-  BOOST_TEST(a.exact.has_value() == b.exact.has_value());
-  if (a.exact && b.exact) BOOST_TEST((*a.exact == *b.exact));
-  BOOST_TEST(a.edge_root.has_value() == b.edge_root.has_value());
-  if (a.edge_root && b.edge_root) {
-    BOOST_TEST((a.edge_root->from == b.edge_root->from));
-    BOOST_TEST((a.edge_root->to == b.edge_root->to));
-    BOOST_TEST(a.edge_root->sign == b.edge_root->sign);
-  }
-}
 
 void same_enclosures(const LazyConvexSet3& L, const ConvexSet3& E) {
   BOOST_TEST_REQUIRE(L.size() == E.vertices.size());
