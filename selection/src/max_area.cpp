@@ -12,7 +12,7 @@ namespace gmcc {
 namespace internal {
 namespace {
 
-// F's candidates (max_area_candidates.h) from its exact vertices, in number kind `Kind`: on each
+// F's candidates (max_area_candidates.h) from its exact vertices, in number type `Kind`: on each
 // edge p → q of the north-east chain the stationary point of the concave
 // f(t) = (p1 + t·Δa)(p2 + t·Δb) lies inside the edge iff f′(0) = Δa·p2 + Δb·p1 > 0 > f′(1) =
 // Δa·q2 + Δb·q1, and f(t*) = p1·p2 − f′(0)²/(4·Δa·Δb). `Kind` gives N's values: x(i), y(i), dx(i, j),

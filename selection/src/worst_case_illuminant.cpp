@@ -34,7 +34,7 @@ using internal::trim;
 // canonical gamut, docs/performance.md "Many-vertex canonical gamuts (issue 13)") cost
 // floating-point operations per vertex and edge instead of exact polynomial algebra.
 
-// The cos²-closeness (e·w)²/|w|² of the map (x, y), w = c ⊘ (x, y, 1), in the number kind T:
+// The cos²-closeness (e·w)²/|w|² of the map (x, y), w = c ⊘ (x, y, 1), in the number type T:
 // exactly in ℚ (the exact route's comparisons), or enclosed (the filters). Written once, so the
 // filters enclose exactly what the exact route compares.
 template <class T>

@@ -66,7 +66,7 @@ BOOST_AUTO_TEST_CASE(exact_candidate_beats_a_dense_exact_search_and_is_unique) {
 }
 
 // The filtered stage (x87 intervals) and the exact stage are one candidate enumeration over two
-// number kinds: wherever the filter answers it must give the exact stage's point, on grids where
+// number types: wherever the filter answers it must give the exact stage's point, on grids where
 // ties, repeated vertices and near-ties are common, and on segments and points.
 BOOST_AUTO_TEST_CASE(filtered_and_exact_stages_agree) {
   Rng rng(3110);

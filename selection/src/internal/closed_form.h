@@ -1,6 +1,6 @@
 #pragma once
 // The 3-D mean's closed form τ = ½ Σ θ_i c_i/|c_i| (docs/derivations.md §1.2), written once for
-// every number kind it is evaluated in: the sum over the edges and the final ratio are
+// every number type it is evaluated in: the sum over the edges and the final ratio are
 // tau_direction(); what differs by kind is only how an edge's c_i and its weight θ_i/|c_i| are
 // enclosed (TauTerm). mean_3d_analytic uses x87 intervals (LDInterval) and MPFI, from vertex
 // enclosures, from exactly formed edges or from exact products; certified_rule_errors uses midpoint–radius
@@ -19,7 +19,7 @@
 
 namespace gmcc::internal {
 
-/// One edge's share of τ in number kind K: c_i = p_i × p_{i+1} for the lifted vertices
+/// One edge's share of τ in number type K: c_i = p_i × p_{i+1} for the lifted vertices
 /// p = (x, y, 1), and its weight θ_i/|c_i| = atan2(|c_i|, p_i·p_{i+1})/|c_i|.
 template <class K>
 struct TauTerm {

@@ -1,6 +1,6 @@
 #pragma once
 // Max-area's candidates (Finlayson & Hordley 1999 §3.1; docs/derivations.md §2.3), written once
-// for every number kind and every description of F: argmax m1·m2 over a convex polygon or
+// for every number type and every description of F: argmax m1·m2 over a convex polygon or
 // segment is a vertex, or the stationary point of m1·m2 inside an edge of its north-east chain
 // (Δm1·Δm2 < 0, where m1·m2 is concave along the edge). max_area.cpp enumerates them from exact
 // vertices (in ℚ, and in x87 intervals); certified_rule_errors.cpp from vertex enclosures and edge lines.
@@ -15,7 +15,7 @@
 
 namespace gmcc::internal {
 
-/// One candidate's m1·m2 in number kind N; `index` is a vertex (< n), or n + i for the
+/// One candidate's m1·m2 in number type N; `index` is a vertex (< n), or n + i for the
 /// stationary point inside the edge from vertex i.
 template <class N>
 struct AreaCandidate {

@@ -1,7 +1,7 @@
 #pragma once
 /// \file polytope_moments.h
 /// The volume and centroid sums of a convex polytope (Forsyth's 1990 F3 for CRULE-AVE, the hull
-/// average of Barnard, Cardei & Funt 2002), written once for every number kind: exact rationals
+/// average of Barnard, Cardei & Funt 2002), written once for every number type: exact rationals
 /// (convex_set_3.h volume() and centroid()) and double enclosures (selection's certified
 /// centroid, centroid_3.h). docs/math.md §1b.
 
@@ -11,7 +11,7 @@
 
 namespace gmcc {
 
-/// The sums of one tetrahedral decomposition, in the number kind T.
+/// The sums of one tetrahedral decomposition, in the number type T.
 template <class T>
 struct PolytopeMoments {
   T six_volume{};                ///< Σ w: six times the volume

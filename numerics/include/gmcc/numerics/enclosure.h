@@ -189,7 +189,7 @@ inline LDInterval atan2(LDInterval y, LDInterval x) {
 }
 
 /// \name The family's shared questions
-/// The same names for every kind, so that generic code reads alike over them.
+/// The same names for every number type, so that generic code reads alike over them.
 ///@{
 /// A certain lower end.
 template <class T>

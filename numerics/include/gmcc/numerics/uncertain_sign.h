@@ -1,6 +1,6 @@
 #pragma once
 /// \file uncertain_sign.h
-/// The one decision type of gmcc's number kinds, in the manner of CGAL's Uncertain<Sign>: what an
+/// The one decision type of gmcc's number types, in the manner of CGAL's Uncertain<Sign>: what an
 /// enclosure (numerics/enclosure.h, selection's MPFI intervals) says about the sign of the real
 /// number it holds. An exact rational's sign is always certain; an enclosure's is certain only
 /// when the whole enclosure lies on one side of zero, or is the point zero (docs/architecture.md
