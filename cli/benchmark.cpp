@@ -397,6 +397,38 @@ bool is_benchmark_records(const std::string& file) {
   }
 }
 
+namespace {
+
+// One record line of a benchmark's shard (`images` images, `methods` its methods): the record, the
+// position of its method in `method`, its image's name and fold noted in `of` and `named`.
+BenchmarkRecord merged_record(const Json& j, const Place& at, std::size_t images, const std::vector<std::string>& methods,
+                              std::size_t& method, ImageOf& of, std::vector<bool>& named) {
+  BenchmarkRecord r;
+  r.image = get<std::size_t>(j, "index", at);
+  if (r.image >= images) bad(at, "image index " + std::to_string(r.image) + " beyond the run's " + std::to_string(images));
+  r.method = get<std::string>(j, "method", at);
+  const auto m = std::find(methods.begin(), methods.end(), r.method);
+  if (m == methods.end()) bad(at, "method " + quoted_text(r.method) + " is not in the run");
+  method = static_cast<std::size_t>(m - methods.begin());
+  of.name[r.image] = get<std::string>(j, "image", at);
+  of.fold[r.image] = get<int>(j, "fold", at);
+  named[r.image] = true;
+  if (!member(j, "light", at).is_null()) r.light = get<std::array<double, 3>>(j, "light", at);
+  r.error_deg = optional_field(j, "error_deg", at);
+  r.answered = get<bool>(j, "answered", at);
+  if (!member(j, "fallback", at).is_null()) r.fallback = get<std::string>(j, "fallback", at);
+  if (j.contains("feasible_set")) {
+    const Json& f = j.at("feasible_set");
+    r.feasible_kind = get<std::string>(f, "kind", at);
+    r.feasible_vertices = get<std::size_t>(f, "vertices", at);
+    if (!member(j, "truth_in_feasible", at).is_null()) r.truth_in_feasible = get<bool>(j, "truth_in_feasible", at);
+    r.worst_case_deg = optional_field(j, "worst_case_deg", at);
+  }
+  return r;
+}
+
+}  // namespace
+
 int merge_benchmark(const std::vector<std::string>& files, const std::string& csv_path, const std::string& json_path,
                     const std::string& records_path, const std::string& plot_dir) {
   std::optional<PendingFile> csv_file, json_file, records_file;
@@ -448,27 +480,9 @@ int merge_benchmark(const std::vector<std::string>& files, const std::string& cs
         }
         continue;
       }
-      BenchmarkRecord r;
-      r.image = get<std::size_t>(j, "index", at);
-      if (r.image >= images) bad(at, "image index " + std::to_string(r.image) + " beyond the run's " + std::to_string(images));
-      r.method = get<std::string>(j, "method", at);
-      const auto m = std::find(methods.begin(), methods.end(), r.method);
-      if (m == methods.end()) bad(at, "method " + quoted_text(r.method) + " is not in the run");
-      of.name[r.image] = get<std::string>(j, "image", at);
-      of.fold[r.image] = get<int>(j, "fold", at);
-      named[r.image] = true;
-      if (!member(j, "light", at).is_null()) r.light = get<std::array<double, 3>>(j, "light", at);
-      r.error_deg = optional_field(j, "error_deg", at);
-      r.answered = get<bool>(j, "answered", at);
-      if (!member(j, "fallback", at).is_null()) r.fallback = get<std::string>(j, "fallback", at);
-      if (j.contains("feasible_set")) {
-        const Json& f = j.at("feasible_set");
-        r.feasible_kind = get<std::string>(f, "kind", at);
-        r.feasible_vertices = get<std::size_t>(f, "vertices", at);
-        if (!member(j, "truth_in_feasible", at).is_null()) r.truth_in_feasible = get<bool>(j, "truth_in_feasible", at);
-        r.worst_case_deg = optional_field(j, "worst_case_deg", at);
-      }
-      const auto key = std::make_pair(r.image, static_cast<std::size_t>(m - methods.begin()));
+      std::size_t method = 0;
+      BenchmarkRecord r = merged_record(j, at, images, methods, method, of, named);
+      const auto key = std::make_pair(r.image, method);
       if (const auto seen = read.find(key); seen != read.end())
         bad(at, "image " + of.name[r.image] + " under " + r.method + " is already in " + seen->second.second.file +
                            ":" + std::to_string(seen->second.second.line));
