@@ -69,17 +69,19 @@ std::string estimate_repr(const MapEstimate& e) {
   return r + e.method + " ± " + g10(e.error_bound);
 }
 
-namespace {
-
-py::array_t<double> vertices_float(const ConvexSet2& s) {
+py::array_t<double> points_float(const std::vector<Point2>& points) {
   std::vector<double> v;
-  for (const Point2& p : s.vertices) {
+  for (const Point2& p : points) {
     const auto d = to_double_nearest(p);
     v.push_back(d[0]);
     v.push_back(d[1]);
   }
-  return float_array(v, s.vertices.size(), 2);
+  return float_array(v, points.size(), 2);
 }
+
+namespace {
+
+py::array_t<double> vertices_float(const ConvexSet2& s) { return points_float(s.vertices); }
 
 // The MapEstimate's properties, on MapEstimate itself and (forwarded) on Selection.
 template <class Class, class Get>

@@ -56,6 +56,9 @@ void require_pixel_colours(const PyImageColours& c, const char* what);
 /// not taken as colours); anything else is read by colours_from. \throws ValueError, TypeError.
 std::vector<Colour> colours_or_pixel_colours(py::handle x, const char* what);
 
+/// Exact points as an (n, 2) array of the nearest doubles.
+py::array_t<double> points_float(const std::vector<Point2>& points);
+
 /// Exact colours as an (n, 3) array of the nearest doubles.
 py::array_t<double> colours_array(const std::vector<Colour>& colours);
 

@@ -199,13 +199,7 @@ chromaticities : numpy.ndarray of float64, shape (n, 2)
       .def_readonly("dropped", &PreparedCanonical::dropped, "Of those, with b <= 0 (dropped).")
       .def_readonly("constraint", &PreparedCanonical::constraint, "C (ConvexSet) or None.")
       .def_property_readonly("chromaticities", [](const PreparedCanonical& c) {
-        std::vector<double> v;
-        for (const Point2& p : c.chromaticities) {
-          const auto d = to_double_nearest(p);
-          v.push_back(d[0]);
-          v.push_back(d[1]);
-        }
-        return float_array(v, c.chromaticities.size(), 2);
+        return points_float(c.chromaticities);
       }, "The canonical perspective chromaticities (r/b, g/b) as doubles, shape (n, 2).")
       .def("__repr__", [](const PreparedCanonical& c) {
         return "Canonical(" + std::to_string(c.colours) + " colours, gamut " + convex_set_repr(c.gamut) +
