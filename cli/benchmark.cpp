@@ -23,6 +23,7 @@
 #include <sstream>
 #include <thread>
 
+#include "benchmark_outputs.h"
 #include "integer_option.h"
 #include "json_fields.h"
 #include "output_files.h"
@@ -134,12 +135,6 @@ Json summary_json(const BenchmarkSummary& s) {
   return j;
 }
 
-// An image's name and fold, by its index in the dataset.
-struct ImageOf {
-  std::vector<std::string> name;
-  std::vector<int> fold;
-};
-
 Json record_json(const BenchmarkRecord& r, const ImageOf& images) {
   Json j = {{"index", r.image}, {"image", images.name[r.image]}, {"fold", images.fold[r.image]}, {"method", r.method}};
   j["light"] = r.light ? Json(*r.light) : Json(nullptr);
@@ -217,6 +212,8 @@ void write_plot(const BenchmarkResult& result, const std::string& dir, const Jso
   PendingFile(std::filesystem::path(dir) / "benchmark.gp").commit(gp);
 }
 
+}  // namespace
+
 // Every output of a run (or of merged shards): the CSV, the JSON, the records, the table.
 void write_outputs(const BenchmarkResult& result, const ImageOf& images, const std::vector<std::string>& methods,
                    const std::string& shard, const Json& provenance, std::optional<PendingFile>& csv_file,
@@ -244,8 +241,6 @@ int draw(const BenchmarkResult& result, const std::string& plot_dir, const Json&
   write_plot(result, plot_dir, provenance);
   return draw_with_gnuplot(plot_dir, "benchmark", "gmcc benchmark");
 }
-
-}  // namespace
 
 CLI::App* add_benchmark_command(CLI::App& app, BenchmarkCliOptions& o) {
   CLI::App* cmd = app.add_subcommand(
@@ -356,136 +351,6 @@ int run_benchmark_command(const BenchmarkCliOptions& o) {
   for (const BenchmarkImage& im : images) of.name.push_back(im.name), of.fold.push_back(im.fold);
   write_outputs(result, of, options.methods, shard, provenance_json(true), csv_file, json_file, records_file);
   return draw(result, o.plot_dir, provenance_json(true));
-}
-
-}  // namespace gmcc::cli
-
-namespace gmcc::cli {
-namespace {
-
-std::optional<double> optional_field(const Json& j, const char* name, const Place& at) {
-  if (!j.contains(name) || j.at(name).is_null()) return std::nullopt;
-  return get<double>(j, name, at);
-}
-
-// The JSON lines of a records file: (line number, text).
-std::vector<std::pair<std::size_t, std::string>> json_lines(const std::string& file) {
-  const std::string text = read_text_file(
-      file, {std::size_t(4) << 30, "records file", "JSON Lines from gmcc benchmark --records"});
-  std::vector<std::pair<std::size_t, std::string>> out;
-  std::size_t line = 0, start = 0;
-  while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) end = text.size();
-    ++line;
-    if (end > start) out.push_back({line, text.substr(start, end - start)});
-    start = end + 1;
-  }
-  return out;
-}
-
-}  // namespace
-
-bool is_benchmark_records(const std::string& file) {
-  const auto lines = json_lines(file);
-  if (lines.size() < 2) return false;
-  try {
-    const Json j = Json::parse(lines[1].second);
-    return j.is_object() && j.contains("benchmark");
-  } catch (const Json::exception&) {
-    return false;
-  }
-}
-
-int merge_benchmark(const std::vector<std::string>& files, const std::string& csv_path, const std::string& json_path,
-                    const std::string& records_path, const std::string& plot_dir) {
-  std::optional<PendingFile> csv_file, json_file, records_file;
-  if (!csv_path.empty()) csv_file.emplace(csv_path);
-  if (!json_path.empty()) json_file.emplace(json_path);
-  if (!records_path.empty()) records_file.emplace(records_path);
-  std::optional<Json> provenance, setup;
-  std::string first_file;
-  std::size_t images = 0;
-  std::vector<std::string> methods;
-  // (index, method position) -> record, and where it was read.
-  std::map<std::pair<std::size_t, std::size_t>, std::pair<BenchmarkRecord, Place>> read;
-  ImageOf of;
-  std::vector<bool> named;
-  std::set<std::string> shards;
-  for (const std::string& file : files) {
-    const auto lines = json_lines(file);
-    for (std::size_t k = 0; k < lines.size(); ++k) {
-      const Place at{file, lines[k].first};
-      Json j;
-      try {
-        j = Json::parse(lines[k].second);
-      } catch (const Json::exception&) {
-        bad(at, "not a JSON object");
-      }
-      if (k == 0) {
-        if (!j.is_object() || j.size() != 1 || !j.contains("provenance")) bad(at, "expected the provenance line");
-        if (!provenance) provenance = j.at("provenance");
-        else if (*provenance != j.at("provenance"))
-          bad(at, "another run's provenance than " + first_file + "'s (the shards of one run record the same)");
-        continue;
-      }
-      if (k == 1) {
-        if (!j.is_object() || !j.contains("benchmark")) bad(at, "expected the benchmark's header line");
-        Json h = j.at("benchmark");
-        const std::string shard = get<std::string>(h, "shard", at);
-        if (!shards.insert(shard).second) bad(at, "shard " + shard + " is already in another file");
-        h.erase("shard");
-        if (!setup) {
-          setup = h;
-          first_file = file;
-          images = get<std::size_t>(h, "images", at);
-          methods = get<std::vector<std::string>>(h, "methods", at);
-          of.name.assign(images, "");
-          of.fold.assign(images, 0);
-          named.assign(images, false);
-        } else if (*setup != h) {
-          bad(at, "another run than " + first_file + "'s (only \"shard\" may differ)");
-        }
-        continue;
-      }
-      BenchmarkRecord r;
-      r.image = get<std::size_t>(j, "index", at);
-      if (r.image >= images) bad(at, "image index " + std::to_string(r.image) + " beyond the run's " + std::to_string(images));
-      r.method = get<std::string>(j, "method", at);
-      const auto m = std::find(methods.begin(), methods.end(), r.method);
-      if (m == methods.end()) bad(at, "method " + quoted_text(r.method) + " is not in the run");
-      of.name[r.image] = get<std::string>(j, "image", at);
-      of.fold[r.image] = get<int>(j, "fold", at);
-      named[r.image] = true;
-      if (!member(j, "light", at).is_null()) r.light = get<std::array<double, 3>>(j, "light", at);
-      r.error_deg = optional_field(j, "error_deg", at);
-      r.answered = get<bool>(j, "answered", at);
-      if (!member(j, "fallback", at).is_null()) r.fallback = get<std::string>(j, "fallback", at);
-      if (j.contains("feasible_set")) {
-        const Json& f = j.at("feasible_set");
-        r.feasible_kind = get<std::string>(f, "kind", at);
-        r.feasible_vertices = get<std::size_t>(f, "vertices", at);
-        if (!member(j, "truth_in_feasible", at).is_null()) r.truth_in_feasible = get<bool>(j, "truth_in_feasible", at);
-        r.worst_case_deg = optional_field(j, "worst_case_deg", at);
-      }
-      const auto key = std::make_pair(r.image, static_cast<std::size_t>(m - methods.begin()));
-      if (const auto seen = read.find(key); seen != read.end())
-        bad(at, "image " + of.name[r.image] + " under " + r.method + " is already in " + seen->second.second.file +
-                           ":" + std::to_string(seen->second.second.line));
-      read.emplace(key, std::make_pair(std::move(r), at));
-    }
-  }
-  if (!setup) throw InputError(files.front(), 0, "no benchmark records");
-  for (std::size_t i = 0; i < images; ++i)
-    for (std::size_t k = 0; k < methods.size(); ++k)
-      if (!read.count({i, k}))
-        throw InputError(first_file, 0, "image " + (named[i] ? of.name[i] : "#" + std::to_string(i)) + " under " +
-                                            methods[k] + " is in none of the files: a shard is missing");
-  BenchmarkResult result;
-  for (auto& [key, value] : read) result.records.push_back(std::move(value.first));
-  result.summaries = summarise_benchmark(result.records, methods);
-  write_outputs(result, of, methods, "1/1", *provenance, csv_file, json_file, records_file);
-  return draw(result, plot_dir, *provenance);
 }
 
 }  // namespace gmcc::cli

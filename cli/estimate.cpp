@@ -243,9 +243,9 @@ CLI::App* add_estimate_command(CLI::App& app, EstimateOptions& o) {
 
 namespace {
 
-// `gmcc estimate --space 3d`: CRULE on each image's pixel colours against the prepared 3-D
-// canonical gamut (gmcc/photo/estimate_3d.h).
-int run_estimate_3d(const EstimateOptions& o) {
+// --space 3d's settings: the 2-D route's options refused, the colour set hull-3d unless given
+// (hull refused: it passes chromaticity lifts).
+Settings settings_3d(const EstimateOptions& o) {
   const CLI::App* cmd = o.pixels.command;
   for (const char* name : {"--expand", "--expand-policy", "--on-empty", "--illuminant-worst-case"})
     if (cmd && cmd->count(name))
@@ -259,12 +259,13 @@ int run_estimate_3d(const EstimateOptions& o) {
   } else {
     pixel_options.colour_set = "hull-3d";
   }
-  Settings s;
-  {
-    EstimateOptions plain = o;
-    plain.pixels = pixel_options;
-    s = settings_of(plain);
-  }
+  EstimateOptions plain = o;
+  plain.pixels = pixel_options;
+  return settings_of(plain);
+}
+
+// The 3-D estimate's options: the canonical light, the centroid's route and the rules asked for.
+Estimate3Options estimate3_options(const EstimateOptions& o, const Settings& s) {
   Estimate3Options options;
   options.canonical_light = s.scene.canonical_illuminant;
   options.route = o.centroid == "exact" ? Crule3dRoute::exact : Crule3dRoute::certified;
@@ -273,6 +274,14 @@ int run_estimate_3d(const EstimateOptions& o) {
     options.rules.clear();
     for (const std::string& r : o.rules_3d) options.rules.push_back(rule_3_from_string(r));
   }
+  return options;
+}
+
+// `gmcc estimate --space 3d`: CRULE on each image's pixel colours against the prepared 3-D
+// canonical gamut (gmcc/photo/estimate_3d.h).
+int run_estimate_3d(const EstimateOptions& o) {
+  Settings s = settings_3d(o);
+  const Estimate3Options options = estimate3_options(o, s);
   const ColourTable canonical = read_colour_csv(o.canonical_path);
   require_pixel_colours(canonical, "--space 3d");
   const CanonicalBlack black = o.black == "exclude" ? CanonicalBlack::exclude : CanonicalBlack::include;

@@ -197,6 +197,33 @@ void check_every_scene_once(std::vector<Read>& scenes, const ExperimentResult& r
       throw InputError(first_file, 0, name(g) + " is in none of the files: a shard is missing");
 }
 
+// The merged outputs' provenance, from the parts' provenance lines.
+struct MergedProvenance {
+  std::string text;  // the first part's: the whole run's, as every part records the same run
+  json same;         // what must agree between parts (same_run_provenance)
+  std::string file;  // the first part's file
+};
+
+// The provenance line `j` (its text [first, last)) of `file`: the first part's kept, another's
+// checked against it.
+void merge_provenance(MergedProvenance& p, const json& j, std::string::const_iterator first,
+                      std::string::const_iterator last, const std::string& file, const Place& at) {
+  // Kept as written (member order too): the merged outputs' provenance. Every part records
+  // the same run (--shard, --threads and the output paths are not recorded).
+  // Checked against the first part's: the same software, build, command, options and input
+  // contents (paths may differ between machines; the inputs' sizes and SHA-256 may not).
+  const json same = same_run_provenance(j.at("provenance"));
+  if (p.text.empty()) {
+    p.text = nlohmann::ordered_json::parse(first, last).at("provenance").dump();
+    p.same = same;
+    p.file = file;
+  } else if (same != p.same) {
+    bad(at, "another run than " + p.file +
+                "'s: its provenance names another build, command, options or inputs (the parts of one "
+                "run come from one gmcc and the same data)");
+  }
+}
+
 // Each cell's statistics from the merged scenes (in cell order, as reproduce computes them).
 void summarise_cells(ExperimentResult& r, std::size_t cells) {
   for (std::size_t l = 0; l < r.lights.size(); ++l)
@@ -220,9 +247,7 @@ int run_merge(const MergeOptions& o) {
   if (!o.records_path.empty())
     throw InputError("--records", 0, "is for gmcc benchmark's shards; reproduce's scene files merge with --scenes-out");
   std::optional<ExperimentResult> result;
-  std::string provenance;  // the first part's: the whole run's, as every part records the same run
-  json first_provenance;   // what must agree between parts (same_run_provenance)
-  std::string provenance_file;
+  MergedProvenance provenance;
   std::optional<ExperimentOutputs> outputs;
   json setup;
   std::string first_file;
@@ -249,20 +274,7 @@ int run_merge(const MergeOptions& o) {
         bad(at, "not a JSON object");
       }
       if (line == 1 && j.is_object() && j.size() == 1 && j.contains("provenance")) {
-        // Kept as written (member order too): the merged outputs' provenance. Every part records
-        // the same run (--shard, --threads and the output paths are not recorded).
-        // Checked against the first part's: the same software, build, command, options and input
-        // contents (paths may differ between machines; the inputs' sizes and SHA-256 may not).
-        const json same = same_run_provenance(j.at("provenance"));
-        if (provenance.empty()) {
-          provenance = nlohmann::ordered_json::parse(first, last).at("provenance").dump();
-          first_provenance = same;
-          provenance_file = file;
-        } else if (same != first_provenance) {
-          bad(at, "another run than " + provenance_file +
-                      "'s: its provenance names another build, command, options or inputs (the parts of one "
-                      "run come from one gmcc and the same data)");
-        }
+        merge_provenance(provenance, j, first, last, file, at);
         continue;
       }
       if (header) {
@@ -299,7 +311,7 @@ int run_merge(const MergeOptions& o) {
   for (Read& r : scenes) result->scenes.push_back(std::move(r.scene));
   std::vector<Read>().swap(scenes);
   summarise_cells(*result, cells);
-  return outputs->write(*result, provenance);
+  return outputs->write(*result, provenance.text);
 }
 
 }  // namespace gmcc::cli

@@ -89,8 +89,11 @@ ColourSet colour_set_from(const std::string& name) {
 
 bool is_image(py::handle x) { return py::isinstance<py::array>(x) && py::reinterpret_borrow<py::array>(x).ndim() == 3; }
 
-PyImageColours image_colours_of(py::handle image_obj, const PixelArgs& args) {
-  py::module_ np = py::module_::import("numpy");
+namespace {
+
+// `image_obj` as an (H, W, 3) array of unsigned integers or floats (at most double). \throws
+// TypeError, ValueError.
+py::array checked_image(py::handle image_obj) {
   if (!py::isinstance<py::array>(image_obj))
     throw py::type_error("image: expected a numpy array of shape (H, W, 3), got " +
                          std::string(py::str(py::type::handle_of(image_obj).attr("__name__"))));
@@ -103,53 +106,67 @@ PyImageColours image_colours_of(py::handle image_obj, const PixelArgs& args) {
                          " is not a real number type (expected unsigned integers or floats)");
   if (kind == 'f' && image.itemsize() > 8)
     throw py::type_error("image: dtype " + std::string(py::str(image.dtype())) + " has no exact double value");
-  const std::size_t h = static_cast<std::size_t>(image.shape(0)), w = static_cast<std::size_t>(image.shape(1));
+  return image;
+}
+
+// The mask's kept pixels, row-major (empty: no mask). \throws TypeError, ValueError.
+std::vector<bool> mask_of(const PixelArgs& args, const py::array& image, std::size_t h, std::size_t w) {
+  py::module_ np = py::module_::import("numpy");
   std::vector<bool> keep;
-  if (!args.mask.is_none()) {
-    if (!py::isinstance<py::array>(args.mask))
-      throw py::type_error("mask: expected a boolean numpy array of shape (H, W)");
-    py::array mask = py::reinterpret_borrow<py::array>(args.mask);
-    if (mask.dtype().kind() != 'b') throw py::type_error("mask: expected dtype bool, got " + std::string(py::str(mask.dtype())));
-    if (mask.ndim() != 2 || mask.shape(0) != image.shape(0) || mask.shape(1) != image.shape(1))
-      throw py::value_error("mask: shape " + shape_of(mask) + " does not match the image's (" + std::to_string(h) +
-                            ", " + std::to_string(w) + ")");
-    const py::array_t<bool, py::array::c_style> m = np.attr("ascontiguousarray")(mask);
-    keep.assign(m.data(), m.data() + h * w);
-  }
-  if (kind == 'f') {
-    FloatRgbImage img;
-    img.width = w;
-    img.height = h;
-    const py::array_t<double, py::array::c_style> a = np.attr("ascontiguousarray")(image, "float64");
-    img.samples.assign(a.data(), a.data() + h * w * 3);
-    if (sigma_from(args.prefilter) > 0)
-      throw py::value_error("prefilter: for integer images (8- or 16-bit samples); smooth a float image yourself");
-    FloatPixelRules rules;
-    rules.keep = std::move(keep);
-    rules.colour_set = colour_set_from(args.colour_set);
-    pixel_fractions(args, rules.dark_below_fraction, rules.bright_above_fraction);
-    {
-      const Rational d = number_from(args.dark, "dark");
-      if (sgn(d) < 0) throw py::value_error("dark: must be >= 0");
-      if (sgn(d) > 0) {
-        rules.dark_below = to_double_nearest(d);
-        if (Rational(*rules.dark_below) != d) throw py::value_error("dark: must be a double exactly for a float image");
-      }
+  if (args.mask.is_none()) return keep;
+  if (!py::isinstance<py::array>(args.mask))
+    throw py::type_error("mask: expected a boolean numpy array of shape (H, W)");
+  py::array mask = py::reinterpret_borrow<py::array>(args.mask);
+  if (mask.dtype().kind() != 'b') throw py::type_error("mask: expected dtype bool, got " + std::string(py::str(mask.dtype())));
+  if (mask.ndim() != 2 || mask.shape(0) != image.shape(0) || mask.shape(1) != image.shape(1))
+    throw py::value_error("mask: shape " + shape_of(mask) + " does not match the image's (" + std::to_string(h) +
+                          ", " + std::to_string(w) + ")");
+  const py::array_t<bool, py::array::c_style> m = np.attr("ascontiguousarray")(mask);
+  keep.assign(m.data(), m.data() + h * w);
+  return keep;
+}
+
+// A float image's colours: the pixel rules with double levels, each of which must be exact.
+PyImageColours float_image_colours(const py::array& image, std::size_t h, std::size_t w, std::vector<bool> keep,
+                                   const PixelArgs& args) {
+  py::module_ np = py::module_::import("numpy");
+  FloatRgbImage img;
+  img.width = w;
+  img.height = h;
+  const py::array_t<double, py::array::c_style> a = np.attr("ascontiguousarray")(image, "float64");
+  img.samples.assign(a.data(), a.data() + h * w * 3);
+  if (sigma_from(args.prefilter) > 0)
+    throw py::value_error("prefilter: for integer images (8- or 16-bit samples); smooth a float image yourself");
+  FloatPixelRules rules;
+  rules.keep = std::move(keep);
+  rules.colour_set = colour_set_from(args.colour_set);
+  pixel_fractions(args, rules.dark_below_fraction, rules.bright_above_fraction);
+  {
+    const Rational d = number_from(args.dark, "dark");
+    if (sgn(d) < 0) throw py::value_error("dark: must be >= 0");
+    if (sgn(d) > 0) {
+      rules.dark_below = to_double_nearest(d);
+      if (Rational(*rules.dark_below) != d) throw py::value_error("dark: must be a double exactly for a float image");
     }
-    const Rational black = number_from(args.black_level, "black_level");
-    if (sgn(black) < 0) throw py::value_error("black_level: must be >= 0");
-    rules.black_level = to_double_nearest(black);
-    if (Rational(rules.black_level) != black)  // exact: every double is a rational
-      throw py::value_error("black_level: must be a double exactly for a float image");
-    if (!args.saturation.is_none()) {
-      const Rational s = number_from(args.saturation, "saturation");
-      rules.saturation = to_double_nearest(s);
-      if (sgn(s) < 0 || Rational(*rules.saturation) != s)
-        throw py::value_error("saturation: must be >= 0 and a double exactly for a float image");
-    }
-    return colours_by_rules(img, rules);
   }
-  // Integer samples: the library's 16-bit route (exact integer hull).
+  const Rational black = number_from(args.black_level, "black_level");
+  if (sgn(black) < 0) throw py::value_error("black_level: must be >= 0");
+  rules.black_level = to_double_nearest(black);
+  if (Rational(rules.black_level) != black)  // exact: every double is a rational
+    throw py::value_error("black_level: must be a double exactly for a float image");
+  if (!args.saturation.is_none()) {
+    const Rational s = number_from(args.saturation, "saturation");
+    rules.saturation = to_double_nearest(s);
+    if (sgn(s) < 0 || Rational(*rules.saturation) != s)
+      throw py::value_error("saturation: must be >= 0 and a double exactly for a float image");
+  }
+  return colours_by_rules(img, rules);
+}
+
+// Integer samples: the library's 16-bit route (exact integer hull).
+PyImageColours integer_image_colours(const py::array& image, char kind, std::size_t h, std::size_t w,
+                                     std::vector<bool> keep, const PixelArgs& args) {
+  py::module_ np = py::module_::import("numpy");
   RgbImage img;
   img.width = w;
   img.height = h;
@@ -182,6 +199,17 @@ PyImageColours image_colours_of(py::handle image_obj, const PixelArgs& args) {
     copy(a.data());
   }
   return run_pixel_rules(img, std::move(keep), args);
+}
+
+}  // namespace
+
+PyImageColours image_colours_of(py::handle image_obj, const PixelArgs& args) {
+  py::array image = checked_image(image_obj);
+  const char kind = image.dtype().kind();
+  const std::size_t h = static_cast<std::size_t>(image.shape(0)), w = static_cast<std::size_t>(image.shape(1));
+  std::vector<bool> keep = mask_of(args, image, h, w);
+  if (kind == 'f') return float_image_colours(image, h, w, std::move(keep), args);
+  return integer_image_colours(image, kind, h, w, std::move(keep), args);
 }
 
 namespace {

@@ -56,10 +56,28 @@ void require_pixel_colours(const PyImageColours& c, const char* what);
 /// not taken as colours); anything else is read by colours_from. \throws ValueError, TypeError.
 std::vector<Colour> colours_or_pixel_colours(py::handle x, const char* what);
 
+/// Exact points as an (n, 2) array of the nearest doubles.
+py::array_t<double> points_float(const std::vector<Point2>& points);
+
 /// Exact colours as an (n, 3) array of the nearest doubles.
 py::array_t<double> colours_array(const std::vector<Colour>& colours);
 
-/// The Python classes of every result type, added to `m`.
+/// A ConvexSet's and a MapEstimate's text in __repr__ ("ConvexSet(polygon, 4 vertices, ...)",
+/// "max_area (x, y) exact").
+///@{
+std::string convex_set_repr(const ConvexSet2& s);
+std::string estimate_repr(const MapEstimate& e);
+///@}
+
+/// The Python classes of every result type, added to `m` in this order: the 2-D map classes
+/// (results.cpp), a scene's reports and results (scene_results.cpp), CRULE's 3-D classes
+/// (crule_results.cpp), ErrorStatistics (results.cpp).
 void bind_results(py::module_& m);
+/// Truth, RuleErrors, Constraint and Recovery (scene_results.cpp).
+void bind_scene_report_classes(py::module_& m);
+/// Canonical, SceneResult and ImageColours (scene_results.cpp).
+void bind_scene_classes(py::module_& m);
+/// ConvexSet3, Selection3 and Crule3d (crule_results.cpp).
+void bind_crule_classes(py::module_& m);
 
 }  // namespace gmcc::python

@@ -1,4 +1,8 @@
+// The benchmark's run (benchmark.h): per fold, the canonical gamuts learned from the other folds
+// and every method's record of the fold's images; the methods' names.
 #include <gmcc/validation/benchmark.h>
+
+#include "benchmark_methods.h"
 
 #include <gmcc/geometry/perspective_image.h>
 #include <gmcc/input/camera_image.h>
@@ -25,121 +29,8 @@
 #include <thread>
 
 namespace gmcc {
+using namespace internal;
 namespace {
-
-const char* const kGm3d[3] = {"gm3d-max-volume", "gm3d-centroid", "gm3d-max-trace"};
-// A key with dashes for underscores: how methods are named.
-std::string dashed(std::string key) {
-  std::replace(key.begin(), key.end(), '_', '-');
-  return key;
-}
-
-// The 2-D perspective route's method for `rule` (gm2d-max-area, …), and a baseline's (grey-world, …).
-std::string gm2d_method(Rule rule) { return "gm2d-" + dashed(to_string(rule)); }
-std::string baseline_method(std::size_t b) { return dashed(to_string(all_baselines[b])); }
-// The edge-based methods (max-trace): edge-1, edge-2, 1-jet (pixel ∩ edge-1), 2-jet (∩ edge-2).
-const char* const kEdge[4] = {"gm3d-edge1-max-trace", "gm3d-edge2-max-trace", "gm3d-1jet-max-trace",
-                              "gm3d-2jet-max-trace"};
-// Which gamut types edge-based method k intersects: pixel, 1st-order, 2nd-order.
-constexpr bool kEdgeTypes[4][3] = {{false, true, false}, {false, false, true}, {true, true, false}, {true, true, true}};
-
-// What an image is reduced to: all the methods need of it.
-struct Reduced {
-  std::vector<Colour> hull3;  // pixel colours on their 3-D hull
-  std::vector<Colour> lifts;  // chromaticity lifts of their 2-D hull
-  std::vector<Colour> edges[2];  // 1st- and 2nd-order edge colours on their 3-D hull
-  std::array<std::optional<std::array<double, 3>>, all_baselines.size()> baselines;
-};
-
-// Which families the methods asked for need.
-struct Needs {
-  bool gm3d = false, gm2d = false;  // gm3d: the pixel colours' 3-D hull and canonical gamut
-  std::array<bool, 3> rule3{};
-  PerRule<bool> rule2{};
-  std::array<bool, 4> edge{};  // the edge-based methods
-  std::array<bool, 2> order{};  // the 1st- and 2nd-order edge colours and canonical gamuts
-  std::array<bool, all_baselines.size()> baseline{};
-};
-
-Needs needs_of(const std::vector<std::string>& methods) {
-  Needs n;
-  n.baseline[0] = true;  // grey world: every gamut method's fallback
-  for (const std::string& m : methods) {
-    bool known = false;
-    for (int k = 0; k < 3; ++k)
-      if (m == kGm3d[k]) n.gm3d = n.rule3[k] = known = true;
-    for (Rule rule : all_rules)
-      if (m == gm2d_method(rule)) n.gm2d = n.rule2[rule] = known = true;
-    // An edge-based method needs the pixel colours too: their scale is its edge colours' scale.
-    for (int k = 0; k < 4; ++k)
-      if (m == kEdge[k]) {
-        n.gm3d = n.edge[k] = known = true;
-        for (int o = 0; o < 2; ++o) n.order[o] = n.order[o] || kEdgeTypes[k][o + 1];
-      }
-    for (std::size_t b = 0; b < all_baselines.size() && !known; ++b)
-      if (m == baseline_method(b)) n.baseline[b] = known = true;
-    if (!known) throw std::invalid_argument("unknown benchmark method \"" + m + "\"");
-  }
-  return n;
-}
-
-// The run's pixel rules with the image's own.
-PixelRules rules_of(const BenchmarkImage& im, const PixelRules& run) {
-  PixelRules r = run;
-  r.exclude_polygons.insert(r.exclude_polygons.end(), im.exclude_polygons.begin(), im.exclude_polygons.end());
-  r.bin = 1;
-  return r;
-}
-
-Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs& n) {
-  PixelRules rules = rules_of(im, o.pixels);
-  ImageLevels levels;
-  if (o.black_level_given) levels.black = o.pixels.black_level;
-  levels.saturation = o.pixels.saturation;
-  if (im.black_level) levels.black = im.black_level;
-  if (im.saturation) levels.saturation = im.saturation;
-  const RgbImage image = read_camera_image(im.path, levels, rules);
-  if (!im.mask_path.empty()) {
-    const RgbImage mask = read_mask_image(im.mask_path);
-    if (mask.width != image.width || mask.height != image.height)
-      throw InputError(im.mask_path, 0, "the mask is " + std::to_string(mask.width) + "x" +
-                                            std::to_string(mask.height) + ", its image " + im.path + " is " +
-                                            std::to_string(image.width) + "x" + std::to_string(image.height));
-    rules.keep.resize(image.width * image.height);
-    for (std::size_t p = 0; p < rules.keep.size(); ++p)
-      rules.keep[p] = mask.samples[3 * p] || mask.samples[3 * p + 1] || mask.samples[3 * p + 2];
-  }
-  if (o.saturation_max && !levels.saturation) rules.saturation = (1u << image.bits) - 1;
-  Reduced r;
-  KeptPixels kept;
-  try {
-    kept = kept_pixels(image, rules);
-  } catch (const std::invalid_argument& e) {  // the rules against this image (polygon work)
-    throw InputError(im.path, 0, e.what());
-  }
-  if (kept.counts.kept == 0)
-    throw InputError(im.path, 0, "no usable pixel after the mask, saturation and dark or bright rules");
-  if (n.gm3d) {
-    rules.colour_set = ColourSet::hull_3d;
-    r.hull3 = image_colours(image, rules).colours;
-  }
-  for (int k = 0; k < 2; ++k)
-    if (n.order[k]) {
-      rules.colour_set = ColourSet::hull_3d;
-      EdgeRules edges;
-      edges.order = k == 0 ? DerivativeOrder::first : DerivativeOrder::second;
-      edges.sigma = o.edge_sigma;
-      r.edges[k] = edge_colours(image, rules, edges).colours;
-    }
-  if (n.gm2d) {
-    rules.colour_set = ColourSet::hull;
-    r.lifts = image_colours(image, rules).colours;
-  }
-  const DoubleImage linear = linear_image(image, rules.black_level);
-  for (std::size_t b = 0; b < all_baselines.size(); ++b)
-    if (n.baseline[b]) r.baselines[b] = grey_edge_estimate(linear, kept.kept, baseline_parameters(all_baselines[b]));
-  return r;
-}
 
 // f(i) for i in [0, n) on `threads` threads; the first exception (by index) rethrown; progress
 // reported from the calling thread.
@@ -183,68 +74,7 @@ void parallel_for(std::size_t n, unsigned threads, const std::function<void(std:
 // The perspective map (m1, m2) of the map c ⊘ e that takes light e to the white canonical light.
 Point2 true_perspective_map(const Colour& e) { return {Rational(e.b / e.r), Rational(e.b / e.g)}; }
 
-// Spearman's rank correlation (average ranks for ties); absent below 3 pairs or with no spread.
-std::optional<double> spearman(const std::vector<std::pair<double, double>>& xy) {
-  const std::size_t n = xy.size();
-  if (n < 3) return std::nullopt;
-  auto ranks = [n](std::vector<double> v) {
-    std::vector<std::size_t> idx(n);
-    for (std::size_t i = 0; i < n; ++i) idx[i] = i;
-    std::stable_sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return v[a] < v[b]; });
-    std::vector<double> r(n);
-    for (std::size_t i = 0; i < n;) {
-      std::size_t j = i;
-      while (j + 1 < n && v[idx[j + 1]] == v[idx[i]]) ++j;
-      for (std::size_t k = i; k <= j; ++k) r[idx[k]] = 0.5 * double(i + j) + 1;
-      i = j + 1;
-    }
-    return r;
-  };
-  std::vector<double> x(n), y(n);
-  for (std::size_t i = 0; i < n; ++i) x[i] = xy[i].first, y[i] = xy[i].second;
-  const std::vector<double> rx = ranks(x), ry = ranks(y);
-  double mx = 0, my = 0;
-  for (std::size_t i = 0; i < n; ++i) mx += rx[i], my += ry[i];
-  mx /= double(n), my /= double(n);
-  double sxy = 0, sxx = 0, syy = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    sxy += (rx[i] - mx) * (ry[i] - my);
-    sxx += (rx[i] - mx) * (rx[i] - mx);
-    syy += (ry[i] - my) * (ry[i] - my);
-  }
-  if (sxx == 0 || syy == 0) return std::nullopt;
-  return sxy / std::sqrt(sxx * syy);
-}
-
 }  // namespace
-
-std::vector<BenchmarkImage> benchmark_dataset(const std::string& images_dir, const std::vector<TruthRow>& rows,
-                                              const std::map<std::string, int>* folds, const std::string& folds_path,
-                                              int k) {
-  if (!folds && k < 2) throw std::invalid_argument("a benchmark needs at least 2 folds");
-  std::vector<BenchmarkImage> images;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const TruthRow& r = rows[i];
-    BenchmarkImage im;
-    im.name = r.image;
-    im.path = (std::filesystem::path(images_dir) / r.image).string();
-    im.light = r.light;
-    if (folds) {
-      const auto f = folds->find(r.image);
-      if (f == folds->end())
-        throw InputError(folds_path, 0, "no fold for image " + r.image + " (truth table line " + std::to_string(r.line) + ")");
-      im.fold = f->second;
-    } else {
-      im.fold = static_cast<int>(i % static_cast<std::size_t>(k));
-    }
-    im.black_level = r.black_level;
-    im.saturation = r.saturation;
-    if (!r.chart.empty()) im.exclude_polygons.push_back(r.chart);
-    if (!r.mask.empty()) im.mask_path = (std::filesystem::path(images_dir) / r.mask).string();
-    images.push_back(std::move(im));
-  }
-  return images;
-}
 
 const std::vector<std::string>& benchmark_methods() {
   static const std::vector<std::string> m = [] {
@@ -504,39 +334,6 @@ BenchmarkResult run_benchmark(const std::vector<BenchmarkImage>& images, const B
     for (BenchmarkRecord& r : v) result.records.push_back(std::move(r));
   result.summaries = summarise_benchmark(result.records, o.methods);
   return result;
-}
-
-std::vector<BenchmarkSummary> summarise_benchmark(const std::vector<BenchmarkRecord>& records,
-                                                  const std::vector<std::string>& methods) {
-  std::vector<BenchmarkSummary> out;
-  for (const std::string& m : methods) {
-    BenchmarkSummary s;
-    s.method = m;
-    std::vector<double> errors;
-    std::vector<std::pair<double, double>> wc;
-    std::size_t covered = 0;
-    bool gamut = false;
-    for (const BenchmarkRecord& r : records) {
-      if (r.method != m) continue;
-      ++s.images;
-      gamut = gamut || !r.feasible_kind.empty();
-      if (r.answered) ++s.answered;
-      if (!r.feasible_kind.empty() && !r.answered) ++s.empty;
-      if (r.error_deg) errors.push_back(*r.error_deg);
-      if (r.truth_in_feasible && *r.truth_in_feasible) ++s.truth_in_feasible;
-      if (r.answered && r.worst_case_deg && r.error_deg) {
-        wc.push_back({*r.worst_case_deg, *r.error_deg});
-        covered += *r.error_deg <= *r.worst_case_deg;
-      }
-    }
-    s.errors = error_statistics(errors);
-    if (gamut && !wc.empty()) {
-      s.worst_case_covers = double(covered) / double(wc.size());
-      s.worst_case_correlation = spearman(wc);
-    }
-    out.push_back(std::move(s));
-  }
-  return out;
 }
 
 }  // namespace gmcc

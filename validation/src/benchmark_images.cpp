@@ -1,0 +1,144 @@
+// The benchmark's images (benchmark.h): the dataset from the truth table and the folds, and each
+// image read and reduced to what the methods asked for need of it.
+#include <gmcc/validation/benchmark.h>
+
+#include "benchmark_methods.h"
+
+#include <gmcc/geometry/perspective_image.h>
+#include <gmcc/input/camera_image.h>
+#include <gmcc/numerics/interrupt.h>
+#include <gmcc/input/image_file.h>
+#include <gmcc/input/input_error.h>
+#include <gmcc/photo/edge_colours.h>
+#include <gmcc/photo/estimate_3d.h>
+#include <gmcc/photo/grey_edge.h>
+#include <gmcc/selection/prepare_canonical.h>
+#include <gmcc/selection/select_scene.h>
+
+#include <mpfr.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <thread>
+
+namespace gmcc {
+namespace internal {
+
+Needs needs_of(const std::vector<std::string>& methods) {
+  Needs n;
+  n.baseline[0] = true;  // grey world: every gamut method's fallback
+  for (const std::string& m : methods) {
+    bool known = false;
+    for (int k = 0; k < 3; ++k)
+      if (m == kGm3d[k]) n.gm3d = n.rule3[k] = known = true;
+    for (Rule rule : all_rules)
+      if (m == gm2d_method(rule)) n.gm2d = n.rule2[rule] = known = true;
+    // An edge-based method needs the pixel colours too: their scale is its edge colours' scale.
+    for (int k = 0; k < 4; ++k)
+      if (m == kEdge[k]) {
+        n.gm3d = n.edge[k] = known = true;
+        for (int o = 0; o < 2; ++o) n.order[o] = n.order[o] || kEdgeTypes[k][o + 1];
+      }
+    for (std::size_t b = 0; b < all_baselines.size() && !known; ++b)
+      if (m == baseline_method(b)) n.baseline[b] = known = true;
+    if (!known) throw std::invalid_argument("unknown benchmark method \"" + m + "\"");
+  }
+  return n;
+}
+
+// The run's pixel rules with the image's own.
+PixelRules rules_of(const BenchmarkImage& im, const PixelRules& run) {
+  PixelRules r = run;
+  r.exclude_polygons.insert(r.exclude_polygons.end(), im.exclude_polygons.begin(), im.exclude_polygons.end());
+  r.bin = 1;
+  return r;
+}
+
+Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs& n) {
+  PixelRules rules = rules_of(im, o.pixels);
+  ImageLevels levels;
+  if (o.black_level_given) levels.black = o.pixels.black_level;
+  levels.saturation = o.pixels.saturation;
+  if (im.black_level) levels.black = im.black_level;
+  if (im.saturation) levels.saturation = im.saturation;
+  const RgbImage image = read_camera_image(im.path, levels, rules);
+  if (!im.mask_path.empty()) {
+    const RgbImage mask = read_mask_image(im.mask_path);
+    if (mask.width != image.width || mask.height != image.height)
+      throw InputError(im.mask_path, 0, "the mask is " + std::to_string(mask.width) + "x" +
+                                            std::to_string(mask.height) + ", its image " + im.path + " is " +
+                                            std::to_string(image.width) + "x" + std::to_string(image.height));
+    rules.keep.resize(image.width * image.height);
+    for (std::size_t p = 0; p < rules.keep.size(); ++p)
+      rules.keep[p] = mask.samples[3 * p] || mask.samples[3 * p + 1] || mask.samples[3 * p + 2];
+  }
+  if (o.saturation_max && !levels.saturation) rules.saturation = (1u << image.bits) - 1;
+  Reduced r;
+  KeptPixels kept;
+  try {
+    kept = kept_pixels(image, rules);
+  } catch (const std::invalid_argument& e) {  // the rules against this image (polygon work)
+    throw InputError(im.path, 0, e.what());
+  }
+  if (kept.counts.kept == 0)
+    throw InputError(im.path, 0, "no usable pixel after the mask, saturation and dark or bright rules");
+  if (n.gm3d) {
+    rules.colour_set = ColourSet::hull_3d;
+    r.hull3 = image_colours(image, rules).colours;
+  }
+  for (int k = 0; k < 2; ++k)
+    if (n.order[k]) {
+      rules.colour_set = ColourSet::hull_3d;
+      EdgeRules edges;
+      edges.order = k == 0 ? DerivativeOrder::first : DerivativeOrder::second;
+      edges.sigma = o.edge_sigma;
+      r.edges[k] = edge_colours(image, rules, edges).colours;
+    }
+  if (n.gm2d) {
+    rules.colour_set = ColourSet::hull;
+    r.lifts = image_colours(image, rules).colours;
+  }
+  const DoubleImage linear = linear_image(image, rules.black_level);
+  for (std::size_t b = 0; b < all_baselines.size(); ++b)
+    if (n.baseline[b]) r.baselines[b] = grey_edge_estimate(linear, kept.kept, baseline_parameters(all_baselines[b]));
+  return r;
+}
+
+}  // namespace internal
+
+std::vector<BenchmarkImage> benchmark_dataset(const std::string& images_dir, const std::vector<TruthRow>& rows,
+                                              const std::map<std::string, int>* folds, const std::string& folds_path,
+                                              int k) {
+  if (!folds && k < 2) throw std::invalid_argument("a benchmark needs at least 2 folds");
+  std::vector<BenchmarkImage> images;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const TruthRow& r = rows[i];
+    BenchmarkImage im;
+    im.name = r.image;
+    im.path = (std::filesystem::path(images_dir) / r.image).string();
+    im.light = r.light;
+    if (folds) {
+      const auto f = folds->find(r.image);
+      if (f == folds->end())
+        throw InputError(folds_path, 0, "no fold for image " + r.image + " (truth table line " + std::to_string(r.line) + ")");
+      im.fold = f->second;
+    } else {
+      im.fold = static_cast<int>(i % static_cast<std::size_t>(k));
+    }
+    im.black_level = r.black_level;
+    im.saturation = r.saturation;
+    if (!r.chart.empty()) im.exclude_polygons.push_back(r.chart);
+    if (!r.mask.empty()) im.mask_path = (std::filesystem::path(images_dir) / r.mask).string();
+    images.push_back(std::move(im));
+  }
+  return images;
+}
+
+}  // namespace gmcc

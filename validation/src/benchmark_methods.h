@@ -1,0 +1,61 @@
+#pragma once
+// What the benchmark's files share (benchmark.cpp, benchmark_images.cpp, benchmark_statistics.cpp):
+// the methods' names, what an image is reduced to, and what the methods asked for need of it.
+// Internal to gmcc::validation.
+
+#include <gmcc/validation/benchmark.h>
+
+#include <gmcc/photo/grey_edge.h>
+#include <gmcc/selection/rule.h>
+
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gmcc::internal {
+
+// The 3-D pixel-gamut methods, indexed by Rule3.
+inline const char* const kGm3d[3] = {"gm3d-max-volume", "gm3d-centroid", "gm3d-max-trace"};
+// A key with dashes for underscores: how methods are named.
+inline std::string dashed(std::string key) {
+  std::replace(key.begin(), key.end(), '_', '-');
+  return key;
+}
+
+// The 2-D perspective route's method for `rule` (gm2d-max-area, …), and a baseline's (grey-world, …).
+inline std::string gm2d_method(Rule rule) { return "gm2d-" + dashed(to_string(rule)); }
+inline std::string baseline_method(std::size_t b) { return dashed(to_string(all_baselines[b])); }
+// The edge-based methods (max-trace): edge-1, edge-2, 1-jet (pixel ∩ edge-1), 2-jet (∩ edge-2).
+inline const char* const kEdge[4] = {"gm3d-edge1-max-trace", "gm3d-edge2-max-trace", "gm3d-1jet-max-trace",
+                                     "gm3d-2jet-max-trace"};
+// Which gamut types edge-based method k intersects: pixel, 1st-order, 2nd-order.
+inline constexpr bool kEdgeTypes[4][3] = {{false, true, false}, {false, false, true}, {true, true, false}, {true, true, true}};
+
+// What an image is reduced to: all the methods need of it.
+struct Reduced {
+  std::vector<Colour> hull3;  // pixel colours on their 3-D hull
+  std::vector<Colour> lifts;  // chromaticity lifts of their 2-D hull
+  std::vector<Colour> edges[2];  // 1st- and 2nd-order edge colours on their 3-D hull
+  std::array<std::optional<std::array<double, 3>>, all_baselines.size()> baselines;
+};
+
+// Which families the methods asked for need.
+struct Needs {
+  bool gm3d = false, gm2d = false;  // gm3d: the pixel colours' 3-D hull and canonical gamut
+  std::array<bool, 3> rule3{};
+  PerRule<bool> rule2{};
+  std::array<bool, 4> edge{};  // the edge-based methods
+  std::array<bool, 2> order{};  // the 1st- and 2nd-order edge colours and canonical gamuts
+  std::array<bool, all_baselines.size()> baseline{};
+};
+
+// The families `methods` need. \throws std::invalid_argument for an unknown method.
+Needs needs_of(const std::vector<std::string>& methods);
+
+// Image `im` read (the run's levels and pixel rules with its own, its mask) and reduced to what
+// the methods need. \throws InputError naming the image.
+Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs& n);
+
+}  // namespace gmcc::internal
