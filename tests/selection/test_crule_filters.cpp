@@ -8,7 +8,7 @@
 // each vertex, which only the exact test can place. The oracles of the worst case and of containment are written here: every non-zero
 // vertex's cos² compared in ℚ, every facet's plane evaluated in ℚ.
 #include "../test_support.h"
-#include "same_estimate_3.h"
+#include "crule_oracles.h"
 
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/selection/crule_3d.h>
@@ -26,6 +26,7 @@
 using namespace gmcc;
 using gmcc::test::Rng;
 using gmcc::test::same_estimate;
+using gmcc::test::worst_case_oracle;
 using R = Rational;
 
 namespace {
@@ -33,18 +34,6 @@ namespace {
 R dot(const Point3& a, const Point3& b) { return R(a.x * b.x + a.y * b.y + a.z * b.z); }
 bool is_zero(const Point3& a) { return sgn(a.x) == 0 && sgn(a.y) == 0 && sgn(a.z) == 0; }
 
-// The oracle: the first non-zero vertex of least cos²(m, v) = (m·v)²/(|m|²|v|²), in ℚ.
-double worst_case_oracle(const ConvexSet3& F, const Point3& m) {
-  const Point3* worst = nullptr;
-  R least;
-  for (const Point3& v : F.vertices) {
-    if (is_zero(v)) continue;
-    const R mv = dot(m, v);
-    const R cos2 = R(mv * mv / (dot(m, m) * dot(v, v)));
-    if (!worst || cos2 < least) worst = &v, least = cos2;
-  }
-  return diagonal_map_angular_error_deg(m, *worst);
-}
 
 // The oracle: p on the inner side of every facet's plane (outward normal from its first three
 // vertices), in ℚ.

@@ -10,7 +10,7 @@
 // coordinates and magnitudes at the double range policy's edge, and estimate_3d answers the same
 // with or without the exact F3.
 #include "../test_support.h"
-#include "same_estimate_3.h"
+#include "crule_oracles.h"
 
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/geometry/lazy_convex_set_3.h>
@@ -31,6 +31,7 @@
 using namespace gmcc;
 using gmcc::test::Rng;
 using gmcc::test::same_estimate;
+using gmcc::test::worst_case_oracle;
 using R = Rational;
 
 namespace {
@@ -56,17 +57,6 @@ MapEstimate3 max_trace_oracle(const ConvexSet3& F) {
   for (const Point3& v : F.vertices)
     if (R(v.x + v.y + v.z) > R(best->x + best->y + best->z)) best = &v;
   return exact_map_estimate_3("max_trace", *best);
-}
-double worst_case_oracle(const ConvexSet3& F, const Point3& m) {
-  const Point3* worst = nullptr;
-  R least;
-  for (const Point3& v : F.vertices) {
-    if (is_zero(v)) continue;
-    const R mv = dot(m, v);
-    const R cos2 = R(mv * mv / (dot(m, m) * dot(v, v)));
-    if (!worst || cos2 < least) worst = &v, least = cos2;
-  }
-  return diagonal_map_angular_error_deg(m, *worst);
 }
 
 struct Tally {
