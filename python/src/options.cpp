@@ -71,9 +71,15 @@ SelectSceneOptions scene_options(py::handle expand, const std::string& expand_po
   o.illuminant_worst_case = illuminant_worst_case;
   o.canonical_illuminant = light_from(canonical_illuminant, "canonical_illuminant");
   if (!illuminants.is_none()) o.illuminants = colours_from(illuminants, "illuminants");
-  Mean3dOptions& m = o.mean3d;
+  o.mean3d = mean3d_from(py::str(mean3d), precision, order, samples, seed);
+  return o;
+}
+
+Mean3dOptions mean3d_from(py::handle mean3d, py::handle precision, py::handle order, py::handle samples,
+                          py::handle seed) {
+  Mean3dOptions m;
   try {
-    m.method = mean3d_method_from_string(mean3d);
+    m.method = mean3d_method_from_string(mean3d.cast<std::string>());
   } catch (const std::invalid_argument& e) {
     throw py::value_error(std::string("mean3d: ") + e.what());
   }
@@ -88,7 +94,7 @@ SelectSceneOptions scene_options(py::handle expand, const std::string& expand_po
   } catch (const OptionError& e) {
     throw py::value_error(e.option + ": " + e.what());
   }
-  return o;
+  return m;
 }
 
 // A SceneInputError as ValueError, naming the Python argument and the row (0-based).

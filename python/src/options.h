@@ -15,6 +15,11 @@ namespace gmcc::python {
 Expansion expansion_from(py::handle expand, const std::string& expand_policy);
 
 /// select_scene's options from the Python arguments, each checked as the command line checks it.
+/// The 3-D mean's options from its Python arguments, read within the library's ranges and
+/// checked by the library (check_options, mean_3d.h). \throws ValueError, TypeError naming them.
+Mean3dOptions mean3d_from(py::handle mean3d, py::handle precision, py::handle order, py::handle samples,
+                          py::handle seed);
+
 SelectSceneOptions scene_options(py::handle expand, const std::string& expand_policy, py::handle illuminants,
                                  py::handle canonical_illuminant, const std::string& on_empty,
                                  const std::string& mean3d, py::handle precision, py::handle order,

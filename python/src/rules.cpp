@@ -63,9 +63,7 @@ list of str
       [](const ConvexSet2& F, const std::string& method, py::handle precision, py::handle order, py::handle samples,
          py::handle seed) {
         nonempty(F, "mean_3d");
-        const Mean3dOptions o = scene_options(py::int_(0), "none", py::none(), py::make_tuple(1, 1, 1), "none", method,
-                                              precision, order, samples, seed, true, "drop")
-                                    .mean3d;
+        const Mean3dOptions o = mean3d_from(py::str(method), precision, order, samples, seed);
         return released([&] { return mean_3d(F, o); });
       },
       py::arg("feasible_set"), py::kw_only(), py::arg("method") = to_string(Mean3dOptions{}.method),

@@ -53,25 +53,15 @@ std::shared_ptr<PreparedCanonical> prepare(py::handle canonical, py::handle expa
 // The prepared canonical side's per-scene choices with those given here (None: keep it).
 SceneChoices scene_choices(const PreparedCanonical& canonical, const py::dict& given) {
   SceneChoices c = canonical.options;
-  Mean3dOptions& m = c.mean3d;
-  auto has = [&](const char* name) { return given.contains(name) && !given[name].is_none(); };
-  if (has("mean3d")) {
-    try {
-      m.method = mean3d_method_from_string(given["mean3d"].cast<std::string>());
-    } catch (const std::invalid_argument& e) {
-      throw py::value_error(std::string("mean3d: ") + e.what());
-    }
-  }
-  if (has("precision")) m.precision_bits = integer_in<unsigned>(given["precision"], "precision", mean3d_precision_range);
-  if (has("order")) m.order = integer_in<unsigned>(given["order"], "order", mean3d_order_range);
-  if (has("samples")) m.samples = integer_in<std::uint64_t>(given["samples"], "samples", mean3d_samples_range);
-  if (has("seed")) m.seed = integer_in<std::uint64_t>(given["seed"], "seed", mean3d_seed_range);
-  if (has("illuminant_worst_case")) c.illuminant_worst_case = given["illuminant_worst_case"].cast<bool>();
-  try {
-    check_options(m);
-  } catch (const OptionError& e) {
-    throw py::value_error(e.option + ": " + e.what());
-  }
+  const Mean3dOptions& m = c.mean3d;
+  // Each choice given here (not None), else the prepared one.
+  const auto arg = [&](const char* name, py::object prepared) {
+    return given.contains(name) && !given[name].is_none() ? py::object(given[name]) : prepared;
+  };
+  c.mean3d = mean3d_from(arg("mean3d", py::str(to_string(m.method))), arg("precision", py::int_(m.precision_bits)),
+                         arg("order", py::int_(m.order)), arg("samples", py::int_(m.samples)),
+                         arg("seed", py::int_(m.seed)));
+  c.illuminant_worst_case = arg("illuminant_worst_case", py::bool_(c.illuminant_worst_case)).cast<bool>();
   return c;
 }
 
@@ -196,9 +186,7 @@ void bind_select_maps(py::module_& m) {
       [](const ConvexSet2& F, const std::string& mean3d, py::handle precision, py::handle order, py::handle samples,
          py::handle seed, py::handle canonical_illuminant) {
         SelectionOptions o;
-        o.mean3d = scene_options(py::int_(0), "none", py::none(), py::make_tuple(1, 1, 1), "none", mean3d, precision,
-                                 order, samples, seed, true, "drop")
-                       .mean3d;
+        o.mean3d = mean3d_from(py::str(mean3d), precision, order, samples, seed);
         if (!canonical_illuminant.is_none())
           o.illuminant_worst_case_for = light_from(canonical_illuminant, "canonical_illuminant");
         const Selections s = released([&] { return select_maps(F, o); });
