@@ -10,6 +10,7 @@
 #include "internal/crule_exact.h"
 #include "internal/half_plane.h"
 #include "internal/linear_program.h"
+#include "internal/small_integer_hull.h"
 
 #include <CGAL/Convex_hull_3/dual/halfspace_intersection_3.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -383,53 +384,51 @@ namespace {
 
 using Fast = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-// Whether the points span 3 dimensions, by Epick's exact predicates on the doubles.
-bool full_dimensional(const std::vector<Fast::Point_3>& p) {
+// Whether the points span 3 dimensions, by the kernel's exact predicates on the doubles.
+template <class K>
+bool full_dimensional(const std::vector<typename K::Point_3>& p) {
+  const typename K::Collinear_3 collinear;
+  const typename K::Orientation_3 orientation;
   std::size_t i = 1;
   while (i < p.size() && p[i] == p[0]) ++i;
   if (i == p.size()) return false;
   std::size_t j = i + 1;
-  while (j < p.size() && CGAL::collinear(p[0], p[i], p[j])) ++j;
+  while (j < p.size() && collinear(p[0], p[i], p[j])) ++j;
   if (j == p.size()) return false;
   for (std::size_t k = j + 1; k < p.size(); ++k)
-    if (CGAL::orientation(p[0], p[i], p[j], p[k]) != CGAL::COPLANAR) return true;
+    if (orientation(p[0], p[i], p[j], p[k]) != CGAL::COPLANAR) return true;
   return false;
 }
 
-}  // namespace
-
-std::vector<std::size_t> extreme_point_indices_3(const std::vector<std::array<double, 3>>& points,
-                                                 const std::vector<std::size_t>& candidates) {
-  // The distinct candidates, sorted, with the first index of each.
-  std::vector<std::size_t> order(candidates);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return points[a] < points[b]; });
-  order.erase(std::unique(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return points[a] == points[b]; }),
-              order.end());
-  std::vector<Fast::Point_3> fast;
-  fast.reserve(order.size());
-  for (std::size_t i : order) fast.emplace_back(points[i][0], points[i][1], points[i][2]);
-  if (!full_dimensional(fast)) return order;
-  std::vector<Fast::Point_3> extreme;
-  CGAL::extreme_points_3(fast, std::back_inserter(extreme));
-  std::vector<std::array<double, 3>> kept;
-  for (const Fast::Point_3& q : extreme) kept.push_back({q.x(), q.y(), q.z()});
-  std::sort(kept.begin(), kept.end());
-  std::vector<std::size_t> out;
-  for (std::size_t i : order)
-    if (std::binary_search(kept.begin(), kept.end(), points[i])) out.push_back(i);
-  return out;
+// Whether every coordinate of the points is an integer in [0, 2^16) (pixel values): then
+// SmallIntegerHullTraits decides every predicate of the hull exactly in 64-bit integers.
+bool small_integer_points(const std::vector<std::array<double, 3>>& points, const std::vector<std::size_t>& indices) {
+  for (std::size_t i : indices)
+    for (double x : points[i])
+      if (!small_integer(x)) return false;
+  return true;
 }
 
-std::vector<std::array<std::size_t, 3>> hull_triangles_3(const std::vector<std::array<double, 3>>& points,
-                                                        const std::vector<std::size_t>& indices) {
-  std::vector<Fast::Point_3> fast;
-  fast.reserve(indices.size());
-  for (std::size_t i : indices) fast.emplace_back(points[i][0], points[i][1], points[i][2]);
-  if (!full_dimensional(fast)) return {};
-  CGAL::Surface_mesh<Fast::Point_3> mesh;
-  CGAL::convex_hull_3(fast.begin(), fast.end(), mesh);
+// The extreme points of `fast` (K's points, full-dimensional) by CGAL's hull under `traits`.
+template <class K, class Traits>
+std::vector<std::array<double, 3>> extreme_points(const std::vector<typename K::Point_3>& fast, const Traits& traits) {
+  std::vector<typename K::Point_3> extreme;
+  CGAL::extreme_points_3(fast, std::back_inserter(extreme), traits);
+  std::vector<std::array<double, 3>> kept;
+  for (const typename K::Point_3& q : extreme) kept.push_back({q.x(), q.y(), q.z()});
+  return kept;
+}
+
+// The triangles of the hull of `fast` (K's points) as indices into `indices`' points; none when
+// the points are flat.
+template <class K, class Traits>
+std::vector<std::array<std::size_t, 3>> triangles(const std::vector<typename K::Point_3>& fast,
+                                                  const std::vector<std::size_t>& indices, const Traits& traits) {
+  if (!full_dimensional<K>(fast)) return {};
+  CGAL::Surface_mesh<typename K::Point_3> mesh;
+  CGAL::convex_hull_3(fast.begin(), fast.end(), mesh, traits);
   // The mesh's points are input points: each is found among `indices` by its exact coordinates.
-  auto index_of = [&](const Fast::Point_3& q) {
+  auto index_of = [&](const typename K::Point_3& q) {
     for (std::size_t k = 0; k < fast.size(); ++k)
       if (fast[k] == q) return indices[k];
     GMCC_CHECK(false, "hull_triangles_3: a hull vertex is an input point");
@@ -447,6 +446,49 @@ std::vector<std::array<std::size_t, 3>> hull_triangles_3(const std::vector<std::
     out.push_back(t);
   }
   return out;
+}
+
+template <class K>
+std::vector<typename K::Point_3> points_of(const std::vector<std::array<double, 3>>& points,
+                                          const std::vector<std::size_t>& indices) {
+  std::vector<typename K::Point_3> fast;
+  fast.reserve(indices.size());
+  for (std::size_t i : indices) fast.emplace_back(points[i][0], points[i][1], points[i][2]);
+  return fast;
+}
+
+}  // namespace
+
+std::vector<std::size_t> extreme_point_indices_3(const std::vector<std::array<double, 3>>& points,
+                                                 const std::vector<std::size_t>& candidates) {
+  // The distinct candidates, sorted, with the first index of each.
+  std::vector<std::size_t> order(candidates);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return points[a] < points[b]; });
+  order.erase(std::unique(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return points[a] == points[b]; }),
+              order.end());
+  std::vector<std::array<double, 3>> kept;
+  if (small_integer_points(points, order)) {
+    const auto fast = points_of<SmallIntegerKernel>(points, order);
+    if (!full_dimensional<SmallIntegerKernel>(fast)) return order;
+    kept = extreme_points<SmallIntegerKernel>(fast, SmallIntegerHullTraits());
+  } else {
+    const auto fast = points_of<Fast>(points, order);
+    if (!full_dimensional<Fast>(fast)) return order;
+    kept = extreme_points<Fast>(fast, CGAL::Convex_hull_traits_3<Fast, CGAL::Default, CGAL::Tag_true>());
+  }
+  std::sort(kept.begin(), kept.end());
+  std::vector<std::size_t> out;
+  for (std::size_t i : order)
+    if (std::binary_search(kept.begin(), kept.end(), points[i])) out.push_back(i);
+  return out;
+}
+
+std::vector<std::array<std::size_t, 3>> hull_triangles_3(const std::vector<std::array<double, 3>>& points,
+                                                        const std::vector<std::size_t>& indices) {
+  if (small_integer_points(points, indices))
+    return triangles<SmallIntegerKernel>(points_of<SmallIntegerKernel>(points, indices), indices, SmallIntegerHullTraits());
+  return triangles<Fast>(points_of<Fast>(points, indices), indices,
+                         CGAL::Convex_hull_traits_3<Fast, CGAL::Default, CGAL::Tag_true>());
 }
 
 ConvexSet3 feasible_set_3d_lp(const std::vector<LpPart>& parts) {

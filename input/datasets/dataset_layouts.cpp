@@ -5,6 +5,7 @@
 #include <gmcc/input/input_error.h>
 #include <gmcc/input/text_file.h>
 
+#include <dlfcn.h>
 #include <matio.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include <filesystem>
 #include <memory>
 #include <sstream>
+#include <type_traits>
 
 namespace gmcc {
 namespace {
@@ -30,16 +32,54 @@ std::string find_image(const fs::path& dir, const std::string& stem, const std::
   throw InputError(listed_in, 0, "no image " + stem + ".PNG in " + dir.string() + " or its PNG/ folder");
 }
 
+// libmatio, loaded on the first MATLAB file rather than linked: linking it loads HDF5, libcurl
+// and GnuTLS into every gmcc process, about 8 ms of start-up that every other command paid
+// (docs/performance.md "Start-up"). GMCC_MATIO_SONAME is the soname of the libmatio the build
+// found (input/datasets/CMakeLists.txt); its header gives the types and signatures.
+struct Matio {
+  decltype(&::Mat_Open) open = nullptr;
+  decltype(&::Mat_Close) close = nullptr;
+  decltype(&::Mat_VarRead) read = nullptr;
+  decltype(&::Mat_VarFree) free = nullptr;
+  decltype(&::Mat_VarGetCell) cell = nullptr;
+};
+
+Matio load_matio(const std::string& file) {
+  void* lib = dlopen(GMCC_MATIO_SONAME, RTLD_NOW | RTLD_LOCAL);
+  if (!lib) {
+    const char* why = dlerror();
+    throw InputError(file, 0, std::string("reading a MATLAB file needs libmatio (" GMCC_MATIO_SONAME "), which did not load: ") +
+                                  (why ? why : "unknown reason"));
+  }
+  Matio m;
+  auto get = [&](auto& f, const char* name) {
+    f = reinterpret_cast<std::remove_reference_t<decltype(f)>>(dlsym(lib, name));
+    if (!f) throw InputError(file, 0, std::string(GMCC_MATIO_SONAME " has no ") + name);
+  };
+  get(m.open, "Mat_Open");
+  get(m.close, "Mat_Close");
+  get(m.read, "Mat_VarRead");
+  get(m.free, "Mat_VarFree");
+  get(m.cell, "Mat_VarGetCell");
+  return m;  // the library stays loaded for the process
+}
+
+// The loaded library (loaded once; `file` names the MATLAB file in an error).
+const Matio& matio(const std::string& file) {
+  static const Matio m = load_matio(file);
+  return m;
+}
+
 struct MatFile {
   mat_t* mat = nullptr;
   ~MatFile() {
-    if (mat) Mat_Close(mat);
+    if (mat) matio("").close(mat);
   }
 };
 struct MatVar {
   matvar_t* var = nullptr;
   ~MatVar() {
-    if (var) Mat_VarFree(var);
+    if (var) matio("").free(var);
   }
 };
 
@@ -77,7 +117,7 @@ Numbers numbers_of(const matvar_t* v, const char* name, const std::string& file)
 }
 
 Numbers numbers(mat_t* mat, const char* name, const std::string& file) {
-  MatVar m{Mat_VarRead(mat, name)};
+  MatVar m{matio(file).read(mat, name)};
   if (!m.var) throw InputError(file, 0, std::string("no variable ") + name);
   return numbers_of(m.var, name, file);
 }
@@ -122,13 +162,13 @@ std::vector<TruthRow> read_nus_camera(const std::string& dir_text) {
   const std::string file = found[0].string();
   // Recorded for provenance like every input (the bytes are read again by libmatio).
   read_binary_file(file, std::size_t(256) << 20, "ground-truth file");
-  MatFile mat{Mat_Open(file.c_str(), MAT_ACC_RDONLY)};
+  MatFile mat{matio(file).open(file.c_str(), MAT_ACC_RDONLY)};
   if (!mat.mat) throw InputError(file, 0, "not a MATLAB file libmatio reads");
   const Numbers lights = numbers(mat.mat, "groundtruth_illuminants", file);
   const Numbers coords = numbers(mat.mat, "CC_coords", file);
   const std::uint32_t black = level(numbers(mat.mat, "darkness_level", file), "darkness_level", file);
   const std::uint32_t saturation = level(numbers(mat.mat, "saturation_level", file), "saturation_level", file);
-  MatVar names{Mat_VarRead(mat.mat, "all_image_names")};
+  MatVar names{matio(file).read(mat.mat, "all_image_names")};
   if (!names.var || names.var->class_type != MAT_C_CELL) throw InputError(file, 0, "all_image_names: expected a cell array");
   std::size_t n = 1;
   for (int k = 0; k < names.var->rank; ++k) n *= names.var->dims[k];
@@ -136,10 +176,10 @@ std::vector<TruthRow> read_nus_camera(const std::string& dir_text) {
   if (coords.rows != n || coords.cols != 4) throw InputError(file, 0, "CC_coords: expected y1,y2,x1,x2 per image");
   std::vector<TruthRow> rows;
   for (std::size_t i = 0; i < n; ++i) {
-    const matvar_t* cell = Mat_VarGetCell(names.var, static_cast<int>(i));
+    const matvar_t* cell = matio(file).cell(names.var, static_cast<int>(i));
     if (!cell) throw InputError(file, 0, "all_image_names: a missing cell");
     // Names may be wrapped in one more cell (a cell of 1×1 cells).
-    const matvar_t* c = cell->class_type == MAT_C_CELL ? Mat_VarGetCell(const_cast<matvar_t*>(cell), 0) : cell;
+    const matvar_t* c = cell->class_type == MAT_C_CELL ? matio(file).cell(const_cast<matvar_t*>(cell), 0) : cell;
     if (!c) throw InputError(file, 0, "all_image_names: an empty cell");
     TruthRow row;
     row.line = i + 1;
@@ -230,7 +270,7 @@ std::vector<TruthRow> read_gehler_shi(const std::string& dir_text, std::map<std:
   if (!fs::exists(lights_file)) lights_file = dir / "real_illum_568..mat";
   const std::string file = lights_file.string();
   read_binary_file(file, std::size_t(64) << 20, "ground-truth file");
-  MatFile mat{Mat_Open(file.c_str(), MAT_ACC_RDONLY)};
+  MatFile mat{matio(file).open(file.c_str(), MAT_ACC_RDONLY)};
   if (!mat.mat) throw InputError(file, 0, "not a MATLAB file libmatio reads");
   const Numbers lights = numbers(mat.mat, "real_rgb", file);
   if (lights.rows != names.size() || lights.cols != 3)
@@ -271,14 +311,14 @@ std::vector<TruthRow> read_gehler_shi(const std::string& dir_text, std::map<std:
   if (fs::exists(split)) {
     const std::string sfile = split.string();
     read_binary_file(sfile, std::size_t(64) << 20, "split file");
-    MatFile s{Mat_Open(sfile.c_str(), MAT_ACC_RDONLY)};
+    MatFile s{matio(file).open(sfile.c_str(), MAT_ACC_RDONLY)};
     if (!s.mat) throw InputError(sfile, 0, "not a MATLAB file libmatio reads");
-    MatVar te{Mat_VarRead(s.mat, "te_split")};
+    MatVar te{matio(file).read(s.mat, "te_split")};
     if (!te.var || te.var->class_type != MAT_C_CELL) throw InputError(sfile, 0, "te_split: expected a cell array");
     std::size_t n = 1;
     for (int k = 0; k < te.var->rank; ++k) n *= te.var->dims[k];
     for (std::size_t f = 0; f < n; ++f) {
-      const matvar_t* c = Mat_VarGetCell(te.var, static_cast<int>(f));
+      const matvar_t* c = matio(file).cell(te.var, static_cast<int>(f));
       if (!c) throw InputError(sfile, 0, "te_split: a fold that is not a list");
       for (double x : numbers_of(c, "te_split", sfile).v) {
         if (x < 1 || x > double(rows.size()) || x != std::floor(x))
