@@ -66,10 +66,12 @@ double worst_case_map_deg_3d(const ConvexSet3& F, const Point3& m) {
 double worst_case_map_deg_3d(const LazyConvexSet3& F, const Point3& m) {
   // Largest angle = smallest cos² = (m·v)²/(|m|²|v|²) (m·v >= 0 on the octant), compared exactly
   // among the filter's contenders (in vertex order, so that ties go to the first vertex as over
-  // all of them).
+  // all of them); a lone contender is the worst vertex without a comparison.
+  const std::vector<std::size_t> contenders = worst_case_contenders(F, m);
+  if (contenders.size() == 1 && !is_zero(m)) return diagonal_map_angular_error_deg(m, F.vertex(contenders[0]));
   const Point3* worst = nullptr;
   Rational worst_cos2;
-  for (std::size_t i : worst_case_contenders(F, m)) {
+  for (std::size_t i : contenders) {
     const Point3& v = F.vertex(i);
     Rational cos2 = cos2_times_m2(m, v);
     if (!worst || cos2 < worst_cos2) worst = &v, worst_cos2 = std::move(cos2);
