@@ -328,16 +328,25 @@ class Clipper {
 
   std::array<mpz_class, 4> exact_homogeneous(const std::array<int, 3>& t) {
     const IntegerPlane3 &p = plane(t[0]), &q = plane(t[1]), &r = plane(t[2]);
-    // c_qr = a_q × a_r etc.; W = a_p·c_qr, (X, Y, Z) = b_p c_qr + b_q c_rp + b_r c_pq.
-    auto cross = [](const IntegerPlane3& s, const IntegerPlane3& t2) {
-      return std::array<mpz_class, 3>{mpz_class(s.a[1] * t2.a[2] - s.a[2] * t2.a[1]),
-                                      mpz_class(s.a[2] * t2.a[0] - s.a[0] * t2.a[2]),
-                                      mpz_class(s.a[0] * t2.a[1] - s.a[1] * t2.a[0])};
+    // c_qr = a_q × a_r etc.; W = a_p·c_qr, (X, Y, Z) = b_p c_qr + b_q c_rp + b_r c_pq. In place
+    // (mpz_mul, mpz_addmul, mpz_submul into kept scratch), without a temporary per product.
+    auto cross = [](const IntegerPlane3& s, const IntegerPlane3& u, std::array<mpz_class, 3>& c) {
+      for (int k = 0; k < 3; ++k) {
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        mpz_mul(c[k].get_mpz_t(), s.a[i].get_mpz_t(), u.a[j].get_mpz_t());
+        mpz_submul(c[k].get_mpz_t(), s.a[j].get_mpz_t(), u.a[i].get_mpz_t());
+      }
     };
-    const auto cqr = cross(q, r), crp = cross(r, p), cpq = cross(p, q);
+    cross(q, r, cross_[0]), cross(r, p, cross_[1]), cross(p, q, cross_[2]);
     std::array<mpz_class, 4> h;
-    for (int k = 0; k < 3; ++k) h[k] = p.b * cqr[k] + q.b * crp[k] + r.b * cpq[k];
-    h[3] = p.a[0] * cqr[0] + p.a[1] * cqr[1] + p.a[2] * cqr[2];
+    for (int k = 0; k < 3; ++k) {
+      mpz_mul(h[k].get_mpz_t(), p.b.get_mpz_t(), cross_[0][k].get_mpz_t());
+      mpz_addmul(h[k].get_mpz_t(), q.b.get_mpz_t(), cross_[1][k].get_mpz_t());
+      mpz_addmul(h[k].get_mpz_t(), r.b.get_mpz_t(), cross_[2][k].get_mpz_t());
+    }
+    mpz_mul(h[3].get_mpz_t(), p.a[0].get_mpz_t(), cross_[0][0].get_mpz_t());
+    mpz_addmul(h[3].get_mpz_t(), p.a[1].get_mpz_t(), cross_[0][1].get_mpz_t());
+    mpz_addmul(h[3].get_mpz_t(), p.a[2].get_mpz_t(), cross_[0][2].get_mpz_t());
     return h;
   }
 
@@ -580,6 +589,7 @@ class Clipper {
   std::vector<const VertexDoubles*> live_doubles_;  // scratch for pack()
   std::vector<std::size_t> order_;  // the rows, in clipping order
   std::vector<int> sign_;
+  std::array<std::array<mpz_class, 3>, 3> cross_;  // scratch for exact_homogeneous
 };
 
 }  // namespace
