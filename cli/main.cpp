@@ -79,6 +79,7 @@ Command command(CLI::App& app, CLI::App* (*add)(CLI::App&, Options&), Run run) {
 
 int main(int argc, char** argv) {
   gmcc::cli::install_exit_cleanup();
+  gmcc::cli::keep_freed_memory();
   gmcc::cli::install_gmp_allocation_failure_exit();
   CLI::App app{"gmcc — gamut-mapping colour constancy with exact geometry "
                "(Finlayson & Hordley 1999, \"Selection for gamut mapping colour constancy\")"};

@@ -5,6 +5,7 @@
 #include <gmcc/input/input_error.h>
 
 #include <gmp.h>
+#include <malloc.h>
 #include <sys/resource.h>
 
 #include <atomic>
@@ -35,6 +36,12 @@ void gmp_free(void* p, std::size_t) { std::free(p); }
 
 void install_gmp_allocation_failure_exit() {
   mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free);
+}
+
+void keep_freed_memory() {
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 64 << 20);
+  mallopt(M_TOP_PAD, 16 << 20);
 }
 
 void limit_memory(std::uint64_t mib) {

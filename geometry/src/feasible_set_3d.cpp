@@ -463,7 +463,9 @@ std::vector<std::size_t> extreme_point_indices_3(const std::vector<std::array<do
                                                  const std::vector<std::size_t>& candidates) {
   // The distinct candidates, sorted, with the first index of each.
   std::vector<std::size_t> order(candidates);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return points[a] < points[b]; });
+  const auto by_point = [&](std::size_t a, std::size_t b) { return points[a] < points[b]; };
+  if (!std::is_sorted(order.begin(), order.end(), by_point))  // pixel colours come sorted
+    std::sort(order.begin(), order.end(), by_point);
   order.erase(std::unique(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return points[a] == points[b]; }),
               order.end());
   std::vector<std::array<double, 3>> kept;
