@@ -1,6 +1,7 @@
 // An exact 3-D convex set whose vertices are made exact on request (lazy_convex_set_3.h).
 #include <gmcc/geometry/lazy_convex_set_3.h>
 
+#include <gmcc/geometry/integers_over_lcm.h>
 #include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/numerics/internal_check.h>
 #include <gmcc/numerics/rational_to_float.h>
@@ -18,7 +19,7 @@ struct LazyConvexSet3::State {
   ConvexKind3 kind = ConvexKind3::empty;
   std::vector<std::vector<std::size_t>> faces;
   std::vector<Enclosure3> enclosures;
-  std::vector<std::array<mpz_class, 4>> homogeneous;  // (X, Y, Z, W), W > 0; empty when built exact
+  std::vector<std::array<mpz_class, 4>> homogeneous;  // (X, Y, Z, W), W > 0 (W = 0: not made yet)
   std::vector<std::optional<Point3>> exact;           // made so far
   std::vector<char> zero;
   std::size_t made = 0;
@@ -123,6 +124,18 @@ const std::vector<Enclosure3>& LazyConvexSet3::enclosures() const { return state
 bool LazyConvexSet3::is_zero(std::size_t i) const { return state_->zero[i] != 0; }
 std::size_t LazyConvexSet3::exact_vertices() const { return state_->made; }
 
+const std::array<mpz_class, 4>& LazyConvexSet3::homogeneous(std::size_t i) const {
+  State& s = *state_;
+  if (s.homogeneous.size() < s.exact.size()) s.homogeneous.resize(s.exact.size());  // built exact
+  std::array<mpz_class, 4>& h = s.homogeneous[i];
+  if (sgn(h[3]) == 0) {
+    const Point3& p = *s.exact[i];
+    h[3] = lcm_of_denominators_of(p.x, p.y, p.z);
+    for (std::size_t k = 0; k < 3; ++k) h[k] = times_lcm(coord(p, static_cast<int>(k)), h[3]);
+  }
+  return h;
+}
+
 const Point3& LazyConvexSet3::vertex(std::size_t i) const {
   State& s = *state_;
   std::optional<Point3>& v = s.exact[i];
@@ -134,6 +147,35 @@ const Point3& LazyConvexSet3::vertex(std::size_t i) const {
     ++s.made;
   }
   return *v;
+}
+
+namespace {
+
+// det [a; b; c] of three integer rows, restricted to columns i, j, k.
+mpz_class det3(const std::array<mpz_class, 4>& a, const std::array<mpz_class, 4>& b, const std::array<mpz_class, 4>& c,
+               std::size_t i, std::size_t j, std::size_t k) {
+  mpz_class m, t, out;
+  auto minor = [&](std::size_t u, std::size_t v) {  // b_u c_v − b_v c_u
+    mpz_mul(m.get_mpz_t(), b[u].get_mpz_t(), c[v].get_mpz_t());
+    mpz_submul(m.get_mpz_t(), b[v].get_mpz_t(), c[u].get_mpz_t());
+  };
+  minor(j, k);
+  mpz_mul(out.get_mpz_t(), a[i].get_mpz_t(), m.get_mpz_t());
+  minor(i, k);
+  mpz_submul(out.get_mpz_t(), a[j].get_mpz_t(), m.get_mpz_t());
+  minor(i, j);
+  mpz_addmul(out.get_mpz_t(), a[k].get_mpz_t(), m.get_mpz_t());
+  return out;
+}
+
+}  // namespace
+
+std::pair<std::array<mpz_class, 3>, mpz_class> LazyConvexSet3::facet_plane(std::size_t k) const {
+  const std::vector<std::size_t>& f = state_->faces[k];
+  const auto &a = homogeneous(f[0]), &b = homogeneous(f[1]), &c = homogeneous(f[2]);
+  // det [A; B; C; (x, 1)] = −x·D_yzw + y·D_xzw − z·D_xyw + D_xyz, and it is
+  // −W_a W_b W_c ((b − a) × (c − a))·(x − a): so n = (D_yzw, −D_xzw, D_xyw), c = D_xyz.
+  return {{det3(a, b, c, 1, 2, 3), mpz_class(-det3(a, b, c, 0, 2, 3)), det3(a, b, c, 0, 1, 3)}, det3(a, b, c, 0, 1, 2)};
 }
 
 ConvexSet3 LazyConvexSet3::exact() const {
@@ -148,11 +190,18 @@ bool contains(const LazyConvexSet3& s, const Point3& p) {
   if (s.kind() != ConvexKind3::polytope) return contains(s.exact(), p);
   const std::optional<std::vector<std::size_t>> unsure = internal::facets_left_by_filter(s.enclosures(), s.faces(), p);
   if (!unsure) return false;
+  // p = (P_0/Q_0, P_1/Q_1, P_2/Q_2), Q_k > 0: n·p − c has the sign of
+  // Σ n_k P_k Π_{j≠k} Q_j − c Π_j Q_j.
+  const mpz_class &q0 = p.x.get_den(), &q1 = p.y.get_den(), &q2 = p.z.get_den();
+  const mpz_class q01 = q0 * q1, q02 = q0 * q2, q12 = q1 * q2, q012 = q01 * q2;
+  const mpz_class w[3] = {p.x.get_num() * q12, p.y.get_num() * q02, p.z.get_num() * q01};
+  mpz_class side;
   for (std::size_t k : *unsure) {
-    const auto& f = s.faces()[k];
-    const Point3 &a = s.vertex(f[0]), &b = s.vertex(f[1]), &c = s.vertex(f[2]);
-    const Point3 n = cross(sub(b, a), sub(c, a));  // outward
-    if (sgn(dot(n, sub(p, a))) > 0) return false;
+    const auto [n, c] = s.facet_plane(k);  // outward
+    mpz_mul(side.get_mpz_t(), c.get_mpz_t(), q012.get_mpz_t());
+    mpz_neg(side.get_mpz_t(), side.get_mpz_t());
+    for (std::size_t j = 0; j < 3; ++j) mpz_addmul(side.get_mpz_t(), n[j].get_mpz_t(), w[j].get_mpz_t());
+    if (sgn(side) > 0) return false;
   }
   return true;
 }

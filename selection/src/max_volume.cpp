@@ -31,29 +31,42 @@ std::optional<Rational> rational_sqrt(const Rational& x) {
   return r;
 }
 
-// An irrational edge candidate: p + t·u with t = (−b + sign·√disc)/(2a).
+// An irrational edge candidate: on the edge from vertex i to vertex j of F, p + t·u with
+// t = (−b + sign·√disc)/(2a), kept in integers: p = P/S and u = U/S (S > 0) from the vertices'
+// homogeneous coordinates, a, b, disc the derivative's coefficients for (P, U) — positive
+// multiples (S³, S³, S⁶) of those for (p, u), so the same roots — without a gcd.
+Interval integer_interval(const mpz_class& z, mpfr_prec_t bits) {
+  Interval r(bits);
+  mpfi_set_z(r.get(), z.get_mpz_t());
+  return r;
+}
 struct EdgeRoot {
-  Point3 p, u;
-  Rational a, b, disc;
+  std::size_t i, j;
+  std::array<mpz_class, 3> P, U;
+  mpz_class S, a, b, disc;
   int sign;
   Interval t(mpfr_prec_t bits) const {
-    const Interval s = sqrt(Interval(disc, bits));
-    Interval num = Interval(Rational(-b), bits) + (sign > 0 ? s : Interval(0, bits) - s);
-    return num / Interval(Rational(2 * a), bits);
+    const Interval s = sqrt(integer_interval(disc, bits));
+    Interval num = integer_interval(mpz_class(-b), bits) + (sign > 0 ? s : Interval(0, bits) - s);
+    return num / integer_interval(mpz_class(2 * a), bits);
   }
   std::array<Interval, 3> point(mpfr_prec_t bits) const {
-    const Interval tt = t(bits);
-    return {Interval(p.x, bits) + tt * u.x, Interval(p.y, bits) + tt * u.y,
-            Interval(p.z, bits) + tt * u.z};
+    const Interval tt = t(bits), s = integer_interval(S, bits);
+    std::array<Interval, 3> out{Interval(bits), Interval(bits), Interval(bits)};
+    for (std::size_t k = 0; k < 3; ++k) out[k] = (integer_interval(P[k], bits) + tt * integer_interval(U[k], bits)) / s;
+    return out;
   }
 };
 
-// Max-volume's candidate arithmetic, written once for both kinds: ℚ (Point3, the exact stage)
-// and double enclosures (Enclosure3, the filter), in the same operations and order.
+// Max-volume's candidate arithmetic, written once for every number type: ℚ (Point3, the exact
+// answer's form), ℤ (homogeneous, the exact stage's decisions) and double enclosures
+// (Enclosure3, the filter), in the same operations and order.
 const Rational& at(const Point3& p, int k) { return coord(p, k); }
 const Enclosure& at(const Enclosure3& p, int k) { return p[static_cast<std::size_t>(k)]; }
+const mpz_class& at(const std::array<mpz_class, 3>& p, int k) { return p[static_cast<std::size_t>(k)]; }
 Rational constant(const Rational&, int c) { return c; }
 Enclosure constant(const Enclosure&, int c) { return Enclosure::exact(c); }
+mpz_class constant(const mpz_class&, int c) { return c; }
 
 // On the edge p + t·u, f(t) = ∏_k (p_k + t·u_k) = A t³ + B t² + C t + D has the derivative
 // f′(t) = a t² + b t + c, a = 3A, b = 2B, c = C, of discriminant b² − 4ac (docs/derivations.md §2.4).
@@ -90,39 +103,49 @@ Candidates candidates(const LazyConvexSet3& F, const internal::MaxVolumeCandidat
   std::vector<EdgeRoot>& irrational = out.irrational;
   for (std::size_t i : which.vertices) rational.push_back(v(i));
   for (std::size_t face : which.faces) {  // polytope facets, or the polygon
-    const auto& f = F.faces()[face];
-    const Point3 n = cross(sub(v(f[1]), v(f[0])), sub(v(f[2]), v(f[0])));
-    const Rational k = dot(n, v(f[0]));
-    if (sgn(n.x) == 0 || sgn(n.y) == 0 || sgn(n.z) == 0) continue;
-    if (sgn(k) * sgn(n.x) <= 0 || sgn(k) * sgn(n.y) <= 0 || sgn(k) * sgn(n.z) <= 0) continue;
-    const Point3 d{Rational(k / (3 * n.x)), Rational(k / (3 * n.y)), Rational(k / (3 * n.z))};
+    // The stationary point d = k/(3n) of the facet's plane n·x = k (any nonzero multiple of it:
+    // the same d and signs), in integers.
+    const auto [n, k] = F.facet_plane(face);
+    if (sgn(n[0]) == 0 || sgn(n[1]) == 0 || sgn(n[2]) == 0) continue;
+    if (sgn(k) * sgn(n[0]) <= 0 || sgn(k) * sgn(n[1]) <= 0 || sgn(k) * sgn(n[2]) <= 0) continue;
+    Point3 d{Rational(k, 3 * n[0]), Rational(k, 3 * n[1]), Rational(k, 3 * n[2])};
+    d.x.canonicalize(), d.y.canonicalize(), d.z.canonicalize();
     if (contains(F, d)) rational.push_back(d);
   }
   for (const auto& [i, j] : which.edges) {
-    const Point3& p = v(i);
-    const Point3 u = sub(v(j), p);
-    const auto [a, b, c, disc] = edge_derivative(p, u);
+    const auto &hp = F.homogeneous(i), &hq = F.homogeneous(j);
+    EdgeRoot e{i, j, {}, {}, hp[3] * hq[3], 0, 0, 0, 1};
+    for (std::size_t k = 0; k < 3; ++k) e.P[k] = hp[k] * hq[3], e.U[k] = hq[k] * hp[3] - e.P[k];
+    const auto [a, b, c, disc] = edge_derivative(e.P, e.U);
     auto consider = [&](const Rational& t) {
-      if (sgn(t) > 0 && t < 1) rational.push_back(add(p, scale(u, t)));
+      if (sgn(t) > 0 && t < 1) rational.push_back(add(v(i), scale(sub(v(j), v(i)), t)));
     };
     if (sgn(a) == 0) {
-      if (sgn(b) != 0) consider(Rational(-c / b));
+      if (sgn(b) != 0) {
+        Rational t(-c, b);
+        t.canonicalize();
+        consider(t);
+      }
       continue;
     }
     if (sgn(disc) < 0) continue;
-    if (const auto r = rational_sqrt(disc)) {
+    if (const auto r = rational_sqrt(Rational(disc))) {
       consider(Rational((-b + *r) / (2 * a)));
       consider(Rational((-b - *r) / (2 * a)));
       continue;
     }
-    for (int sign : {1, -1}) irrational.push_back({p, u, a, b, disc, sign});
+    e.a = a, e.b = b, e.disc = disc;
+    for (int sign : {1, -1}) {
+      e.sign = sign;
+      irrational.push_back(e);
+    }
   }
   return out;
 }
 
 // An irrational winner's map enclosed tightly enough for a double (at least `bits`), reported
 // with its exact form.
-MapEstimate3 edge_root_estimate(const EdgeRoot& e, mpfr_prec_t bits) {
+MapEstimate3 edge_root_estimate(const LazyConvexSet3& F, const EdgeRoot& e, mpfr_prec_t bits) {
   const auto d = e.point(std::max<mpfr_prec_t>(bits, 256));
   MapEstimate3 out;
   out.rule = "max_volume";
@@ -134,8 +157,11 @@ MapEstimate3 edge_root_estimate(const EdgeRoot& e, mpfr_prec_t bits) {
     out.error_bound = std::max(out.error_bound, bound);
     out.enclosure[k] = {lo, hi};
   }
-  out.edge_root = MapEstimate3::EdgeRoot{e.p, add(e.p, e.u), e.a, e.b,
-                                          Rational((e.b * e.b - e.disc) / (4 * e.a)), e.sign};
+  // The exact description in the edge's own rationals: its ends in lowest terms and the
+  // derivative's coefficients for them (the integer ones above are multiples of these).
+  const Point3 &p = F.vertex(e.i), &q = F.vertex(e.j);
+  const auto [a, b, c, disc] = edge_derivative(p, sub(q, p));
+  out.edge_root = MapEstimate3::EdgeRoot{p, q, a, b, c, e.sign};
   return out;
 }
 
@@ -369,7 +395,7 @@ MapEstimate3 max_volume_over(const LazyConvexSet3& F, const MaxVolumeCandidates&
       for (std::size_t j = 0; j < value.size() && wins; ++j)
         wins = j == i || certainly_positive(compare(value[i], value[j]));
       if (!wins) continue;
-      return edge_root_estimate(irrational[i], bits);
+      return edge_root_estimate(F, irrational[i], bits);
     }
   }
   return exact_map_estimate_3("max_volume", best);

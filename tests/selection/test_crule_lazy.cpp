@@ -213,4 +213,49 @@ BOOST_AUTO_TEST_CASE(homogeneous_coordinates_in_any_scale_and_order) {
   }
 }
 
+// homogeneous(i) and facet_plane(k) against the exact vertices, on a clipped F3 (homogeneous as
+// the clip made them) and on the same set made exact (homogeneous made on request): (X, Y, Z)/W is
+// the vertex, W > 0; the plane is a positive multiple of ((b − a) × (c − a), ·a) for the facet's
+// first three vertices, holds with equality on the facet's vertices and strictly on the others.
+BOOST_AUTO_TEST_CASE(homogeneous_vertices_and_integer_facet_planes) {
+  Rng rng(28026);
+  int polytopes = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    std::vector<Colour> canonical;
+    for (int i = 0; i < 8 + trial % 20; ++i) canonical.push_back(random_colour(rng, 60, trial % 2 ? 7 : 997));
+    const std::vector<Colour> image = image_of(canonical, rng, 1 + trial % 6, trial);
+    const CanonicalConstraints3 G(canonical);
+    const LazyConvexSet3 clipped = feasible_set_3d_lazy({{&G, &image}});
+    if (clipped.kind() != ConvexKind3::polytope) continue;
+    ++polytopes;
+    const LazyConvexSet3 exact(clipped.exact());
+    for (const LazyConvexSet3* L : {&clipped, &exact}) {
+      for (std::size_t i = 0; i < L->size(); ++i) {
+        const auto& h = L->homogeneous(i);
+        BOOST_TEST(sgn(h[3]) > 0);
+        Point3 q{R(h[0], h[3]), R(h[1], h[3]), R(h[2], h[3])};
+        q.x.canonicalize(), q.y.canonicalize(), q.z.canonicalize();
+        BOOST_TEST((q == L->vertex(i)));
+      }
+      for (std::size_t k = 0; k < L->faces().size(); ++k) {
+        const auto& f = L->faces()[k];
+        const auto [n, c] = L->facet_plane(k);
+        const Point3 &a = L->vertex(f[0]), &b = L->vertex(f[1]), &d = L->vertex(f[2]);
+        const Point3 m{R(b.x - a.x), R(b.y - a.y), R(b.z - a.z)}, o{R(d.x - a.x), R(d.y - a.y), R(d.z - a.z)};
+        const Point3 want{R(m.y * o.z - m.z * o.y), R(m.z * o.x - m.x * o.z), R(m.x * o.y - m.y * o.x)};
+        const R scale = sgn(want.x) ? R(R(n[0]) / want.x) : sgn(want.y) ? R(R(n[1]) / want.y) : R(R(n[2]) / want.z);
+        BOOST_TEST(sgn(scale) > 0);
+        BOOST_TEST((Point3{R(want.x * scale), R(want.y * scale), R(want.z * scale)} == Point3{R(n[0]), R(n[1]), R(n[2])}));
+        const Point3 np{R(n[0]), R(n[1]), R(n[2])};
+        BOOST_TEST(dot(np, a) == R(c));
+        for (std::size_t i = 0; i < L->size(); ++i) {
+          const bool on = std::find(f.begin(), f.end(), i) != f.end();
+          BOOST_TEST((on ? dot(np, L->vertex(i)) == R(c) : dot(np, L->vertex(i)) < R(c)));
+        }
+      }
+    }
+  }
+  BOOST_TEST(polytopes >= 10);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

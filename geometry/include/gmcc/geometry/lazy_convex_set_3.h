@@ -16,6 +16,7 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace gmcc {
@@ -55,6 +56,17 @@ class LazyConvexSet3 {
   /// Vertex i exactly, in lowest terms: made on the first request (a gcd per coordinate), then
   /// kept. \pre i < size().
   const Point3& vertex(std::size_t i) const;
+  /// Vertex i in homogeneous integer coordinates (X, Y, Z, W), W > 0, (X/W, Y/W, Z/W) = vertex(i),
+  /// not in lowest terms: as the set was made (from_homogeneous), or, for a set made exact,
+  /// made on the first request from the exact vertex over the lcm of its denominators, then
+  /// kept. For exact stages that need no lowest terms (a facet's plane, an edge's polynomial:
+  /// integer arithmetic without a gcd). \pre i < size().
+  const std::array<mpz_class, 4>& homogeneous(std::size_t i) const;
+  /// Facet k's plane n·x <= c (a polytope's facet, outward; a polygon's plane), integers from the homogeneous
+  /// coordinates of its first three vertices a, b, c: (n, c) = W_a W_b W_c ((b − a) × (c − a),
+  /// ((b − a) × (c − a))·a), four 3 × 3 determinants, no gcd (docs/derivations.md §2.4).
+  /// \pre kind() is polytope or polygon and k < faces().size().
+  std::pair<std::array<mpz_class, 3>, mpz_class> facet_plane(std::size_t k) const;
   /// The whole set exactly, every vertex made: equal to the ConvexSet3 of the same set.
   ConvexSet3 exact() const;
   /// How many vertices have been made exact so far (what the lazy route saved is size() minus
@@ -67,8 +79,8 @@ class LazyConvexSet3 {
 };
 
 /// True iff p lies in the closed set, exactly: contains(set.exact(), p), with a polytope's
-/// facets tested by the enclosed filter first and exactly (from the facet's first three vertices,
-/// made exact) only where it cannot decide. O(total facet size).
+/// facets tested by the enclosed filter first and exactly (facet_plane, in integers) only where
+/// it cannot decide. O(total facet size).
 bool contains(const LazyConvexSet3& set, const Point3& p);
 
 }  // namespace gmcc
