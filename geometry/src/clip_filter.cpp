@@ -70,11 +70,11 @@ void LiveVertexFilter::rebuild(const std::vector<const VertexDoubles*>& live) {
     h[0] = x.h[0], h[1] = x.h[1], h[2] = x.h[2], h[3] = x.h[3], h[4] = x.alpha, h[5] = x.beta;
     if (!box_ok_) continue;
     Group& g = groups_[group_of[o]];
-    for (std::size_t c = 0; c < 3; ++c) {
-      g.lo[c] = std::min(g.lo[c], x.lo[c]), g.hi[c] = std::max(g.hi[c], x.hi[c]);
-      g.boxed = g.boxed && box_range(x.lo[c]) && box_range(x.hi[c]);
-    }
+    for (std::size_t c = 0; c < 3; ++c) g.lo[c] = std::min(g.lo[c], x.lo[c]), g.hi[c] = std::max(g.hi[c], x.hi[c]);
   }
+  // group_inside reads only the group's bounds: those must be in range.
+  for (Group& g : groups_)
+    for (std::size_t c = 0; c < 3; ++c) g.boxed = g.boxed && box_range(g.lo[c]) && box_range(g.hi[c]);
 }
 
 // True when plane i holds on the box [0, top_] ⊇ the polytope: Σ max(a_k, 0)·top_k <= b, with
