@@ -4,11 +4,13 @@
 #include <gmcc/geometry/convex_hull.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
+#include <gmcc/geometry/integers_over_lcm.h>
 #include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/numerics/internal_check.h>
 
 #include "internal/crule_exact.h"
 #include "internal/half_plane.h"
+#include "internal/homogeneous_plane.h"
 #include "internal/linear_program.h"
 #include "internal/small_integer_hull.h"
 
@@ -16,11 +18,14 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
+#include <CGAL/Extreme_points_traits_adapter_3.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/property_map.h>
 #include <CGAL/convex_hull_3.h>
 
 #include <algorithm>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <type_traits>
@@ -124,18 +129,39 @@ std::vector<HalfSpace> hull_half_spaces(const std::vector<Point3>& pts) {
       out.push_back(normalised(a, h.c));
     }
   } else {
-    Point3 inside = add(add(f[0], f[1]), add(f[2], f[3]));
-    inside = scale(inside, Rational(1, 4));
-    const CGAL::Polyhedron_3<Kernel> poly = hull_3(pts);
-    for (auto fc = poly.facets_begin(); fc != poly.facets_end(); ++fc) {
-      auto h = fc->halfedge();
-      const Point3 p = exact_point(h->vertex()->point());
-      const Point3 q = exact_point(h->next()->vertex()->point());
-      const Point3 r = exact_point(h->next()->next()->vertex()->point());
-      Point3 n = cross(sub(q, p), sub(r, p));
-      Rational b = dot(n, p);
-      if (dot(n, inside) > b) n = scale(n, -1), b = -b;
-      out.push_back(normalised(n, b));
+    // CGAL's hull over the points' indices; each facet's plane through its first three vertices
+    // in integers from their homogeneous forms (internal/homogeneous_plane.h), oriented away from
+    // a point strictly inside (the frame's centroid, 4·inside in homogeneous form).
+    std::vector<KPoint3> in;
+    for (const Point3& p : pts) in.push_back(kernel_point(p));
+    std::vector<std::size_t> index(pts.size());
+    std::iota(index.begin(), index.end(), std::size_t(0));
+    CGAL::Surface_mesh<std::size_t> mesh;
+    CGAL::convex_hull_3(index.begin(), index.end(), mesh,
+                        CGAL::make_extreme_points_traits_adapter(CGAL::make_property_map(in)));
+    std::vector<std::optional<std::array<mpz_class, 4>>> homogeneous(pts.size());
+    auto h = [&](std::size_t i) -> const std::array<mpz_class, 4>& {
+      if (!homogeneous[i]) {
+        const Point3& p = pts[i];
+        const mpz_class l = lcm_of_denominators_of(p.x, p.y, p.z);
+        homogeneous[i] = std::array<mpz_class, 4>{times_lcm(p.x, l), times_lcm(p.y, l), times_lcm(p.z, l), l};
+      }
+      return *homogeneous[i];
+    };
+    const Point3 inside = add(add(f[0], f[1]), add(f[2], f[3]));  // 4 × the centroid
+    const mpz_class li = lcm_of_denominators_of(inside.x, inside.y, inside.z);
+    const std::array<mpz_class, 3> in4{times_lcm(inside.x, li), times_lcm(inside.y, li), times_lcm(inside.z, li)};
+    for (const auto fc : mesh.faces()) {
+      std::array<std::size_t, 3> v{};
+      std::size_t n = 0;
+      for (const auto x : CGAL::vertices_around_face(mesh.halfedge(fc), mesh))
+        if (n < 3) v[n++] = mesh.point(x);
+      auto [a, b] = internal::plane_through(h(v[0]), h(v[1]), h(v[2]));
+      // inside/4 = in4/(4·li): outward when a·in4 <= 4·li·b (strictly, the frame spans 3-D).
+      const mpz_class lhs = a[0] * in4[0] + a[1] * in4[1] + a[2] * in4[2], rhs = 4 * li * b;
+      if (lhs > rhs)
+        for (mpz_class* x : {&a[0], &a[1], &a[2], &b}) *x = -*x;
+      out.push_back(normalised({Rational(a[0]), Rational(a[1]), Rational(a[2])}, Rational(b)));
     }
   }
   dedupe(out);

@@ -7,6 +7,7 @@
 #include <gmcc/numerics/rational_to_float.h>
 
 #include "internal/facet_filter.h"
+#include "internal/homogeneous_plane.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -149,33 +150,9 @@ const Point3& LazyConvexSet3::vertex(std::size_t i) const {
   return *v;
 }
 
-namespace {
-
-// det [a; b; c] of three integer rows, restricted to columns i, j, k.
-mpz_class det3(const std::array<mpz_class, 4>& a, const std::array<mpz_class, 4>& b, const std::array<mpz_class, 4>& c,
-               std::size_t i, std::size_t j, std::size_t k) {
-  mpz_class m, t, out;
-  auto minor = [&](std::size_t u, std::size_t v) {  // b_u c_v − b_v c_u
-    mpz_mul(m.get_mpz_t(), b[u].get_mpz_t(), c[v].get_mpz_t());
-    mpz_submul(m.get_mpz_t(), b[v].get_mpz_t(), c[u].get_mpz_t());
-  };
-  minor(j, k);
-  mpz_mul(out.get_mpz_t(), a[i].get_mpz_t(), m.get_mpz_t());
-  minor(i, k);
-  mpz_submul(out.get_mpz_t(), a[j].get_mpz_t(), m.get_mpz_t());
-  minor(i, j);
-  mpz_addmul(out.get_mpz_t(), a[k].get_mpz_t(), m.get_mpz_t());
-  return out;
-}
-
-}  // namespace
-
 std::pair<std::array<mpz_class, 3>, mpz_class> LazyConvexSet3::facet_plane(std::size_t k) const {
   const std::vector<std::size_t>& f = state_->faces[k];
-  const auto &a = homogeneous(f[0]), &b = homogeneous(f[1]), &c = homogeneous(f[2]);
-  // det [A; B; C; (x, 1)] = −x·D_yzw + y·D_xzw − z·D_xyw + D_xyz, and it is
-  // −W_a W_b W_c ((b − a) × (c − a))·(x − a): so n = (D_yzw, −D_xzw, D_xyw), c = D_xyz.
-  return {{det3(a, b, c, 1, 2, 3), mpz_class(-det3(a, b, c, 0, 2, 3)), det3(a, b, c, 0, 1, 3)}, det3(a, b, c, 0, 1, 2)};
+  return internal::plane_through(homogeneous(f[0]), homogeneous(f[1]), homogeneous(f[2]));
 }
 
 ConvexSet3 LazyConvexSet3::exact() const {
