@@ -24,6 +24,7 @@
 #include <gmcc/selection/rule_errors.h>
 #include <gmcc/selection/worst_case.h>
 #include <gmcc/selection/select_scene.h>
+#include <gmcc/selection/select_scene_record.h>
 #include <gmcc/input/colour_csv.h>
 
 #include <benchmark/benchmark.h>
@@ -44,6 +45,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #ifndef GMCC_DATA_DIR
@@ -180,6 +182,45 @@ void library_batch_no_illuminant_worst_case(benchmark::State& state) {
   rate.report(1);
 }
 
+// The record form (select_scene_record.h): the same scenes, from enclosures; `exact_route` counts
+// the scenes that took select_scene instead (per scene).
+void library_record(benchmark::State& state, bool illuminant_worst_case) {
+  const Workload& w = workload();
+  SceneChoices choices;
+  choices.illuminant_worst_case = illuminant_worst_case;
+  Rate rate{state, RUSAGE_SELF};
+  std::size_t i = 0, exact = 0;
+  for (auto _ : state) {
+    const SelectRecord r = select_scene_record(*w.prepared, w.scenes[i++ % w.scenes.size()], w.truth, choices);
+    exact += r.exact_route;
+    benchmark::DoNotOptimize(r.selections[gmcc::Rule::mean_3d]);
+  }
+  rate.report(1);
+  state.counters["exact_route"] = static_cast<double>(exact) / static_cast<double>(state.iterations());
+}
+
+// The record form on two threads, each taking every other scene (the 2 cores of issue 28's
+// target): scenes per wall-clock second of both.
+void library_record_2_threads(benchmark::State& state) {
+  const Workload& w = workload();
+  Rate rate{state, RUSAGE_SELF};
+  const std::size_t per_iteration = 200;
+  std::size_t start = 0;
+  for (auto _ : state) {
+    auto run = [&](std::size_t first) {
+      for (std::size_t k = first; k < per_iteration; k += 2) {
+        const SelectRecord r = select_scene_record(*w.prepared, w.scenes[(start + k) % w.scenes.size()], w.truth, SceneChoices{});
+        benchmark::DoNotOptimize(r.selections[gmcc::Rule::mean_3d]);
+      }
+    };
+    std::thread other(run, 1);
+    run(0);
+    other.join();
+    start += per_iteration;
+  }
+  rate.report(per_iteration);
+}
+
 void cli_batch(benchmark::State& state, bool illuminant_worst_case) {
   const Workload& w = workload();
   Rate rate{state, RUSAGE_CHILDREN};
@@ -257,6 +298,9 @@ void part_step(benchmark::State& state, int step) {
 
 BENCHMARK(library_batch)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(library_batch_no_illuminant_worst_case)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(library_record, all, true)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(library_record, no_illuminant_worst_case, false)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(library_record_2_threads)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(cli_batch, all, true)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 BENCHMARK_CAPTURE(cli_batch, no_illuminant_worst_case, false)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 BENCHMARK(cli_per_scene)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(100);
