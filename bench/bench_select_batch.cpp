@@ -4,6 +4,8 @@
 //                     library batch path: what `gmcc select --images` runs per scene);
 //   cli_batch         one `gmcc select --images FILE` process for all the scenes (the library path
 //                     plus reading the JSON Lines and writing one record a scene);
+//   library_record    select_scene_record (the record form, select_scene_record.h), one thread and
+//                     two; cli_batch/record the same through `gmcc select --images --record`;
 //   cli_per_scene     one `gmcc select --image I.csv --json` process per scene (the route before
 //                     batch mode);
 // and, to say where a scene's time goes, its parts: feasible_set alone, select_maps without and
@@ -221,14 +223,15 @@ void library_record_2_threads(benchmark::State& state) {
   rate.report(per_iteration);
 }
 
-void cli_batch(benchmark::State& state, bool illuminant_worst_case) {
+void cli_batch(benchmark::State& state, bool illuminant_worst_case, bool record) {
   const Workload& w = workload();
+  std::vector<std::string> args{"select", "--canonical", w.canonical_path, "--images", w.scenes_path,
+                                "--canonical-illuminant", "1,1,1", "--illuminant-worst-case",
+                                illuminant_worst_case ? "on" : "off"};
+  if (record) args.push_back("--record");
   Rate rate{state, RUSAGE_CHILDREN};
   for (auto _ : state)
-    if (run_gmcc(w, {"select", "--canonical", w.canonical_path, "--images", w.scenes_path,
-                     "--canonical-illuminant", "1,1,1", "--illuminant-worst-case",
-                     illuminant_worst_case ? "on" : "off"}) != 0)
-      state.SkipWithError("gmcc select --images failed");
+    if (run_gmcc(w, args) != 0) state.SkipWithError("gmcc select --images failed");
   rate.report(w.scenes.size());
 }
 
@@ -301,8 +304,9 @@ BENCHMARK(library_batch_no_illuminant_worst_case)->Unit(benchmark::kMicrosecond)
 BENCHMARK_CAPTURE(library_record, all, true)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK_CAPTURE(library_record, no_illuminant_worst_case, false)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(library_record_2_threads)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(cli_batch, all, true)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
-BENCHMARK_CAPTURE(cli_batch, no_illuminant_worst_case, false)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(cli_batch, all, true, false)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(cli_batch, no_illuminant_worst_case, false, false)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(cli_batch, record, true, true)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 BENCHMARK(cli_per_scene)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(100);
 BENCHMARK(part_feasible_set)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK_CAPTURE(part_select_maps, no_illuminant_worst_case, false)->Unit(benchmark::kMicrosecond)->UseRealTime();

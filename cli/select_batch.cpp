@@ -1,6 +1,7 @@
 #include "select_batch.h"
 
 #include "json_output.h"
+#include "select_record_json.h"
 #include "write_stdout.h"
 
 #include <gmcc/input/text_file.h>
@@ -227,8 +228,9 @@ int run_select_batch(const SelectOptions& o, const SelectSettings& settings) {
         warn_default_canonical_illuminant("--images (a scene's \"truth\")");
         warned = true;
       }
-      const SceneResult result = select_scene(*prepared, scene.colours, scene.truth);
-      Json members = scene_json(*prepared, result, false);
+      Json members = settings.record
+                         ? record_json(select_scene_record(*prepared, scene.colours, scene.truth, prepared->options))
+                         : scene_json(*prepared, select_scene(*prepared, scene.colours, scene.truth), false);
       for (auto& [k, v] : members.items()) record[k] = std::move(v);
     } catch (const InputError& e) {
       if (!scene.id.is_null()) record["id"] = scene.id;
