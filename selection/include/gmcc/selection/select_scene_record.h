@@ -17,6 +17,7 @@
 ///   an edge that may hold the illuminant-space worst case): select_scene, worst_case_illuminant.
 
 #include <gmcc/geometry/enclosure.h>
+#include <gmcc/selection/certified_rule_errors.h>
 #include <gmcc/selection/rule.h>
 #include <gmcc/selection/select_scene.h>
 
