@@ -6,8 +6,13 @@
 
 #include <gmcc/input/text_file.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cstdio>
+#include <exception>
 #include <iostream>
+#include <thread>
+#include <utility>
 
 namespace gmcc::cli {
 namespace {
@@ -174,6 +179,46 @@ void parse_batch_scene(const std::string& text, const std::string& file, BatchSc
   }
 }
 
+namespace {
+
+// One scene's record as a line of text, whether it is an error record, and whether the scene
+// gave a truth (for the warning, written in order by the caller).
+struct BatchRecord {
+  std::string text;
+  bool failed = false, truth = false;
+  std::exception_ptr exception;  // anything but bad input: rethrown in order by the caller
+};
+
+BatchRecord batch_record(const PreparedCanonical& prepared, bool record_form, std::size_t number,
+                         std::string_view text, const std::string& file, const std::string& canonical_file) {
+  BatchRecord out;
+  BatchScene scene;
+  scene.line = number;
+  Json record;
+  record["line"] = number;
+  try {
+    parse_batch_scene(std::string(text), file, scene);
+    if (!scene.id.is_null()) record["id"] = scene.id;
+    out.truth = scene.truth.has_value();
+    Json members = record_form
+                       ? record_json(select_scene_record(prepared, scene.colours, scene.truth, prepared.options))
+                       : scene_json(prepared, select_scene(prepared, scene.colours, scene.truth), false);
+    for (auto& [k, v] : members.items()) record[k] = std::move(v);
+  } catch (const InputError& e) {
+    if (!scene.id.is_null()) record["id"] = scene.id;
+    record["error"] = e.what();
+    out.failed = true;
+  } catch (const SceneInputError& e) {
+    record["error"] = scene_error(e, file, number, canonical_file);
+    out.failed = true;
+  }
+  // Invalid UTF-8 can only come from the input quoted in a message: replaced, not fatal.
+  out.text = record.dump(-1, ' ', false, Json::error_handler_t::replace) + '\n';
+  return out;
+}
+
+}  // namespace
+
 int run_select_batch(const SelectOptions& o, const SelectSettings& settings) {
   const ColourTable canonical = read_colour_csv(o.canonical_path);
   std::optional<ColourTable> illuminants;
@@ -205,44 +250,53 @@ int run_select_batch(const SelectOptions& o, const SelectSettings& settings) {
     }
   }
   if (count == 0) throw InputError(file, 0, "no scenes (expected JSON Lines, one scene a line)");
-  // Each record goes to stdout as it is made (a scene's record can take megabytes against a large
-  // canonical gamut: none is held once written).
-  write_stdout(json_lines_preamble());
-  std::size_t scenes = 0, failed = 0;
-  bool warned = settings.canonical_illuminant_given;
+  // The scenes' lines, then blocks of them selected by the worker threads, each record made as a
+  // line of text; each block is written in input order before the next is made (a scene's record
+  // can take megabytes against a large canonical gamut: only a block's are held).
+  std::vector<std::pair<std::size_t, std::string_view>> lines;
+  lines.reserve(count);
   std::string_view rest(text);
   for (std::size_t number = 1; !rest.empty(); ++number) {
     const auto end = rest.find('\n');
-    std::string line(rest.substr(0, end));
+    const std::string_view line = rest.substr(0, end);
     rest = end == std::string_view::npos ? std::string_view() : rest.substr(end + 1);
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;  // blank lines
-    ++scenes;
-    BatchScene scene;
-    scene.line = number;
-    Json record;
-    record["line"] = number;
-    try {
-      parse_batch_scene(line, file, scene);
-      if (!scene.id.is_null()) record["id"] = scene.id;
-      if (scene.truth && !warned) {
+    if (line.find_first_not_of(" \t\r") != std::string_view::npos) lines.emplace_back(number, line);
+  }
+  write_stdout(json_lines_preamble());
+  const unsigned threads = settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
+  constexpr std::size_t block = 256;
+  std::vector<BatchRecord> records(std::min(block, lines.size()));
+  std::size_t failed = 0;
+  bool warned = settings.canonical_illuminant_given;
+  for (std::size_t first = 0; first < lines.size(); first += block) {
+    const std::size_t n = std::min(block, lines.size() - first);
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+      for (std::size_t k; (k = next++) < n;) {
+        try {
+          records[k] = batch_record(*prepared, settings.record, lines[first + k].first,
+                                    lines[first + k].second, file, canonical.file);
+        } catch (...) {
+          records[k].exception = std::current_exception();
+        }
+      }
+    };
+    std::vector<std::thread> others;
+    for (unsigned t = 1; t < std::min<std::size_t>(threads, n); ++t) others.emplace_back(work);
+    work();
+    for (std::thread& t : others) t.join();
+    for (std::size_t k = 0; k < n; ++k) {
+      BatchRecord& r = records[k];
+      if (r.exception) std::rethrow_exception(std::exchange(r.exception, nullptr));
+      if (r.truth && !warned) {
         warn_default_canonical_illuminant("--images (a scene's \"truth\")");
         warned = true;
       }
-      Json members = settings.record
-                         ? record_json(select_scene_record(*prepared, scene.colours, scene.truth, prepared->options))
-                         : scene_json(*prepared, select_scene(*prepared, scene.colours, scene.truth), false);
-      for (auto& [k, v] : members.items()) record[k] = std::move(v);
-    } catch (const InputError& e) {
-      if (!scene.id.is_null()) record["id"] = scene.id;
-      record["error"] = e.what();
-      ++failed;
-    } catch (const SceneInputError& e) {
-      record["error"] = scene_error(e, file, number, canonical.file);
-      ++failed;
+      failed += r.failed;
+      write_stdout(r.text);
     }
-    // Invalid UTF-8 can only come from the input quoted in a message: replaced, not fatal.
-    write_stdout(record.dump(-1, ' ', false, Json::error_handler_t::replace) + '\n');
   }
+  const std::size_t scenes = lines.size();
   if (failed) {
     std::cerr << "gmcc: error: " << file << ": " << failed << " of " << scenes
               << " scenes could not be selected; their records carry \"error\" with the line\n";

@@ -26,7 +26,8 @@ using Enclosure3 = std::array<Enclosure, 3>;
 // (docs/derivations.md §3.2). The maximum over F is at a vertex or at a stationary point inside an
 // edge; when every edge passes a filter of illuminant_filters.h (no stationary point, or a
 // closeness certainly above the least vertex closeness, on each dyadic piece holding a stationary
-// point) no edge point beats the best vertex, and the worst case is the largest vertex angle:
+// point, or its polynomial's Bernstein coefficients showing no interior maximum) no edge point
+// beats the best vertex, and the worst case is the largest vertex angle:
 // enclosed by the largest ends among the vertices whose closeness may be the least. Nothing when
 // an edge may hold it or an enclosure is too wide. \pre m and v certainly > 0.
 std::optional<Enclosure> enclosed_illuminant_worst_case(const std::vector<EnclosedVertex>& v, const Enclosure2& m,
@@ -42,7 +43,7 @@ std::optional<Enclosure> enclosed_illuminant_worst_case(const std::vector<Enclos
   for (std::size_t i = 0; i < v.size(); ++i) {
     const EnclosedVertex &p = v[i], &q = v[(i + 1) % v.size()];
     if (!internal::edge_cannot_be_worst(e, c, p.x, p.y, q.x, q.y, least_upper) &&
-        !internal::no_stationary_point(e, c, p.x, p.y, q.x, q.y) &&
+        !internal::no_interior_maximum_bernstein(e, c, p.x, p.y, q.x, q.y) &&
         !internal::edge_skippable(e, c, p.x, p.y, q.x - p.x, q.y - p.y, 0, 1, least_upper, 8))
       return std::nullopt;
   }

@@ -80,4 +80,54 @@ inline bool edge_skippable(const std::array<Enclosure, 3>& e, const std::array<E
          edge_skippable(e, c, px, py, dx, dy, mid, t1, least_upper, depth - 1);
 }
 
+/// True when the angle between e and the illuminant c ⊘ (x, 1) certainly has no interior maximum
+/// on the edge x = p + t·(q − p), t ∈ (0, 1). The edge polynomial s(t) = (e·v′)|v|² − (e·v)(v·v′)
+/// of no_stationary_point is |v|³ times the derivative of |e|·cos, so the angle falls where s > 0.
+/// Its coefficients in t (degree <= 5) are enclosed from the vertices' enclosures and taken to the
+/// Bernstein basis of degree 5 on [0, 1]; with every coefficient's sign certain, the number of
+/// roots in (0, 1) is at most the number of sign variations and of the same parity (Descartes'
+/// rule for the Bernstein basis). No variation: no stationary point. One, from + to −: exactly one,
+/// where the angle stops falling and starts rising, a minimum. Either way no interior maximum.
+/// Unlike the box of no_stationary_point it keeps a and b's dependence on t, so it decides long
+/// edges without splitting them.
+inline bool no_interior_maximum_bernstein(const std::array<Enclosure, 3>& e, const std::array<Enclosure, 3>& c,
+                                          const Enclosure& px, const Enclosure& py, const Enclosure& qx,
+                                          const Enclosure& qy) {
+  using P = std::array<Enclosure, 6>;  // coefficients of t^0 … t^5
+  auto mul = [](const P& f, const P& g, int df, int dg) {
+    P h{};
+    for (int i = 0; i <= df; ++i)
+      for (int j = 0; j <= dg; ++j) h[static_cast<std::size_t>(i + j)] = h[static_cast<std::size_t>(i + j)] + f[static_cast<std::size_t>(i)] * g[static_cast<std::size_t>(j)];
+    return h;
+  };
+  auto add = [](const P& f, const P& g, const Enclosure& k) {
+    P h;
+    for (std::size_t i = 0; i < 6; ++i) h[i] = f[i] + k * g[i];
+    return h;
+  };
+  const Enclosure da = qx - px, db = qy - py, one = Enclosure::exact(1);
+  // v = (c1·b, c2·a, c3·a·b) and v′, a = px + t·da, b = py + t·db.
+  const P v0{c[0] * py, c[0] * db}, v1{c[1] * px, c[1] * da}, v2{c[2] * px * py, c[2] * (px * db + da * py), c[2] * da * db};
+  const P d0{c[0] * db}, d1{c[1] * da}, d2{c[2] * (px * db + da * py), Enclosure::exact(2) * c[2] * da * db};
+  const P ev = add(add(mul(v0, {e[0]}, 1, 0), v1, e[1]), v2, e[2]);
+  const P edv = add(add(mul(d0, {e[0]}, 0, 0), d1, e[1]), d2, e[2]);
+  const P vv = add(add(mul(v0, v0, 1, 1), mul(v1, v1, 1, 1), one), mul(v2, v2, 2, 2), one);
+  const P vdv = add(add(mul(v0, d0, 1, 0), mul(v1, d1, 1, 0), one), mul(v2, d2, 2, 1), one);
+  const P s = add(mul(edv, vv, 1, 4), mul(ev, vdv, 2, 3), Enclosure::exact(-1));
+  // Bernstein coefficients of degree 5: b_j = Σ_{i<=j} C(j, i)/C(5, i) · s_i.
+  static constexpr double binom[6][6] = {{1}, {1, 1}, {1, 2, 1}, {1, 3, 3, 1}, {1, 4, 6, 4, 1}, {1, 5, 10, 10, 5, 1}};
+  int first = 0, last = 0, variations = 0;
+  for (int j = 0; j <= 5; ++j) {
+    Enclosure b{};
+    for (int i = 0; i <= j; ++i)
+      b = b + Enclosure::exact(binom[j][i]) * s[static_cast<std::size_t>(i)] / Enclosure::exact(binom[5][i]);
+    if (!b.finite() || !certainly_nonzero(b)) return false;
+    const int sign = certainly_positive(b) ? 1 : -1;
+    if (last && sign != last) ++variations;
+    if (!first) first = sign;
+    last = sign;
+  }
+  return variations == 0 || (variations == 1 && first > 0);
+}
+
 }  // namespace gmcc::internal
