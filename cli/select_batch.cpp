@@ -200,9 +200,11 @@ BatchRecord batch_record(const PreparedCanonical& prepared, bool record_form, st
     parse_batch_scene(std::string(text), file, scene);
     if (!scene.id.is_null()) record["id"] = scene.id;
     out.truth = scene.truth.has_value();
-    Json members = record_form
-                       ? record_json(select_scene_record(prepared, scene.colours, scene.truth, prepared.options))
-                       : scene_json(prepared, select_scene(prepared, scene.colours, scene.truth), false);
+    if (record_form) {
+      out.text = record_text(number, scene.id, select_scene_record(prepared, scene.colours, scene.truth, prepared.options));
+      return out;
+    }
+    Json members = scene_json(prepared, select_scene(prepared, scene.colours, scene.truth), false);
     for (auto& [k, v] : members.items()) record[k] = std::move(v);
   } catch (const InputError& e) {
     if (!scene.id.is_null()) record["id"] = scene.id;

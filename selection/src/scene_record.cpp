@@ -14,10 +14,16 @@ namespace {
 
 using internal::record_angle;
 
+// q as a double enclosure, of radius 0 when q is a double.
+Enclosure enclose_exact(const Rational& q) {
+  const Enclosure e = enclose_rational(q);
+  return e.finite() && Rational(e.mid) == q ? Enclosure::exact(e.mid) : e;
+}
+
 // The 3-D mean's enclosure from its estimate (the closed form's certified [lo, hi]; a point's
 // exact map).
 std::array<Enclosure, 2> estimate_enclosure(const MapEstimate& m) {
-  if (m.exact) return {enclose_rational(m.exact->x), enclose_rational(m.exact->y)};
+  if (m.exact) return {enclose_exact(m.exact->x), enclose_exact(m.exact->y)};
   if (!m.enclosure)
     throw std::invalid_argument("scene_record: the 3-D mean has no enclosure (the record needs the closed form)");
   return {Enclosure::between((*m.enclosure)[0][0], (*m.enclosure)[0][1]),
@@ -58,7 +64,7 @@ SelectRecord scene_record(const SceneResult& r, const Colour& c) {
   out.image_colours = r.image_colours;
   out.image_dropped = r.image_dropped;
   out.kind = r.feasible.kind;
-  for (const Point2& v : r.feasible.vertices) out.vertices.push_back({enclose_rational(v.x), enclose_rational(v.y)});
+  for (const Point2& v : r.feasible.vertices) out.vertices.push_back({enclose_exact(v.x), enclose_exact(v.y)});
   out.empty_reason = r.empty_reason;
   out.illuminants = r.constraint ? r.constraint->illuminants : 0;
   out.recovery = r.recovery;
