@@ -3,7 +3,8 @@
 //   library_batch     select_scene over the scenes, the canonical side prepared once (the
 //                     library batch path: what `gmcc select --images` runs per scene);
 //   cli_batch         one `gmcc select --images FILE` process for all the scenes (the library path
-//                     plus reading the JSON Lines and writing one record a scene);
+//                     plus reading the JSON Lines and writing one record a scene), on all cores
+//                     (gmcc's default) and, `_1_thread`, on one;
 //   library_record    select_scene_record (the record form, select_scene_record.h), one thread and
 //                     two; cli_batch/record the same through `gmcc select --images --record`;
 //   cli_per_scene     one `gmcc select --image I.csv --json` process per scene (the route before
@@ -223,12 +224,13 @@ void library_record_2_threads(benchmark::State& state) {
   rate.report(per_iteration);
 }
 
-void cli_batch(benchmark::State& state, bool illuminant_worst_case, bool record) {
+void cli_batch(benchmark::State& state, bool illuminant_worst_case, bool record, const char* threads) {
   const Workload& w = workload();
   std::vector<std::string> args{"select", "--canonical", w.canonical_path, "--images", w.scenes_path,
                                 "--canonical-illuminant", "1,1,1", "--illuminant-worst-case",
                                 illuminant_worst_case ? "on" : "off"};
   if (record) args.push_back("--record");
+  if (*threads) args.insert(args.end(), {"--threads", threads});  // else all cores, gmcc's default
   Rate rate{state, RUSAGE_CHILDREN};
   for (auto _ : state)
     if (run_gmcc(w, args) != 0) state.SkipWithError("gmcc select --images failed");
@@ -304,9 +306,11 @@ BENCHMARK(library_batch_no_illuminant_worst_case)->Unit(benchmark::kMicrosecond)
 BENCHMARK_CAPTURE(library_record, all, true)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK_CAPTURE(library_record, no_illuminant_worst_case, false)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(library_record_2_threads)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(cli_batch, all, true, false)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
-BENCHMARK_CAPTURE(cli_batch, no_illuminant_worst_case, false, false)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
-BENCHMARK_CAPTURE(cli_batch, record, true, true)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(cli_batch, all, true, false, "")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(cli_batch, all_1_thread, true, false, "1")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(cli_batch, no_illuminant_worst_case, false, false, "")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(cli_batch, record, true, true, "")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
+BENCHMARK_CAPTURE(cli_batch, record_1_thread, true, true, "1")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
 BENCHMARK(cli_per_scene)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(100);
 BENCHMARK(part_feasible_set)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK_CAPTURE(part_select_maps, no_illuminant_worst_case, false)->Unit(benchmark::kMicrosecond)->UseRealTime();

@@ -1,5 +1,7 @@
 #include "select_batch.h"
 
+#include "batch_scene_plain.h"
+
 #include "json_output.h"
 #include "select_record_json.h"
 #include "write_stdout.h"
@@ -197,7 +199,7 @@ BatchRecord batch_record(const PreparedCanonical& prepared, bool record_form, st
   Json record;
   record["line"] = number;
   try {
-    parse_batch_scene(std::string(text), file, scene);
+    if (!parse_plain_batch_scene(text, scene)) parse_batch_scene(std::string(text), file, scene);
     if (!scene.id.is_null()) record["id"] = scene.id;
     out.truth = scene.truth.has_value();
     if (record_form) {
