@@ -223,6 +223,28 @@ BatchRecord batch_record(const PreparedCanonical& prepared, bool record_form, st
 
 }  // namespace
 
+namespace {
+
+// The non-blank lines of a scene file with their 1-based numbers; the scene limit is checked
+// before any work. \throws InputError beyond max_batch_scenes or with no scene.
+std::vector<std::pair<std::size_t, std::string_view>> scene_lines(std::string_view text, const std::string& file) {
+  std::vector<std::pair<std::size_t, std::string_view>> lines;
+  for (std::size_t number = 1; !text.empty(); ++number) {
+    const auto end = text.find('\n');
+    const std::string_view line = text.substr(0, end);
+    text = end == std::string_view::npos ? std::string_view() : text.substr(end + 1);
+    if (line.find_first_not_of(" \t\r") == std::string_view::npos) continue;
+    if (lines.size() == max_batch_scenes)
+      throw InputError(file, number,
+                       "more than " + std::to_string(max_batch_scenes) + " scenes, the limit for one file: split the file");
+    lines.emplace_back(number, line);
+  }
+  if (lines.empty()) throw InputError(file, 0, "no scenes (expected JSON Lines, one scene a line)");
+  return lines;
+}
+
+}  // namespace
+
 int run_select_batch(const SelectOptions& o, const SelectSettings& settings) {
   const ColourTable canonical = read_colour_csv(o.canonical_path);
   std::optional<ColourTable> illuminants;
@@ -239,33 +261,10 @@ int run_select_batch(const SelectOptions& o, const SelectSettings& settings) {
   const std::string text =
       read_text_file(file, {max_scene_file_bytes, "scene file", "JSON Lines, one scene a line"});
 
-  // The scene limit, checked before any work.
-  std::size_t count = 0;
-  {
-    std::size_t number = 1;
-    for (std::size_t start = 0; start < text.size(); ++number) {
-      std::size_t end = text.find('\n', start);
-      if (end == std::string::npos) end = text.size();
-      if (text.find_first_not_of(" \t\r", start) < end && ++count > max_batch_scenes)
-        throw InputError(file, number,
-                         "more than " + std::to_string(max_batch_scenes) +
-                             " scenes, the limit for one file: split the file");
-      start = end + 1;
-    }
-  }
-  if (count == 0) throw InputError(file, 0, "no scenes (expected JSON Lines, one scene a line)");
   // The scenes' lines, then blocks of them selected by the worker threads, each record made as a
   // line of text; each block is written in input order before the next is made (a scene's record
   // can take megabytes against a large canonical gamut: only a block's are held).
-  std::vector<std::pair<std::size_t, std::string_view>> lines;
-  lines.reserve(count);
-  std::string_view rest(text);
-  for (std::size_t number = 1; !rest.empty(); ++number) {
-    const auto end = rest.find('\n');
-    const std::string_view line = rest.substr(0, end);
-    rest = end == std::string_view::npos ? std::string_view() : rest.substr(end + 1);
-    if (line.find_first_not_of(" \t\r") != std::string_view::npos) lines.emplace_back(number, line);
-  }
+  const std::vector<std::pair<std::size_t, std::string_view>> lines = scene_lines(text, file);
   write_stdout(json_lines_preamble());
   const unsigned threads = settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
   constexpr std::size_t block = 256;
