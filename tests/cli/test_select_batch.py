@@ -161,6 +161,27 @@ def main():
                 rc, out, err = r.run("--canonical", square, "--record", *extra, *C)
                 expect(rc == 2 and out == "" and err.startswith(f"gmcc: error: {name}:"), (extra, rc, err))
 
+        def batch_threads_change_nothing():
+            # 600 scenes (more than one block of 256), with error lines among them: the same bytes
+            # on 1, 2 and 3 threads, full and record form; --threads only with --images.
+            lines = []
+            for i in range(600):
+                a, b = 1 + i % 7, 1 + (i * 5) % 11
+                lines.append('{"colours":[[1,2]]}\n' if i % 97 == 5 else
+                             f'{{"id":{i},"colours":[[{a},{b},3],[{b},{a},2],[3,3,2]],"truth":[2,2,3]}}\n')
+            path = jsonl(lines)
+            for extra in ([], ["--record"]):
+                outs = []
+                for t in ("1", "2", "3"):
+                    rc, out, err = r.run("--canonical", square, "--images", path, "--threads", t, *extra, *C)
+                    expect(rc == 2 and "7 of 600 scenes" in err, (t, extra, rc, err))
+                    outs.append(out)
+                expect(outs[0] == outs[1] == outs[2], extra)
+                recs = scene_records(outs[0])
+                expect([x["line"] for x in recs] == list(range(1, 601)), "records out of order")
+            rc, out, err = r.run("--canonical", square, "--image", one, "--threads", "2", *C)
+            expect(rc == 2 and err.startswith("gmcc: error: --threads:"), (rc, err))
+
         def batch_warns_once_and_options_apply():
             lines = ['{"colours":[[3,3,2]],"truth":[2,2,3]}\n'] * 3
             rc, out, err = r.run("--canonical", square, "--images", jsonl(lines),
