@@ -5,6 +5,7 @@
 #include <gmcc/selection/worst_case_illuminant.h>
 
 #include "internal/certified_rule.h"
+#include "internal/empty_reason.h"
 #include "internal/illuminant_filters.h"
 #include "internal/record_values.h"
 #include "internal/scene_chromaticities.h"
@@ -173,29 +174,37 @@ SelectRecord select_scene_record(const PreparedCanonical& pc, const std::vector<
                                 "(analytic) at the automatic precision");
   const SelectSceneOptions& o = pc.options;
   auto exact_route = [&] { return scene_record(select_scene(pc, image, truth, choices), o.canonical_illuminant); };
-  if (pc.constrained) return exact_route();
   std::optional<Point2> true_map;
   if (truth) {
     if (sgn(truth->r) <= 0 || sgn(truth->g) <= 0 || sgn(truth->b) <= 0) return exact_route();  // it throws
     true_map = illuminant_map(*truth, o.canonical_illuminant);
   }
   const Chromaticities iq = internal::scene_chromaticities(image, o.nonpositive_blue, SceneInput::image);
-  FeasiblePolygon P;
+  // F (F ∩ C in one pass with illuminants) and, with them, F alone: for the reason an F ∩ C is
+  // empty, and for the range the exact route checks on both (vertices certainly below 2^100).
+  FeasiblePolygon P, U;
   try {
-    P = feasible_polygon(pc.constraints, iq.points);
+    P = feasible_polygon(pc.constrained ? *pc.constrained : pc.constraints, iq.points);
+    if (pc.constrained) U = feasible_polygon(pc.constraints, iq.points);
   } catch (const UnboundedFeasibleSet& e) {
     throw SceneInputError(SceneInput::image, SceneProblem::unbounded, std::nullopt, e.what());
   }
+  if (pc.constrained && U.kind() != ConvexKind::empty &&
+      (!U.enclosed() || !std::all_of(U.vertices().begin(), U.vertices().end(), [](const EnclosedVertex& v) {
+        return in_range(v.x) && in_range(v.y);
+      })))
+    return exact_route();
   std::optional<SelectRecord> out;
   if (P.kind() != ConvexKind::empty) {
     out = enclosure_route(P, true_map, o.canonical_illuminant, choices.illuminant_worst_case);
   } else if (o.on_empty == RecoveryPolicy::none) {
-    out.emplace().empty_reason = "no diagonal map takes every image colour into the canonical gamut";
+    out.emplace().empty_reason = internal::empty_reason(!pc.constrained || U.kind() == ConvexKind::empty);
     if (truth) out->truth.emplace();
   }
   if (!out) return exact_route();
   out->image_colours = image.size();
   out->image_dropped = iq.dropped;
+  out->illuminants = pc.constrained ? o.illuminants->size() : 0;
   return *out;
 }
 

@@ -12,6 +12,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <random>
 
 using namespace gmcc;
@@ -94,6 +95,25 @@ const std::vector<Colour>& munsell() {
       read_colour_csv(std::string(GMCC_DATA_DIR) + "/samples/canonical_munsell_D55.csv").colours;
   return c;
 }
+
+// The benchmark's scenes (bench_select_batch): 11 Munsell chips, drawn by mt19937_64 from
+// `seed`, under (4/5, 9/10, 11/10).
+std::vector<Colour> munsell_scene(std::uint64_t seed) {
+  std::mt19937_64 g(seed);
+  std::vector<Colour> image;
+  for (int i = 0; i < 11; ++i) {
+    const Colour& c = munsell()[g() % munsell().size()];
+    image.push_back({R(c.r * R(4, 5)), R(c.g * R(9, 10)), R(c.b * R(11, 10))});
+  }
+  return image;
+}
+
+// The shipped plausible lights as the illumination constraint.
+SelectSceneOptions lights_options() {
+  SelectSceneOptions o;
+  o.illuminants = read_colour_csv(std::string(GMCC_DATA_DIR) + "/samples/plausible_lights_610_540_450.csv").colours;
+  return o;
+}
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(select_scene_record_form)
@@ -105,17 +125,10 @@ BOOST_AUTO_TEST_CASE(munsell_scenes_agree_with_the_exact_route) {
   // the canonical gamut of all 1269 chips; half the scenes scored against that light.
   const PreparedCanonical pc = prepare_canonical(munsell(), {});
   const Colour light{R(4, 5), R(9, 10), R(11, 10)};
-  std::mt19937_64 g(7);
   int enclosed = 0;
   const int scenes = 150;
-  for (int s = 0; s < scenes; ++s) {
-    std::vector<Colour> image;
-    for (int i = 0; i < 11; ++i) {
-      const Colour& c = munsell()[g() % munsell().size()];
-      image.push_back({R(c.r * light.r), R(c.g * light.g), R(c.b * light.b)});
-    }
-    enclosed += agrees(pc, image, s % 2 ? std::optional<Colour>(light) : std::nullopt);
-  }
+  for (int s = 0; s < scenes; ++s)
+    enclosed += agrees(pc, munsell_scene(static_cast<std::uint64_t>(s)), s % 2 ? std::optional<Colour>(light) : std::nullopt);
   BOOST_TEST(enclosed > scenes * 9 / 10);  // the enclosure route is what is being tested
 }
 
@@ -162,9 +175,24 @@ BOOST_AUTO_TEST_CASE(degenerate_and_empty_sets) {
 }
 
 BOOST_AUTO_TEST_CASE(constraint_and_recovery) {
+  // C = [1/2, 1]² (the maps of the four lights under c = (1, 1, 1)). F = [2/3, 4/3]², F ∩ C =
+  // [2/3, 1]²: from enclosures. F = [2, 4]² misses C: empty, and not for want of a map.
   SelectSceneOptions o;
   o.illuminants = std::vector<Colour>{{1, 1, 1}, {2, 1, 1}, {1, 2, 1}, {2, 2, 1}};
-  agrees(prepare_canonical(square, o), {{3, 3, 2}}, Colour{1, 1, 1});
+  const PreparedCanonical constrained = prepare_canonical(square, o);
+  BOOST_TEST(agrees(constrained, {{3, 3, 2}}, Colour{1, 1, 1}));
+  BOOST_TEST(select_scene_record(constrained, {{3, 3, 2}}, std::nullopt, {}).illuminants == 4u);
+  BOOST_TEST(agrees(constrained, {{1, 1, 2}}, Colour{1, 1, 1}));  // an empty F needs no exact stage
+  BOOST_TEST(select_scene_record(constrained, {{1, 1, 2}}, std::nullopt, {}).empty_reason.find("plausible") !=
+             std::string::npos);
+  const PreparedCanonical lights = prepare_canonical(munsell(), lights_options());
+  int non_empty = 0, enclosed = 0;
+  for (std::uint64_t s = 0; s < 20; ++s) {  // the benchmark's scenes against the shipped plausible lights
+    enclosed += agrees(lights, munsell_scene(s), Colour{R(4, 5), R(9, 10), R(11, 10)});
+    non_empty += select_scene_record(lights, munsell_scene(s), std::nullopt, {}).kind != ConvexKind::empty;
+  }
+  BOOST_TEST(non_empty >= 10);
+  BOOST_TEST(enclosed >= 10);  // thin sets along the daylight locus: the extended-precision stage
   SelectSceneOptions grow;
   grow.on_empty = RecoveryPolicy::grow_canonical;
   const PreparedCanonical pc = prepare_canonical(square, grow);

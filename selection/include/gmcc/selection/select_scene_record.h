@@ -13,8 +13,8 @@
 /// - Each rule is scored at its exact map: max-area and the 2-D mean are rational, the 3-D mean
 ///   (closed form, docs/derivations.md §1) is irrational. (select_scene scores the 3-D mean at its
 ///   correctly rounded double map; the two differ by far less than the accuracy above.)
-/// - Exact stages decide only where an enclosure cannot (a segment, point or empty F, a thin set,
-///   an edge that may hold the illuminant-space worst case): select_scene, worst_case_illuminant.
+/// - Exact stages decide only where an enclosure cannot (a segment or point F, a thin set, an edge
+///   that may hold the illuminant-space worst case, a recovery): select_scene, worst_case_illuminant.
 
 #include <gmcc/geometry/enclosure.h>
 #include <gmcc/selection/certified_rule_errors.h>
@@ -71,15 +71,17 @@ struct SelectRecord {
   std::optional<RecoveryReport> recovery;  ///< as SceneResult::recovery (present when the policy is not none)
   PerRule<std::optional<RecordSelection>> selections;  ///< every rule; all absent when F is empty
   std::optional<RecordTruth> truth;  ///< present when given the true light
-  /// True when the whole scene came from select_scene (degenerate or thin F, a constraint, a
-  /// recovery), false when from enclosures (for tests and benchmarks; not part of the contract).
+  /// True when the whole scene came from select_scene (a segment or point F, a set too thin for
+  /// the enclosures, a recovery), false when from enclosures (for tests and benchmarks; not part
+  /// of the contract).
   bool exact_route = false;
 };
 
 /// The pipeline of select_scene (same input, same checks, same SceneInputError) giving the
 /// record of the contract above. The 3-D mean is the closed form's; the canonical side's options
-/// apply except the 3-D mean's route. With illuminants or a recovery policy the scene takes the
-/// exact route (select_scene) and is converted.
+/// apply except the 3-D mean's route. With illuminants, F ∩ C in one clipping (and F alone for
+/// the empty reason). A scene whose F is empty under a recovery policy takes the exact route
+/// (select_scene) and is converted. Safe to call from several threads on one PreparedCanonical.
 /// \throws SceneInputError as select_scene; OptionError when choices.mean3d is not the closed form
 ///         (the record scores the exact 3-D mean). Complexity: feasible_polygon, then O(n) enclosure
 ///         operations for F of n vertices where they decide; else select_scene's.
