@@ -1,6 +1,7 @@
 #include "select_batch.h"
 
 #include "batch_scene_plain.h"
+#include "in_order_pool.h"
 
 #include "json_output.h"
 #include "select_record_json.h"
@@ -9,12 +10,9 @@
 #include <gmcc/input/text_file.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
-#include <exception>
 #include <iostream>
 #include <thread>
-#include <utility>
 
 namespace gmcc::cli {
 namespace {
@@ -188,7 +186,6 @@ namespace {
 struct BatchRecord {
   std::string text;
   bool failed = false, truth = false;
-  std::exception_ptr exception;  // anything but bad input: rethrown in order by the caller
 };
 
 BatchRecord batch_record(const PreparedCanonical& prepared, bool record_form, std::size_t number,
@@ -261,44 +258,27 @@ int run_select_batch(const SelectOptions& o, const SelectSettings& settings) {
   const std::string text =
       read_text_file(file, {max_scene_file_bytes, "scene file", "JSON Lines, one scene a line"});
 
-  // The scenes' lines, then blocks of them selected by the worker threads, each record made as a
-  // line of text; each block is written in input order before the next is made (a scene's record
-  // can take megabytes against a large canonical gamut: only a block's are held).
+  // The scenes' lines, then their records made by the worker threads and written in input
+  // order as they come (a scene's record can take megabytes against a large canonical gamut: only
+  // a few are held at once).
   const std::vector<std::pair<std::size_t, std::string_view>> lines = scene_lines(text, file);
   write_stdout(json_lines_preamble());
   const unsigned threads = settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
-  constexpr std::size_t block = 256;
-  std::vector<BatchRecord> records(std::min(block, lines.size()));
   std::size_t failed = 0;
   bool warned = settings.canonical_illuminant_given;
-  for (std::size_t first = 0; first < lines.size(); first += block) {
-    const std::size_t n = std::min(block, lines.size() - first);
-    std::atomic<std::size_t> next{0};
-    auto work = [&] {
-      for (std::size_t k; (k = next++) < n;) {
-        try {
-          records[k] = batch_record(*prepared, settings.record, lines[first + k].first,
-                                    lines[first + k].second, file, canonical.file);
-        } catch (...) {
-          records[k].exception = std::current_exception();
+  in_order<BatchRecord>(
+      lines.size(), threads,
+      [&](std::size_t k) {
+        return batch_record(*prepared, settings.record, lines[k].first, lines[k].second, file, canonical.file);
+      },
+      [&](BatchRecord r) {
+        if (r.truth && !warned) {
+          warn_default_canonical_illuminant("--images (a scene's \"truth\")");
+          warned = true;
         }
-      }
-    };
-    std::vector<std::thread> others;
-    for (unsigned t = 1; t < std::min<std::size_t>(threads, n); ++t) others.emplace_back(work);
-    work();
-    for (std::thread& t : others) t.join();
-    for (std::size_t k = 0; k < n; ++k) {
-      BatchRecord& r = records[k];
-      if (r.exception) std::rethrow_exception(std::exchange(r.exception, nullptr));
-      if (r.truth && !warned) {
-        warn_default_canonical_illuminant("--images (a scene's \"truth\")");
-        warned = true;
-      }
-      failed += r.failed;
-      write_stdout(r.text);
-    }
-  }
+        failed += r.failed;
+        write_stdout(r.text);
+      });
   const std::size_t scenes = lines.size();
   if (failed) {
     std::cerr << "gmcc: error: " << file << ": " << failed << " of " << scenes
