@@ -131,7 +131,7 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
                   "Lines, one record a scene (docs/cli.md \"Batch selection\")");
   cmd->add_flag("--record", o.record,
                 "with --images: one compact record a scene, certified doubles from enclosures, no "
-                "exact rationals (docs/cli.md, \"Record contract\"); about 4x faster");
+                "exact rationals (docs/cli.md, \"Record contract\"); 3-5x faster");
   cmd->add_option("--threads", o.threads,
                   "with --images: worker threads (0: all cores); the records do not depend on it")
       ->capture_default_str();
