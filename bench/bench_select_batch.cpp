@@ -3,7 +3,10 @@
 //   library_batch     select_scene over the scenes, the canonical side prepared once (the
 //                     library batch path: what `gmcc select --images` runs per scene);
 //   cli_batch         one `gmcc select --images FILE` process for all the scenes (the library path
-//                     plus reading the JSON Lines and writing one record a scene);
+//                     plus reading the JSON Lines and writing one record a scene), on all cores
+//                     (gmcc's default) and, `_1_thread`, on one;
+//   library_record    select_scene_record (the record form, select_scene_record.h), one thread and
+//                     two; cli_batch/record the same through `gmcc select --images --record`;
 //   cli_per_scene     one `gmcc select --image I.csv --json` process per scene (the route before
 //                     batch mode);
 // and, to say where a scene's time goes, its parts: feasible_set alone, select_maps without and
@@ -24,6 +27,7 @@
 #include <gmcc/selection/rule_errors.h>
 #include <gmcc/selection/worst_case.h>
 #include <gmcc/selection/select_scene.h>
+#include <gmcc/selection/select_scene_record.h>
 #include <gmcc/input/colour_csv.h>
 
 #include <benchmark/benchmark.h>
@@ -44,6 +48,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #ifndef GMCC_DATA_DIR
@@ -180,14 +185,55 @@ void library_batch_no_illuminant_worst_case(benchmark::State& state) {
   rate.report(1);
 }
 
-void cli_batch(benchmark::State& state, bool illuminant_worst_case) {
+// The record form (select_scene_record.h): the same scenes, from enclosures; `exact_route` counts
+// the scenes that took select_scene instead (per scene).
+void library_record(benchmark::State& state, bool illuminant_worst_case) {
   const Workload& w = workload();
+  SceneChoices choices;
+  choices.illuminant_worst_case = illuminant_worst_case;
+  Rate rate{state, RUSAGE_SELF};
+  std::size_t i = 0, exact = 0;
+  for (auto _ : state) {
+    const SelectRecord r = select_scene_record(*w.prepared, w.scenes[i++ % w.scenes.size()], w.truth, choices);
+    exact += r.exact_route;
+    benchmark::DoNotOptimize(r.selections[gmcc::Rule::mean_3d]);
+  }
+  rate.report(1);
+  state.counters["exact_route"] = static_cast<double>(exact) / static_cast<double>(state.iterations());
+}
+
+// The record form on two threads, each taking every other scene (the 2 cores of issue 28's
+// target): scenes per wall-clock second of both.
+void library_record_2_threads(benchmark::State& state) {
+  const Workload& w = workload();
+  Rate rate{state, RUSAGE_SELF};
+  const std::size_t per_iteration = 200;
+  std::size_t start = 0;
+  for (auto _ : state) {
+    auto run = [&](std::size_t first) {
+      for (std::size_t k = first; k < per_iteration; k += 2) {
+        const SelectRecord r = select_scene_record(*w.prepared, w.scenes[(start + k) % w.scenes.size()], w.truth, SceneChoices{});
+        benchmark::DoNotOptimize(r.selections[gmcc::Rule::mean_3d]);
+      }
+    };
+    std::thread other(run, 1);
+    run(0);
+    other.join();
+    start += per_iteration;
+  }
+  rate.report(per_iteration);
+}
+
+void cli_batch(benchmark::State& state, bool illuminant_worst_case, bool record, const char* threads) {
+  const Workload& w = workload();
+  std::vector<std::string> args{"select", "--canonical", w.canonical_path, "--images", w.scenes_path,
+                                "--canonical-illuminant", "1,1,1", "--illuminant-worst-case",
+                                illuminant_worst_case ? "on" : "off"};
+  if (record) args.push_back("--record");
+  if (*threads) args.insert(args.end(), {"--threads", threads});  // else all cores, gmcc's default
   Rate rate{state, RUSAGE_CHILDREN};
   for (auto _ : state)
-    if (run_gmcc(w, {"select", "--canonical", w.canonical_path, "--images", w.scenes_path,
-                     "--canonical-illuminant", "1,1,1", "--illuminant-worst-case",
-                     illuminant_worst_case ? "on" : "off"}) != 0)
-      state.SkipWithError("gmcc select --images failed");
+    if (run_gmcc(w, args) != 0) state.SkipWithError("gmcc select --images failed");
   rate.report(w.scenes.size());
 }
 
@@ -257,8 +303,14 @@ void part_step(benchmark::State& state, int step) {
 
 BENCHMARK(library_batch)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(library_batch_no_illuminant_worst_case)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK_CAPTURE(cli_batch, all, true)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
-BENCHMARK_CAPTURE(cli_batch, no_illuminant_worst_case, false)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(library_record, all, true)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(library_record, no_illuminant_worst_case, false)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(library_record_2_threads)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(cli_batch, all, true, false, "")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(cli_batch, all_1_thread, true, false, "1")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(cli_batch, no_illuminant_worst_case, false, false, "")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(cli_batch, record, true, true, "")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
+BENCHMARK_CAPTURE(cli_batch, record_1_thread, true, true, "1")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
 BENCHMARK(cli_per_scene)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(100);
 BENCHMARK(part_feasible_set)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK_CAPTURE(part_select_maps, no_illuminant_worst_case, false)->Unit(benchmark::kMicrosecond)->UseRealTime();

@@ -34,13 +34,21 @@ const std::set<std::string>& not_recorded() {
   return names;
 }
 
+// Flags recorded only when given: flags added after the provenance's first contract that select
+// another output contract (select's --record, docs/cli.md "Record contract"), so that an output
+// made without them keeps its bytes.
+const std::set<std::string>& recorded_when_given() {
+  static const std::set<std::string> names{"--record"};
+  return names;
+}
+
 // The options of one (sub)command: given ones with their values, the others
 // with their default when CLI11 knows it.
 void collect(const CLI::App& app, Json& options) {
   for (const CLI::Option* opt : app.get_options()) {
     if (opt->get_lnames().empty()) continue;  // positional or short-only: none in gmcc
     const std::string name = "--" + opt->get_lnames().front();
-    if (not_recorded().count(name)) continue;
+    if (not_recorded().count(name) || (opt->count() == 0 && recorded_when_given().count(name))) continue;
     if (opt->count() > 0) {
       const std::vector<std::string>& results = opt->results();
       if (opt->get_expected_max() == 0) {  // a flag

@@ -33,6 +33,8 @@ void reject_inapplicable(const SelectOptions& o) {
     throw InputError(has_image ? "--images" : "--image", 0,
                      has_image ? "give --image (one image) or --images (a batch), not both"
                                : "one of --image (one image) or --images (a batch) is required");
+  if (!has_images && is_given("--threads", o.threads, "0"))
+    throw InputError("--threads", 0, "worker threads apply to --images (a batch) only");
   if (o.space == "3d") {
     if (is_given("--expand", o.expand_factor, "0") || is_given("--expand-policy", o.expand_policy, "none"))
       throw InputError("--expand", 0, "expansion applies to the 2-D gamut only, not to --space 3d");
@@ -85,6 +87,12 @@ void reject_inapplicable(const SelectOptions& o) {
   if (has_images && !o.truth.empty())
     throw InputError("--truth", 0,
                      "with --images each scene gives its own true light (its \"truth\" member)");
+  if (o.record && !has_images)
+    throw InputError("--record", 0, "the record form applies to --images (a batch) only");
+  if (o.record && (route != "analytic" || is_given("--precision", o.precision_bits, kDefault.precision_bits)))
+    throw InputError(route != "analytic" ? "--mean3d" : "--precision", 0,
+                     "--record scores the exact 3-D mean: the closed form (--mean3d analytic) at the "
+                     "automatic precision only");
 }
 
 }  // namespace
@@ -121,6 +129,12 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
                   "batch: many images against the one canonical gamut, JSON Lines, one scene a "
                   "line {\"id\", \"colours\": [[r,g,b], ...], \"truth\": [r,g,b]}; prints JSON "
                   "Lines, one record a scene (docs/cli.md \"Batch selection\")");
+  cmd->add_flag("--record", o.record,
+                "with --images: one compact record a scene, certified doubles from enclosures, no "
+                "exact rationals (docs/cli.md, \"Record contract\"); 3-5x faster");
+  cmd->add_option("--threads", o.threads,
+                  "with --images: worker threads (0: all cores); the records do not depend on it")
+      ->capture_default_str();
   cmd->add_flag("--json", o.json, "print one JSON object (docs/cli.md, \"JSON output\") instead of a summary");
   cmd->add_option("--expand", o.expand_factor,
                   "expand the canonical gamut by this factor (0.1 = 10%; exact)")
@@ -185,6 +199,8 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
 SelectSettings select_settings(const SelectOptions& o) {
   SelectSettings s;
   s.json = o.json;
+  s.record = o.record;
+  s.threads = static_cast<unsigned>(integer_option("--threads", o.threads, 0, 256));
   SelectSceneOptions& scene = s.scene;
   scene.on_empty = recovery_policy_from_string(o.on_empty);
   scene.nonpositive_blue =

@@ -39,6 +39,8 @@ struct SelectOptions {
   std::string space = "2d";          // 2d (perspective, the paper) | 3d (Forsyth's CRULE)
   std::string black = "include";     // 3d: add black (0,0,0) to the canonical gamut
   std::string illuminant_worst_case = "on";  // on | off: each rule's illuminant-space worst case
+  bool record = false;  // --images: the record form (docs/cli.md "Record contract")
+  std::string threads = "0";  // --images: worker threads (0: all cores); records do not depend on it
   /// The parsed subcommand, to tell an option given from its default (set by add_select_command;
   /// without it, an option counts as given when its value differs from the default).
   const CLI::App* command = nullptr;
@@ -54,6 +56,8 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& options);
 /// The options of one run, parsed and checked: the library's typed options and the rest.
 struct SelectSettings {
   bool json = false;
+  bool record = false;                // --record: select_scene_record per scene
+  unsigned threads = 0;               // --threads (0: all cores)
   SelectSceneOptions scene;           // illuminants are filled in from the file
   std::optional<Colour> truth;        // --truth
   bool canonical_illuminant_given = false;

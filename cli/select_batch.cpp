@@ -1,12 +1,18 @@
 #include "select_batch.h"
 
+#include "batch_scene_plain.h"
+#include "in_order_pool.h"
+
 #include "json_output.h"
+#include "select_record_json.h"
 #include "write_stdout.h"
 
 #include <gmcc/input/text_file.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <thread>
 
 namespace gmcc::cli {
 namespace {
@@ -173,6 +179,69 @@ void parse_batch_scene(const std::string& text, const std::string& file, BatchSc
   }
 }
 
+namespace {
+
+// One scene's record as a line of text, whether it is an error record, and whether the scene
+// gave a truth (for the warning, written in order by the caller).
+struct BatchRecord {
+  std::string text;
+  bool failed = false, truth = false;
+};
+
+BatchRecord batch_record(const PreparedCanonical& prepared, bool record_form, std::size_t number,
+                         std::string_view text, const std::string& file, const std::string& canonical_file) {
+  BatchRecord out;
+  BatchScene scene;
+  scene.line = number;
+  Json record;
+  record["line"] = number;
+  try {
+    if (!parse_plain_batch_scene(text, scene)) parse_batch_scene(std::string(text), file, scene);
+    if (!scene.id.is_null()) record["id"] = scene.id;
+    out.truth = scene.truth.has_value();
+    if (record_form) {
+      out.text = record_text(number, scene.id, select_scene_record(prepared, scene.colours, scene.truth, prepared.options));
+      return out;
+    }
+    Json members = scene_json(prepared, select_scene(prepared, scene.colours, scene.truth), false);
+    for (auto& [k, v] : members.items()) record[k] = std::move(v);
+  } catch (const InputError& e) {
+    if (!scene.id.is_null()) record["id"] = scene.id;
+    record["error"] = e.what();
+    out.failed = true;
+  } catch (const SceneInputError& e) {
+    record["error"] = scene_error(e, file, number, canonical_file);
+    out.failed = true;
+  }
+  // Invalid UTF-8 can only come from the input quoted in a message: replaced, not fatal.
+  out.text = record.dump(-1, ' ', false, Json::error_handler_t::replace) + '\n';
+  return out;
+}
+
+}  // namespace
+
+namespace {
+
+// The non-blank lines of a scene file with their 1-based numbers; the scene limit is checked
+// before any work. \throws InputError beyond max_batch_scenes or with no scene.
+std::vector<std::pair<std::size_t, std::string_view>> scene_lines(std::string_view text, const std::string& file) {
+  std::vector<std::pair<std::size_t, std::string_view>> lines;
+  for (std::size_t number = 1; !text.empty(); ++number) {
+    const auto end = text.find('\n');
+    const std::string_view line = text.substr(0, end);
+    text = end == std::string_view::npos ? std::string_view() : text.substr(end + 1);
+    if (line.find_first_not_of(" \t\r") == std::string_view::npos) continue;
+    if (lines.size() == max_batch_scenes)
+      throw InputError(file, number,
+                       "more than " + std::to_string(max_batch_scenes) + " scenes, the limit for one file: split the file");
+    lines.emplace_back(number, line);
+  }
+  if (lines.empty()) throw InputError(file, 0, "no scenes (expected JSON Lines, one scene a line)");
+  return lines;
+}
+
+}  // namespace
+
 int run_select_batch(const SelectOptions& o, const SelectSettings& settings) {
   const ColourTable canonical = read_colour_csv(o.canonical_path);
   std::optional<ColourTable> illuminants;
@@ -189,58 +258,28 @@ int run_select_batch(const SelectOptions& o, const SelectSettings& settings) {
   const std::string text =
       read_text_file(file, {max_scene_file_bytes, "scene file", "JSON Lines, one scene a line"});
 
-  // The scene limit, checked before any work.
-  std::size_t count = 0;
-  {
-    std::size_t number = 1;
-    for (std::size_t start = 0; start < text.size(); ++number) {
-      std::size_t end = text.find('\n', start);
-      if (end == std::string::npos) end = text.size();
-      if (text.find_first_not_of(" \t\r", start) < end && ++count > max_batch_scenes)
-        throw InputError(file, number,
-                         "more than " + std::to_string(max_batch_scenes) +
-                             " scenes, the limit for one file: split the file");
-      start = end + 1;
-    }
-  }
-  if (count == 0) throw InputError(file, 0, "no scenes (expected JSON Lines, one scene a line)");
-  // Each record goes to stdout as it is made (a scene's record can take megabytes against a large
-  // canonical gamut: none is held once written).
+  // The scenes' lines, then their records made by the worker threads and written in input
+  // order as they come (a scene's record can take megabytes against a large canonical gamut: only
+  // a few are held at once).
+  const std::vector<std::pair<std::size_t, std::string_view>> lines = scene_lines(text, file);
   write_stdout(json_lines_preamble());
-  std::size_t scenes = 0, failed = 0;
+  const unsigned threads = settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
+  std::size_t failed = 0;
   bool warned = settings.canonical_illuminant_given;
-  std::string_view rest(text);
-  for (std::size_t number = 1; !rest.empty(); ++number) {
-    const auto end = rest.find('\n');
-    std::string line(rest.substr(0, end));
-    rest = end == std::string_view::npos ? std::string_view() : rest.substr(end + 1);
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;  // blank lines
-    ++scenes;
-    BatchScene scene;
-    scene.line = number;
-    Json record;
-    record["line"] = number;
-    try {
-      parse_batch_scene(line, file, scene);
-      if (!scene.id.is_null()) record["id"] = scene.id;
-      if (scene.truth && !warned) {
-        warn_default_canonical_illuminant("--images (a scene's \"truth\")");
-        warned = true;
-      }
-      const SceneResult result = select_scene(*prepared, scene.colours, scene.truth);
-      Json members = scene_json(*prepared, result, false);
-      for (auto& [k, v] : members.items()) record[k] = std::move(v);
-    } catch (const InputError& e) {
-      if (!scene.id.is_null()) record["id"] = scene.id;
-      record["error"] = e.what();
-      ++failed;
-    } catch (const SceneInputError& e) {
-      record["error"] = scene_error(e, file, number, canonical.file);
-      ++failed;
-    }
-    // Invalid UTF-8 can only come from the input quoted in a message: replaced, not fatal.
-    write_stdout(record.dump(-1, ' ', false, Json::error_handler_t::replace) + '\n');
-  }
+  in_order<BatchRecord>(
+      lines.size(), threads,
+      [&](std::size_t k) {
+        return batch_record(*prepared, settings.record, lines[k].first, lines[k].second, file, canonical.file);
+      },
+      [&](BatchRecord r) {
+        if (r.truth && !warned) {
+          warn_default_canonical_illuminant("--images (a scene's \"truth\")");
+          warned = true;
+        }
+        failed += r.failed;
+        write_stdout(r.text);
+      });
+  const std::size_t scenes = lines.size();
   if (failed) {
     std::cerr << "gmcc: error: " << file << ": " << failed << " of " << scenes
               << " scenes could not be selected; their records carry \"error\" with the line\n";

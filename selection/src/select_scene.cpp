@@ -1,6 +1,7 @@
 #include <gmcc/geometry/illumination_constraint.h>
 #include <gmcc/selection/select_scene.h>
 
+#include "internal/empty_reason.h"
 #include "internal/scene_chromaticities.h"
 
 namespace gmcc {
@@ -72,10 +73,7 @@ SceneResult scene_feasible_set(const PreparedCanonical& pc, const std::vector<Co
                                 "accepts (it reports doubles): the canonical chromaticities are "
                                 "that much larger than this image's");
   if (r.feasible.kind == ConvexKind::empty)
-    r.empty_reason = r.constraint && r.constraint->unconstrained.kind != ConvexKind::empty
-                         ? "the feasible set is not empty, but it holds no map of a plausible "
-                           "illuminant (the illumination constraint)"
-                         : "no diagonal map takes every image colour into the canonical gamut";
+    r.empty_reason = internal::empty_reason(!r.constraint || r.constraint->unconstrained.kind == ConvexKind::empty);
   if (o.on_empty != RecoveryPolicy::none) r.recovery = recover(pc, iq.points, r);
   return r;
 }

@@ -4,6 +4,7 @@
 #include <gmcc/selection/worst_case_illuminant.h>
 #include <gmcc/numerics/internal_check.h>
 
+#include "internal/illuminant_filters.h"
 #include "internal/integer_polynomial.h"
 #include "internal/interval.h"
 #include "internal/worst_case_illuminant_route.h"
@@ -28,80 +29,15 @@ using internal::roots_in_unit_interval;
 using internal::scaled;
 using internal::sub;
 using internal::trim;
+using internal::closeness_of;
+using internal::edge_cannot_be_worst;
+using internal::edge_skippable;
+using internal::no_stationary_point;
 
 // The filters below only skip work whose exact result is known not to matter, so the answer is
 // the exact route's, bit for bit; they make a feasible set of 10^5–10^6 vertices (a many-vertex
 // canonical gamut, docs/performance.md "Many-vertex canonical gamuts (issue 13)") cost
 // floating-point operations per vertex and edge instead of exact polynomial algebra.
-
-// The cos²-closeness (e·w)²/|w|² of the map (x, y), w = c ⊘ (x, y, 1), in the number type T:
-// exactly in ℚ (the exact route's comparisons), or enclosed (the filters). Written once, so the
-// filters enclose exactly what the exact route compares.
-template <class T>
-T closeness_of(const std::array<T, 3>& e, const std::array<T, 3>& c, const T& x, const T& y) {
-  const T w0 = c[0] / x, w1 = c[1] / y;
-  const T ew = e[0] * w0 + e[1] * w1 + e[2] * c[2];
-  return T(ew * ew / (w0 * w0 + w1 * w1 + c[2] * c[2]));
-}
-
-// True when the edge polynomial (e·v′)|v|² − (e·v)(v·v′) certainly has no zero for t in [0, 1]:
-// then the angle has no stationary point on the edge and roots_in_unit_interval finds no root.
-// The polynomial is one in a(t), b(t), Δa, Δb (v = (c1·b, c2·a, c3·a·b), v′ its derivative), so
-// its enclosure over the box [min a, max a] × [min b, max b], which holds the whole edge, holds
-// its values on the edge (a positive scaling, as the exact route applies, changes no sign).
-bool no_stationary_point(const std::array<Enclosure, 3>& e, const std::array<Enclosure, 3>& c,
-                         const Enclosure& px, const Enclosure& py, const Enclosure& qx, const Enclosure& qy) {
-  const Enclosure a = Enclosure::between(std::min(px.lo(), qx.lo()), std::max(px.hi(), qx.hi()));
-  const Enclosure b = Enclosure::between(std::min(py.lo(), qy.lo()), std::max(py.hi(), qy.hi()));
-  const Enclosure da = qx - px, db = qy - py;
-  const std::array<Enclosure, 3> v{c[0] * b, c[1] * a, c[2] * a * b};
-  const std::array<Enclosure, 3> dv{c[0] * db, c[1] * da, c[2] * (a * db + b * da)};
-  Enclosure ev = e[0] * v[0], edv = e[0] * dv[0], vv = v[0] * v[0], vdv = v[0] * dv[0];
-  for (int j = 1; j < 3; ++j) {
-    ev = ev + e[j] * v[j], edv = edv + e[j] * dv[j];
-    vv = vv + v[j] * v[j], vdv = vdv + v[j] * dv[j];
-  }
-  const Enclosure s = edv * vv - ev * vdv;
-  return s.finite() && certainly_nonzero(s);
-}
-
-// True when every point of the edge is certainly less close (a larger angle's opposite: a larger
-// closeness) than `least_upper`, an upper bound of the least vertex closeness: the closeness over
-// the edge's bounding box, enclosed, starts above it. Then no point of the edge can be the worst
-// case (which the exact route takes only where the closeness is strictly below every vertex's),
-// and its quartic need not be solved. On a round F only the edges near the worst direction are
-// left (issue 13's 876/414 fuzz finding: 40 s to 4 s). Where the vertices' closenesses agree
-// beyond a double's precision it decides nothing: the sin² filter below takes over.
-bool edge_cannot_be_worst(const std::array<Enclosure, 3>& e, const std::array<Enclosure, 3>& c,
-                          const Enclosure& px, const Enclosure& py, const Enclosure& qx,
-                          const Enclosure& qy, double least_upper) {
-  const Enclosure a = Enclosure::between(std::min(px.lo(), qx.lo()), std::max(px.hi(), qx.hi()));
-  const Enclosure b = Enclosure::between(std::min(py.lo(), qy.lo()), std::max(py.hi(), qy.hi()));
-  if (!(a.lo() > 0) || !(b.lo() > 0)) return false;
-  const Enclosure k = closeness_of(e, c, a, b);
-  return k.finite() && k.lo() > least_upper;
-}
-
-// True when no point of the edge p + t(q − p), t ∈ [0, 1], can replace the worst case: the edge
-// split into dyadic pieces [k/2^d, (k+1)/2^d] (d ≤ max_depth, halved where needed), each piece
-// passing one of the two tests above on the box of its ends' enclosures. The exact route's
-// candidates on the edge are its quartic's roots, each refined to a dyadic interval of depth 100
-// (or hit exactly), so each candidate lies in the closed piece that holds its root: that piece has
-// a stationary point, so it passed the closeness test, and the candidate's exact closeness is
-// above least_upper, never below the worst so far. Skipping the edge changes nothing, bit for bit;
-// near the least vertex, where the whole edge's box is too coarse, small pieces often decide.
-bool edge_skippable(const std::array<Enclosure, 3>& e, const std::array<Enclosure, 3>& c,
-                    const Enclosure& px, const Enclosure& py, const Enclosure& dx,
-                    const Enclosure& dy, double t0, double t1, double least_upper, int depth) {
-  const Enclosure a0 = px + Enclosure::exact(t0) * dx, b0 = py + Enclosure::exact(t0) * dy;
-  const Enclosure a1 = px + Enclosure::exact(t1) * dx, b1 = py + Enclosure::exact(t1) * dy;
-  if (edge_cannot_be_worst(e, c, a0, b0, a1, b1, least_upper) || no_stationary_point(e, c, a0, b0, a1, b1))
-    return true;
-  if (depth == 0) return false;
-  const double mid = (t0 + t1) / 2;  // exact: dyadic
-  return edge_skippable(e, c, px, py, dx, dy, t0, mid, least_upper, depth - 1) &&
-         edge_skippable(e, c, px, py, dx, dy, mid, t1, least_upper, depth - 1);
-}
 
 // The second filter, on what the first leaves (issue 13: a feasible set of 1942 vertices within
 // 2^-53 of one another, where no double enclosure decides anything). It works on

@@ -114,6 +114,74 @@ def main():
             expect(records[2]["feasible_set"]["kind"] == "empty" and records[2]["selections"] == {}, records[2])
             expect(records[3]["line"] == 4, records[3])
 
+        def batch_record_form():
+            # --record (docs/cli.md "Record contract"): contract version 1; every exact vertex and
+            # rational map of the full record within the record's radius of its midpoint (checked
+            # in fractions); angles within 2^-36·(1 + θ) of the full record's (the 3-D mean's are
+            # measured at the exact map, the full record's at its rounded map: twice that).
+            lines = [f'{{"id":"{i}","colours":[[{j}]],"truth":[2,2,3]}}\n' for i, _, j in scenes]
+            path = jsonl(lines)
+            rc, out, err = r.run("--canonical", square, "--images", path, "--record", *C)
+            expect(rc == 0 and err == "", (rc, err))
+            records = scene_records(out)
+            rc, full_out, err = r.run("--canonical", square, "--images", path, *C)
+            fulls = scene_records(full_out)
+            expect(len(records) == len(fulls) == len(scenes), out)
+            acc = 2.0 ** -36
+            for rec, full in zip(records, fulls):
+                expect(rec["record"] == 1 and rec["id"] == full["id"] and rec["line"] == full["line"], rec)
+                expect(rec["input"] == full["input"], rec)
+                f, ff = rec["feasible_set"], full["feasible_set"]
+                expect(f["kind"] == ff["kind"] and len(f["vertices"]) == len(ff["vertices"]), (f, ff))
+                for v, w in zip(f["vertices"], ff["vertices"]):
+                    for a, b in zip(v, w):
+                        expect(abs(Fr(a) - Fr(b)) <= Fr(f["vertex_radius"]), (v, w))
+                expect(set(rec.get("selections", {})) == set(full["selections"]), rec)
+                for rule, s in rec.get("selections", {}).items():
+                    fs = full["selections"][rule]
+                    if "map_exact" in fs:
+                        for a, rad, b in zip(s["map"], s["map_radius"], fs["map_exact"]):
+                            expect(abs(Fr(a) - Fr(b)) <= Fr(rad), (rule, s, fs))
+                    k = 1 if "map_exact" in fs else 2
+                    for key in ("worst_case_deg", "worst_case_illuminant_deg"):
+                        expect((key in s) == (key in fs), (rule, key))
+                        if key in s:
+                            expect(abs(s[key] - fs[key]) <= k * acc * (1 + fs[key]), (rule, key, s, fs))
+                    te, fe = rec["truth"]["errors"][rule], full["truth"]["errors"][rule]
+                    for key in ("map_error_deg", "illuminant_error_deg", "reproduction_error_deg"):
+                        expect(abs(te[key] - fe[key]) <= k * acc * (1 + fe[key]), (rule, key, te, fe))
+                expect(rec["truth"]["in_feasible_set"] == full["truth"]["in_feasible_set"], rec)
+                expect(not {"area", "vertices_approx"} & set(f), f)
+                expect(all("map_exact" not in s for s in rec.get("selections", {}).values()), rec)
+            expect(records[2]["feasible_set"]["kind"] == "empty" and "selections" not in records[2], records[2])
+            # Only with --images, and only for the closed-form 3-D mean.
+            for extra, name in ((["--image", one], "--record"),
+                                (["--images", path, "--mean3d", "quadrature"], "--mean3d"),
+                                (["--images", path, "--precision", "200"], "--precision")):
+                rc, out, err = r.run("--canonical", square, "--record", *extra, *C)
+                expect(rc == 2 and out == "" and err.startswith(f"gmcc: error: {name}:"), (extra, rc, err))
+
+        def batch_threads_change_nothing():
+            # 600 scenes (more than one block of 256), with error lines among them: the same bytes
+            # on 1, 2 and 3 threads, full and record form; --threads only with --images.
+            lines = []
+            for i in range(600):
+                a, b = 1 + i % 7, 1 + (i * 5) % 11
+                lines.append('{"colours":[[1,2]]}\n' if i % 97 == 5 else
+                             f'{{"id":{i},"colours":[[{a},{b},3],[{b},{a},2],[3,3,2]],"truth":[2,2,3]}}\n')
+            path = jsonl(lines)
+            for extra in ([], ["--record"]):
+                outs = []
+                for t in ("1", "2", "3"):
+                    rc, out, err = r.run("--canonical", square, "--images", path, "--threads", t, *extra, *C)
+                    expect(rc == 2 and "7 of 600 scenes" in err, (t, extra, rc, err))
+                    outs.append(out)
+                expect(outs[0] == outs[1] == outs[2], extra)
+                recs = scene_records(outs[0])
+                expect([x["line"] for x in recs] == list(range(1, 601)), "records out of order")
+            rc, out, err = r.run("--canonical", square, "--image", one, "--threads", "2", *C)
+            expect(rc == 2 and err.startswith("gmcc: error: --threads:"), (rc, err))
+
         def batch_warns_once_and_options_apply():
             lines = ['{"colours":[[3,3,2]],"truth":[2,2,3]}\n'] * 3
             rc, out, err = r.run("--canonical", square, "--images", jsonl(lines),
