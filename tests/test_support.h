@@ -63,6 +63,16 @@ inline Point3 random_point3(Rng& rng, long lo, long hi, long max_den) {
   return {x, y, random_rational(rng, lo, hi, max_den)};
 }
 
+/// `n` colours with channels random_rational(rng, lo, hi, max_den), drawn r, g, b in that order.
+inline std::vector<Colour> random_colours(Rng& rng, int n, long lo, long hi, long max_den) {
+  std::vector<Colour> out;
+  for (int i = 0; i < n; ++i) {
+    Rational r = random_rational(rng, lo, hi, max_den), g = random_rational(rng, lo, hi, max_den);
+    out.push_back({r, g, random_rational(rng, lo, hi, max_den)});
+  }
+  return out;
+}
+
 /// q ⊘ d componentwise: what a noise-free scene under the map d shows of the canonical q.
 inline Point2 divided(const Point2& q, const Point2& d) { return {Rational(q.x / d.x), Rational(q.y / d.y)}; }
 /// The same in 3-D.

@@ -56,10 +56,7 @@ BOOST_AUTO_TEST_CASE(agrees_with_its_steps_on_random_scenes) {
   // The route `gmcc select` took before the library pipeline: chromaticities, canonical_gamut,
   // feasible_set, select_maps with c. The prepared canonical side is reused across scenes.
   test::Rng rng(12);
-  std::vector<Colour> canonical;
-  for (int i = 0; i < 12; ++i)
-    canonical.push_back({test::random_rational(rng, 1, 60, 7), test::random_rational(rng, 1, 60, 7),
-                         test::random_rational(rng, 1, 60, 7)});
+  const std::vector<Colour> canonical = test::random_colours(rng, 12, 1, 60, 7);
   SelectSceneOptions o;
   o.expansion = {ExpansionPolicy::multiplicative, R(1, 10)};
   o.canonical_illuminant = {R(9, 10), 1, R(11, 10)};

@@ -134,10 +134,7 @@ BOOST_AUTO_TEST_CASE(munsell_scenes_agree_with_the_exact_route) {
 
 BOOST_AUTO_TEST_CASE(random_scenes_and_choices) {
   test::Rng rng(31);
-  std::vector<Colour> canonical;
-  for (int i = 0; i < 12; ++i)
-    canonical.push_back({test::random_rational(rng, 1, 60, 7), test::random_rational(rng, 1, 60, 7),
-                         test::random_rational(rng, 1, 60, 7)});
+  const std::vector<Colour> canonical = test::random_colours(rng, 12, 1, 60, 7);
   SelectSceneOptions o;
   o.expansion = {ExpansionPolicy::multiplicative, R(1, 10)};
   o.canonical_illuminant = {R(9, 10), 1, R(11, 10)};
