@@ -136,10 +136,39 @@ bool fill(SelectRecord& out, const PerRule<internal::CertifiedRule<E>>& values, 
   return true;
 }
 
+// The index of F's lexicographically least vertex (x, then y), where the exact set's
+// counter-clockwise order starts, when the enclosures certify it: a vertex is certainly below
+// another when its x enclosure is, or when the two share an edge parallel to the y axis (b = 0 in
+// its double copy, whose signs are exact: then the x are equal) and its y enclosure is below.
+// Nothing when some pair is undecided (the exact route orders them).
+std::optional<std::size_t> least_vertex(const std::vector<EnclosedVertex>& v, const std::vector<ApproximateLine>& edges) {
+  const std::size_t n = v.size();
+  // -1: a certainly before b; 1: b certainly before a; 0: not decided here.
+  auto order = [&](std::size_t a, std::size_t b) {
+    if (v[a].x.hi() < v[b].x.lo()) return -1;
+    if (v[b].x.hi() < v[a].x.lo()) return 1;
+    const bool vertical = (b == (a + 1) % n && edges[a].b == 0) || (a == (b + 1) % n && edges[b].b == 0);
+    if (!vertical) return 0;
+    if (v[a].y.hi() < v[b].y.lo()) return -1;
+    if (v[b].y.hi() < v[a].y.lo()) return 1;
+    return 0;
+  };
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < n; ++i) {
+    const int o = order(best, i);
+    if (o == 0) return std::nullopt;
+    if (o > 0) best = i;
+  }
+  return best;  // below every vertex after it, and below those before it by transitivity
+}
+
 // The record from enclosures of the polygon P, or nothing where they cannot decide.
 std::optional<SelectRecord> enclosure_route(const FeasiblePolygon& P, const std::optional<Point2>& truth,
                                            const Colour& c, bool illuminant_worst_case) {
   if (!P.enclosed()) return std::nullopt;
+  const std::vector<EnclosedVertex>& v = P.vertices();
+  const std::optional<std::size_t> first = least_vertex(v, P.edges());
+  if (!first) return std::nullopt;
   SelectRecord out;
   out.kind = ConvexKind::polygon;
   if (truth) out.truth.emplace().in_feasible_set = P.contains(*truth);
@@ -152,13 +181,8 @@ std::optional<SelectRecord> enclosure_route(const FeasiblePolygon& P, const std:
   } else {
     return std::nullopt;
   }
-  // The vertices, counter-clockwise from the least midpoint.
-  const std::vector<EnclosedVertex>& v = P.vertices();
-  const auto first = std::min_element(v.begin(), v.end(), [](const EnclosedVertex& a, const EnclosedVertex& b) {
-    return a.x.mid < b.x.mid || (a.x.mid == b.x.mid && a.y.mid < b.y.mid);
-  });
   for (std::size_t i = 0; i < v.size(); ++i) {
-    const EnclosedVertex& p = v[(static_cast<std::size_t>(first - v.begin()) + i) % v.size()];
+    const EnclosedVertex& p = v[(*first + i) % v.size()];
     out.vertices.push_back({p.x, p.y});
   }
   return out;

@@ -8,6 +8,7 @@
 
 #include <gmcc/selection/select_scene_record.h>
 #include <gmcc/input/colour_csv.h>
+#include <gmcc/numerics/platform.h>
 
 #include <boost/test/unit_test.hpp>
 
@@ -129,7 +130,10 @@ BOOST_AUTO_TEST_CASE(munsell_scenes_agree_with_the_exact_route) {
   const int scenes = 150;
   for (int s = 0; s < scenes; ++s)
     enclosed += agrees(pc, munsell_scene(static_cast<std::uint64_t>(s)), s % 2 ? std::optional<Colour>(light) : std::nullopt);
-  BOOST_TEST(enclosed > scenes * 9 / 10);  // the enclosure route is what is being tested
+  // The enclosure route is what is being tested: most scenes take it (fewer with the portable
+  // numerics, which have no extended-precision stage for thin sets).
+  const int percent = numerics::extended_precision_active() ? 90 : 75;
+  BOOST_TEST(enclosed * 100 > scenes * percent);
 }
 
 BOOST_AUTO_TEST_CASE(random_scenes_and_choices) {
@@ -189,7 +193,9 @@ BOOST_AUTO_TEST_CASE(constraint_and_recovery) {
     non_empty += select_scene_record(lights, munsell_scene(s), std::nullopt, {}).kind != ConvexKind::empty;
   }
   BOOST_TEST(non_empty >= 10);
-  BOOST_TEST(enclosed >= 10);  // thin sets along the daylight locus: the extended-precision stage
+  // Thin sets along the daylight locus: from enclosures through the extended-precision stage,
+  // which the portable numerics do not have (they take the exact route, checked above all the same).
+  if (numerics::extended_precision_active()) BOOST_TEST(enclosed >= 10);
   SelectSceneOptions grow;
   grow.on_empty = RecoveryPolicy::grow_canonical;
   const PreparedCanonical pc = prepare_canonical(square, grow);
