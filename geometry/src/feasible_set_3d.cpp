@@ -141,24 +141,19 @@ std::vector<HalfSpace> hull_half_spaces(const std::vector<Point3>& pts) {
                         CGAL::make_extreme_points_traits_adapter(CGAL::make_property_map(in)));
     std::vector<std::optional<std::array<mpz_class, 4>>> homogeneous(pts.size());
     auto h = [&](std::size_t i) -> const std::array<mpz_class, 4>& {
-      if (!homogeneous[i]) {
-        const Point3& p = pts[i];
-        const mpz_class l = lcm_of_denominators_of(p.x, p.y, p.z);
-        homogeneous[i] = std::array<mpz_class, 4>{times_lcm(p.x, l), times_lcm(p.y, l), times_lcm(p.z, l), l};
-      }
+      if (!homogeneous[i]) homogeneous[i] = homogeneous_integers(pts[i]);
       return *homogeneous[i];
     };
-    const Point3 inside = add(add(f[0], f[1]), add(f[2], f[3]));  // 4 × the centroid
-    const mpz_class li = lcm_of_denominators_of(inside.x, inside.y, inside.z);
-    const std::array<mpz_class, 3> in4{times_lcm(inside.x, li), times_lcm(inside.y, li), times_lcm(inside.z, li)};
+    // 4 × the centroid, as (I, L): inside = I/(4L).
+    const std::array<mpz_class, 4> in4 = homogeneous_integers(add(add(f[0], f[1]), add(f[2], f[3])));
     for (const auto fc : mesh.faces()) {
       std::array<std::size_t, 3> v{};
       std::size_t n = 0;
       for (const auto x : CGAL::vertices_around_face(mesh.halfedge(fc), mesh))
         if (n < 3) v[n++] = mesh.point(x);
       auto [a, b] = internal::plane_through(h(v[0]), h(v[1]), h(v[2]));
-      // inside/4 = in4/(4·li): outward when a·in4 <= 4·li·b (strictly, the frame spans 3-D).
-      const mpz_class lhs = a[0] * in4[0] + a[1] * in4[1] + a[2] * in4[2], rhs = 4 * li * b;
+      // outward when a·I <= 4L·b (strictly: the frame spans 3-D).
+      const mpz_class lhs = a[0] * in4[0] + a[1] * in4[1] + a[2] * in4[2], rhs = 4 * in4[3] * b;
       if (lhs > rhs)
         for (mpz_class* x : {&a[0], &a[1], &a[2], &b}) *x = -*x;
       out.push_back(normalised({Rational(a[0]), Rational(a[1]), Rational(a[2])}, Rational(b)));

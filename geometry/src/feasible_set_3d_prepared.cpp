@@ -68,7 +68,7 @@ constexpr double u = 0x1p-53;
 bool small_integers(const std::vector<std::array<double, 3>>& d) {
   for (const auto& c : d)
     for (double x : c)
-      if (!(x >= 0 && x < 0x1p16 && x == std::floor(x))) return false;
+      if (!small_integer(x)) return false;
   return true;
 }
 

@@ -1,7 +1,6 @@
 // An exact 3-D convex set whose vertices are made exact on request (lazy_convex_set_3.h).
 #include <gmcc/geometry/lazy_convex_set_3.h>
 
-#include <gmcc/geometry/integers_over_lcm.h>
 #include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/numerics/internal_check.h>
 #include <gmcc/numerics/rational_to_float.h>
@@ -129,11 +128,7 @@ const std::array<mpz_class, 4>& LazyConvexSet3::homogeneous(std::size_t i) const
   State& s = *state_;
   if (s.homogeneous.size() < s.exact.size()) s.homogeneous.resize(s.exact.size());  // built exact
   std::array<mpz_class, 4>& h = s.homogeneous[i];
-  if (sgn(h[3]) == 0) {
-    const Point3& p = *s.exact[i];
-    h[3] = lcm_of_denominators_of(p.x, p.y, p.z);
-    for (std::size_t k = 0; k < 3; ++k) h[k] = times_lcm(coord(p, static_cast<int>(k)), h[3]);
-  }
+  if (sgn(h[3]) == 0) h = homogeneous_integers(*s.exact[i]);
   return h;
 }
 

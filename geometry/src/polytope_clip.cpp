@@ -46,12 +46,6 @@ Filter filter_of(const IntegerPlane3& p) {
   return f;
 }
 
-// p·L with L > 0 the lcm of p's denominators: (p·L, L), integers.
-std::array<mpz_class, 4> integer_point(const Point3& p) {
-  const mpz_class l = lcm_of_denominators_of(p.x, p.y, p.z);
-  return {times_lcm(p.x, l), times_lcm(p.y, l), times_lcm(p.z, l), l};
-}
-
 // p·2^-e (e the largest binary exponent of p's channels) truncated to doubles (mpq_get_d:
 // relative error below 2u), and 2^-e; not usable outside the double range policy
 // (numerics/rational_to_float.h).
@@ -242,7 +236,7 @@ class Clipper {
 
   // Point p's exact form and signs, and its rows' filter copies, one per facet of the group.
   void add_point(Group& group, const Point3& p) {
-    group.points.push_back(integer_point(p));
+    group.points.push_back(homogeneous_integers(p));
     group.signs.push_back({sgn(p.x), sgn(p.y), sgn(p.z)});
     const ScaledPoint q = scaled_point(p);
     const ClipFacets& facets = *group.facets;

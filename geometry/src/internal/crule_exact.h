@@ -10,6 +10,7 @@
 #include <gmcc/geometry/convex_set_3.h>
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -20,6 +21,11 @@ struct HalfSpace3 {
   Point3 a;
   Rational b;
 };
+
+// Whether x is an integer in [0, 2^16) (a pixel value): where the image hull's filter planes are
+// exact in double (feasible_set_3d_prepared.cpp) and its predicates exact in 64-bit integers
+// (small_integer_hull.h).
+inline bool small_integer(double x) { return x >= 0 && x < 0x1p16 && x == std::floor(x); }
 
 // The points sorted (lexicographically), without repeats.
 std::vector<Point3> sorted_unique(std::vector<Point3> p);

@@ -21,11 +21,9 @@
 
 namespace gmcc::internal {
 
-/// Whether x is an integer in [0, 2^16): the coordinates SmallIntegerKernel's predicates take.
-inline bool small_integer(double x) { return x >= 0 && x < 0x1p16 && x == static_cast<double>(static_cast<std::int64_t>(x)); }
-
 /// Simple_cartesian<double>'s types and constructions, with the predicates convex_hull_3 calls
-/// replaced by exact integer ones. Only for points whose coordinates are small_integer.
+/// replaced by exact integer ones. Only for points whose coordinates are small_integer
+/// (crule_exact.h).
 struct SmallIntegerKernel : CGAL::Simple_cartesian<double> {
   using Base = CGAL::Simple_cartesian<double>;
   using Point_3 = Base::Point_3;

@@ -6,6 +6,9 @@
 /// O(1) rational operations each.
 
 #include <gmcc/geometry/convex_set_3.h>
+#include <gmcc/geometry/integers_over_lcm.h>
+
+#include <array>
 
 namespace gmcc {
 
@@ -37,6 +40,12 @@ inline bool is_zero(const Point3& a) { return sgn(a.x) == 0 && sgn(a.y) == 0 && 
 inline const Rational& coord(const Point3& p, int k) { return k == 0 ? p.x : k == 1 ? p.y : p.z; }
 /// Coordinate k of p, writable: x, y, z for k = 0, 1, 2.
 inline Rational& coord(Point3& p, int k) { return k == 0 ? p.x : k == 1 ? p.y : p.z; }
+/// p in homogeneous integer coordinates (p·L, L), L ≥ 1 the lcm of its denominators:
+/// (X/L, Y/L, Z/L) = p, without a gcd (integers_over_lcm.h).
+inline std::array<mpz_class, 4> homogeneous_integers(const Point3& p) {
+  const mpz_class l = lcm_of_denominators_of(p.x, p.y, p.z);
+  return {times_lcm(p.x, l), times_lcm(p.y, l), times_lcm(p.z, l), l};
+}
 /// The coordinate (0, 1, 2) where |n| is largest, the first on ties: the axis to drop when a plane
 /// with normal n is projected to 2-D.
 inline int largest_coordinate(const Point3& n) {
