@@ -458,7 +458,7 @@ class Clipper {
       return ClippedPolytope::Outcome::flat;
     }
     crossing_edges(i);
-    cut_faces(i, cuts_);
+    cut_faces(i);
     return ClippedPolytope::Outcome::polytope;
   }
 
@@ -475,76 +475,92 @@ class Clipper {
     return -1;
   }
 
-  // The edges that cross plane i strictly (sign_ set for the live vertices), into cuts_, each with
-  // its new vertex: the meet of its two faces' planes and plane i, independent because the edge
-  // crosses plane i transversally.
+  // One pass over every face's edges (sign_ set for the live vertices): the edges that cross
+  // plane i strictly, into cuts_, each with its new vertex (the meet of its two faces' planes and
+  // plane i, independent because the edge crosses plane i transversally); and into touched_ the
+  // faces the cut changes: those with a vertex strictly outside, and those with an edge in the
+  // plane (an edge of the cut facet).
   void crossing_edges(int i) {
     std::vector<Cut>& cuts = cuts_;
     cuts.clear();
-    for (const Face& f : faces_)
-      for (std::size_t k = 0; k < f.cycle.size(); ++k) {
-        const int a = f.cycle[k], b = f.cycle[(k + 1) % f.cycle.size()];
-        if (sign_[a] * sign_[b] >= 0) continue;
-        const int c = find(cuts, a, b);
-        if (c < 0) cuts.push_back({std::min(a, b), std::max(a, b), {f.plane, -1}, 1, -1});
-        else {
-          GMCC_CHECK(cuts[c].n == 1, "clip_polytope: an edge lies on two faces");
-          cuts[c].faces[1] = f.plane, cuts[c].n = 2;
+    touched_.clear();
+    for (std::size_t f = 0; f < faces_.size(); ++f) {
+      const std::vector<int>& c = faces_[f].cycle;
+      bool outside = false, on = false;
+      int a = c.back(), sa = sign_[a];
+      for (const int b : c) {
+        const int sb = sign_[b];
+        outside = outside || sb > 0;
+        on = on || (sa == 0 && sb == 0);
+        if (sa * sb < 0) {
+          const int k = find(cuts, a, b);
+          if (k < 0) cuts.push_back({std::min(a, b), std::max(a, b), {faces_[f].plane, -1}, 1, -1});
+          else {
+            GMCC_CHECK(cuts[k].n == 1, "clip_polytope: an edge lies on two faces");
+            cuts[k].faces[1] = faces_[f].plane, cuts[k].n = 2;
+          }
         }
+        a = b, sa = sb;
       }
+      if (outside || on) touched_.push_back({f, outside});
+    }
+    if (sign_.size() < vertices_.size() + cuts.size()) sign_.resize(vertices_.size() + cuts.size() + 64);
     for (Cut& c : cuts) {
       GMCC_CHECK(c.n == 2, "clip_polytope: an edge lies on two faces");
       c.vertex = add_vertex({c.faces[0], c.faces[1], i});
-      if (sign_.size() < vertices_.size()) sign_.resize(vertices_.size() + 64);
       sign_[c.vertex] = 0;
     }
   }
 
-  // The faces after the cut by plane i (`cuts` its crossing edges): faces with no vertex strictly
-  // outside kept as they are, the others cut, and the cap, the new facet in plane i; then the
-  // live vertices.
-  void cut_faces(int i, const std::vector<Cut>& cuts) {
-    kept_.clear();
-    next_on_cap_.assign(vertices_.size(), -1);
+  // The faces after the cut by plane i (cuts_ and touched_ from crossing_edges): the touched
+  // faces with a vertex strictly outside cut (dropped when fewer than three vertices remain), the
+  // others as they are, and the cap, the new facet in plane i, closed from the edges in the plane
+  // (each an edge of the cut facet, traversed the other way). The live vertices are those not
+  // strictly outside, and the new ones.
+  void cut_faces(int i) {
+    if (next_on_cap_.size() < vertices_.size()) next_on_cap_.resize(vertices_.size() + 64, -1);
     int cap_edges = 0, cap_start = -1;
-    for (Face& f : faces_) {
-      bool cut = false;
-      for (int a : f.cycle) cut = cut || sign_[a] > 0;
-      Face g{f.plane, {}};
-      if (!cut) g = std::move(f);
-      else {
-        g.cycle.reserve(f.cycle.size() + 1);
-        for (std::size_t k = 0; k < f.cycle.size(); ++k) {
-          const int a = f.cycle[k], b = f.cycle[(k + 1) % f.cycle.size()];
-          if (sign_[a] <= 0) g.cycle.push_back(a);
-          if (sign_[a] * sign_[b] < 0) g.cycle.push_back(cuts[find(cuts, a, b)].vertex);
+    bool dropped = false;
+    for (const Touched& t : touched_) {
+      std::vector<int>& c = faces_[t.face].cycle;
+      if (t.outside) {
+        scratch_.clear();
+        for (std::size_t k = 0; k < c.size(); ++k) {
+          const int a = c[k], b = c[k + 1 == c.size() ? 0 : k + 1];
+          if (sign_[a] <= 0) scratch_.push_back(a);
+          if (sign_[a] * sign_[b] < 0) scratch_.push_back(cuts_[static_cast<std::size_t>(find(cuts_, a, b))].vertex);
         }
-        if (g.cycle.size() < 3) continue;
+        c.swap(scratch_);
+        if (c.size() < 3) {
+          c.clear(), dropped = true;
+          continue;
+        }
       }
-      // An edge of the face in plane i is an edge of the cut facet, traversed the other way.
-      for (std::size_t k = 0; k < g.cycle.size(); ++k) {
-        const int a = g.cycle[k], b = g.cycle[(k + 1) % g.cycle.size()];
+      int a = c.back();
+      for (const int b : c) {
         if (sign_[a] == 0 && sign_[b] == 0) {
           GMCC_CHECK(next_on_cap_[b] == -1, "clip_polytope: the cut facet is a simple cycle");
           next_on_cap_[b] = a, ++cap_edges, cap_start = b;
         }
+        a = b;
       }
-      kept_.push_back(std::move(g));
     }
+    if (dropped)
+      faces_.erase(std::remove_if(faces_.begin(), faces_.end(), [](const Face& f) { return f.cycle.empty(); }),
+                   faces_.end());
     Face cap{i, {}};
     for (int v = cap_start; v != -1 && static_cast<int>(cap.cycle.size()) <= cap_edges &&
                             (cap.cycle.empty() || v != cap_start);
          v = next_on_cap_[v])
       cap.cycle.push_back(v);
+    for (const int v : cap.cycle) next_on_cap_[v] = -1;
     GMCC_CHECK(cap.cycle.size() >= 3 && static_cast<int>(cap.cycle.size()) == cap_edges,
                "clip_polytope: a plane with vertices strictly on both sides cuts a facet");
-    kept_.push_back(std::move(cap));
-    std::swap(faces_, kept_);
-    live_.clear();
-    seen_.assign(vertices_.size(), 0);
-    for (const Face& f : faces_)
-      for (int v : f.cycle)
-        if (!seen_[v]) seen_[v] = 1, live_.push_back(v);
+    faces_.push_back(std::move(cap));
+    // A vertex not strictly outside stays on a face: one strictly inside keeps every face through
+    // it, one on the plane is a vertex of the cap.
+    live_.erase(std::remove_if(live_.begin(), live_.end(), [&](int v) { return sign_[v] > 0; }), live_.end());
+    for (const Cut& c : cuts_) live_.push_back(c.vertex);
     pack();
   }
 
@@ -591,9 +607,13 @@ class Clipper {
   std::vector<int> live_;
   std::vector<Cut> cuts_;        // scratch for clip(): the crossing edges
   int flat_point_ = -1;          // the one vertex a flat row left (clip()), if it left one
-  std::vector<Face> kept_;       // scratch for clip()
-  std::vector<int> next_on_cap_;  // scratch for clip()
-  std::vector<char> seen_;        // scratch for clip()
+  struct Touched {
+    std::size_t face;
+    bool outside;  // it has a vertex strictly outside the cutting plane
+  };
+  std::vector<Touched> touched_;  // scratch for clip(): the faces a cut changes
+  std::vector<int> scratch_;      // scratch for cut_faces: a cut face's new cycle
+  std::vector<int> next_on_cap_;  // scratch for cut_faces (-1 between cuts)
   LiveVertexFilter filter_;                         // the live vertices' (pack())
   std::vector<const VertexDoubles*> live_doubles_;  // scratch for pack()
   std::vector<std::size_t> order_;  // the rows, in clipping order
