@@ -338,7 +338,8 @@ class Clipper {
   std::array<mpz_class, 4> exact_homogeneous(const std::array<int, 3>& t) {
     const IntegerPlane3 &p = plane(t[0]), &q = plane(t[1]), &r = plane(t[2]);
     // c_qr = a_q × a_r etc.; W = a_p·c_qr, (X, Y, Z) = b_p c_qr + b_q c_rp + b_r c_pq. In place
-    // (mpz_mul, mpz_addmul, mpz_submul into kept scratch), without a temporary per product.
+    // (mpz_mul, mpz_addmul, mpz_submul) into scratch kept across calls, so that only the four
+    // results are allocated, each once at its size.
     auto cross = [](const IntegerPlane3& s, const IntegerPlane3& u, std::array<mpz_class, 3>& c) {
       for (int k = 0; k < 3; ++k) {
         const int i = (k + 1) % 3, j = (k + 2) % 3;
@@ -347,7 +348,7 @@ class Clipper {
       }
     };
     cross(q, r, cross_[0]), cross(r, p, cross_[1]), cross(p, q, cross_[2]);
-    std::array<mpz_class, 4> h;
+    std::array<mpz_class, 4>& h = homogeneous_;
     for (int k = 0; k < 3; ++k) {
       mpz_mul(h[k].get_mpz_t(), p.b.get_mpz_t(), cross_[0][k].get_mpz_t());
       mpz_addmul(h[k].get_mpz_t(), q.b.get_mpz_t(), cross_[1][k].get_mpz_t());
@@ -426,7 +427,10 @@ class Clipper {
     if (!v.exact) v.exact = exact_homogeneous(v.planes);
     const auto& h = *v.exact;
     const IntegerPlane3& p = plane(i);
-    const mpz_class s = p.a[0] * h[0] + p.a[1] * h[1] + p.a[2] * h[2] - p.b * h[3];
+    mpz_class& s = side_;  // a·(X, Y, Z) − b·W, in scratch kept across calls
+    mpz_mul(s.get_mpz_t(), p.b.get_mpz_t(), h[3].get_mpz_t());
+    mpz_neg(s.get_mpz_t(), s.get_mpz_t());
+    for (int k = 0; k < 3; ++k) mpz_addmul(s.get_mpz_t(), p.a[k].get_mpz_t(), h[k].get_mpz_t());
     return sgn(s) * sgn(h[3]);
   }
 
@@ -619,6 +623,8 @@ class Clipper {
   std::vector<std::size_t> order_;  // the rows, in clipping order
   std::vector<int> sign_;
   std::array<std::array<mpz_class, 3>, 3> cross_;  // scratch for exact_homogeneous
+  std::array<mpz_class, 4> homogeneous_;           // scratch for exact_homogeneous
+  mpz_class side_;                                  // scratch for side
 };
 
 }  // namespace
