@@ -4,6 +4,7 @@
 
 #include <gmcc/numerics/platform.h>
 #include <gmcc/numerics/rational_to_float.h>
+#include <gmcc/numerics/truncated_quotient.h>
 
 #include <boost/test/unit_test.hpp>
 
@@ -90,6 +91,48 @@ BOOST_AUTO_TEST_CASE(extended_values_are_certified_within_the_policy) {
   BOOST_TEST(*certified_extended(mpz_class(0).get_mpz_t(), one.get_mpz_t()) == 0.0L);
   BOOST_TEST(times_power_of_two(3.0L, -2000) * exact_power_of_two(900) * exact_power_of_two(900) *
                  exact_power_of_two(200) == 3.0L);  // exact scaling both ways
+}
+
+// truncated_quotient against mpq_get_d (an independent route: GMP's exact long division, then
+// truncation) on unreduced quotients x/w of every shape the lazy 3-D set meets: random numbers of
+// 1 to 1100 bits, exact quotients (x = q·w for a double q, so the value is a truncation
+// boundary), their neighbours x ± 1, powers of two and small integers; each sign.
+BOOST_AUTO_TEST_CASE(truncated_quotients_are_mpq_get_d) {
+  Rng rng(61);
+  gmp_randclass random(gmp_randinit_mt);
+  random.seed(61);
+  long decided = 0, trials = 0;
+  auto check = [&](const mpz_class& x, const mpz_class& w) {
+    if (sgn(x) == 0 || std::labs(binary_magnitude(x.get_mpz_t(), w.get_mpz_t())) > double_magnitude_limit - 1) return;
+    mpq_t q;  // a read-only view, unreduced, as the library's caller uses it
+    *mpq_numref(q) = *x.get_mpz_t();
+    *mpq_denref(q) = *w.get_mpz_t();
+    const std::optional<double> t = truncated_quotient(x.get_mpz_t(), w.get_mpz_t());
+    ++trials;
+    if (!t) return;
+    ++decided;
+    BOOST_TEST(*t == mpq_get_d(q), "x = " << x.get_str(16) << ", w = " << w.get_str(16));
+  };
+  for (int trial = 0; trial < 3000; ++trial) {
+    const unsigned long wb = 1 + rng() % 600, xb = 1 + rng() % (wb + 400);
+    const mpz_class w = random.get_z_bits(wb) + 1;
+    mpz_class x = random.get_z_bits(xb) + 1;
+    if (rng() % 2) x = -x;
+    check(x, w);
+    // An exact quotient: x = m·2^k·w for a 53-bit m (a truncation boundary), then x ± 1.
+    const mpz_class m = random.get_z_bits(1 + rng() % 53) + 1;
+    const long k = static_cast<long>(rng() % 200) - 100;
+    mpz_class e = m * w;
+    mpz_class ww = w;
+    if (k >= 0) e <<= static_cast<unsigned long>(k);
+    else ww <<= static_cast<unsigned long>(-k);
+    check(e, ww), check(mpz_class(e + 1), ww), check(mpz_class(e - 1), ww), check(mpz_class(-e), ww);
+    // Powers of two and small numbers.
+    check(mpz_class(1) << static_cast<unsigned long>(rng() % 130), mpz_class(1) << static_cast<unsigned long>(rng() % 130));
+    check(mpz_class(static_cast<long>(rng() % 1000) - 500), mpz_class(1 + rng() % 1000));
+  }
+  BOOST_TEST(trials > 12000);
+  BOOST_TEST(decided * 100 >= trials * 99);  // the leading bits decide all but the edge cases
 }
 
 BOOST_AUTO_TEST_SUITE_END()
