@@ -3,8 +3,10 @@
 // exact rational result (GMP), on random and adversarial inputs (cancellation, magnitudes from
 // 2^-300 to 2^300, radii); atan's enclosure contains MPFR's atan at 400 bits; the tabulated
 // constants are within their charge of MPFR's values; the rounding decision agrees with MPFR's
-// round to nearest, ties to even, at and near midpoints.
+// round to nearest, ties to even, at and near midpoints; the truncation decision agrees with
+// GMP's truncation (mpq_get_d) at and near doubles; an integer's double-word copy encloses it.
 #include <gmcc/numerics/dw_atan.h>
+#include <gmcc/numerics/dw_integer.h>
 #include <gmcc/numerics/dw_rounding.h>
 
 #include <boost/test/unit_test.hpp>
@@ -216,6 +218,64 @@ BOOST_AUTO_TEST_CASE(rounding_decision_at_and_near_midpoints) {
   BOOST_TEST(!round_to_double(DWEnclosure{{1.0, 0x1p-53}, 0x1p-110}).has_value());
   BOOST_TEST(!round_to_double(DWEnclosure::unbounded()).has_value());
   mpfr_clear(v);
+}
+
+BOOST_AUTO_TEST_CASE(truncation_decision_at_and_near_doubles) {
+  // Every decision is mpq_get_d's truncation of both exact ends (the same double), and every
+  // enclosure whose ends truncate alike away from 0 is decided: the decision is exact.
+  std::mt19937_64 rng(755);
+  std::uniform_real_distribution<double> unit(0.5, 4);
+  int decided = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double d = (rng() % 2 ? -1 : 1) * std::ldexp(unit(rng), static_cast<int>(rng() % 100) - 50);
+    const double up = std::nextafter(d, INFINITY) - d, down = d - std::nextafter(d, -INFINITY);
+    const double offsets[] = {0, up * 0x1p-30, -down * 0x1p-30, up * (1 - 0x1p-40), -down * (1 - 0x1p-40), up / 2, 0};
+    const double off = offsets[i % 7];
+    const double tiny = std::ldexp(static_cast<double>(rng() % 3) - 1, -200) * std::fabs(d);  // at, above or below
+    DWEnclosure x = DWEnclosure::exact(fast_two_sum(d, off));
+    x = x + DWEnclosure::exact(tiny);
+    x.rad = i % 4 == 0 ? 0 : std::ldexp(std::fabs(d), -100 - static_cast<int>(rng() % 40));
+    const mpq_class ends[] = {exact(x.mid) - exact(x.rad), exact(x.mid) + exact(x.rad)};
+    const double t0 = mpq_get_d(ends[0].get_mpq_t()), t1 = mpq_get_d(ends[1].get_mpq_t());
+    const std::optional<double> t = truncate_to_double(x);
+    BOOST_TEST(t.has_value() == (t0 == t1));
+    if (t) {
+      ++decided;
+      BOOST_TEST(*t == t0);
+    }
+  }
+  BOOST_TEST(decided > 10000);
+  BOOST_TEST(*truncate_to_double(DWEnclosure::exact(0.0)) == 0.0);
+  BOOST_TEST(!truncate_to_double(DWEnclosure{{0.0, 0.0}, 0x1p-100}).has_value());  // may be either side of 0
+  BOOST_TEST(!truncate_to_double(DWEnclosure::unbounded()).has_value());
+  BOOST_TEST(*truncate_to_double(DWEnclosure{{1.0, -0x1p-80}, 0}) == std::nextafter(1.0, 0.0));
+  BOOST_TEST(*truncate_to_double(DWEnclosure{{-1.0, 0x1p-80}, 0}) == -std::nextafter(1.0, 0.0));
+}
+
+BOOST_AUTO_TEST_CASE(integers_are_enclosed) {
+  // dw_integer(z, E) contains z·2^-E exactly, its radius within 2^-100 relative, for integers of
+  // 1 to 1200 bits (at most 53: exact), of either sign; out of range: nothing.
+  gmp_randclass random(gmp_randinit_mt);
+  random.seed(756);
+  std::mt19937_64 rng(756);
+  for (int i = 0; i < 5000; ++i) {
+    mpz_class z = random.get_z_bits(1 + rng() % 1200);
+    if (rng() % 2) z = -z;
+    const long bits = static_cast<long>(mpz_sizeinbase(z.get_mpz_t(), 2));
+    const long E = bits + static_cast<long>(rng() % 1200) - 600;
+    const std::optional<DWEnclosure> x = dw_integer(z.get_mpz_t(), E);
+    if (sgn(z) != 0 && (bits - E > 900 || bits - E < -900)) {
+      BOOST_TEST(!x.has_value());
+      continue;
+    }
+    BOOST_TEST_REQUIRE(x.has_value());
+    mpq_class v(z);
+    if (E >= 0) v /= mpq_class(mpz_class(1) << static_cast<unsigned long>(E));
+    else v *= mpq_class(mpz_class(1) << static_cast<unsigned long>(-E));
+    BOOST_TEST(contains(*x, v));
+    BOOST_TEST(x->rad <= std::fabs(x->mid.hi) * 0x1p-100);
+    if (bits <= 53) BOOST_TEST((exact(x->mid) == v));  // a double: exact
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

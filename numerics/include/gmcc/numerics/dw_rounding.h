@@ -59,4 +59,41 @@ inline std::optional<DWRounding> round_to_double(const DWEnclosure& x) {
   return r;
 }
 
+/// The double every point of x truncates to (rounds toward zero to: what mpq_get_d gives for an
+/// exact rational), or nothing when the points do not all truncate to one double, x may contain
+/// 0 without being exactly 0, or the double is beyond 2^±1000 (x unbounded included).
+///
+/// Proof. For x > 0 the truncation is the largest double <= x, so every point of [A, B]
+/// truncates to t iff t <= A and B < t⁺ (t's successor). With d = hi the normalised midpoint's
+/// leading double and the ends A = d + bottom, B = d + top formed exactly by TwoSum of lo ∓ r (as
+/// in round_to_double): when bottom >= 0, A >= d, and t = d if top < d⁺ − d; when top < 0, B < d,
+/// and t = d⁻ if bottom >= d⁻ − d; otherwise [A, B] contains d, a truncation boundary, with
+/// points on both sides (or A = d = B would have bottom = 0). The gaps d⁺ − d and d − d⁻ are exact
+/// (Sterbenz's lemma) for normal d. For x < 0 the same holds for −x with t negated; x = 0 exactly
+/// (a zero midpoint and radius) truncates to 0.
+inline std::optional<double> truncate_to_double(const DWEnclosure& x) {
+  if (!x.finite() || !(x.rad >= 0)) return std::nullopt;
+  if (x.mid.hi == 0 && x.mid.lo == 0 && x.rad == 0) return 0.0;
+  const bool negative = x.mid.hi < 0;
+  const DoubleWord m = fast_two_sum(negative ? -x.mid.hi : x.mid.hi, negative ? -x.mid.lo : x.mid.lo);
+  const double d = m.hi;
+  if (!(d >= 0x1p-1000 && d <= 0x1p1000)) return std::nullopt;
+  const DoubleWord top = two_sum(m.lo, x.rad), bottom = two_sum(m.lo, -x.rad);  // exact ends − d
+  const bool bottom_nonnegative = bottom.hi > 0 || (bottom.hi == 0 && bottom.lo >= 0);
+  const bool top_negative = top.hi < 0 || (top.hi == 0 && top.lo < 0);
+  double t;
+  if (bottom_nonnegative) {
+    const double up = std::nextafter(d, INFINITY) - d;
+    if (!(top.hi < up || (top.hi == up && top.lo < 0))) return std::nullopt;
+    t = d;
+  } else if (top_negative) {
+    const double below = std::nextafter(d, 0.0), down = below - d;  // d⁻ − d < 0
+    if (!(bottom.hi > down || (bottom.hi == down && bottom.lo >= 0))) return std::nullopt;
+    t = below;
+  } else {
+    return std::nullopt;
+  }
+  return negative ? -t : t;
+}
+
 }  // namespace gmcc::numerics
