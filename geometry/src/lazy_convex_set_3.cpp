@@ -24,6 +24,7 @@ struct LazyConvexSet3::State {
   std::vector<std::optional<Point3>> exact;           // made so far
   std::vector<char> zero;
   std::size_t made = 0;
+  HomogeneousMaker make;  // vertex i's homogeneous coordinates, when not given (from_truncated)
 };
 
 namespace {
@@ -68,6 +69,32 @@ int compare_exactly(const std::array<mpz_class, 4>& a, const std::array<mpz_clas
   return sgn(mpz_class(a[i] * b[3]) - mpz_class(b[i] * a[3]));
 }
 
+// Makes W positive (negating the four coordinates: the same point).
+void positive_weight(std::array<mpz_class, 4>& h) {
+  GMCC_CHECK(sgn(h[3]) != 0, "LazyConvexSet3: a homogeneous vertex has W = 0");
+  if (sgn(h[3]) < 0)
+    for (mpz_class& c : h) c = -c;
+}
+
+// The canonical order of n vertices: lexicographic, comparing truncated doubles where both are
+// known and different (truncation is monotone) and otherwise exactly, by cross-multiplication of
+// the homogeneous coordinates `exact(i)` gives.
+template <class Exact>
+std::vector<std::size_t> canonical_order(const std::vector<std::array<std::optional<double>, 3>>& key, Exact exact) {
+  std::vector<std::size_t> order(key.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    for (int k = 0; k < 3; ++k) {
+      const auto& x = key[a][static_cast<std::size_t>(k)];
+      const auto& y = key[b][static_cast<std::size_t>(k)];
+      if (x && y && *x != *y) return *x < *y;
+      if (const int c = compare_exactly(exact(a), exact(b), k)) return c < 0;
+    }
+    return false;
+  });
+  return order;
+}
+
 }  // namespace
 
 LazyConvexSet3::LazyConvexSet3() : state_(std::make_shared<State>()) {}
@@ -89,25 +116,47 @@ LazyConvexSet3 LazyConvexSet3::from_homogeneous(ConvexKind3 kind, std::vector<st
   const std::size_t n = h.size();
   std::vector<Enclosure3> enclosures(n);
   std::vector<std::array<std::optional<double>, 3>> key(n);
+  std::vector<char> zero(n);
   for (std::size_t i = 0; i < n; ++i) {
-    GMCC_CHECK(sgn(h[i][3]) != 0, "LazyConvexSet3: a homogeneous vertex has W = 0");
-    if (sgn(h[i][3]) < 0)
-      for (mpz_class& c : h[i]) c = -c;
+    positive_weight(h[i]);
     for (std::size_t k = 0; k < 3; ++k) enclosures[i][k] = enclose_quotient(h[i][k], h[i][3], key[i][k]);
+    zero[i] = sgn(h[i][0]) == 0 && sgn(h[i][1]) == 0 && sgn(h[i][2]) == 0;
   }
-  // Lexicographic order: a truncated double below another's is a smaller value (truncation is
-  // monotone); equal or missing doubles are compared exactly.
-  std::vector<std::size_t> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    for (int k = 0; k < 3; ++k) {
-      const auto& x = key[a][static_cast<std::size_t>(k)];
-      const auto& y = key[b][static_cast<std::size_t>(k)];
-      if (x && y && *x != *y) return *x < *y;
-      if (const int c = compare_exactly(h[a], h[b], k)) return c < 0;
+  const std::vector<std::size_t> order = canonical_order(key, [&](std::size_t i) -> const auto& { return h[i]; });
+  return ordered(kind, order, std::move(h), enclosures, zero, std::move(faces), nullptr);
+}
+
+LazyConvexSet3 LazyConvexSet3::from_truncated(ConvexKind3 kind, std::vector<TruncatedVertex> vertices,
+                                              std::vector<std::vector<std::size_t>> faces, HomogeneousMaker make) {
+  const std::size_t n = vertices.size();
+  std::vector<Enclosure3> enclosures(n);
+  std::vector<std::array<std::optional<double>, 3>> key(n);
+  std::vector<char> zero(n);
+  std::vector<std::array<mpz_class, 4>> h(n);  // W = 0: not made
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      const double t = vertices[i].truncated[k];
+      key[i][k] = t;
+      // enclose_quotient's enclosure of the exact coordinate: 0 exactly, else t ± 2u relative.
+      enclosures[i][k] = t == 0 ? Enclosure::exact(0) : Enclosure::relative(t, 2 * Enclosure::u);
     }
-    return false;
-  });
+    zero[i] = vertices[i].zero;
+  }
+  const std::vector<std::size_t> order =
+      canonical_order(key, [&](std::size_t i) -> const std::array<mpz_class, 4>& {
+        if (sgn(h[i][3]) == 0) positive_weight(h[i] = make(i));
+        return h[i];
+      });
+  HomogeneousMaker canonical = [make = std::move(make), order](std::size_t i) { return make(order[i]); };
+  return ordered(kind, order, std::move(h), enclosures, zero, std::move(faces), std::move(canonical));
+}
+
+// The set with its vertices in `order` (order[i]: the given index of canonical vertex i).
+LazyConvexSet3 LazyConvexSet3::ordered(ConvexKind3 kind, const std::vector<std::size_t>& order,
+                                       std::vector<std::array<mpz_class, 4>> h, const std::vector<Enclosure3>& enclosures,
+                                       const std::vector<char>& zero, std::vector<std::vector<std::size_t>> faces,
+                                       HomogeneousMaker make) {
+  const std::size_t n = order.size();
   LazyConvexSet3 out;
   State& s = *out.state_;
   s.kind = kind;
@@ -115,10 +164,11 @@ LazyConvexSet3 LazyConvexSet3::from_homogeneous(ConvexKind3 kind, std::vector<st
   for (std::size_t i = 0; i < n; ++i) {
     rank[order[i]] = i;
     s.enclosures.push_back(enclosures[order[i]]);
-    s.zero.push_back(sgn(h[order[i]][0]) == 0 && sgn(h[order[i]][1]) == 0 && sgn(h[order[i]][2]) == 0);
+    s.zero.push_back(zero[order[i]]);
     s.homogeneous.push_back(std::move(h[order[i]]));
   }
   s.exact.resize(n);
+  s.make = std::move(make);
   s.faces = internal::canonical_faces(kind, std::move(faces), rank);
   return out;
 }
@@ -134,7 +184,10 @@ const std::array<mpz_class, 4>& LazyConvexSet3::homogeneous(std::size_t i) const
   State& s = *state_;
   if (s.homogeneous.size() < s.exact.size()) s.homogeneous.resize(s.exact.size());  // built exact
   std::array<mpz_class, 4>& h = s.homogeneous[i];
-  if (sgn(h[3]) == 0) h = homogeneous_integers(*s.exact[i]);
+  if (sgn(h[3]) == 0) {
+    if (s.exact[i]) h = homogeneous_integers(*s.exact[i]);
+    else positive_weight(h = s.make(i));
+  }
   return h;
 }
 
@@ -142,7 +195,7 @@ const Point3& LazyConvexSet3::vertex(std::size_t i) const {
   State& s = *state_;
   std::optional<Point3>& v = s.exact[i];
   if (!v) {
-    const std::array<mpz_class, 4>& h = s.homogeneous[i];
+    const std::array<mpz_class, 4>& h = homogeneous(i);
     Point3 p{Rational(h[0], h[3]), Rational(h[1], h[3]), Rational(h[2], h[3])};
     p.x.canonicalize(), p.y.canonicalize(), p.z.canonicalize();
     v = std::move(p);

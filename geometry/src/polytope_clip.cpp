@@ -2,6 +2,7 @@
 #include "internal/polytope_clip.h"
 
 #include "internal/clip_filter.h"
+#include "internal/plane_meets.h"
 
 #include <gmcc/geometry/integers_over_lcm.h>
 #include <gmcc/geometry/point3_arithmetic.h>
@@ -88,6 +89,7 @@ class Clipper {
     std::vector<std::array<mpz_class, 4>> points;  // the points as (p·L, L)
     std::vector<std::array<int, 3>> signs;         // their channels' signs
     const std::vector<Point3>* source;             // the points as given
+    std::vector<std::optional<WidePlane>> wide;    // (p·L, L) as double-word enclosures, scaled
   };
 
  public:
@@ -109,7 +111,7 @@ class Clipper {
     std::size_t rows = 6;
     for (const ClipGroup& g : groups) rows += g.facets->planes.size() * g.points->size();
     filters_.reserve(rows);
-    for (const IntegerPlane3& p : box_) filters_.push_back(filter_of(p));
+    for (const IntegerPlane3& p : box_) filters_.push_back(filter_of(p)), box_wide_.push_back(wide_plane(p));
     // Row 6 + first + i·F + f of a group is (a_f ⊙ p_i)·x <= b_f (F its facets, `first` the
     // rows of the groups before it); its filter copy a~_f ⊙ p~_i, b~_f·2^-e.
     for (const ClipGroup& g : groups) {
@@ -237,6 +239,10 @@ class Clipper {
   // Point p's exact form and signs, and its rows' filter copies, one per facet of the group.
   void add_point(Group& group, const Point3& p) {
     group.points.push_back(homogeneous_integers(p));
+    {
+      const std::array<mpz_class, 4>& h = group.points.back();
+      group.wide.push_back(wide_plane(IntegerPlane3{{h[0], h[1], h[2]}, h[3]}));
+    }
     group.signs.push_back({sgn(p.x), sgn(p.y), sgn(p.z)});
     const ScaledPoint q = scaled_point(p);
     const ClipFacets& facets = *group.facets;
@@ -336,28 +342,8 @@ class Clipper {
   }
 
   std::array<mpz_class, 4> exact_homogeneous(const std::array<int, 3>& t) {
-    const IntegerPlane3 &p = plane(t[0]), &q = plane(t[1]), &r = plane(t[2]);
-    // c_qr = a_q × a_r etc.; W = a_p·c_qr, (X, Y, Z) = b_p c_qr + b_q c_rp + b_r c_pq. In place
-    // (mpz_mul, mpz_addmul, mpz_submul) into scratch kept across calls, so that only the four
-    // results are allocated, each once at its size.
-    auto cross = [](const IntegerPlane3& s, const IntegerPlane3& u, std::array<mpz_class, 3>& c) {
-      for (int k = 0; k < 3; ++k) {
-        const int i = (k + 1) % 3, j = (k + 2) % 3;
-        mpz_mul(c[k].get_mpz_t(), s.a[i].get_mpz_t(), u.a[j].get_mpz_t());
-        mpz_submul(c[k].get_mpz_t(), s.a[j].get_mpz_t(), u.a[i].get_mpz_t());
-      }
-    };
-    cross(q, r, cross_[0]), cross(r, p, cross_[1]), cross(p, q, cross_[2]);
-    std::array<mpz_class, 4>& h = homogeneous_;
-    for (int k = 0; k < 3; ++k) {
-      mpz_mul(h[k].get_mpz_t(), p.b.get_mpz_t(), cross_[0][k].get_mpz_t());
-      mpz_addmul(h[k].get_mpz_t(), q.b.get_mpz_t(), cross_[1][k].get_mpz_t());
-      mpz_addmul(h[k].get_mpz_t(), r.b.get_mpz_t(), cross_[2][k].get_mpz_t());
-    }
-    mpz_mul(h[3].get_mpz_t(), p.a[0].get_mpz_t(), cross_[0][0].get_mpz_t());
-    mpz_addmul(h[3].get_mpz_t(), p.a[1].get_mpz_t(), cross_[0][1].get_mpz_t());
-    mpz_addmul(h[3].get_mpz_t(), p.a[2].get_mpz_t(), cross_[0][2].get_mpz_t());
-    return h;
+    homogeneous_meet(plane(t[0]), plane(t[1]), plane(t[2]), cross_, homogeneous_);
+    return homogeneous_;
   }
 
   int add_vertex(const std::array<int, 3>& t) {
@@ -568,20 +554,94 @@ class Clipper {
     pack();
   }
 
-  LazyConvexSet3 result() {
-    std::vector<int> index(vertices_.size(), -1);
-    std::vector<std::array<mpz_class, 4>> points;
-    for (int v : live_) {
-      Vertex& x = vertices_[v];
-      if (!x.exact) x.exact = exact_homogeneous(x.planes);
-      index[v] = static_cast<int>(points.size());
-      points.push_back(std::move(*x.exact));
+  // Plane i's double-word copy: a box side's, or a row's from its facet's and point's (a copy:
+  // the next call may move the rows' copies).
+  std::optional<WidePlane> wide(int i) {
+    if (i < 6) return box_wide_[static_cast<std::size_t>(i)];
+    int& k = wide_index_[static_cast<std::size_t>(i)];
+    if (k < 0) {
+      k = static_cast<int>(wides_.size());
+      const RowOf r = row_of(static_cast<std::size_t>(i));
+      const std::optional<WidePlane>&f = r.group->facets->wide[r.facet], &q = r.group->wide[r.point];
+      wides_.push_back(f && q ? wide_row(*f, *q) : std::nullopt);
     }
+    return wides_[static_cast<std::size_t>(k)];
+  }
+
+  // Vertex v's truncated coordinates from its planes' double-word copies, when decided.
+  std::optional<LazyConvexSet3::TruncatedVertex> truncated(const Vertex& v) {
+    const std::optional<WidePlane> p = wide(v.planes[0]), q = wide(v.planes[1]), r = wide(v.planes[2]);
+    if (!p || !q || !r) return std::nullopt;
+    std::array<bool, 3> zero_axis{};  // on the box side x_k >= 0 (plane k): x_k = 0
+    for (int t : v.planes)
+      if (t < 3) zero_axis[static_cast<std::size_t>(t)] = true;
+    return truncated_meet(*p, *q, *r, zero_axis);
+  }
+
+  // The same from exact homogeneous coordinates (as LazyConvexSet3::from_homogeneous reads them:
+  // the truncated double of each X/W), when every non-zero coordinate is in the range policy's
+  // first range (|binary magnitude| <= limit − 1), else nothing.
+  static std::optional<LazyConvexSet3::TruncatedVertex> truncated(std::array<mpz_class, 4> h) {
+    if (sgn(h[3]) < 0)
+      for (mpz_class& c : h) c = -c;
+    LazyConvexSet3::TruncatedVertex out{{0, 0, 0}, true};
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (sgn(h[k]) == 0) continue;
+      out.zero = false;
+      if (std::labs(numerics::binary_magnitude(h[k].get_mpz_t(), h[3].get_mpz_t())) > numerics::double_magnitude_limit - 1)
+        return std::nullopt;
+      const Rational q(h[k], h[3]);  // unreduced: mpq_get_d truncates the quotient as it stands
+      out.truncated[k] = mpq_get_d(q.get_mpq_t());
+    }
+    return out;
+  }
+
+  // The polytope: vertices kept symbolic (plane triples, truncated coordinates from the planes'
+  // double-word copies), each made exact only when asked (plane_meets.h); a vertex whose
+  // truncation the copies leave undecided is made exact now. When one lies outside the range
+  // policy's first range, every vertex is made exact (from_homogeneous).
+  LazyConvexSet3 result() {
+    const std::size_t n = live_.size();
+    std::vector<int> index(vertices_.size(), -1);
+    for (std::size_t j = 0; j < n; ++j) index[static_cast<std::size_t>(live_[j])] = static_cast<int>(j);
     std::vector<std::vector<std::size_t>> faces;
     for (const Face& f : faces_) {
       std::vector<std::size_t> c;
-      for (int v : f.cycle) c.push_back(static_cast<std::size_t>(index[v]));
+      for (int v : f.cycle) c.push_back(static_cast<std::size_t>(index[static_cast<std::size_t>(v)]));
       faces.push_back(std::move(c));
+    }
+    wide_index_.assign(filters_.size(), -1);
+    auto meets = std::make_shared<PlaneMeets>();
+    meets->meets.resize(n), meets->made.resize(n);
+    std::vector<LazyConvexSet3::TruncatedVertex> vertices;
+    std::vector<int> local(filters_.size(), -1);
+    for (std::size_t j = 0; j < n; ++j) {
+      Vertex& x = vertices_[static_cast<std::size_t>(live_[j])];
+      std::optional<LazyConvexSet3::TruncatedVertex> t = x.filtered ? truncated(x) : std::nullopt;
+      if (t) {
+        for (std::size_t k = 0; k < 3; ++k) {
+          int& l = local[static_cast<std::size_t>(x.planes[k])];
+          if (l < 0) l = static_cast<int>(meets->planes.size()), meets->planes.push_back(plane(x.planes[k]));
+          meets->meets[j][k] = l;
+        }
+      } else {
+        if (!x.exact) x.exact = exact_homogeneous(x.planes);
+        if (!(t = truncated(*x.exact))) return exact_result(std::move(faces));
+        meets->made[j] = *x.exact;
+      }
+      vertices.push_back(*t);
+    }
+    return LazyConvexSet3::from_truncated(ConvexKind3::polytope, std::move(vertices), std::move(faces),
+                                          [meets](std::size_t i) { return meets->homogeneous(i); });
+  }
+
+  // The polytope with every vertex exact (faces indexed by position in live_).
+  LazyConvexSet3 exact_result(std::vector<std::vector<std::size_t>> faces) {
+    std::vector<std::array<mpz_class, 4>> points;
+    for (int v : live_) {
+      Vertex& x = vertices_[static_cast<std::size_t>(v)];
+      if (!x.exact) x.exact = exact_homogeneous(x.planes);
+      points.push_back(*x.exact);
     }
     return LazyConvexSet3::from_homogeneous(ConvexKind3::polytope, std::move(points), std::move(faces));
   }
@@ -623,6 +683,9 @@ class Clipper {
   std::vector<std::size_t> order_;  // the rows, in clipping order
   std::vector<int> sign_;
   std::array<std::array<mpz_class, 3>, 3> cross_;  // scratch for exact_homogeneous
+  std::vector<std::optional<WidePlane>> box_wide_;    // the box sides' double-word copies
+  std::vector<int> wide_index_;                        // wide(): each row's index in wides_, or -1
+  std::vector<std::optional<WidePlane>> wides_;        // wide(): the rows' copies made so far
   std::array<mpz_class, 4> homogeneous_;           // scratch for exact_homogeneous
   mpz_class side_;                                  // scratch for side
 };
@@ -654,6 +717,7 @@ ClipFacets clip_facets(std::vector<IntegerPlane3> planes) {
     const Filter f = filter_of(p);
     out.filters.push_back({f.c[0], f.c[1], f.c[2], f.c[3]});
     out.usable.push_back(f.usable);
+    out.wide.push_back(wide_plane(p));
   }
   out.planes = std::move(planes);
   return out;

@@ -5,6 +5,7 @@
 // Internal to gmcc::geometry.
 
 #include <gmcc/geometry/lazy_convex_set_3.h>
+#include <gmcc/numerics/dw_enclosure.h>
 
 #include <gmpxx.h>
 
@@ -19,6 +20,11 @@ struct IntegerPlane3 {
   mpz_class a[3];
   mpz_class b;
 };
+
+// A plane a·x <= b as double-word enclosures of a_k·2^-E and b·2^-E (E its largest coefficient's
+// bit length: a positive scaling, the same plane): what the final vertices' truncated coordinates
+// are decided from (internal/plane_meets.h).
+using WidePlane = std::array<numerics::DWEnclosure, 4>;
 
 // How many sign decisions each stage settled (the double filter, else exact integers).
 struct ClipCounts {
@@ -48,6 +54,7 @@ struct ClipFacets {
   std::vector<IntegerPlane3> planes;
   std::vector<std::array<double, 4>> filters;  // a0, a1, a2, b scaled; valid where usable
   std::vector<char> usable;
+  std::vector<std::optional<WidePlane>> wide;  // double-word copies (plane_meets.h), where in range
 };
 ClipFacets clip_facets(std::vector<IntegerPlane3> planes);
 

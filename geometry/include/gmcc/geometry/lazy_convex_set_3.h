@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -42,6 +43,27 @@ class LazyConvexSet3 {
   /// reduced to lowest terms. O(n log n) comparisons for n vertices.
   static LazyConvexSet3 from_homogeneous(ConvexKind3 kind, std::vector<std::array<mpz_class, 4>> homogeneous,
                                          std::vector<std::vector<std::size_t>> faces);
+
+  /// Makes vertex i's homogeneous integer coordinates (X, Y, Z, W), W ≠ 0, on request (i indexes
+  /// the vertices as given to from_truncated).
+  using HomogeneousMaker = std::function<std::array<mpz_class, 4>(std::size_t)>;
+  /// A vertex for from_truncated: known by its coordinates' truncated doubles, its homogeneous
+  /// coordinates made only when asked.
+  struct TruncatedVertex {
+    /// Each coordinate x truncated toward zero to a double (what mpq_get_d gives for x), every
+    /// non-zero one within 2^±136 in magnitude (the range policy's own range, so its enclosure is
+    /// that double ± 2u relative: numerics/rational_to_float.h).
+    std::array<double, 3> truncated;
+    bool zero;  ///< whether the vertex is the origin (0, 0, 0)
+  };
+  /// A set from vertices known by their truncated coordinates (F3 kept symbolic: docs/math.md
+  /// §1b "The lazy form"), the homogeneous coordinates of vertex i made by make(i) only when an
+  /// exact stage asks (homogeneous(), vertex(), or a tie in the vertex order). The same set,
+  /// order, faces and enclosures as from_homogeneous of all the vertices made: the enclosures
+  /// come from the truncated doubles exactly as from the exact coordinates, and the order
+  /// compares those doubles (truncation is monotone) and, on a tie, the made coordinates.
+  static LazyConvexSet3 from_truncated(ConvexKind3 kind, std::vector<TruncatedVertex> vertices,
+                                       std::vector<std::vector<std::size_t>> faces, HomogeneousMaker make);
 
   /// Its dimension, as ConvexSet3::kind.
   ConvexKind3 kind() const;
@@ -76,6 +98,11 @@ class LazyConvexSet3 {
  private:
   struct State;
   std::shared_ptr<State> state_;
+  // The set with the vertices given in `order` (canonical vertex i is given vertex order[i]).
+  static LazyConvexSet3 ordered(ConvexKind3 kind, const std::vector<std::size_t>& order,
+                                std::vector<std::array<mpz_class, 4>> homogeneous,
+                                const std::vector<Enclosure3>& enclosures, const std::vector<char>& zero,
+                                std::vector<std::vector<std::size_t>> faces, HomogeneousMaker make);
 };
 
 /// True iff p lies in the closed set, exactly: contains(set.exact(), p), with a polytope's
