@@ -235,7 +235,9 @@ const std::vector<LazyParts>& lazy_feasible_sets() {
 // outside the timing.
 void crule_3d_lazy_selections(benchmark::State& state) {
   const std::vector<LazyParts>& sets = lazy_feasible_sets();
-  std::size_t i = 0;
+  const auto& stages = internal::max_volume_stage_counts();
+  const std::uint64_t filter0 = stages[0], exact0 = internal::certified_centroid_stage_counts()[1];
+  std::size_t i = 0, made = 0;
   for (auto _ : state) {
     state.PauseTiming();
     const LazyParts& p = sets[i++ % sets.size()];
@@ -243,7 +245,13 @@ void crule_3d_lazy_selections(benchmark::State& state) {
     state.ResumeTiming();
     benchmark::DoNotOptimize(with_worst_case(F, max_volume(F)));
     benchmark::DoNotOptimize(with_worst_case(F, centroid_3(F, Crule3dRoute::certified)));
+    made += F.exact_vertices();
   }
+  const auto per_scene = [&](double x) { return benchmark::Counter(x, benchmark::Counter::kAvgIterations); };
+  state.counters["exact_vertices"] = per_scene(static_cast<double>(made));
+  state.counters["mv_filter_share"] = per_scene(static_cast<double>(stages[0] - filter0));
+  state.counters["centroid_exact_share"] =
+      per_scene(static_cast<double>(internal::certified_centroid_stage_counts()[1] - exact0));
 }
 // The scenes' non-empty F3s, built once.
 const std::vector<ConvexSet3>& feasible_sets() {

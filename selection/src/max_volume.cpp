@@ -199,9 +199,9 @@ double hull_bound(const std::vector<E3>& e, const Indices& points) {
 
 // A facet's stationary point d = k/(3n) (docs/derivations.md §2.4) as the filter sees it, not yet
 // placed against the other facets; nothing when it is certainly no candidate (some k·n_k <= 0).
-std::optional<Seen> face_candidate(const std::vector<E3>& e, const std::vector<std::size_t>& f,
-                                   const EnclosedPlane& h, std::size_t index, E3& point) {
-  const Seen unplaced{Slot::face, index, 0, hull_bound(e, f), Known::bound_only};
+// `bound` is hull_bound over the facet's vertices.
+std::optional<Seen> face_candidate(const EnclosedPlane& h, std::size_t index, double bound, E3& point) {
+  const Seen unplaced{Slot::face, index, 0, bound, Known::bound_only};
   const Enclosure* c[4] = {&h.n[0], &h.n[1], &h.n[2], &h.k};
   for (const Enclosure* x : c)
     if (!certainly_nonzero(*x)) return unplaced;
@@ -227,29 +227,45 @@ int placed(const std::vector<EnclosedPlane>& planes, std::size_t self, const E3&
 }
 
 // An edge p + t·u's roots of f'(t) = a t² + b t + c in (0, 1) as the filter sees them (see
-// candidates()): each root certainly inside, or else one bound_only entry for the whole edge.
-std::vector<Seen> edge_candidates(const std::vector<E3>& e, std::size_t index, std::size_t i, std::size_t j) {
+// candidates()), appended to `seen`: each root certainly inside, or else one bound_only entry for
+// the whole edge, whose upper end is `bound`, hull_bound over the edge's ends.
+void edge_candidates(const std::vector<E3>& e, std::size_t index, std::size_t i, std::size_t j, double bound,
+                     std::vector<Seen>& seen) {
   const E3& p = e[i];
   const E3 u = e[j] - p;
   const auto [a, b, c, disc] = edge_derivative(p, u);
   const Enclosure two = Enclosure::exact(2);
-  const std::vector<Seen> unplaced{{Slot::edge, index, 0, hull_bound(e, std::array<std::size_t, 2>{i, j}), Known::bound_only}};
-  if (!certainly_nonzero(a) || !disc.finite()) return unplaced;
-  if (certainly_negative(disc)) return {};  // no real root
-  if (!certainly_positive(disc)) return unplaced;
-  std::vector<Seen> out;
+  const Seen unplaced{Slot::edge, index, 0, bound, Known::bound_only};
+  if (!certainly_nonzero(a) || !disc.finite()) return seen.push_back(unplaced);
+  if (certainly_negative(disc)) return;  // no real root
+  if (!certainly_positive(disc)) return seen.push_back(unplaced);
+  std::array<Seen, 2> roots;
+  std::size_t found = 0;
   const Enclosure root = sqrt(disc), one = Enclosure::exact(1);
   for (const Enclosure& t : {(-b + root) / (two * a), (-b - root) / (two * a)}) {
-    if (!t.finite() || !certainly_nonzero(t)) return unplaced;  // t at 0 unsure
+    if (!t.finite() || !certainly_nonzero(t)) return seen.push_back(unplaced);  // t at 0 unsure
     if (certainly_negative(t)) continue;
     const Enclosure beyond = t - one;
     if (certainly_positive(beyond)) continue;
-    if (!certainly_negative(beyond)) return unplaced;  // t at 1 unsure
+    if (!certainly_negative(beyond)) return seen.push_back(unplaced);  // t at 1 unsure
     const Enclosure value = product({p[0] + t * u[0], p[1] + t * u[1], p[2] + t * u[2]});
-    if (!value.finite()) return unplaced;
-    out.push_back({Slot::edge, index, value.lo(), value.hi(), Known::in_f3});
+    if (!value.finite()) return seen.push_back(unplaced);
+    roots[found++] = {Slot::edge, index, value.lo(), value.hi(), Known::in_f3};
   }
-  return out;
+  seen.insert(seen.end(), roots.begin(), roots.begin() + static_cast<std::ptrdiff_t>(found));
+}
+
+// A polytope's edges, each (smaller index, larger), sorted, as edges_of gives them: its facets
+// are oriented consistently (counter-clockwise seen from outside), so each edge is walked once in
+// each direction, and the walks from the smaller index are each edge once.
+std::vector<std::pair<std::size_t, std::size_t>> polytope_edges(const LazyConvexSet3& F) {
+  std::vector<std::pair<std::size_t, std::size_t>> edges;
+  edges.reserve(F.size() + F.faces().size());  // Euler: E = V + F − 2
+  for (const auto& f : F.faces())
+    for (std::size_t i = 0; i < f.size(); ++i)
+      if (f[i] < f[(i + 1) % f.size()]) edges.push_back({f[i], f[(i + 1) % f.size()]});
+  std::sort(edges.begin(), edges.end());
+  return edges;
 }
 
 // F's edges, each (smaller index, larger), sorted.
@@ -293,7 +309,12 @@ std::optional<MaxVolumeCandidates> max_volume_contenders(const LazyConvexSet3& F
   const std::vector<E3>& e = F.enclosures();
   for (const E3& x : e)
     if (!finite(x)) return std::nullopt;
+  // A candidate whose hull bound (the facet's or edge's) is below a value certainly attained
+  // cannot be the maximiser and is passed over before its enclosed arithmetic: its value lies
+  // in [lower, upper] and below the hull bound, so it could neither raise `best` (lower < best)
+  // nor be needed.
   std::vector<Seen> seen;
+  seen.reserve(e.size() + 16);
   double best = -std::numeric_limits<double>::infinity();  // the largest value certainly attained
   for (std::size_t i = 0; i < e.size(); ++i) {
     const Enclosure value = product(e[i]);
@@ -301,27 +322,34 @@ std::optional<MaxVolumeCandidates> max_volume_contenders(const LazyConvexSet3& F
     seen.push_back({Slot::vertex, i, value.lo(), value.hi(), Known::in_f3});
     best = std::max(best, value.lo());
   }
-  const auto edges = edges_of(F);
-  for (std::size_t k = 0; k < edges.size(); ++k)
-    for (const Seen& s : edge_candidates(e, k, edges[k].first, edges[k].second)) {
-      if (s.known == Known::in_f3) best = std::max(best, s.lower);
-      seen.push_back(s);
-    }
-  // Facets: the outward planes, then each stationary point whose value could win, placed.
-  std::vector<EnclosedPlane> planes;
-  for (const auto& f : F.faces()) planes.push_back(enclosed_facet_plane(e, f));
+  const auto edges = polytope_edges(F);
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    const double bound = hull_bound(e, std::array<std::size_t, 2>{edges[k].first, edges[k].second});
+    if (bound < best) continue;
+    const std::size_t first = seen.size();
+    edge_candidates(e, k, edges[k].first, edges[k].second, bound, seen);
+    for (std::size_t s = first; s < seen.size(); ++s)
+      if (seen[s].known == Known::in_f3) best = std::max(best, seen[s].lower);
+  }
+  // Facets: each stationary point whose value could win, then placed against the outward planes
+  // (all made at the first placement).
   std::vector<std::pair<Seen, E3>> faces;
   for (std::size_t f = 0; f < F.faces().size(); ++f) {
+    const double bound = hull_bound(e, F.faces()[f]);
+    if (bound < best) continue;
     E3 point{};
-    const std::optional<Seen> s = face_candidate(e, F.faces()[f], planes[f], f, point);
+    const std::optional<Seen> s = face_candidate(enclosed_facet_plane(e, F.faces()[f]), f, bound, point);
     if (s && s->upper >= best) faces.push_back({*s, point});
   }
+  std::vector<EnclosedPlane> planes;
   for (auto& [s, point] : faces) {  // `best` grows as facets are placed
     if (s.upper < best) continue;
     if (s.known == Known::bound_only) {  // the exact stage decides
       seen.push_back(s);
       continue;
     }
+    if (planes.empty())
+      for (const auto& f : F.faces()) planes.push_back(enclosed_facet_plane(e, f));
     const int where = placed(planes, s.index, point);
     if (where < 0) continue;
     if (where == 0) s.known = Known::in_f3, best = std::max(best, s.lower);
