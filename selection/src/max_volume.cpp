@@ -186,14 +186,24 @@ struct Seen {
   Known known;
 };
 
+// Every vertex's largest |d_k| (certain upper ends), for hull_bound.
+using Magnitudes = std::vector<std::array<double, 3>>;
+Magnitudes magnitudes(const std::vector<E3>& e) {
+  Magnitudes m(e.size());
+  for (std::size_t i = 0; i < e.size(); ++i)
+    for (std::size_t k = 0; k < 3; ++k) m[i][k] = magnitude(e[i][k]);
+  return m;
+}
+
 // An upper end of d1·d2·d3 on the convex hull of `points`: each |d_k| is at most its largest |d_k|
-// there. For a candidate the filter cannot place.
+// there (|·| is convex). For a candidate the filter cannot place, and a cap on the value of any
+// candidate on that hull (a facet's stationary point in F lies in the facet, an edge's root on the
+// edge).
 template <class Indices>
-double hull_bound(const std::vector<E3>& e, const Indices& points) {
+double hull_bound(const Magnitudes& mag, const Indices& points) {
   double m[3] = {0, 0, 0};
-  for (std::size_t i : points) {
-    for (int k = 0; k < 3; ++k) m[k] = std::max(m[k], magnitude(e[i][static_cast<std::size_t>(k)]));
-  }
+  for (std::size_t i : points)
+    for (std::size_t k = 0; k < 3; ++k) m[k] = std::max(m[k], mag[i][k]);
   return Enclosure::round_up(m[0] * m[1] * m[2]);
 }
 
@@ -211,7 +221,7 @@ std::optional<Seen> face_candidate(const EnclosedPlane& h, std::size_t index, do
   point = {h.k / (three * h.n[0]), h.k / (three * h.n[1]), h.k / (three * h.n[2])};
   const Enclosure value = product(point);
   if (!value.finite()) return unplaced;
-  return Seen{Slot::face, index, value.lo(), value.hi(), Known::maybe_in_f3};
+  return Seen{Slot::face, index, value.lo(), std::min(value.hi(), bound), Known::maybe_in_f3};
 }
 
 // 0: the point is certainly inside every facet but `self`; -1: certainly outside one; 1: unsure.
@@ -250,22 +260,9 @@ void edge_candidates(const std::vector<E3>& e, std::size_t index, std::size_t i,
     if (!certainly_negative(beyond)) return seen.push_back(unplaced);  // t at 1 unsure
     const Enclosure value = product({p[0] + t * u[0], p[1] + t * u[1], p[2] + t * u[2]});
     if (!value.finite()) return seen.push_back(unplaced);
-    roots[found++] = {Slot::edge, index, value.lo(), value.hi(), Known::in_f3};
+    roots[found++] = {Slot::edge, index, value.lo(), std::min(value.hi(), bound), Known::in_f3};
   }
   seen.insert(seen.end(), roots.begin(), roots.begin() + static_cast<std::ptrdiff_t>(found));
-}
-
-// A polytope's edges, each (smaller index, larger), sorted, as edges_of gives them: its facets
-// are oriented consistently (counter-clockwise seen from outside), so each edge is walked once in
-// each direction, and the walks from the smaller index are each edge once.
-std::vector<std::pair<std::size_t, std::size_t>> polytope_edges(const LazyConvexSet3& F) {
-  std::vector<std::pair<std::size_t, std::size_t>> edges;
-  edges.reserve(F.size() + F.faces().size());  // Euler: E = V + F − 2
-  for (const auto& f : F.faces())
-    for (std::size_t i = 0; i < f.size(); ++i)
-      if (f[i] < f[(i + 1) % f.size()]) edges.push_back({f[i], f[(i + 1) % f.size()]});
-  std::sort(edges.begin(), edges.end());
-  return edges;
 }
 
 // F's edges, each (smaller index, larger), sorted.
@@ -313,6 +310,7 @@ std::optional<MaxVolumeCandidates> max_volume_contenders(const LazyConvexSet3& F
   // cannot be the maximiser and is passed over before its enclosed arithmetic: its value lies
   // in [lower, upper] and below the hull bound, so it could neither raise `best` (lower < best)
   // nor be needed.
+  const Magnitudes mag = magnitudes(e);
   std::vector<Seen> seen;
   seen.reserve(e.size() + 16);
   double best = -std::numeric_limits<double>::infinity();  // the largest value certainly attained
@@ -322,20 +320,27 @@ std::optional<MaxVolumeCandidates> max_volume_contenders(const LazyConvexSet3& F
     seen.push_back({Slot::vertex, i, value.lo(), value.hi(), Known::in_f3});
     best = std::max(best, value.lo());
   }
-  const auto edges = polytope_edges(F);
-  for (std::size_t k = 0; k < edges.size(); ++k) {
-    const double bound = hull_bound(e, std::array<std::size_t, 2>{edges[k].first, edges[k].second});
-    if (bound < best) continue;
-    const std::size_t first = seen.size();
-    edge_candidates(e, k, edges[k].first, edges[k].second, bound, seen);
-    for (std::size_t s = first; s < seen.size(); ++s)
-      if (seen[s].known == Known::in_f3) best = std::max(best, seen[s].lower);
-  }
+  // Edges: the facets are oriented consistently (counter-clockwise seen from outside), so each
+  // edge is walked once in each direction, and the walks from the smaller index are each edge
+  // once. `edges` holds the ones examined.
+  std::vector<std::pair<std::size_t, std::size_t>> edges;
+  for (const auto& f : F.faces())
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      const std::size_t a = f[i], b = f[(i + 1) % f.size()];
+      if (a > b) continue;
+      const double bound = hull_bound(mag, std::array<std::size_t, 2>{a, b});
+      if (bound < best) continue;
+      const std::size_t first = seen.size();
+      edges.push_back({a, b});
+      edge_candidates(e, edges.size() - 1, a, b, bound, seen);
+      for (std::size_t s = first; s < seen.size(); ++s)
+        if (seen[s].known == Known::in_f3) best = std::max(best, seen[s].lower);
+    }
   // Facets: each stationary point whose value could win, then placed against the outward planes
   // (all made at the first placement).
   std::vector<std::pair<Seen, E3>> faces;
   for (std::size_t f = 0; f < F.faces().size(); ++f) {
-    const double bound = hull_bound(e, F.faces()[f]);
+    const double bound = hull_bound(mag, F.faces()[f]);
     if (bound < best) continue;
     E3 point{};
     const std::optional<Seen> s = face_candidate(enclosed_facet_plane(e, F.faces()[f]), f, bound, point);
@@ -372,7 +377,8 @@ std::optional<MaxVolumeCandidates> max_volume_contenders(const LazyConvexSet3& F
     std::sort(list->begin(), list->end());
     list->erase(std::unique(list->begin(), list->end()), list->end());
   }
-  out.edges.erase(std::unique(out.edges.begin(), out.edges.end()), out.edges.end());  // in edges_of's order
+  std::sort(out.edges.begin(), out.edges.end());  // edges_of's order
+  out.edges.erase(std::unique(out.edges.begin(), out.edges.end()), out.edges.end());
   return out;
 }
 
