@@ -17,8 +17,6 @@ namespace gmcc {
 namespace {
 using internal::Interval;
 
-Rational product(const Point3& d) { return Rational(d.x * d.y * d.z); }
-
 // The exact square root of a non-negative rational, when it is rational.
 std::optional<Rational> rational_sqrt(const Rational& x) {
   if (!mpz_perfect_square_p(x.get_num_mpz_t()) || !mpz_perfect_square_p(x.get_den_mpz_t()))
@@ -90,18 +88,54 @@ auto edge_derivative(const P& p, const P& u) {
   return EdgeDerivative<T>{a, b, c, disc};
 }
 
+// A rational candidate and its value d1·d2·d3 = num/den (den > 0, not in lowest terms: values
+// are compared by cross-multiplication, without a gcd): vertex `vertex` of F, made exact only
+// where it is the answer or ties, or else (vertex == none) `point`.
+constexpr std::size_t none = static_cast<std::size_t>(-1);
+struct RationalCandidate {
+  std::size_t vertex = none;
+  Point3 point;
+  mpz_class num, den;
+};
+RationalCandidate point_candidate(Point3 p) {
+  RationalCandidate c{none, std::move(p), 1, 1};
+  for (int k = 0; k < 3; ++k) c.num *= coord(c.point, k).get_num(), c.den *= coord(c.point, k).get_den();
+  return c;
+}
+// From the homogeneous coordinates (X, Y, Z, W), W > 0: XYZ/W³; from the exact vertex where F was
+// made exact (its homogeneous form would cost a gcd).
+RationalCandidate vertex_candidate(const LazyConvexSet3& F, std::size_t i) {
+  if (F.exact_vertices() == F.size()) {
+    RationalCandidate c = point_candidate(F.vertex(i));
+    c.vertex = i;
+    return c;
+  }
+  const std::array<mpz_class, 4>& h = F.homogeneous(i);
+  return {i, {}, h[0] * h[1] * h[2], h[3] * h[3] * h[3]};
+}
+const Point3& where(const LazyConvexSet3& F, const RationalCandidate& c) {
+  return c.vertex == none ? c.point : F.vertex(c.vertex);
+}
+// a's value above b's, or equal and a lexicographically first (vertices: the canonical order is
+// the lexicographic one).
+bool better(const LazyConvexSet3& F, const RationalCandidate& a, const RationalCandidate& b) {
+  if (const int s = sgn(mpz_class(a.num * b.den - b.num * a.den))) return s > 0;
+  if (a.vertex != none && b.vertex != none) return a.vertex < b.vertex;
+  return where(F, a) < where(F, b);
+}
+
 // The candidates for the maximum of d1·d2·d3 on F among `which`: rational ones (vertices, facet
 // stationary points, rational edge roots) and the edges' irrational roots.
 struct Candidates {
-  std::vector<Point3> rational;
+  std::vector<RationalCandidate> rational;
   std::vector<EdgeRoot> irrational;
 };
 Candidates candidates(const LazyConvexSet3& F, const internal::MaxVolumeCandidates& which) {
   const auto v = [&F](std::size_t i) -> const Point3& { return F.vertex(i); };
   Candidates out;
-  std::vector<Point3>& rational = out.rational;
+  std::vector<RationalCandidate>& rational = out.rational;
   std::vector<EdgeRoot>& irrational = out.irrational;
-  for (std::size_t i : which.vertices) rational.push_back(v(i));
+  for (std::size_t i : which.vertices) rational.push_back(vertex_candidate(F, i));
   for (std::size_t face : which.faces) {  // polytope facets, or the polygon
     // The stationary point d = k/(3n) of the facet's plane n·x = k (any nonzero multiple of it:
     // the same d and signs), in integers.
@@ -110,7 +144,7 @@ Candidates candidates(const LazyConvexSet3& F, const internal::MaxVolumeCandidat
     if (sgn(k) * sgn(n[0]) <= 0 || sgn(k) * sgn(n[1]) <= 0 || sgn(k) * sgn(n[2]) <= 0) continue;
     Point3 d{Rational(k, 3 * n[0]), Rational(k, 3 * n[1]), Rational(k, 3 * n[2])};
     d.x.canonicalize(), d.y.canonicalize(), d.z.canonicalize();
-    if (contains(F, d)) rational.push_back(d);
+    if (contains(F, d)) rational.push_back(point_candidate(std::move(d)));
   }
   for (const auto& [i, j] : which.edges) {
     const auto &hp = F.homogeneous(i), &hq = F.homogeneous(j);
@@ -118,7 +152,7 @@ Candidates candidates(const LazyConvexSet3& F, const internal::MaxVolumeCandidat
     for (std::size_t k = 0; k < 3; ++k) e.P[k] = hp[k] * hq[3], e.U[k] = hq[k] * hp[3] - e.P[k];
     const auto [a, b, c, disc] = edge_derivative(e.P, e.U);
     auto consider = [&](const Rational& t) {
-      if (sgn(t) > 0 && t < 1) rational.push_back(add(v(i), scale(sub(v(j), v(i)), t)));
+      if (sgn(t) > 0 && t < 1) rational.push_back(point_candidate(add(v(i), scale(sub(v(j), v(i)), t))));
     };
     if (sgn(a) == 0) {
       if (sgn(b) != 0) {
@@ -388,16 +422,14 @@ MapEstimate3 max_volume_over(const ConvexSet3& F, const MaxVolumeCandidates& whi
 
 MapEstimate3 max_volume_over(const LazyConvexSet3& F, const MaxVolumeCandidates& which) {
   Candidates c = candidates(F, which);
-  std::vector<Point3>& rational = c.rational;
+  const std::vector<RationalCandidate>& rational = c.rational;
   std::vector<EdgeRoot>& irrational = c.irrational;
 
   // The best rational candidate, exactly (ties: the lexicographically smallest).
-  Point3 best = rational.front();
-  Rational best_value = product(best);
-  for (const Point3& d : rational) {
-    const Rational value = product(d);
-    if (value > best_value || (value == best_value && d < best)) best = d, best_value = value;
-  }
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < rational.size(); ++i)
+    if (better(F, rational[i], rational[best])) best = i;
+  const Rational best_value(rational[best].num, rational[best].den);  // not in lowest terms
 
   // Irrational candidates: drop those outside (0, 1), then separate the winner.
   for (mpfr_prec_t bits = 128; !irrational.empty(); bits *= 2) {
@@ -432,7 +464,7 @@ MapEstimate3 max_volume_over(const LazyConvexSet3& F, const MaxVolumeCandidates&
       return edge_root_estimate(F, irrational[i], bits);
     }
   }
-  return exact_map_estimate_3("max_volume", best);
+  return exact_map_estimate_3("max_volume", where(F, rational[best]));
 }
 
 const StageCounts& max_volume_stage_counts() { return counts(); }
