@@ -299,6 +299,35 @@ void edge_candidates(const std::vector<E3>& e, std::size_t index, std::size_t i,
   seen.insert(seen.end(), roots.begin(), roots.begin() + static_cast<std::ptrdiff_t>(found));
 }
 
+// The facets' stationary points whose value could win (see max_volume_contenders), appended to
+// `seen`, each placed against the outward planes (all made at the first placement); `best` grows
+// as they are placed.
+void facet_candidates(const LazyConvexSet3& F, const Magnitudes& mag, double& best, std::vector<Seen>& seen) {
+  const std::vector<E3>& e = F.enclosures();
+  std::vector<std::pair<Seen, E3>> faces;
+  for (std::size_t f = 0; f < F.faces().size(); ++f) {
+    const double bound = hull_bound(mag, F.faces()[f]);
+    if (bound < best) continue;
+    E3 point{};
+    const std::optional<Seen> s = face_candidate(enclosed_facet_plane(e, F.faces()[f]), f, bound, point);
+    if (s && s->upper >= best) faces.push_back({*s, point});
+  }
+  std::vector<EnclosedPlane> planes;
+  for (auto& [s, point] : faces) {
+    if (s.upper < best) continue;
+    if (s.known == Known::bound_only) {  // the exact stage decides
+      seen.push_back(s);
+      continue;
+    }
+    if (planes.empty())
+      for (const auto& f : F.faces()) planes.push_back(enclosed_facet_plane(e, f));
+    const int where = placed(planes, s.index, point);
+    if (where < 0) continue;
+    if (where == 0) s.known = Known::in_f3, best = std::max(best, s.lower);
+    seen.push_back(s);
+  }
+}
+
 // F's edges, each (smaller index, larger), sorted.
 std::vector<std::pair<std::size_t, std::size_t>> edges_of(const LazyConvexSet3& F) {
   std::vector<std::pair<std::size_t, std::size_t>> edges;
@@ -370,30 +399,7 @@ std::optional<MaxVolumeCandidates> max_volume_contenders(const LazyConvexSet3& F
       for (std::size_t s = first; s < seen.size(); ++s)
         if (seen[s].known == Known::in_f3) best = std::max(best, seen[s].lower);
     }
-  // Facets: each stationary point whose value could win, then placed against the outward planes
-  // (all made at the first placement).
-  std::vector<std::pair<Seen, E3>> faces;
-  for (std::size_t f = 0; f < F.faces().size(); ++f) {
-    const double bound = hull_bound(mag, F.faces()[f]);
-    if (bound < best) continue;
-    E3 point{};
-    const std::optional<Seen> s = face_candidate(enclosed_facet_plane(e, F.faces()[f]), f, bound, point);
-    if (s && s->upper >= best) faces.push_back({*s, point});
-  }
-  std::vector<EnclosedPlane> planes;
-  for (auto& [s, point] : faces) {  // `best` grows as facets are placed
-    if (s.upper < best) continue;
-    if (s.known == Known::bound_only) {  // the exact stage decides
-      seen.push_back(s);
-      continue;
-    }
-    if (planes.empty())
-      for (const auto& f : F.faces()) planes.push_back(enclosed_facet_plane(e, f));
-    const int where = placed(planes, s.index, point);
-    if (where < 0) continue;
-    if (where == 0) s.known = Known::in_f3, best = std::max(best, s.lower);
-    seen.push_back(s);
-  }
+  facet_candidates(F, mag, best, seen);
   // The contenders: every candidate whose value may reach `best`, and a vertex for the exact
   // stage to start from.
   MaxVolumeCandidates out;
