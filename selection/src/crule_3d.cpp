@@ -15,26 +15,33 @@ namespace {
 // (m·v)²/|v|², which is cos²∠(m, v) times |m|², for v ≠ 0, in the kind of P: Point3 in ℚ (the
 // exact comparisons) or Enclosure3 (the filter). Written once, so the filter encloses exactly
 // what the exact stage compares.
+template <class P, class T>
+auto cos2_times_m2(const P& m, const P& v, const T& v2) {  // v2 = v·v
+  const auto mv = dot(m, v);
+  return decltype(mv)(mv * mv / v2);
+}
 template <class P>
 auto cos2_times_m2(const P& m, const P& v) {
-  const auto mv = dot(m, v);
-  return decltype(mv)(mv * mv / dot(v, v));
+  return cos2_times_m2(m, v, dot(v, v));
 }
 
 // The filter of worst_case_map_deg_3d: the non-zero vertices whose cos² to m (as −(m·v)²/|v|²,
 // cos² times −|m|², in double enclosures) may be the least, in vertex order.
 std::vector<std::size_t> worst_case_contenders(const LazyConvexSet3& F, const Point3& m) {
+  const std::vector<Enclosure3>& e = F.enclosures();
   std::vector<std::size_t> nonzero;
   std::vector<Enclosure> minus_cos2;
+  nonzero.reserve(e.size());
+  minus_cos2.reserve(e.size());
   const Enclosure3 em = enclose_point(m);
-  for (std::size_t i = 0; i < F.size(); ++i) {
+  for (std::size_t i = 0; i < e.size(); ++i) {
     if (F.is_zero(i)) continue;
     nonzero.push_back(i);
-    const Enclosure3& ev = F.enclosures()[i];
-    minus_cos2.push_back(certainly_positive(dot(ev, ev)) ? -cos2_times_m2(em, ev) : Enclosure{0, Enclosure::unbounded});
+    const Enclosure v2 = dot(e[i], e[i]);
+    minus_cos2.push_back(certainly_positive(v2) ? -cos2_times_m2(em, e[i], v2) : Enclosure{0, Enclosure::unbounded});
   }
-  std::vector<std::size_t> out;
-  for (std::size_t k : numerics::may_be_largest(minus_cos2)) out.push_back(nonzero[k]);
+  std::vector<std::size_t> out = numerics::may_be_largest(minus_cos2);
+  for (std::size_t& k : out) k = nonzero[k];
   return out;
 }
 

@@ -6,6 +6,8 @@
 #include <mpfr.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace gmcc {
 namespace internal {
@@ -19,12 +21,50 @@ double rounded(const Rational& q, mpfr_rnd_t rounding) {
   mpfr_clear(v);
   return d;
 }
+
+// num/den (den > 0, not necessarily coprime) rounded up to a double, as rounded() rounds the
+// same value: mpfr_set_q reads the numerator and denominator as they are, so the quotient need
+// not be in lowest terms.
+double rounded_up(const mpz_class& num, const mpz_class& den) {
+  mpq_t q;  // a read-only view of (num, den)
+  *mpq_numref(q) = *num.get_mpz_t();
+  *mpq_denref(q) = *den.get_mpz_t();
+  mpfr_t v;
+  mpfr_init2(v, 53);
+  mpfr_set_q(v, q, MPFR_RNDU);
+  const double d = mpfr_get_d(v, MPFR_RNDU);
+  mpfr_clear(v);
+  return d;
+}
 }  // namespace
 
+// Where the nearest double m·2^s (|m| < 2^53) is normal and its neighbours finite, q lies between
+// it and one neighbour: q − nearest = (n − m·2^s·d)/d, n/d = q, in integers (no gcd) gives its
+// sign, hence q rounded down and up (nearest and the neighbour on q's side, both nearest when q
+// is that double), and its magnitude rounded up is the bound. Elsewhere (zero, subnormal or
+// huge), each rounding by MPFR from the exact difference.
 RoundedComponent rounded_component(const Rational& q) {
   const double nearest = to_double_nearest(q);
-  return {nearest, rounded(Rational(abs(Rational(rational_from_double(nearest) - q))), MPFR_RNDU),
-          rounded(q, MPFR_RNDD), rounded(q, MPFR_RNDU)};
+  const double size = std::fabs(nearest);
+  if (!(size >= std::numeric_limits<double>::min() && size < std::numeric_limits<double>::max()))
+    return {nearest, rounded(Rational(abs(Rational(rational_from_double(nearest) - q))), MPFR_RNDU),
+            rounded(q, MPFR_RNDD), rounded(q, MPFR_RNDU)};
+  int e = 0;
+  const double m = std::ldexp(std::frexp(nearest, &e), 53);  // an integer: nearest = m·2^(e − 53)
+  const mpz_class mz(m);
+  mpz_class num = q.get_num(), den = q.get_den();
+  if (e >= 53) {
+    num -= mpz_class(mz * den) << static_cast<mp_bitcnt_t>(e - 53);
+  } else {
+    num <<= static_cast<mp_bitcnt_t>(53 - e);
+    num -= mz * den;
+    den <<= static_cast<mp_bitcnt_t>(53 - e);
+  }
+  const int side = sgn(num);  // of q − nearest
+  if (side == 0) return {nearest, 0, nearest, nearest};
+  const double beyond = std::nextafter(nearest, side > 0 ? std::numeric_limits<double>::infinity()
+                                                         : -std::numeric_limits<double>::infinity());
+  return {nearest, rounded_up(abs(num), den), side > 0 ? nearest : beyond, side > 0 ? beyond : nearest};
 }
 }  // namespace internal
 

@@ -17,8 +17,6 @@ namespace gmcc {
 namespace {
 using internal::Interval;
 
-Rational product(const Point3& d) { return Rational(d.x * d.y * d.z); }
-
 // The exact square root of a non-negative rational, when it is rational.
 std::optional<Rational> rational_sqrt(const Rational& x) {
   if (!mpz_perfect_square_p(x.get_num_mpz_t()) || !mpz_perfect_square_p(x.get_den_mpz_t()))
@@ -90,18 +88,54 @@ auto edge_derivative(const P& p, const P& u) {
   return EdgeDerivative<T>{a, b, c, disc};
 }
 
+// A rational candidate and its value d1·d2·d3 = num/den (den > 0, not in lowest terms: values
+// are compared by cross-multiplication, without a gcd): vertex `vertex` of F, made exact only
+// where it is the answer or ties, or else (vertex == none) `point`.
+constexpr std::size_t none = static_cast<std::size_t>(-1);
+struct RationalCandidate {
+  std::size_t vertex = none;
+  Point3 point;
+  mpz_class num, den;
+};
+RationalCandidate point_candidate(Point3 p) {
+  RationalCandidate c{none, std::move(p), 1, 1};
+  for (int k = 0; k < 3; ++k) c.num *= coord(c.point, k).get_num(), c.den *= coord(c.point, k).get_den();
+  return c;
+}
+// From the homogeneous coordinates (X, Y, Z, W), W > 0: XYZ/W³; from the exact vertex where F was
+// made exact (its homogeneous form would cost a gcd).
+RationalCandidate vertex_candidate(const LazyConvexSet3& F, std::size_t i) {
+  if (F.exact_vertices() == F.size()) {
+    RationalCandidate c = point_candidate(F.vertex(i));
+    c.vertex = i;
+    return c;
+  }
+  const std::array<mpz_class, 4>& h = F.homogeneous(i);
+  return {i, {}, h[0] * h[1] * h[2], h[3] * h[3] * h[3]};
+}
+const Point3& where(const LazyConvexSet3& F, const RationalCandidate& c) {
+  return c.vertex == none ? c.point : F.vertex(c.vertex);
+}
+// a's value above b's, or equal and a lexicographically first (vertices: the canonical order is
+// the lexicographic one).
+bool better(const LazyConvexSet3& F, const RationalCandidate& a, const RationalCandidate& b) {
+  if (const int s = sgn(mpz_class(a.num * b.den - b.num * a.den))) return s > 0;
+  if (a.vertex != none && b.vertex != none) return a.vertex < b.vertex;
+  return where(F, a) < where(F, b);
+}
+
 // The candidates for the maximum of d1·d2·d3 on F among `which`: rational ones (vertices, facet
 // stationary points, rational edge roots) and the edges' irrational roots.
 struct Candidates {
-  std::vector<Point3> rational;
+  std::vector<RationalCandidate> rational;
   std::vector<EdgeRoot> irrational;
 };
 Candidates candidates(const LazyConvexSet3& F, const internal::MaxVolumeCandidates& which) {
   const auto v = [&F](std::size_t i) -> const Point3& { return F.vertex(i); };
   Candidates out;
-  std::vector<Point3>& rational = out.rational;
+  std::vector<RationalCandidate>& rational = out.rational;
   std::vector<EdgeRoot>& irrational = out.irrational;
-  for (std::size_t i : which.vertices) rational.push_back(v(i));
+  for (std::size_t i : which.vertices) rational.push_back(vertex_candidate(F, i));
   for (std::size_t face : which.faces) {  // polytope facets, or the polygon
     // The stationary point d = k/(3n) of the facet's plane n·x = k (any nonzero multiple of it:
     // the same d and signs), in integers.
@@ -110,7 +144,7 @@ Candidates candidates(const LazyConvexSet3& F, const internal::MaxVolumeCandidat
     if (sgn(k) * sgn(n[0]) <= 0 || sgn(k) * sgn(n[1]) <= 0 || sgn(k) * sgn(n[2]) <= 0) continue;
     Point3 d{Rational(k, 3 * n[0]), Rational(k, 3 * n[1]), Rational(k, 3 * n[2])};
     d.x.canonicalize(), d.y.canonicalize(), d.z.canonicalize();
-    if (contains(F, d)) rational.push_back(d);
+    if (contains(F, d)) rational.push_back(point_candidate(std::move(d)));
   }
   for (const auto& [i, j] : which.edges) {
     const auto &hp = F.homogeneous(i), &hq = F.homogeneous(j);
@@ -118,7 +152,7 @@ Candidates candidates(const LazyConvexSet3& F, const internal::MaxVolumeCandidat
     for (std::size_t k = 0; k < 3; ++k) e.P[k] = hp[k] * hq[3], e.U[k] = hq[k] * hp[3] - e.P[k];
     const auto [a, b, c, disc] = edge_derivative(e.P, e.U);
     auto consider = [&](const Rational& t) {
-      if (sgn(t) > 0 && t < 1) rational.push_back(add(v(i), scale(sub(v(j), v(i)), t)));
+      if (sgn(t) > 0 && t < 1) rational.push_back(point_candidate(add(v(i), scale(sub(v(j), v(i)), t))));
     };
     if (sgn(a) == 0) {
       if (sgn(b) != 0) {
@@ -186,22 +220,32 @@ struct Seen {
   Known known;
 };
 
+// Every vertex's largest |d_k| (certain upper ends), for hull_bound.
+using Magnitudes = std::vector<std::array<double, 3>>;
+Magnitudes magnitudes(const std::vector<E3>& e) {
+  Magnitudes m(e.size());
+  for (std::size_t i = 0; i < e.size(); ++i)
+    for (std::size_t k = 0; k < 3; ++k) m[i][k] = magnitude(e[i][k]);
+  return m;
+}
+
 // An upper end of d1·d2·d3 on the convex hull of `points`: each |d_k| is at most its largest |d_k|
-// there. For a candidate the filter cannot place.
+// there (|·| is convex). For a candidate the filter cannot place, and a cap on the value of any
+// candidate on that hull (a facet's stationary point in F lies in the facet, an edge's root on the
+// edge).
 template <class Indices>
-double hull_bound(const std::vector<E3>& e, const Indices& points) {
+double hull_bound(const Magnitudes& mag, const Indices& points) {
   double m[3] = {0, 0, 0};
-  for (std::size_t i : points) {
-    for (int k = 0; k < 3; ++k) m[k] = std::max(m[k], magnitude(e[i][static_cast<std::size_t>(k)]));
-  }
+  for (std::size_t i : points)
+    for (std::size_t k = 0; k < 3; ++k) m[k] = std::max(m[k], mag[i][k]);
   return Enclosure::round_up(m[0] * m[1] * m[2]);
 }
 
 // A facet's stationary point d = k/(3n) (docs/derivations.md §2.4) as the filter sees it, not yet
 // placed against the other facets; nothing when it is certainly no candidate (some k·n_k <= 0).
-std::optional<Seen> face_candidate(const std::vector<E3>& e, const std::vector<std::size_t>& f,
-                                   const EnclosedPlane& h, std::size_t index, E3& point) {
-  const Seen unplaced{Slot::face, index, 0, hull_bound(e, f), Known::bound_only};
+// `bound` is hull_bound over the facet's vertices.
+std::optional<Seen> face_candidate(const EnclosedPlane& h, std::size_t index, double bound, E3& point) {
+  const Seen unplaced{Slot::face, index, 0, bound, Known::bound_only};
   const Enclosure* c[4] = {&h.n[0], &h.n[1], &h.n[2], &h.k};
   for (const Enclosure* x : c)
     if (!certainly_nonzero(*x)) return unplaced;
@@ -211,7 +255,7 @@ std::optional<Seen> face_candidate(const std::vector<E3>& e, const std::vector<s
   point = {h.k / (three * h.n[0]), h.k / (three * h.n[1]), h.k / (three * h.n[2])};
   const Enclosure value = product(point);
   if (!value.finite()) return unplaced;
-  return Seen{Slot::face, index, value.lo(), value.hi(), Known::maybe_in_f3};
+  return Seen{Slot::face, index, value.lo(), std::min(value.hi(), bound), Known::maybe_in_f3};
 }
 
 // 0: the point is certainly inside every facet but `self`; -1: certainly outside one; 1: unsure.
@@ -227,29 +271,61 @@ int placed(const std::vector<EnclosedPlane>& planes, std::size_t self, const E3&
 }
 
 // An edge p + t·u's roots of f'(t) = a t² + b t + c in (0, 1) as the filter sees them (see
-// candidates()): each root certainly inside, or else one bound_only entry for the whole edge.
-std::vector<Seen> edge_candidates(const std::vector<E3>& e, std::size_t index, std::size_t i, std::size_t j) {
+// candidates()), appended to `seen`: each root certainly inside, or else one bound_only entry for
+// the whole edge, whose upper end is `bound`, hull_bound over the edge's ends.
+void edge_candidates(const std::vector<E3>& e, std::size_t index, std::size_t i, std::size_t j, double bound,
+                     std::vector<Seen>& seen) {
   const E3& p = e[i];
   const E3 u = e[j] - p;
   const auto [a, b, c, disc] = edge_derivative(p, u);
   const Enclosure two = Enclosure::exact(2);
-  const std::vector<Seen> unplaced{{Slot::edge, index, 0, hull_bound(e, std::array<std::size_t, 2>{i, j}), Known::bound_only}};
-  if (!certainly_nonzero(a) || !disc.finite()) return unplaced;
-  if (certainly_negative(disc)) return {};  // no real root
-  if (!certainly_positive(disc)) return unplaced;
-  std::vector<Seen> out;
+  const Seen unplaced{Slot::edge, index, 0, bound, Known::bound_only};
+  if (!certainly_nonzero(a) || !disc.finite()) return seen.push_back(unplaced);
+  if (certainly_negative(disc)) return;  // no real root
+  if (!certainly_positive(disc)) return seen.push_back(unplaced);
+  std::array<Seen, 2> roots;
+  std::size_t found = 0;
   const Enclosure root = sqrt(disc), one = Enclosure::exact(1);
   for (const Enclosure& t : {(-b + root) / (two * a), (-b - root) / (two * a)}) {
-    if (!t.finite() || !certainly_nonzero(t)) return unplaced;  // t at 0 unsure
+    if (!t.finite() || !certainly_nonzero(t)) return seen.push_back(unplaced);  // t at 0 unsure
     if (certainly_negative(t)) continue;
     const Enclosure beyond = t - one;
     if (certainly_positive(beyond)) continue;
-    if (!certainly_negative(beyond)) return unplaced;  // t at 1 unsure
+    if (!certainly_negative(beyond)) return seen.push_back(unplaced);  // t at 1 unsure
     const Enclosure value = product({p[0] + t * u[0], p[1] + t * u[1], p[2] + t * u[2]});
-    if (!value.finite()) return unplaced;
-    out.push_back({Slot::edge, index, value.lo(), value.hi(), Known::in_f3});
+    if (!value.finite()) return seen.push_back(unplaced);
+    roots[found++] = {Slot::edge, index, value.lo(), std::min(value.hi(), bound), Known::in_f3};
   }
-  return out;
+  seen.insert(seen.end(), roots.begin(), roots.begin() + static_cast<std::ptrdiff_t>(found));
+}
+
+// The facets' stationary points whose value could win (see max_volume_contenders), appended to
+// `seen`, each placed against the outward planes (all made at the first placement); `best` grows
+// as they are placed.
+void facet_candidates(const LazyConvexSet3& F, const Magnitudes& mag, double& best, std::vector<Seen>& seen) {
+  const std::vector<E3>& e = F.enclosures();
+  std::vector<std::pair<Seen, E3>> faces;
+  for (std::size_t f = 0; f < F.faces().size(); ++f) {
+    const double bound = hull_bound(mag, F.faces()[f]);
+    if (bound < best) continue;
+    E3 point{};
+    const std::optional<Seen> s = face_candidate(enclosed_facet_plane(e, F.faces()[f]), f, bound, point);
+    if (s && s->upper >= best) faces.push_back({*s, point});
+  }
+  std::vector<EnclosedPlane> planes;
+  for (auto& [s, point] : faces) {
+    if (s.upper < best) continue;
+    if (s.known == Known::bound_only) {  // the exact stage decides
+      seen.push_back(s);
+      continue;
+    }
+    if (planes.empty())
+      for (const auto& f : F.faces()) planes.push_back(enclosed_facet_plane(e, f));
+    const int where = placed(planes, s.index, point);
+    if (where < 0) continue;
+    if (where == 0) s.known = Known::in_f3, best = std::max(best, s.lower);
+    seen.push_back(s);
+  }
 }
 
 // F's edges, each (smaller index, larger), sorted.
@@ -293,7 +369,13 @@ std::optional<MaxVolumeCandidates> max_volume_contenders(const LazyConvexSet3& F
   const std::vector<E3>& e = F.enclosures();
   for (const E3& x : e)
     if (!finite(x)) return std::nullopt;
+  // A candidate whose hull bound (the facet's or edge's) is below a value certainly attained
+  // cannot be the maximiser and is passed over before its enclosed arithmetic: its value lies
+  // in [lower, upper] and below the hull bound, so it could neither raise `best` (lower < best)
+  // nor be needed.
+  const Magnitudes mag = magnitudes(e);
   std::vector<Seen> seen;
+  seen.reserve(e.size() + 16);
   double best = -std::numeric_limits<double>::infinity();  // the largest value certainly attained
   for (std::size_t i = 0; i < e.size(); ++i) {
     const Enclosure value = product(e[i]);
@@ -301,32 +383,23 @@ std::optional<MaxVolumeCandidates> max_volume_contenders(const LazyConvexSet3& F
     seen.push_back({Slot::vertex, i, value.lo(), value.hi(), Known::in_f3});
     best = std::max(best, value.lo());
   }
-  const auto edges = edges_of(F);
-  for (std::size_t k = 0; k < edges.size(); ++k)
-    for (const Seen& s : edge_candidates(e, k, edges[k].first, edges[k].second)) {
-      if (s.known == Known::in_f3) best = std::max(best, s.lower);
-      seen.push_back(s);
+  // Edges: the facets are oriented consistently (counter-clockwise seen from outside), so each
+  // edge is walked once in each direction, and the walks from the smaller index are each edge
+  // once. `edges` holds the ones examined.
+  std::vector<std::pair<std::size_t, std::size_t>> edges;
+  for (const auto& f : F.faces())
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      const std::size_t a = f[i], b = f[(i + 1) % f.size()];
+      if (a > b) continue;
+      const double bound = hull_bound(mag, std::array<std::size_t, 2>{a, b});
+      if (bound < best) continue;
+      const std::size_t first = seen.size();
+      edges.push_back({a, b});
+      edge_candidates(e, edges.size() - 1, a, b, bound, seen);
+      for (std::size_t s = first; s < seen.size(); ++s)
+        if (seen[s].known == Known::in_f3) best = std::max(best, seen[s].lower);
     }
-  // Facets: the outward planes, then each stationary point whose value could win, placed.
-  std::vector<EnclosedPlane> planes;
-  for (const auto& f : F.faces()) planes.push_back(enclosed_facet_plane(e, f));
-  std::vector<std::pair<Seen, E3>> faces;
-  for (std::size_t f = 0; f < F.faces().size(); ++f) {
-    E3 point{};
-    const std::optional<Seen> s = face_candidate(e, F.faces()[f], planes[f], f, point);
-    if (s && s->upper >= best) faces.push_back({*s, point});
-  }
-  for (auto& [s, point] : faces) {  // `best` grows as facets are placed
-    if (s.upper < best) continue;
-    if (s.known == Known::bound_only) {  // the exact stage decides
-      seen.push_back(s);
-      continue;
-    }
-    const int where = placed(planes, s.index, point);
-    if (where < 0) continue;
-    if (where == 0) s.known = Known::in_f3, best = std::max(best, s.lower);
-    seen.push_back(s);
-  }
+  facet_candidates(F, mag, best, seen);
   // The contenders: every candidate whose value may reach `best`, and a vertex for the exact
   // stage to start from.
   MaxVolumeCandidates out;
@@ -344,7 +417,8 @@ std::optional<MaxVolumeCandidates> max_volume_contenders(const LazyConvexSet3& F
     std::sort(list->begin(), list->end());
     list->erase(std::unique(list->begin(), list->end()), list->end());
   }
-  out.edges.erase(std::unique(out.edges.begin(), out.edges.end()), out.edges.end());  // in edges_of's order
+  std::sort(out.edges.begin(), out.edges.end());  // edges_of's order
+  out.edges.erase(std::unique(out.edges.begin(), out.edges.end()), out.edges.end());
   return out;
 }
 
@@ -354,16 +428,14 @@ MapEstimate3 max_volume_over(const ConvexSet3& F, const MaxVolumeCandidates& whi
 
 MapEstimate3 max_volume_over(const LazyConvexSet3& F, const MaxVolumeCandidates& which) {
   Candidates c = candidates(F, which);
-  std::vector<Point3>& rational = c.rational;
+  const std::vector<RationalCandidate>& rational = c.rational;
   std::vector<EdgeRoot>& irrational = c.irrational;
 
   // The best rational candidate, exactly (ties: the lexicographically smallest).
-  Point3 best = rational.front();
-  Rational best_value = product(best);
-  for (const Point3& d : rational) {
-    const Rational value = product(d);
-    if (value > best_value || (value == best_value && d < best)) best = d, best_value = value;
-  }
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < rational.size(); ++i)
+    if (better(F, rational[i], rational[best])) best = i;
+  const Rational best_value(rational[best].num, rational[best].den);  // not in lowest terms
 
   // Irrational candidates: drop those outside (0, 1), then separate the winner.
   for (mpfr_prec_t bits = 128; !irrational.empty(); bits *= 2) {
@@ -398,7 +470,7 @@ MapEstimate3 max_volume_over(const LazyConvexSet3& F, const MaxVolumeCandidates&
       return edge_root_estimate(F, irrational[i], bits);
     }
   }
-  return exact_map_estimate_3("max_volume", best);
+  return exact_map_estimate_3("max_volume", where(F, rational[best]));
 }
 
 const StageCounts& max_volume_stage_counts() { return counts(); }

@@ -17,11 +17,13 @@
 
 #include "internal/centroid_3_route.h"
 #include "internal/max_volume_route.h"
+#include "internal/rounded_component.h"
 
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 using namespace gmcc;
 using gmcc::test::Rng;
@@ -196,6 +198,51 @@ BOOST_AUTO_TEST_CASE(exact_ties_and_touching_candidates) {
   agree(gamut({{1, 1, 1}, {2, 1, 1}, {1, 2, 1}}), rng, kept);
   agree(gamut({{1, 4, 1}, {4, 1, 2}}), rng, kept);
   agree(gamut({{1, 2, 3}}), rng, kept);
+}
+
+// An exact map's reported components (exact_map_estimate_3): the integer fast path for normal
+// doubles against the defining properties, which fix every field: lo <= q <= hi exactly, equal
+// iff q is a double, else adjacent; nearest one of them; error_bound the least double >= |nearest
+// − q|. On random fractions of up to 200 bits, exact doubles, midpoints between adjacent doubles
+// (ties), and values about the subnormal threshold and DBL_MAX (the MPFR route).
+BOOST_AUTO_TEST_CASE(exact_components_round_as_directed) {
+  Rng rng(53);
+  const double inf = std::numeric_limits<double>::infinity();
+  auto check = [&](const R& q) {
+    const internal::RoundedComponent c = internal::rounded_component(q);
+    BOOST_TEST(c.nearest == to_double_nearest(q));
+    BOOST_TEST(rational_from_double(c.lo) <= q);
+    BOOST_TEST(q <= rational_from_double(c.hi));
+    if (rational_from_double(c.lo) == q) BOOST_TEST(c.hi == c.lo);
+    else BOOST_TEST(c.hi == std::nextafter(c.lo, inf));
+    BOOST_TEST((c.nearest == c.lo || c.nearest == c.hi));
+    const R error = abs(R(rational_from_double(c.nearest) - q));
+    BOOST_TEST(error <= rational_from_double(c.error_bound));
+    if (c.error_bound > 0) BOOST_TEST(rational_from_double(std::nextafter(c.error_bound, 0.0)) < error);
+  };
+  std::uniform_real_distribution<double> unit(-1, 1);
+  for (int trial = 0; trial < 2000; ++trial) {
+    auto bits = [&](int b) {  // a random integer below 2^b
+      mpz_class z = 0;
+      for (int w = 0; w < b; w += 64) z = (z << 64) + mpz_class(std::to_string(rng()));
+      return mpz_class(z >> static_cast<mp_bitcnt_t>((b + 63) / 64 * 64 - b));
+    };
+    const mpz_class n = bits(1 + trial % 200), d = bits(1 + trial * 7 % 200);
+    R q(n, d + 1);
+    q.canonicalize();
+    check(trial % 2 ? q : R(-q));
+    const double x = std::ldexp(unit(rng), static_cast<int>(rng() % 2096) - 1074);
+    check(rational_from_double(x));
+    check(R((rational_from_double(x) + rational_from_double(std::nextafter(x, inf))) / 2));
+  }
+  const double tiny = std::numeric_limits<double>::min(), huge = std::numeric_limits<double>::max();
+  const R hair(1, mpz_class(1) << 1100);
+  for (const double x : {tiny, std::nextafter(tiny, 0.0), std::nextafter(tiny, 1.0), std::nextafter(huge, 0.0), 1.0, -1.0})
+    for (const R& q : {rational_from_double(x), R(rational_from_double(x) + hair), R(rational_from_double(x) - hair)})
+      check(q);
+  check(rational_from_double(huge));
+  check(R(rational_from_double(huge) - hair));
+  check(R(0));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -258,4 +258,40 @@ BOOST_AUTO_TEST_CASE(homogeneous_vertices_and_integer_facet_planes) {
   BOOST_TEST(polytopes >= 10);
 }
 
+// Max-volume's exact stage compares values as unreduced fractions and breaks ties by vertex index
+// (the canonical order is the lexicographic one): on convex polygons in the plane d3 = 0 every
+// candidate's value is 0, so every vertex ties and the least vertex must win, on the lazy form
+// (homogeneous coordinates scaled by random factors of either sign) as on the exact set.
+BOOST_AUTO_TEST_CASE(max_volume_ties_go_to_the_least_vertex) {
+  Rng rng(28003);
+  for (int trial = 0; trial < 20; ++trial) {
+    // A convex polygon: points on the parabola y = x² (x = 1..n, scaled), z = 0, in a random order.
+    const int n = 3 + trial % 5;
+    R scale(1 + static_cast<long>(rng() % 50), 1 + static_cast<long>(rng() % 50));
+    scale.canonicalize();
+    std::vector<std::size_t> order(static_cast<std::size_t>(n));
+    std::iota(order.begin(), order.end(), 0);
+    std::shuffle(order.begin(), order.end(), rng);
+    std::vector<std::array<mpz_class, 4>> h;
+    std::vector<Point3> points;
+    for (std::size_t i : order) {
+      const long x = static_cast<long>(i) + 1;
+      points.push_back({R(x * scale), R(x * x * scale), R(0)});
+      const mpz_class g = mpz_class(1 + rng() % 1000) * (rng() % 2 ? 1 : -1);
+      const mpz_class w = scale.get_den() * g;
+      h.push_back({mpz_class(x * scale.get_num() * g), mpz_class(x * x * scale.get_num() * g), 0, w});
+    }
+    std::vector<std::size_t> cycle(static_cast<std::size_t>(n));  // the hull's order: by x
+    for (std::size_t k = 0; k < order.size(); ++k) cycle[order[k]] = k;
+    const LazyConvexSet3 L = LazyConvexSet3::from_homogeneous(ConvexKind3::polygon, std::move(h), {cycle});
+    const MapEstimate3 lazy = max_volume(L);
+    BOOST_TEST(L.exact_vertices() == 1u);  // only the winner made exact
+    const ConvexSet3 E = L.exact();
+    BOOST_REQUIRE(lazy.exact.has_value());
+    BOOST_TEST((*lazy.exact == *std::min_element(points.begin(), points.end())));
+    BOOST_TEST((*lazy.exact == E.vertices.front()));
+    same_estimate(lazy, max_volume(E));
+  }
+}
+
 BOOST_AUTO_TEST_SUITE_END()

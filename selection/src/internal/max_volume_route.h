@@ -33,7 +33,8 @@ MaxVolumeCandidates all_max_volume_candidates(const LazyConvexSet3& F3);
 
 /// The filter: every candidate's position and value d1·d2·d3 in double enclosures
 /// (numerics/enclosure.h), a facet's stationary point tested against the other facets only when
-/// its value could win. Returns the candidates whose value may reach the largest value certainly
+/// its value could win, an edge or facet passed over when its hull bound (the product of its
+/// vertices' largest |d_k|) is below a value certainly attained (docs/derivations.md §2.4). Returns the candidates whose value may reach the largest value certainly
 /// attained (the maximiser is among them), or nothing when F3 is not a polytope or a vertex is
 /// out of the enclosures' range. \pre F3 not empty.
 std::optional<MaxVolumeCandidates> max_volume_contenders(const ConvexSet3& F3);
