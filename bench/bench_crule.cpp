@@ -228,6 +228,8 @@ void crule_double(benchmark::State& state) {
   }
   state.counters["cuts"] = benchmark::Counter(static_cast<double>(cuts), benchmark::Counter::kAvgIterations);
   state.counters["rows"] = benchmark::Counter(static_cast<double>(rows), benchmark::Counter::kAvgIterations);
+  state.counters["scans"] = benchmark::Counter(static_cast<double>(clip.scans()), benchmark::Counter::kAvgIterations);
+  state.counters["scanned"] = benchmark::Counter(static_cast<double>(clip.scanned()), benchmark::Counter::kAvgIterations);
 }
 void crule_3d_double(benchmark::State& state) {
   const Workload& w = workload();
@@ -352,7 +354,8 @@ void check_double_crule(std::size_t n) {
       continue;
     }
     ++checked;
-    count_differs += clip.feasible_set(w.gamut_double, s.approx).vertices.size() != F.vertices.size();
+    const std::size_t dv = clip.feasible_set(w.gamut_double, s.approx).vertices.size();
+    count_differs += dv != F.vertices.size();
     const Point3 c = centroid(F);
     const double cr = rel(d.centroid, {to_double_nearest(c.x), to_double_nearest(c.y), to_double_nearest(c.z)});
     centroid_rel = std::max(centroid_rel, cr);
