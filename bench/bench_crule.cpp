@@ -373,7 +373,6 @@ void check_double_crule(std::size_t n) {
                 "(%zu over 1e-9); selections max rel %.2g; worst cases max %.2g deg apart",
                 checked + degenerate, stride, degenerate, count_differs, centroid_rel, centroid_over_1e9, selection_rel,
                 worst_deg);
-  std::fprintf(stderr, "double_check: %s\n", line);
   benchmark::AddCustomContext("double_check", line);
 }
 
