@@ -102,7 +102,7 @@ const Workload& workload() {
     for (std::size_t l = 0; l < w.setup.lights.size(); ++l)
       for (std::uint64_t s = 0; s < scenes_per_light; ++s) {
         const std::vector<std::size_t> pool = shuffled(w.setup.lights[l].surfaces.size(), g);
-        Scene sc{l, {}, {}, {}};
+        Scene sc{l, {}, {}, {}, {}};
         for (int i = 0; i < surfaces; ++i) {
           const Colour& c = w.setup.lights[l].surfaces[pool[static_cast<std::size_t>(i)]];
           sc.colours.push_back(c);

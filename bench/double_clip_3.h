@@ -340,7 +340,7 @@ class DoubleClip3 {
   // The cap face: its edges entry → exit chained into one cycle, on the row's plane.
   bool close_cap(const DPlane& p, int first, int edges) {
     if (edges < 3) return false;
-    if (edges > kSlot) too_long();
+    if (static_cast<std::size_t>(edges) > kSlot) too_long();
     const std::size_t f = len_.size();
     if (slots_.size() < (f + 1) * kSlot) slots_.resize((f + 1) * kSlot);
     int* cyc = slots_.data() + f * kSlot;
