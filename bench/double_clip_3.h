@@ -181,6 +181,12 @@ class DoubleClip3 {
       c[static_cast<std::size_t>(f / 2)] = f % 2 ? 1 : -1;
       plane_.push_back({c, f % 2 ? box[static_cast<std::size_t>(f / 2)] : 0});
     }
+    free_.clear();
+    face_seen_.assign(6, 0);
+    degree_.assign(8, 0);
+    if (incident_.size() < 8 * kDegree) incident_.resize(8 * kDegree);
+    for (int f = 0; f < 6; ++f)
+      for (int j = 0; j < 4; ++j) add_incident(cycles[f][j], f);
     live_ = {0, 1, 2, 3, 4, 5, 6, 7};
     out_flag_.assign(8, 0);
     lx_.clear(), ly_.clear(), lz_.clear();
@@ -201,10 +207,13 @@ class DoubleClip3 {
     scanned_ += live_.size();
     if (support(c) - r.p.b <= r.eps) return DoublePolytope::Kind::polytope;
     bool inside = false;
+    outside_.clear();
     for (int v : live_) {
       Vertex& x = verts_[static_cast<std::size_t>(v)];
       x.s = c[0] * x.x[0] + c[1] * x.x[1] + c[2] * x.x[2] - r.p.b;
-      out_flag_[static_cast<std::size_t>(v)] = x.s > r.eps;
+      const bool out = x.s > r.eps;
+      out_flag_[static_cast<std::size_t>(v)] = out;
+      if (out) outside_.push_back(v);
       inside = inside || x.s < -r.eps;
     }
     if (!inside) {
@@ -214,22 +223,22 @@ class DoubleClip3 {
     }
     ++cuts_;
     const std::size_t made = verts_.size();
+    made_from_ = made;
     cut_edges_.clear();
     int cap_first = -1, cap_edges = 0;
-    for (std::size_t f = 0; f < len_.size(); ++f)
-      if (!cut_face(f, r.eps, cap_first, cap_edges)) return DoublePolytope::Kind::flat;
-    refine_made(r.p);
-    std::size_t kept = 0;  // the faces left, moved down over the removed ones
-    for (std::size_t f = 0; f < len_.size(); ++f) {
-      if (len_[f] == 0) continue;
-      if (kept != f) {
-        std::copy_n(slots_.begin() + static_cast<std::ptrdiff_t>(f * kSlot), len_[f],
-                    slots_.begin() + static_cast<std::ptrdiff_t>(kept * kSlot));
-        len_[kept] = len_[f], plane_[kept] = plane_[f];
+    crossed_.clear();  // the faces of the outside vertices: the only ones the cut changes
+    for (int v : outside_)
+      for (std::size_t j = 0; j < degree_[static_cast<std::size_t>(v)]; ++j) {
+        const int f = incident_[static_cast<std::size_t>(v) * kDegree + j];
+        if (face_seen_[static_cast<std::size_t>(f)] == cuts_) continue;
+        face_seen_[static_cast<std::size_t>(f)] = static_cast<unsigned>(cuts_);
+        crossed_.push_back(f);
       }
-      ++kept;
-    }
-    len_.resize(kept), plane_.resize(kept);
+    for (int f : crossed_)
+      if (!cut_face(static_cast<std::size_t>(f), r.eps, cap_first, cap_edges)) return DoublePolytope::Kind::flat;
+    refine_made(r.p);
+    for (int f : crossed_)
+      if (len_[static_cast<std::size_t>(f)] == 0) free_.push_back(f);
     if (!close_cap(r.p, cap_first, cap_edges)) return DoublePolytope::Kind::flat;
     relive(made);
     return DoublePolytope::Kind::polytope;
@@ -273,6 +282,7 @@ class DoubleClip3 {
       if (out(0)) len_[f] = 0;  // wholly removed (else wholly kept, untouched)
       return true;
     }
+    const int fi = static_cast<int>(f);
     if (runs > 1) return false;
     if (static_cast<std::size_t>(L) + 1 > kSlot) too_long();
     int n = 0, cycle[kSlot];
@@ -288,6 +298,11 @@ class DoubleClip3 {
     if (exit != last) cycle[n++] = exit;
     len_[f] = n >= 3 ? n : 0;
     std::copy_n(cycle, len_[f], cyc);
+    if (n < 3)  // removed: its vertices left (on the plane) no longer on it
+      for (int j = 0; j < n; ++j) remove_incident(cycle[j], fi);
+    else
+      for (int j = 0; j < n; ++j)
+        if (static_cast<std::size_t>(cycle[j]) >= made_from_) add_incident(cycle[j], fi);
     if (entry != exit) {
       verts_[static_cast<std::size_t>(entry)].cap_next = exit;
       if (cap_first < 0) cap_first = entry;
@@ -334,6 +349,8 @@ class DoubleClip3 {
     verts_.push_back({{a.x[0] + t * (b.x[0] - a.x[0]), a.x[1] + t * (b.x[1] - a.x[1]), a.x[2] + t * (b.x[2] - a.x[2])},
                       0, -1});
     out_flag_.push_back(0);
+    degree_.push_back(0);
+    if (incident_.size() < verts_.size() * kDegree) incident_.resize(2 * verts_.size() * kDegree);
     cut_edges_.push_back({kept, out, made, {static_cast<int>(face), -1}});
     return made;
   }
@@ -341,7 +358,8 @@ class DoubleClip3 {
   bool close_cap(const DPlane& p, int first, int edges) {
     if (edges < 3) return false;
     if (static_cast<std::size_t>(edges) > kSlot) too_long();
-    const std::size_t f = len_.size();
+    std::size_t f = len_.size();
+    if (!free_.empty()) f = static_cast<std::size_t>(free_.back()), free_.pop_back();
     if (slots_.size() < (f + 1) * kSlot) slots_.resize((f + 1) * kSlot);
     int* cyc = slots_.data() + f * kSlot;
     int v = first, n = 0;
@@ -352,9 +370,28 @@ class DoubleClip3 {
       v = next;
     } while (v >= 0 && v != first && ++n < edges);
     if (v != first || n + 1 != edges) return false;  // one cycle through every cap edge
-    len_.push_back(edges);
-    plane_.push_back(p);
+    if (f == len_.size()) len_.push_back(0), plane_.push_back(p), face_seen_.push_back(0);
+    len_[f] = edges, plane_[f] = p;
+    for (int j = 0; j < edges; ++j) add_incident(cyc[j], static_cast<int>(f));
     return true;
+  }
+  // Vertex v's faces (at most kDegree: a vertex where more faces meet aborts, loudly).
+  void add_incident(int v, int f) {
+    std::size_t& d = degree_[static_cast<std::size_t>(v)];
+    if (d == kDegree) {
+      std::fprintf(stderr, "double_clip_3.h: a vertex on more than %zu faces\n", kDegree);
+      std::abort();
+    }
+    incident_[static_cast<std::size_t>(v) * kDegree + d++] = f;
+  }
+  void remove_incident(int v, int f) {
+    std::size_t& d = degree_[static_cast<std::size_t>(v)];
+    int* a = incident_.data() + static_cast<std::size_t>(v) * kDegree;
+    for (std::size_t j = 0; j < d; ++j)
+      if (a[j] == f) {
+        a[j] = a[--d];
+        return;
+      }
   }
   // The live vertices after a cut: those not outside it and those it made (from `made` on),
   // their coordinates contiguous, and their bounding box. (A vertex on the plane whose faces all
@@ -387,6 +424,8 @@ class DoubleClip3 {
     number_.assign(verts_.size(), -1);
     out_.start.push_back(0);
     for (std::size_t f = 0; f < len_.size(); ++f) {
+      if (len_[f] == 0) continue;  // a free slot
+      out_.plane.push_back(plane_[f]);
       for (int j = 0; j < len_[f]; ++j) {
         int& k = number_[static_cast<std::size_t>(slots_[f * kSlot + static_cast<std::size_t>(j)])];
         if (k < 0) {
@@ -397,7 +436,6 @@ class DoubleClip3 {
       }
       out_.start.push_back(static_cast<int>(out_.index.size()));
     }
-    out_.plane = plane_;
     return out_;
   }
 
@@ -417,6 +455,13 @@ class DoubleClip3 {
   std::vector<int> slots_, len_;
   std::vector<DPlane> plane_;
   std::vector<CutEdge> cut_edges_;
+  // Each vertex's faces: incident_[v·kDegree ..][0 .. degree_[v]); the free face slots; the
+  // outside vertices and the faces the current cut crosses; the cut that last listed each face.
+  static constexpr std::size_t kDegree = 16;
+  std::vector<int> incident_, free_, outside_, crossed_;
+  std::vector<std::size_t> degree_;
+  std::vector<unsigned> face_seen_;
+  std::size_t made_from_ = 0;
   D3 lo_{}, hi_{};
   std::size_t cuts_ = 0, scans_ = 0, scanned_ = 0;
   DoublePolytope out_;
