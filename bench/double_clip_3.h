@@ -450,7 +450,7 @@ class DoubleClip3 {
   std::vector<int> number_;  // finish: each vertex's number in the result
   std::vector<int> live_;
   // Face f: its cycle slots_[f·kSlot ..][0 .. len_[f]) (fixed slots, so a cut rewrites only the
-  // faces it crosses, though it reads every face's vertices' flags), its plane plane_[f].
+  // faces it crosses; length 0: a free slot), its plane plane_[f].
   static constexpr std::size_t kSlot = 128;
   std::vector<int> slots_, len_;
   std::vector<DPlane> plane_;
