@@ -13,6 +13,11 @@
 //                      one selection on the scenes' F3s (built once): the staged max_volume
 //                      against its exact stage over every candidate; the exact centroid against
 //                      the certified one;
+//   crule_double, crule_3d_double  the same-run baseline in plain doubles (double_crule.h): F3
+//                      alone (compare crule_lazy), and F3 with both selections and their worst
+//                      cases (compare crule_3d_lazy); checked against the exact route on 50
+//                      scenes over every light before any timing (check_double_crule, the
+//                      differences in the benchmark context as double_check);
 //   feasible_polygon_2d, scene_certified_2d  the 2-D certified route on the same scenes
 //                      (feasible_polygon, then rule_errors as the experiment runs it);
 //   select_3d/N        `gmcc select --space 3d` without file reading: F3 of an image of N colours
@@ -41,9 +46,13 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_support.h"
+#include "double_crule.h"
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <cstring>
 #include <memory>
@@ -64,11 +73,13 @@ struct Scene {
   std::vector<Colour> colours;
   std::vector<Point2> chromaticities;
   std::vector<const Point2*> pointers;
+  std::vector<gmcc::bench::D3> approx;  // the colours as the nearest doubles (the double route's input)
 };
 struct Workload {
   ExperimentSetup setup;
   std::unique_ptr<CanonicalConstraints> prepared_2d;
   std::unique_ptr<CanonicalConstraints3> prepared_3d;
+  gmcc::bench::DoubleGamut3 gamut_double;  // G_c3's facets in doubles, prepared once as prepared_3d
   std::vector<Scene> scenes;
   std::vector<std::vector<Colour>> experiment;  // 4 × 11 × 500 scenes, 1–11 surfaces
 };
@@ -90,15 +101,17 @@ const Workload& workload() {
     w.prepared_2d = std::make_unique<CanonicalConstraints>(canonical_gamut(
         perspective_chromaticities(w.setup.canonical_surfaces, NonPositiveBluePolicy::drop).points, {}));
     w.prepared_3d = std::make_unique<CanonicalConstraints3>(w.setup.canonical_surfaces);
+    w.gamut_double = gmcc::bench::double_gamut_3(w.setup.canonical_surfaces);
     std::mt19937_64 g(6);
     for (std::size_t l = 0; l < w.setup.lights.size(); ++l)
       for (std::uint64_t s = 0; s < scenes_per_light; ++s) {
         const std::vector<std::size_t> pool = shuffled(w.setup.lights[l].surfaces.size(), g);
-        Scene sc{l, {}, {}, {}};
+        Scene sc{l, {}, {}, {}, {}};
         for (int i = 0; i < surfaces; ++i) {
           const Colour& c = w.setup.lights[l].surfaces[pool[static_cast<std::size_t>(i)]];
           sc.colours.push_back(c);
           sc.chromaticities.push_back(perspective_chromaticity(c));
+          sc.approx.push_back({to_double_nearest(c.r), to_double_nearest(c.g), to_double_nearest(c.b)});
         }
         for (const Point2& q : sc.chromaticities) sc.pointers.push_back(&q);
         w.scenes.push_back(std::move(sc));
@@ -253,6 +266,30 @@ void crule_3d_lazy_selections(benchmark::State& state) {
   state.counters["centroid_exact_share"] =
       per_scene(static_cast<double>(internal::certified_centroid_stage_counts()[1] - exact0));
 }
+// The same in plain doubles (double_crule.h): F3 alone, then the whole scene.
+void crule_double(benchmark::State& state) {
+  const Workload& w = workload();
+  gmcc::bench::DoubleClip3 clip;
+  std::size_t i = 0, cuts = 0, rows = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(clip.feasible_set(w.gamut_double, w.scenes[i++ % w.scenes.size()].approx).vertices.size());
+    cuts += clip.cuts(), rows += clip.rows();
+  }
+  state.counters["cuts"] = benchmark::Counter(static_cast<double>(cuts), benchmark::Counter::kAvgIterations);
+  state.counters["rows"] = benchmark::Counter(static_cast<double>(rows), benchmark::Counter::kAvgIterations);
+  state.counters["scans"] = benchmark::Counter(static_cast<double>(clip.scans()), benchmark::Counter::kAvgIterations);
+  state.counters["scanned"] = benchmark::Counter(static_cast<double>(clip.scanned()), benchmark::Counter::kAvgIterations);
+}
+void crule_3d_double(benchmark::State& state) {
+  const Workload& w = workload();
+  gmcc::bench::DoubleClip3 clip;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto s = gmcc::bench::double_crule_scene(clip, w.gamut_double, w.scenes[i++ % w.scenes.size()].approx);
+    benchmark::DoNotOptimize(s.max_volume_worst_deg);
+    benchmark::DoNotOptimize(s.centroid_worst_deg);
+  }
+}
 // The scenes' non-empty F3s, built once.
 const std::vector<ConvexSet3>& feasible_sets() {
   static const std::vector<ConvexSet3> sets = [] {
@@ -330,6 +367,67 @@ void crule_experiment(benchmark::State& state) {
   state.counters["process_cpu_s"] = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
 }
 
+// The double route against the exact one on n scenes spread over the workload (every light),
+// before any timing: F3's kind and vertex count (feasible_set_3d), its centroid (exact,
+// convex_set_3.h) and both selections with their worst cases (crule_3d, certified route). Aborts
+// with a message when they disagree grossly (a map off by a relative 1e-6, a worst case by 1e-6°,
+// another kind, a vertex count off by more than a quarter; near-degenerate F3s may differ by a few
+// vertices); the largest differences go into the benchmark context (double_check).
+void check_double_crule(std::size_t n) {
+  using gmcc::bench::D3;
+  const Workload& w = workload();
+  gmcc::bench::DoubleClip3 clip;
+  std::size_t checked = 0, count_differs = 0, centroid_over_1e9 = 0, degenerate = 0;
+  double centroid_rel = 0, selection_rel = 0, worst_deg = 0;
+  auto fail = [](std::size_t i, const char* what, double v) {
+    std::fprintf(stderr, "bench_crule: the double CRULE route disagrees with the exact one on scene %zu: %s (%g)\n", i, what, v);
+    std::abort();
+  };
+  auto rel = [](const D3& a, const std::array<double, 3>& e) {
+    const double scale = std::max({std::abs(e[0]), std::abs(e[1]), std::abs(e[2])});
+    return std::max({std::abs(a[0] - e[0]), std::abs(a[1] - e[1]), std::abs(a[2] - e[2])}) / scale;
+  };
+  auto worst = [&](std::size_t i, const std::optional<double>& d, const std::optional<double>& e) {
+    if (d.has_value() != e.has_value()) fail(i, "a worst case present on one route only", 0);
+    if (d) worst_deg = std::max(worst_deg, std::abs(*d - *e));
+    if (d && std::abs(*d - *e) > 1e-6) fail(i, "worst case, degrees apart", std::abs(*d - *e));
+  };
+  const std::size_t stride = std::max<std::size_t>(1, w.scenes.size() / n);
+  for (std::size_t i = 0; i < w.scenes.size() && checked + degenerate < n; i += stride) {
+    const Scene& s = w.scenes[i];
+    const ConvexSet3 F = feasible_set_3d(*w.prepared_3d, s.colours);
+    const gmcc::bench::DoubleCrule3 d = gmcc::bench::double_crule_scene(clip, w.gamut_double, s.approx);
+    const bool polytope = d.kind == gmcc::bench::DoublePolytope::Kind::polytope;
+    if (polytope != (F.kind == ConvexKind3::polytope)) fail(i, "F3's kind", 0);
+    if (!polytope) {
+      ++degenerate;
+      continue;
+    }
+    ++checked;
+    const std::size_t dv = clip.feasible_set(w.gamut_double, s.approx).vertices.size();
+    count_differs += dv != F.vertices.size();
+    if (4 * std::max(dv, F.vertices.size()) > 5 * std::min(dv, F.vertices.size()))
+      fail(i, "F3's vertex count, double route", static_cast<double>(dv));
+    const Point3 c = centroid(F);
+    const double cr = rel(d.centroid, {to_double_nearest(c.x), to_double_nearest(c.y), to_double_nearest(c.z)});
+    centroid_rel = std::max(centroid_rel, cr);
+    centroid_over_1e9 += cr > 1e-9;
+    const Crule3d e = crule_3d(*w.prepared_3d, s.colours, Crule3dRoute::certified);
+    const double mr = std::max(rel(d.max_volume, e.max_volume->estimate.map), rel(d.centroid, e.centroid->estimate.map));
+    selection_rel = std::max(selection_rel, mr);
+    if (cr > 1e-6 || mr > 1e-6) fail(i, "a map, relative difference", std::max(cr, mr));
+    worst(i, d.max_volume_worst_deg, e.max_volume->worst_case_deg);
+    worst(i, d.centroid_worst_deg, e.centroid->worst_case_deg);
+  }
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "%zu scenes (every %zu-th; %zu not polytopes): vertex count differs on %zu; centroid vs exact max rel %.2g "
+                "(%zu over 1e-9); selections max rel %.2g; worst cases max %.2g deg apart",
+                checked + degenerate, stride, degenerate, count_differs, centroid_rel, centroid_over_1e9, selection_rel,
+                worst_deg);
+  benchmark::AddCustomContext("double_check", line);
+}
+
 BENCHMARK(crule_prepared)->Unit(benchmark::kMicrosecond);
 BENCHMARK(crule_lp)->Unit(benchmark::kMicrosecond);
 BENCHMARK(crule_3d_prepared)->Unit(benchmark::kMicrosecond);
@@ -337,6 +435,8 @@ BENCHMARK(crule_3d_certified)->Unit(benchmark::kMicrosecond);
 BENCHMARK(crule_lazy)->Unit(benchmark::kMicrosecond);
 BENCHMARK(crule_3d_lazy)->Unit(benchmark::kMicrosecond);
 BENCHMARK(crule_3d_lazy_selections)->Unit(benchmark::kMicrosecond);
+BENCHMARK(crule_double)->Unit(benchmark::kMicrosecond);
+BENCHMARK(crule_3d_double)->Unit(benchmark::kMicrosecond);
 BENCHMARK(max_volume_filtered)->Unit(benchmark::kMicrosecond);
 BENCHMARK(max_volume_unfiltered)->Unit(benchmark::kMicrosecond);
 BENCHMARK(centroid_exact)->Unit(benchmark::kMicrosecond);
@@ -351,6 +451,7 @@ BENCHMARK(crule_experiment)->Unit(benchmark::kMillisecond)->UseRealTime()->Itera
 int main(int argc, char** argv) {
   gmcc::bench::initialise(argc, argv, {&scenes_per_light, &surfaces, &data_dir});
   workload();  // built before any timing
+  check_double_crule(50);
   benchmark::AddCustomContext("surfaces", std::to_string(surfaces));
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

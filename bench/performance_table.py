@@ -15,7 +15,8 @@ Rows, each a ratio measured within one run (or one process) so that machine load
     the record form `select_scene_record` in the library, and of `gmcc select --images` with and
     without `--record`, every worst case;
   - CRULE per scene (issue 28): bench_crule, the certified CRULE scene (F3 kept symbolic, both
-    selections and their worst cases) against the 2-D certified scene, same scenes.
+    selections and their worst cases) against the 2-D certified scene, same scenes; and the same
+    CRULE scene in plain doubles (bench/double_crule.h) against both, for reference.
 --quick runs 50 scenes per cell for the whole experiment (about 1/10 of it) instead of 500.
 Needs a Release build with the benchmarks (cmake -DCMAKE_BUILD_TYPE=Release; target bench).
 """
@@ -73,13 +74,20 @@ def issue_28_rows(bench):
         rows.append(("batch selection, every worst case: " + label, "%.0f scenes/s" % v,
                      ">= 2×10^4" if target == 2e4 else ">= 10^4", v >= target))
     cr = google_benchmark(os.path.join(bench, "bench_crule"),
-                          "--benchmark_filter=crule_3d_certified|crule_3d_lazy|scene_certified_2d")
+                          "--benchmark_filter=crule_3d_certified|crule_3d_lazy|crule_3d_double|scene_certified_2d")
     for name in ("crule_3d_certified", "crule_3d_lazy"):
         if name in cr:
             r = cr[name] / cr["scene_certified_2d"]
             rows.append(("CRULE scene, certified (%s) / 2-D certified scene" % name,
                          "%.0f× (%.0f µs / %.1f µs)" % (r, cr[name] * 1e6, cr["scene_certified_2d"] * 1e6), "<= 5×",
                          r <= 5))
+    if "crule_3d_double" in cr:
+        d, c2 = cr["crule_3d_double"], cr["scene_certified_2d"]
+        rows.append(("CRULE scene in plain doubles (`crule_3d_double`) / 2-D certified scene",
+                     "%.1f× (%.0f µs / %.1f µs)" % (d / c2, d * 1e6, c2 * 1e6), "(for reference)", None))
+        if "crule_3d_lazy" in cr:
+            rows.append(("CRULE scene, certified (`crule_3d_lazy`) / plain doubles (`crule_3d_double`)",
+                         "%.1f×" % (cr["crule_3d_lazy"] / d), "(for reference)", None))
     return rows
 
 
