@@ -9,8 +9,9 @@
 
 namespace gmcc::internal {
 
-std::optional<WidePlane> wide_plane(const IntegerPlane3& p) {
-  const mpz_class* z[4] = {&p.a[0], &p.a[1], &p.a[2], &p.b};
+std::optional<WidePlane> wide_plane(const IntegerPlane3& p) { return wide_plane({&p.a[0], &p.a[1], &p.a[2], &p.b}); }
+
+std::optional<WidePlane> wide_plane(const std::array<const mpz_class*, 4>& z) {
   long E = 0;
   for (const mpz_class* c : z) E = std::max(E, static_cast<long>(mpz_sizeinbase(c->get_mpz_t(), 2)));
   WidePlane out;

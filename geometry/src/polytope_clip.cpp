@@ -124,6 +124,7 @@ class Clipper {
     std::vector<char> implied(filters_.size(), 0);
     for (const Group& g : groups_) mark_implied(g, implied);
     // Corner (bx, by, bz) is vertex bx + 2by + 4bz; faces counter-clockwise seen from outside.
+    vertices_.reserve(256);  // a typical clip's (growing moves every vertex's exact coordinates)
     for (int c = 0; c < 8; ++c)
       add_vertex({c & 1 ? 3 : 0, c & 2 ? 4 : 1, c & 4 ? 5 : 2});
     faces_ = {{0, {0, 4, 6, 2}}, {3, {1, 3, 7, 5}}, {1, {0, 1, 5, 4}},
@@ -241,17 +242,22 @@ class Clipper {
     group.points.push_back(homogeneous_integers(p));
     {
       const std::array<mpz_class, 4>& h = group.points.back();
-      group.wide.push_back(wide_plane(IntegerPlane3{{h[0], h[1], h[2]}, h[3]}));
+      group.wide.push_back(wide_plane({&h[0], &h[1], &h[2], &h[3]}));
     }
     group.signs.push_back({sgn(p.x), sgn(p.y), sgn(p.z)});
     const ScaledPoint q = scaled_point(p);
     const ClipFacets& facets = *group.facets;
+    // A facet copy's non-zero coefficients are in [2^-151, 1) (plane_filter): when q's non-zero
+    // channels are at least 2^-48 (all below 1) and its scale within 2^±48, every product is 0 or
+    // in [2^-199, 2^48], in range without a test per row.
+    bool in_range_always = q.usable && q.scale >= 0x1p-48 && q.scale <= 0x1p48;
+    for (int k = 0; k < 3; ++k) in_range_always = in_range_always && (q.c[k] == 0 || std::fabs(q.c[k]) >= 0x1p-48);
     for (std::size_t f = 0; f < facets.planes.size(); ++f) {
       Filter r;
       const std::array<double, 4>& a = facets.filters[f];
       if (q.usable && facets.usable[f]) {
         r.c[0] = a[0] * q.c[0], r.c[1] = a[1] * q.c[1], r.c[2] = a[2] * q.c[2], r.c[3] = a[3] * q.scale;
-        r.usable = in_range(r.c[0]) && in_range(r.c[1]) && in_range(r.c[2]) && in_range(r.c[3]);
+        r.usable = in_range_always || (in_range(r.c[0]) && in_range(r.c[1]) && in_range(r.c[2]) && in_range(r.c[3]));
       }
       filters_.push_back(r);
     }
@@ -615,21 +621,32 @@ class Clipper {
     meets->meets.resize(n), meets->made.resize(n);
     std::vector<LazyConvexSet3::TruncatedVertex> vertices;
     std::vector<int> local(filters_.size(), -1);
+    std::vector<char> lazy(n);
     for (std::size_t j = 0; j < n; ++j) {
       Vertex& x = vertices_[static_cast<std::size_t>(live_[j])];
       std::optional<LazyConvexSet3::TruncatedVertex> t = x.filtered ? truncated(x) : std::nullopt;
-      if (t) {
-        for (std::size_t k = 0; k < 3; ++k) {
-          int& l = local[static_cast<std::size_t>(x.planes[k])];
-          if (l < 0) l = static_cast<int>(meets->planes.size()), meets->planes.push_back(plane(x.planes[k]));
-          meets->meets[j][k] = l;
-        }
-      } else {
+      lazy[j] = t.has_value();
+      if (!t) {
         if (!x.exact) x.exact = exact_homogeneous(x.planes);
         if (!(t = truncated(*x.exact))) return exact_result(std::move(faces));
-        meets->made[j] = *x.exact;
+        meets->made[j] = std::move(*x.exact);
       }
       vertices.push_back(*t);
+    }
+    // The lazy vertices' planes, exact (the clip reads no row after this: its rows move).
+    for (std::size_t j = 0; j < n; ++j) {
+      if (!lazy[j]) continue;
+      const Vertex& x = vertices_[static_cast<std::size_t>(live_[j])];
+      for (std::size_t k = 0; k < 3; ++k) {
+        int& l = local[static_cast<std::size_t>(x.planes[k])];
+        if (l < 0) {
+          l = static_cast<int>(meets->planes.size());
+          plane(x.planes[k]);
+          meets->planes.push_back(x.planes[k] < 6 ? box_[static_cast<std::size_t>(x.planes[k])]
+                                                  : std::move(*rows_[static_cast<std::size_t>(x.planes[k])]));
+        }
+        meets->meets[j][k] = l;
+      }
     }
     return LazyConvexSet3::from_truncated(ConvexKind3::polytope, std::move(vertices), std::move(faces),
                                           [meets](std::size_t i) { return meets->homogeneous(i); });

@@ -19,6 +19,8 @@ namespace gmcc::internal {
 
 // The plane's WidePlane, or nothing when a non-zero coefficient is beyond 2^±900 of the largest.
 std::optional<WidePlane> wide_plane(const IntegerPlane3& p);
+// The same for four integers (a point's (P, L)), scaled alike.
+std::optional<WidePlane> wide_plane(const std::array<const mpz_class*, 4>& z);
 // The WidePlane of the row (a ⊙ P)·x <= b·L from the facet's and the point's (P, L) (a point as
 // the four integers of homogeneous_integers, scaled alike); nothing when a product is unbounded.
 std::optional<WidePlane> wide_row(const WidePlane& facet, const WidePlane& point);

@@ -41,6 +41,7 @@ struct LeadingBits {
   WideProduct bits;  ///< the leading bits, high·2^64 + low
   long shift;        ///< the power of two they stand for
 };
+/// The leading `n` bits of |z| (n = 64 or 127; z != 0), as LeadingBits.
 inline LeadingBits leading_bits(mpz_srcptr z, int n) {
   const long size = static_cast<long>(mpz_sizeinbase(z, 2));
   const long shift = size - n;
