@@ -78,6 +78,10 @@ struct Vertex : VertexDoubles {
   std::array<int, 3> planes;  // three independent planes through it
   // Exact homogeneous coordinates of the integer planes' solution (W of either sign), on demand.
   std::optional<std::array<mpz_class, 4>> exact;
+  // The faces through it (indices into the clip's faces), `degree` of them; -1 when unknown
+  // (more than fit here).
+  std::array<int, 8> faces{};
+  int degree = -1;
 };
 
 class Clipper {
@@ -130,6 +134,7 @@ class Clipper {
     faces_ = {{0, {0, 4, 6, 2}}, {3, {1, 3, 7, 5}}, {1, {0, 1, 5, 4}},
               {4, {2, 6, 7, 3}}, {2, {0, 2, 3, 1}}, {5, {4, 5, 7, 6}}};
     live_ = {0, 1, 2, 3, 4, 5, 6, 7};
+    incidence();
     pack();
     // The rows not implied by another (mark_implied), in a fixed pseudo-random order (a
     // multiplicative permutation), then deepest first. The set is the same in any order; the order
@@ -453,16 +458,55 @@ class Clipper {
           if (sign_[v] == 0) flat_point_ = v;
       return ClippedPolytope::Outcome::flat;
     }
-    crossing_edges(i);
-    cut_faces(i);
+    const std::size_t on = live_.size() - static_cast<std::size_t>(in + out);  // vertices on the plane
+    crossing_edges(i, on);
+    cut_faces(i, on);
     return ClippedPolytope::Outcome::polytope;
   }
 
   // An edge (u < w) crossing a plane strictly: it lies on exactly two faces (n counts those
-  // found), and `vertex` is where their planes meet the plane.
+  // found; their indices in faces_), and `vertex` is where their planes meet the plane.
   struct Cut {
     int u, w, faces[2], n, vertex;
   };
+
+  // Every live vertex's faces, from the faces' cycles.
+  void incidence() {
+    for (int v : live_) vertices_[static_cast<std::size_t>(v)].degree = 0;
+    for (std::size_t f = 0; f < faces_.size(); ++f)
+      for (int v : faces_[f].cycle) {
+        Vertex& x = vertices_[static_cast<std::size_t>(v)];
+        if (x.degree < 0) continue;
+        if (x.degree == static_cast<int>(x.faces.size())) x.degree = -1;
+        else x.faces[static_cast<std::size_t>(x.degree++)] = static_cast<int>(f);
+      }
+  }
+
+  // The faces a cut by a plane can change, into visit_: with at most one live vertex on the plane
+  // (`on` of them), those through a vertex strictly outside — every vertex of another face is
+  // inside or on the plane, so it stays as it is, and it has no edge in the plane (that would need
+  // two vertices on it) — when those vertices know their faces; else every face.
+  void faces_to_visit(std::size_t on) {
+    visit_.clear();
+    bool known = on <= 1;
+    for (std::size_t k = 0; k < live_.size() && known; ++k)
+      known = sign_[live_[k]] <= 0 || vertices_[static_cast<std::size_t>(live_[k])].degree >= 0;
+    if (!known) {
+      for (std::size_t f = 0; f < faces_.size(); ++f)
+        if (!faces_[f].cycle.empty()) visit_.push_back(f);
+      return;
+    }
+    if (stamp_.size() < faces_.size()) stamp_.resize(faces_.size() + 64, 0);
+    ++stamp_now_;
+    for (int v : live_) {
+      if (sign_[v] <= 0) continue;
+      const Vertex& x = vertices_[static_cast<std::size_t>(v)];
+      for (int k = 0; k < x.degree; ++k) {
+        const auto f = static_cast<std::size_t>(x.faces[static_cast<std::size_t>(k)]);
+        if (stamp_[f] != stamp_now_) stamp_[f] = stamp_now_, visit_.push_back(f);
+      }
+    }
+  }
   // The index in `cuts` of the edge {a, b}, or -1.
   static int find(const std::vector<Cut>& cuts, int a, int b) {
     if (a > b) std::swap(a, b);
@@ -476,11 +520,12 @@ class Clipper {
   // plane i, independent because the edge crosses plane i transversally); and into touched_ the
   // faces the cut changes: those with a vertex strictly outside, and those with an edge in the
   // plane (an edge of the cut facet).
-  void crossing_edges(int i) {
+  void crossing_edges(int i, std::size_t on) {
     std::vector<Cut>& cuts = cuts_;
     cuts.clear();
     touched_.clear();
-    for (std::size_t f = 0; f < faces_.size(); ++f) {
+    faces_to_visit(on);
+    for (const std::size_t f : visit_) {
       const std::vector<int>& c = faces_[f].cycle;
       bool outside = false, on = false;
       int a = c.back(), sa = sign_[a];
@@ -490,10 +535,10 @@ class Clipper {
         on = on || (sa == 0 && sb == 0);
         if (sa * sb < 0) {
           const int k = find(cuts, a, b);
-          if (k < 0) cuts.push_back({std::min(a, b), std::max(a, b), {faces_[f].plane, -1}, 1, -1});
+          if (k < 0) cuts.push_back({std::min(a, b), std::max(a, b), {static_cast<int>(f), -1}, 1, -1});
           else {
             GMCC_CHECK(cuts[k].n == 1, "clip_polytope: an edge lies on two faces");
-            cuts[k].faces[1] = faces_[f].plane, cuts[k].n = 2;
+            cuts[k].faces[1] = static_cast<int>(f), cuts[k].n = 2;
           }
         }
         a = b, sa = sb;
@@ -503,20 +548,23 @@ class Clipper {
     if (sign_.size() < vertices_.size() + cuts.size()) sign_.resize(vertices_.size() + cuts.size() + 64);
     for (Cut& c : cuts) {
       GMCC_CHECK(c.n == 2, "clip_polytope: an edge lies on two faces");
-      c.vertex = add_vertex({c.faces[0], c.faces[1], i});
+      c.vertex = add_vertex({faces_[static_cast<std::size_t>(c.faces[0])].plane,
+                             faces_[static_cast<std::size_t>(c.faces[1])].plane, i});
       sign_[c.vertex] = 0;
     }
   }
 
   // The faces after the cut by plane i (cuts_ and touched_ from crossing_edges): the touched
-  // faces with a vertex strictly outside cut (dropped when fewer than three vertices remain), the
-  // others as they are, and the cap, the new facet in plane i, closed from the edges in the plane
-  // (each an edge of the cut facet, traversed the other way). The live vertices are those not
-  // strictly outside, and the new ones.
-  void cut_faces(int i) {
+  // faces with a vertex strictly outside cut (emptied when fewer than three vertices remain: a
+  // face no more, its index kept), the others as they are, and the cap, the new facet in plane i,
+  // closed from the edges in the plane (each an edge of the cut facet, traversed the other way).
+  // The live vertices are those not strictly outside, and the new ones; their faces: a new
+  // vertex's are its edge's two and the cap, one strictly inside keeps its own, and one on the
+  // plane (`on` of them) gains the cap and may lose a face: all made anew when several were on
+  // it, that one's marked unknown when one was.
+  void cut_faces(int i, std::size_t on) {
     if (next_on_cap_.size() < vertices_.size()) next_on_cap_.resize(vertices_.size() + 64, -1);
     int cap_edges = 0, cap_start = -1;
-    bool dropped = false;
     for (const Touched& t : touched_) {
       std::vector<int>& c = faces_[t.face].cycle;
       if (t.outside) {
@@ -528,7 +576,7 @@ class Clipper {
         }
         c.swap(scratch_);
         if (c.size() < 3) {
-          c.clear(), dropped = true;
+          c.clear();
           continue;
         }
       }
@@ -541,9 +589,6 @@ class Clipper {
         a = b;
       }
     }
-    if (dropped)
-      faces_.erase(std::remove_if(faces_.begin(), faces_.end(), [](const Face& f) { return f.cycle.empty(); }),
-                   faces_.end());
     Face cap{i, {}};
     for (int v = cap_start; v != -1 && static_cast<int>(cap.cycle.size()) <= cap_edges &&
                             (cap.cycle.empty() || v != cap_start);
@@ -552,11 +597,20 @@ class Clipper {
     for (const int v : cap.cycle) next_on_cap_[v] = -1;
     GMCC_CHECK(cap.cycle.size() >= 3 && static_cast<int>(cap.cycle.size()) == cap_edges,
                "clip_polytope: a plane with vertices strictly on both sides cuts a facet");
+    const int cap_index = static_cast<int>(faces_.size());
     faces_.push_back(std::move(cap));
     // A vertex not strictly outside stays on a face: one strictly inside keeps every face through
     // it, one on the plane is a vertex of the cap.
     live_.erase(std::remove_if(live_.begin(), live_.end(), [&](int v) { return sign_[v] > 0; }), live_.end());
-    for (const Cut& c : cuts_) live_.push_back(c.vertex);
+    if (on == 1)
+      for (int v : live_)
+        if (sign_[v] == 0) vertices_[static_cast<std::size_t>(v)].degree = -1;
+    for (const Cut& c : cuts_) {
+      live_.push_back(c.vertex);
+      Vertex& x = vertices_[static_cast<std::size_t>(c.vertex)];
+      x.faces[0] = c.faces[0], x.faces[1] = c.faces[1], x.faces[2] = cap_index, x.degree = 3;
+    }
+    if (on > 1) incidence();
     pack();
   }
 
@@ -612,6 +666,7 @@ class Clipper {
     for (std::size_t j = 0; j < n; ++j) index[static_cast<std::size_t>(live_[j])] = static_cast<int>(j);
     std::vector<std::vector<std::size_t>> faces;
     for (const Face& f : faces_) {
+      if (f.cycle.empty()) continue;  // a face cut away
       std::vector<std::size_t> c;
       for (int v : f.cycle) c.push_back(static_cast<std::size_t>(index[static_cast<std::size_t>(v)]));
       faces.push_back(std::move(c));
@@ -693,6 +748,9 @@ class Clipper {
     bool outside;  // it has a vertex strictly outside the cutting plane
   };
   std::vector<Touched> touched_;  // scratch for clip(): the faces a cut changes
+  std::vector<std::size_t> visit_;  // scratch for faces_to_visit
+  std::vector<unsigned> stamp_;     // faces_to_visit: the last cut that listed each face
+  unsigned stamp_now_ = 0;
   std::vector<int> scratch_;      // scratch for cut_faces: a cut face's new cycle
   std::vector<int> next_on_cap_;  // scratch for cut_faces (-1 between cuts)
   LiveVertexFilter filter_;                         // the live vertices' (pack())
