@@ -7,7 +7,8 @@
 // scenes of every kind (polytopes with and without black, shaded and with highlights; planar and
 // collinear gamuts giving polygons, segments and points; empty F3). Also: the lazy route makes
 // only a few vertices exact, from_homogeneous accepts any scaling and sign of the homogeneous
-// coordinates and magnitudes at the double range policy's edge, and estimate_3d answers the same
+// coordinates and magnitudes at the double range policy's edge, from_truncated (vertices known by
+// their truncated coordinates, made on request) gives the same set, and estimate_3d answers the same
 // with or without the exact F3.
 #include "../test_support.h"
 #include "crule_oracles.h"
@@ -210,6 +211,53 @@ BOOST_AUTO_TEST_CASE(homogeneous_coordinates_in_any_scale_and_order) {
     BOOST_TEST(L.exact_vertices() == 0u);
     BOOST_TEST((L.exact() == E));
     BOOST_TEST(L.exact_vertices() == L.size());
+  }
+}
+
+// from_truncated (the clip's symbolic vertices) against from_homogeneous: vertices given by their
+// coordinates' truncated doubles (mpq_get_d, independently of the library) and a maker of their
+// homogeneous coordinates give the same set, order, enclosures and faces; the maker runs only for
+// vertices whose truncated doubles tie with another's (none on a generic polytope; on a box,
+// whose vertices share coordinates, some), and for every vertex once the whole set is asked for.
+BOOST_AUTO_TEST_CASE(truncated_vertices_made_on_request) {
+  Rng rng(28007);
+  std::vector<Colour> generic;
+  for (int i = 0; i < 30; ++i) generic.push_back(random_colour(rng, 1000000, 999983));  // no shared coordinate
+  const std::vector<Colour> box{{0, 0, 0}, {R(1, 3), 0, 0}, {0, 2, 0}, {0, 0, R(5, 7)}, {R(1, 3), 2, 0},
+                                {R(1, 3), 0, R(5, 7)}, {0, 2, R(5, 7)}, {R(1, 3), 2, R(5, 7)}};
+  for (const std::vector<Colour>* canonical : {static_cast<const std::vector<Colour>*>(&generic), &box}) {
+    const ConvexSet3 E = feasible_set_3d(*canonical, {{1, 1, 1}});
+    BOOST_TEST_REQUIRE((E.kind == ConvexKind3::polytope));
+    std::vector<std::size_t> order(E.vertices.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::shuffle(order.begin(), order.end(), rng);
+    std::vector<std::size_t> rank(order.size());
+    std::vector<LazyConvexSet3::TruncatedVertex> vertices;
+    std::vector<std::array<mpz_class, 4>> h;
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      rank[order[i]] = i;
+      const Point3& p = E.vertices[order[i]];
+      vertices.push_back({{mpq_get_d(p.x.get_mpq_t()), mpq_get_d(p.y.get_mpq_t()), mpq_get_d(p.z.get_mpq_t())}, is_zero(p)});
+      const mpz_class w = lcm(lcm(p.x.get_den(), p.y.get_den()), p.z.get_den());
+      const mpz_class g = mpz_class(1 + rng() % 1000) * (rng() % 2 ? 1 : -1);  // any scale and sign
+      h.push_back({mpz_class(R(p.x * w)) * g, mpz_class(R(p.y * w)) * g, mpz_class(R(p.z * w)) * g, mpz_class(w * g)});
+    }
+    std::vector<std::vector<std::size_t>> faces = E.faces;
+    for (auto& f : faces)
+      for (std::size_t& i : f) i = rank[i];
+    auto made = std::make_shared<std::vector<int>>(h.size(), 0);
+    const LazyConvexSet3 L = LazyConvexSet3::from_truncated(E.kind, vertices, faces, [h, made](std::size_t i) {
+      ++(*made)[i];
+      return h[i];
+    });
+    same_enclosures(L, E);
+    BOOST_TEST((L.faces() == E.faces));
+    int during = 0;
+    for (int m : *made) during += m > 0;
+    if (canonical == &generic) BOOST_TEST(during == 0);
+    else BOOST_TEST(during > 0);  // ties broken exactly
+    BOOST_TEST((L.exact() == E));
+    for (int m : *made) BOOST_TEST(m == 1);  // each vertex made once, then kept
   }
 }
 
