@@ -9,7 +9,11 @@
 #include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/selection/angular_error.h>
+#include <gmcc/selection/centroid_3.h>
 #include <gmcc/selection/crule_3d.h>
+#include <gmcc/selection/max_volume.h>
+#include <gmcc/geometry/feasible_set_3d.h>
+#include <gmcc/geometry/lazy_convex_set_3.h>
 #include <gmcc/selection/max_trace.h>
 #include <gmcc/selection/perspective_cone_mean.h>
 #include <gmcc/selection/score_rules.h>
@@ -104,12 +108,19 @@ std::vector<RuleRecord> baseline_records(const ExperimentSetup& setup, const Tes
 // The same scene in 3-D (Forsyth's CRULE against crule_gamut, G_c3 prepared once with black in it
 // or not as configured): its rules' maps scored by their perspective (d1/d3, d2/d3) into
 // rec.rules after the 2-D rules: max-volume, the centroid (and with crule_extended max-trace and
-// the cone mean of F3's perspective image), each worst case over F3. CRULE's certified route (crule_3d.h): F3, max-volume and
-// max-trace exact, the centroid certified (its double map, taken exactly, is what is scored).
+// the cone mean of F3's perspective image), each worst case over F3. CRULE's certified route
+// (crule_3d.h) on F3 kept symbolic (feasible_set_3d_lazy: the same answers as on the exact set,
+// docs/math.md §1b "The lazy form"): max-volume and max-trace exact, the centroid certified (its
+// double map, taken exactly, is what is scored); F3 is made exact only for the cone mean.
 void score_crule(const ExperimentSetup& setup, const ExperimentConfig& config, const CanonicalConstraints3& crule_gamut,
                  const TestLight& light, const std::vector<Colour>& image_colours, SceneRecord& rec) {
-  const Crule3d c3 = crule_3d(crule_gamut, image_colours, Crule3dRoute::certified);
-  const bool truth3_inside = contains(c3.feasible, light.true_diagonal_map);
+  const LazyConvexSet3 F = feasible_set_3d_lazy({{&crule_gamut, &image_colours}});
+  Crule3d c3;
+  if (F.kind() != ConvexKind3::empty) {
+    c3.max_volume = with_worst_case(F, max_volume(F));
+    c3.centroid = with_worst_case(F, centroid_3(F, Crule3dRoute::certified));
+  }
+  const bool truth3_inside = contains(F, light.true_diagonal_map);
   // The 3-D map d of a selection, its worst case over F3 given: scored when d3 > 0.
   auto score = [&](std::size_t slot, const Point3& d, double worst_case_deg) {
     if (sgn(d.z) <= 0) return;  // the zero map (or one in the plane d3 = 0) has no perspective
@@ -121,14 +132,14 @@ void score_crule(const ExperimentSetup& setup, const ExperimentConfig& config, c
   for (std::size_t r = 0; r < 2; ++r)
     if (*rules3[r] && (*rules3[r])->worst_case_deg)
       score(rule_count + r, measured_map((*rules3[r])->estimate), *(*rules3[r])->worst_case_deg);
-  if (!config.crule_extended || c3.feasible.kind == ConvexKind3::empty) return;
-  const Point3 trace = measured_map(max_trace(c3.feasible));
-  if (sgn(trace.z) > 0) score(rule_count + 2, trace, worst_case_map_deg_3d(c3.feasible, trace));
-  const std::optional<MapEstimate> cone = perspective_cone_mean(c3.feasible, config.mean3d);
+  if (!config.crule_extended || F.kind() == ConvexKind3::empty) return;
+  const Point3 trace = measured_map(max_trace(F));
+  if (sgn(trace.z) > 0) score(rule_count + 2, trace, worst_case_map_deg_3d(F, trace));
+  const std::optional<MapEstimate> cone = perspective_cone_mean(F.exact(), config.mean3d);
   if (cone && cone->valid) {
     const Point2 m = measured_map(*cone);
     const Point3 lift{m.x, m.y, Rational(1)};
-    score(rule_count + 3, lift, worst_case_map_deg_3d(c3.feasible, lift));
+    score(rule_count + 3, lift, worst_case_map_deg_3d(F, lift));
   }
 }
 

@@ -59,8 +59,9 @@ Crule3d crule_3d(const std::vector<Colour>& canonical, const std::vector<Colour>
                  CanonicalBlack black = CanonicalBlack::include);
 
 /// The same from a canonical gamut prepared once (CanonicalConstraints3, feasible_set_3d.h;
-/// docs/math.md §1b "The prepared route"): what an experiment calls per scene, there with
-/// `route` certified (the centroid certified, no volume; F3 and max-volume exact as always).
+/// docs/math.md §1b "The prepared route"), with `route` certified: the centroid certified, no
+/// volume; F3 and max-volume exact as always. (The experiments run the same rules on F3 kept
+/// symbolic, feasible_set_3d_lazy, and make F3 exact only where a rule needs it.)
 /// \throws as feasible_set_3d.
 Crule3d crule_3d(const CanonicalConstraints3& canonical, const std::vector<Colour>& image,
                  Crule3dRoute route = Crule3dRoute::exact);
