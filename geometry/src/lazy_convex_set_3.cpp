@@ -43,15 +43,7 @@ Enclosure enclose_quotient(const mpz_class& x, const mpz_class& w, std::optional
   const long e = std::labs(numerics::binary_magnitude(x.get_mpz_t(), w.get_mpz_t()));
   const long limit = numerics::double_magnitude_limit;
   if (e <= limit - 1) {
-    // From the leading bits when they decide it, else mpq_get_d on a read-only view of (x, w)
-    // (it needs no lowest terms): the same double either way (numerics/truncated_quotient.h).
-    truncated = numerics::truncated_quotient(x.get_mpz_t(), w.get_mpz_t());
-    if (!truncated) {
-      mpq_t q;
-      *mpq_numref(q) = *x.get_mpz_t();
-      *mpq_denref(q) = *w.get_mpz_t();
-      truncated = mpq_get_d(q);
-    }
+    truncated = numerics::truncated_double(x.get_mpz_t(), w.get_mpz_t());
   } else if (e >= limit + 2) {
     truncated = std::nullopt;
   } else {

@@ -8,6 +8,7 @@
 #include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/numerics/internal_check.h>
 #include <gmcc/numerics/rational_to_float.h>
+#include <gmcc/numerics/truncated_quotient.h>
 
 #include <algorithm>
 #include <array>
@@ -646,12 +647,10 @@ class Clipper {
       for (mpz_class& c : h) c = -c;
     LazyConvexSet3::TruncatedVertex out{{0, 0, 0}, true};
     for (std::size_t k = 0; k < 3; ++k) {
-      if (sgn(h[k]) == 0) continue;
-      out.zero = false;
-      if (std::labs(numerics::binary_magnitude(h[k].get_mpz_t(), h[3].get_mpz_t())) > numerics::double_magnitude_limit - 1)
-        return std::nullopt;
-      const Rational q(h[k], h[3]);  // unreduced: mpq_get_d truncates the quotient as it stands
-      out.truncated[k] = mpq_get_d(q.get_mpq_t());
+      const std::optional<double> t = numerics::truncated_double(h[k].get_mpz_t(), h[3].get_mpz_t());
+      if (!t) return std::nullopt;
+      out.truncated[k] = *t;
+      out.zero = out.zero && *t == 0;
     }
     return out;
   }

@@ -23,11 +23,13 @@
 /// comparison; otherwise to the lower floor's. Only when a quotient would not fit in 64 bits is
 /// nothing decided here, and the caller divides exactly.
 
+#include <gmcc/numerics/rational_to_float.h>
 #include <gmcc/numerics/wide_multiply.h>
 
 #include <gmp.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -100,6 +102,21 @@ inline std::optional<double> truncated_quotient(mpz_srcptr x, mpz_srcptr w) {
   }
   const double value = std::ldexp(static_cast<double>(t.m), static_cast<int>(t.e + a.shift - b.shift));
   return mpz_sgn(x) < 0 ? -value : value;
+}
+
+/// x/w (w > 0, not necessarily in lowest terms) truncated toward zero to a double — 0 for x = 0 —
+/// when its magnitude bits(|x|) − bits(w) is within the range policy's limit − 1 (then the double
+/// and its ±2u enclosure are those of the reduced fraction: rational_to_float.h), else nothing:
+/// from the leading bits when they decide it (truncated_quotient), else mpq_get_d on a read-only
+/// view of (x, w), which truncates the quotient whatever its representation.
+inline std::optional<double> truncated_double(mpz_srcptr x, mpz_srcptr w) {
+  if (mpz_sgn(x) == 0) return 0.0;
+  if (std::labs(binary_magnitude(x, w)) > double_magnitude_limit - 1) return std::nullopt;
+  if (const std::optional<double> t = truncated_quotient(x, w)) return t;
+  mpq_t q;
+  *mpq_numref(q) = *x;
+  *mpq_denref(q) = *w;
+  return mpq_get_d(q);
 }
 
 }  // namespace gmcc::numerics
