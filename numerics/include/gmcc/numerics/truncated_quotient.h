@@ -73,6 +73,16 @@ inline Leading53 leading_53(std::uint64_t q) {
   return {q >> (length - 53), length - 53};
 }
 
+/// Two integers kept per thread for truncated_quotient's boundary decision, cleared with the thread
+/// (a bare thread_local mpz_t would leak its limbs at every thread's exit).
+struct BoundaryScratch {
+  mpz_t left, right;
+  BoundaryScratch() { mpz_init(left), mpz_init(right); }
+  ~BoundaryScratch() { mpz_clear(left), mpz_clear(right); }
+  BoundaryScratch(const BoundaryScratch&) = delete;
+  BoundaryScratch& operator=(const BoundaryScratch&) = delete;
+};
+
 /// x/w truncated toward zero to a double, as mpq_get_d gives it (the file comment's proof), or
 /// nothing in the two edge cases where a quotient of leading bits would not fit in 64 bits.
 /// \pre x != 0, w > 0, and |x/w| within 2^±138.
@@ -89,9 +99,8 @@ inline std::optional<double> truncated_quotient(mpz_srcptr x, mpz_srcptr w) {
   if (lo.m != hi.m || lo.e != hi.e) {
     // The range is narrower than 3 and truncation boundaries are 2^e >= 2^10 apart: the one
     // boundary in it is c = m_hi·2^e_hi, and ρ >= c decides, exactly: |x|·2^(t−s) >= c·w.
-    thread_local mpz_t left, right;
-    thread_local bool made = false;
-    if (!made) mpz_init(left), mpz_init(right), made = true;
+    thread_local BoundaryScratch scratch;  // kept across calls, freed when the thread ends
+    mpz_ptr left = scratch.left, right = scratch.right;
     mpz_abs(left, x);
     mpz_mul_ui(right, w, static_cast<unsigned long>(hi.m));
     const long scale = b.shift - a.shift, e = hi.e;  // t − s, and c's exponent
