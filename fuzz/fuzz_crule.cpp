@@ -5,10 +5,15 @@
 // enough for the image-hull prefilter (fuzz/README.md). Then the filtered selections on F3:
 // max_volume's staged answer is its exact stage's over every candidate, max_trace and the worst
 // case are the vertices' best in ℚ, the certified centroid encloses the exact one, and contains()
-// agrees with every facet's plane in ℚ (points 10^-9 and 2^-80 beyond each vertex).
+// agrees with every facet's plane in ℚ (points 10^-9 and 2^-80 beyond each vertex). Last, the
+// lazy route (feasible_set_3d_lazy: F3 kept symbolic, vertices made exact only on request) gives
+// F3's kind, faces, zero flags and enclosures bit for bit, and the selections' and contains()'s
+// answers on F3, each on a fresh lazy set so that an exact stage makes what it needs.
 #include <gmcc/geometry/convex_set_3.h>
+#include <gmcc/geometry/enclosure.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
+#include <gmcc/geometry/lazy_convex_set_3.h>
 
 #include <gmcc/selection/centroid_3.h>
 #include <gmcc/selection/crule_3d.h>
@@ -63,16 +68,30 @@ Colour colour(fuzz::ByteReader& in) { return {number(in), number(in), number(in)
 
 bool same(const ConvexSet3& a, const ConvexSet3& b) { return a == b; }
 
+// Whether two estimates are the same answer: method, doubles, enclosure, bound, exact map or
+// edge root.
+bool same_estimate(const MapEstimate3& a, const MapEstimate3& b) {
+  return a.method == b.method && a.map == b.map && a.enclosure == b.enclosure && a.error_bound == b.error_bound &&
+         a.exact.has_value() == b.exact.has_value() && (!a.exact || *a.exact == *b.exact) &&
+         a.edge_root.has_value() == b.edge_root.has_value() &&
+         (!a.edge_root || (a.edge_root->from == b.edge_root->from && a.edge_root->to == b.edge_root->to &&
+                           a.edge_root->a == b.edge_root->a && a.edge_root->b == b.edge_root->b &&
+                           a.edge_root->c == b.edge_root->c && a.edge_root->sign == b.edge_root->sign));
+}
+
+// Points a hair beyond each vertex of F (probes for contains()).
+std::vector<Point3> probes(const ConvexSet3& F) {
+  std::vector<Point3> out;
+  for (const Rational& hair : {reduced(Rational(1, 1000000007)), Rational(1, mpz_class(1) << 80)})
+    for (const Point3& v : F.vertices)
+      out.push_back({Rational(v.x * (1 + hair)), Rational(v.y * (1 + hair)), Rational(v.z * (1 - hair))});
+  return out;
+}
+
 // The filtered selections against their exact routes (docs/math.md §1b).
 void check_selections(const ConvexSet3& F) {
   if (F.kind == ConvexKind3::empty) return;
-  const MapEstimate3 staged = max_volume(F);
-  const MapEstimate3 exact = internal::max_volume_over(F, internal::all_max_volume_candidates(F));
-  FUZZ_CHECK(staged.method == exact.method && staged.map == exact.map && staged.enclosure == exact.enclosure &&
-                 staged.error_bound == exact.error_bound && staged.exact.has_value() == exact.exact.has_value() &&
-                 (!staged.exact || *staged.exact == *exact.exact) && staged.edge_root.has_value() == exact.edge_root.has_value() &&
-                 (!staged.edge_root || (staged.edge_root->from == exact.edge_root->from &&
-                                        staged.edge_root->to == exact.edge_root->to && staged.edge_root->sign == exact.edge_root->sign)),
+  FUZZ_CHECK(same_estimate(max_volume(F), internal::max_volume_over(F, internal::all_max_volume_candidates(F))),
              "max_volume's filter gives its exact stage's answer");
   // max_trace and the worst case from the centroid against every vertex in ℚ.
   const Point3* trace = &F.vertices.front();
@@ -111,11 +130,39 @@ void check_selections(const ConvexSet3& F) {
     FUZZ_CHECK(worst_case_map_deg_3d(F, c) == diagonal_map_angular_error_deg(c, *worst),
                "the worst case from the centroid is the vertex of least cos² in ℚ");
   }
-  for (const Rational& hair : {reduced(Rational(1, 1000000007)), Rational(1, mpz_class(1) << 80)})
-    for (const Point3& v : F.vertices) {
-      const Point3 out{Rational(v.x * (1 + hair)), Rational(v.y * (1 + hair)), Rational(v.z * (1 - hair))};
-      FUZZ_CHECK(contains(F, out) == inside(out), "contains() agrees with the facets in ℚ");
-    }
+  for (const Point3& out : probes(F)) FUZZ_CHECK(contains(F, out) == inside(out), "contains() agrees with the facets in ℚ");
+}
+
+// F3 kept symbolic (feasible_set_3d_lazy: its vertices known by truncated doubles from the clip,
+// made exact only on request; docs/derivations.md §4.6) against F3 made exact: the same set and
+// enclosures bit for bit, and the same answers from every rule and from contains(), each asked of
+// a fresh lazy set so that its exact stages make the vertices they need.
+void check_lazy(const std::vector<GamutConstraint3>& constraints, const ConvexSet3& F) {
+  const auto fresh = [&constraints] { return feasible_set_3d_lazy(constraints); };
+  const LazyConvexSet3 L = fresh();
+  FUZZ_CHECK(L.kind() == F.kind && L.size() == F.vertices.size() && L.faces() == F.faces,
+             "the lazy F3 has F3's kind, vertex count and faces");
+  for (std::size_t i = 0; i < L.size(); ++i) {
+    const Point3& v = F.vertices[i];
+    const Enclosure3 want = enclose_point(v);
+    for (std::size_t k = 0; k < 3; ++k)
+      FUZZ_CHECK(L.enclosures()[i][k].mid == want[k].mid && L.enclosures()[i][k].rad == want[k].rad,
+                 "a lazy vertex's enclosure is enclose_point of the exact vertex, bit for bit");
+    FUZZ_CHECK(L.is_zero(i) == (sgn(v.x) == 0 && sgn(v.y) == 0 && sgn(v.z) == 0), "the lazy zero flags are F3's");
+  }
+  FUZZ_CHECK(L.exact() == F, "the lazy F3 made exact is F3");
+  if (F.kind == ConvexKind3::empty) return;
+  FUZZ_CHECK(same_estimate(max_volume(fresh()), max_volume(F)), "max_volume on the lazy F3 is max_volume on F3");
+  FUZZ_CHECK(same_estimate(max_trace(fresh()), max_trace(F)), "max_trace on the lazy F3 is max_trace on F3");
+  FUZZ_CHECK(same_estimate(centroid_3(fresh(), Crule3dRoute::certified), centroid_3(F, Crule3dRoute::certified)),
+             "the certified centroid of the lazy F3 is F3's");
+  const Point3 c = centroid(F);
+  if (sgn(c.x) != 0 || sgn(c.y) != 0 || sgn(c.z) != 0)
+    FUZZ_CHECK(worst_case_map_deg_3d(fresh(), c) == worst_case_map_deg_3d(F, c),
+               "the worst case from the centroid on the lazy F3 is F3's");
+  const LazyConvexSet3 probed = fresh();
+  FUZZ_CHECK(contains(probed, c) == contains(F, c), "contains() on the lazy F3 agrees on the centroid");
+  for (const Point3& out : probes(F)) FUZZ_CHECK(contains(probed, out) == contains(F, out), "contains() on the lazy F3 agrees");
 }
 
 }  // namespace
@@ -160,6 +207,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const CanonicalBlack b = black ? CanonicalBlack::include : CanonicalBlack::exclude;
   std::string old_error, new_error;
   ConvexSet3 old, now;
+  const CanonicalConstraints3 prepared(canonical, b);
   try {
     old = test::feasible_set_3d_reference(canonical, image, b);
   } catch (const UnboundedFeasibleSet&) {
@@ -168,7 +216,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     old_error = "invalid";
   }
   try {
-    now = feasible_set_3d(CanonicalConstraints3(canonical, b), image);
+    now = feasible_set_3d(prepared, image);
   } catch (const UnboundedFeasibleSet&) {
     new_error = "unbounded";
   } catch (const std::invalid_argument&) {
@@ -191,5 +239,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       for (const internal::HalfSpace3& h : G)
         FUZZ_CHECK(h.a.x * v.x * c.r + h.a.y * v.y * c.g + h.a.z * v.z * c.b <= h.b, "a vertex of F3 is feasible");
   check_selections(now);
+  check_lazy({GamutConstraint3{&prepared, &image}}, now);
   return 0;
 }
