@@ -27,13 +27,14 @@
 #include <cmath>
 #include <limits>
 
-/// Marks a function that runs double-word arithmetic: on x86-64 ELF with GCC or Clang, and a
-/// build not already targeting FMA, it is compiled twice, with and without FMA instructions, and
-/// the loader picks the one the processor supports (target_clones); `flatten` inlines every
-/// double-word operation into both, so that std::fma is one instruction rather than a call into
-/// the C library. Both compute the same values (std::fma is exact-then-rounded either way).
-/// Elsewhere, and in the portable build, it marks nothing.
-#if defined(__x86_64__) && defined(__GNUC__) && defined(__ELF__) && !defined(__FMA__) && \
+/// Marks a function that runs double-word arithmetic: on x86-64 ELF with GCC, and a build not
+/// already targeting FMA, it is compiled twice, with and without FMA instructions, and the loader
+/// picks the one the processor supports (target_clones); `flatten` inlines every double-word
+/// operation into both, so that std::fma is one instruction rather than a call into the C
+/// library. Both compute the same values (std::fma is exact-then-rounded either way). Elsewhere
+/// it marks nothing: in the portable build, and under Clang (the fuzz build, scripts/fuzz), which
+/// refuses target_clones together with flatten.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__) && !defined(__FMA__) && \
     !defined(GMCC_PORTABLE_NUMERICS)
 #define GMCC_DW_FMA_CLONES __attribute__((target_clones("fma", "default"), flatten))
 #else

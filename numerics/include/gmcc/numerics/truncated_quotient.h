@@ -76,7 +76,10 @@ inline Leading53 leading_53(std::uint64_t q) {
 /// Two integers kept per thread for truncated_quotient's boundary decision, cleared with the thread
 /// (a bare thread_local mpz_t would leak its limbs at every thread's exit).
 struct BoundaryScratch {
+  /// the two sides of the boundary comparison, |x|·2^(t−s) and c·w
+  ///@{
   mpz_t left, right;
+  ///@}
   BoundaryScratch() { mpz_init(left), mpz_init(right); }
   ~BoundaryScratch() { mpz_clear(left), mpz_clear(right); }
   BoundaryScratch(const BoundaryScratch&) = delete;
