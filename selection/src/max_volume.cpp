@@ -146,7 +146,8 @@ Candidates candidates(const LazyConvexSet3& F, const internal::MaxVolumeCandidat
     d.x.canonicalize(), d.y.canonicalize(), d.z.canonicalize();
     if (contains(F, d)) rational.push_back(point_candidate(std::move(d)));
   }
-  for (const auto& [i, j] : which.edges) {
+  for (const auto& edge : which.edges) {
+    const std::size_t i = edge.first, j = edge.second;  // named, not bound: the lambda below captures them
     const auto &hp = F.homogeneous(i), &hq = F.homogeneous(j);
     EdgeRoot e{i, j, {}, {}, hp[3] * hq[3], 0, 0, 0, 1};
     for (std::size_t k = 0; k < 3; ++k) e.P[k] = hp[k] * hq[3], e.U[k] = hq[k] * hp[3] - e.P[k];
