@@ -683,7 +683,9 @@ class Clipper {
       if (!t) {
         if (!x.exact) x.exact = exact_homogeneous(x.planes);
         if (!(t = truncated(*x.exact))) return exact_result(std::move(faces));
-        meets->made[j] = std::move(*x.exact);
+        // A copy: a later vertex out of range sends every vertex to exact_result, which reads
+        // this one's x.exact again (a moved-from one would read W = 0).
+        meets->made[j] = *x.exact;
       }
       vertices.push_back(*t);
     }

@@ -162,6 +162,25 @@ BOOST_AUTO_TEST_CASE(hand_cases_every_kind) {
   BOOST_TEST(CanonicalConstraints3({{1, 2, 3}}, CanonicalBlack::exclude).dimension() == 0);
 }
 
+// fuzz_crule's finding (fuzz/corpus/crule/finding_vertex_made_exact_then_one_out_of_range),
+// reduced: F3's final vertices are known by their truncated doubles, one of them made exact on
+// the way (its double-word copy did not decide it), and a later one outside the range policy's
+// first range (channels from 2^-56 to 2^52) sends every vertex to the exact route, which read the
+// first one's coordinates after they had been moved on (W = 0: an InternalError). The route
+// must give the LP route's F3, and so must the lazy set made exact.
+BOOST_AUTO_TEST_CASE(a_vertex_made_exact_then_one_out_of_range) {
+  const std::vector<Colour> canonical{
+      {85, 0, 0}, {R(mpz_class("21712730222"), mpz_class("241089902801")), R(7, 18), 196608}, {65536, 0, R(mpz_class("51539607552"))}};
+  const std::vector<Colour> image{{R(mpz_class("4503599627370496")), R(2, 3), 171},
+                                  {R(1, mpz_class("72057594037927936")), R(mpz_class("35184372088832")), R(mpz_class("21474836480"))}};
+  Tally t;
+  agree(canonical, image, true, t);
+  BOOST_TEST(t.polytope == 1);
+  const CanonicalConstraints3 prepared(canonical, CanonicalBlack::include);
+  BOOST_TEST((feasible_set_3d_lazy({GamutConstraint3{&prepared, &image}}).exact() ==
+              test::feasible_set_3d_reference(canonical, image, CanonicalBlack::include)));
+}
+
 BOOST_AUTO_TEST_CASE(large_images_through_the_hull_prefilter_agree) {
   Rng rng(4242);
   Tally t;
