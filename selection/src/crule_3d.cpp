@@ -92,13 +92,20 @@ Crule3d crule_3d(const std::vector<Colour>& canonical, const std::vector<Colour>
   return crule_3d(CanonicalConstraints3(canonical, black), image);
 }
 
+Crule3dSelections crule_3d_selections(const LazyConvexSet3& F3, Crule3dRoute route) {
+  Crule3dSelections s;
+  if (F3.kind() != ConvexKind3::empty) {
+    s.max_volume = with_worst_case(F3, max_volume(F3));
+    s.centroid = with_worst_case(F3, centroid_3(F3, route));
+  }
+  return s;
+}
+
 Crule3d crule_3d(const CanonicalConstraints3& canonical, const std::vector<Colour>& image, Crule3dRoute route) {
   Crule3d r;
   const LazyConvexSet3 F = feasible_set_3d_lazy({{&canonical, &image}});
-  if (F.kind() != ConvexKind3::empty) {
-    r.max_volume = with_worst_case(F, max_volume(F));
-    r.centroid = with_worst_case(F, centroid_3(F, route));
-  }
+  Crule3dSelections s = crule_3d_selections(F, route);
+  r.max_volume = std::move(s.max_volume), r.centroid = std::move(s.centroid);
   r.feasible = F.exact();
   if (route == Crule3dRoute::exact) r.volume = volume(r.feasible);
   return r;

@@ -8,12 +8,10 @@
 #include <gmcc/geometry/chromaticity.h>
 #include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/geometry/feasible_set.h>
-#include <gmcc/selection/angular_error.h>
-#include <gmcc/selection/centroid_3.h>
-#include <gmcc/selection/crule_3d.h>
-#include <gmcc/selection/max_volume.h>
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/geometry/lazy_convex_set_3.h>
+#include <gmcc/selection/angular_error.h>
+#include <gmcc/selection/crule_3d.h>
 #include <gmcc/selection/max_trace.h>
 #include <gmcc/selection/perspective_cone_mean.h>
 #include <gmcc/selection/score_rules.h>
@@ -115,11 +113,7 @@ std::vector<RuleRecord> baseline_records(const ExperimentSetup& setup, const Tes
 void score_crule(const ExperimentSetup& setup, const ExperimentConfig& config, const CanonicalConstraints3& crule_gamut,
                  const TestLight& light, const std::vector<Colour>& image_colours, SceneRecord& rec) {
   const LazyConvexSet3 F = feasible_set_3d_lazy({{&crule_gamut, &image_colours}});
-  Crule3d c3;
-  if (F.kind() != ConvexKind3::empty) {
-    c3.max_volume = with_worst_case(F, max_volume(F));
-    c3.centroid = with_worst_case(F, centroid_3(F, Crule3dRoute::certified));
-  }
+  const Crule3dSelections c3 = crule_3d_selections(F, Crule3dRoute::certified);
   const bool truth3_inside = contains(F, light.true_diagonal_map);
   // The 3-D map d of a selection, its worst case over F3 given: scored when d3 > 0.
   auto score = [&](std::size_t slot, const Point3& d, double worst_case_deg) {

@@ -52,6 +52,20 @@ struct Crule3d {
   ///@}
 };
 
+/// CRULE-MV and CRULE-AVE on a given F3: the two selections of Crule3d.
+struct Crule3dSelections {
+  /// max_volume and the centroid (centroid_3 on the route asked), each with_worst_case; absent
+  /// when F3 is empty
+  ///@{
+  std::optional<Selection3> max_volume, centroid;
+  ///@}
+};
+
+/// CRULE's two selections (Forsyth 1990; Barnard et al. 2002 Part I for the centroid) on F3 as given, its
+/// vertices made exact only where a rule needs them: what crule_3d reports for its F3, and what
+/// the experiments score on F3 kept symbolic (feasible_set_3d_lazy). O(the rules' filters).
+Crule3dSelections crule_3d_selections(const LazyConvexSet3& F3, Crule3dRoute route);
+
 /// feasible_set_3d(canonical, image, black), then max_volume and the centroid (centroid_3, exact),
 /// each with worst_case_map_deg_3d (a map that is not rational, or only certified, is measured
 /// from its double map, taken exactly). \throws as feasible_set_3d.
