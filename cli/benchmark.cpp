@@ -91,14 +91,15 @@ std::string table(const BenchmarkResult& r) {
                   s.worst_case_covers ? (fixed(100.0 * *s.worst_case_covers, 1) + "%").c_str() : "");
     t << line;
   }
-  t << "recovery angular error in degrees; a gamut method with no estimate (F empty, or no positive map) "
-       "takes grey world's; in F: images whose true light lies in the feasible set; wc>=err: answered "
-       "images whose error is at most the rule's worst case\n";
+  t << "recovery angular error in degrees; a gamut method with no estimate (F empty, no positive map, or "
+       "no feasible set) takes grey world's; in F: images whose true light lies in the feasible set "
+       "(decided exactly); wc>=err: answered images whose error is at most the rule's certified worst "
+       "case, both in the worst case's space (2-D: illuminant, or map where F touches an axis; 3-D: map)\n";
   return t.str();
 }
 
 std::string csv(const BenchmarkResult& r) {
-  std::string out = "method,images,answered,empty,fallback,mean_deg,median_deg,trimean_deg,best25_deg,worst25_deg,p95_deg,"
+  std::string out = "method,images,answered,empty,unanswered_other,fallback,mean_deg,median_deg,trimean_deg,best25_deg,worst25_deg,p95_deg,"
          "max_deg,truth_in_feasible,worst_case_covers,worst_case_correlation\n";
   for (const BenchmarkSummary& s : r.summaries) {
     const ErrorStatistics& e = s.errors;
@@ -106,7 +107,8 @@ std::string csv(const BenchmarkResult& r) {
     const bool any = e.n > 0;
     auto stat = [&](double x) { return any ? number(x) : std::string(); };
     out += s.method + "," + std::to_string(s.images) + "," + std::to_string(s.answered) + "," +
-           (gamut ? std::to_string(s.empty) : "") + "," + (gamut ? "grey_world" : "") + "," + stat(e.mean) + "," +
+           (gamut ? std::to_string(s.empty) : "") + "," + std::to_string(s.unanswered_other) + "," +
+           (gamut ? "grey_world" : "") + "," + stat(e.mean) + "," +
            stat(e.median) + "," + stat(e.trimean) + "," + stat(e.best25) + "," + stat(e.worst25) + "," +
            stat(e.p95) + "," + stat(e.max) + "," +
            (gamut ? number(double(s.truth_in_feasible) / double(s.images)) : "") + "," + number(s.worst_case_covers) +
@@ -122,6 +124,7 @@ Json summary_json(const BenchmarkSummary& s) {
   Json j = {{"method", s.method},
             {"images", s.images},
             {"answered", s.answered},
+            {"unanswered_other", s.unanswered_other},
             {"errors_deg",
              {{"n", e.n}, {"mean", stat(e.mean)}, {"median", stat(e.median)}, {"trimean", stat(e.trimean)},
               {"best25", stat(e.best25)}, {"worst25", stat(e.worst25)}, {"p95", stat(e.p95)}, {"max", stat(e.max)}}}};
@@ -141,10 +144,13 @@ Json record_json(const BenchmarkRecord& r, const ImageOf& images) {
   j["error_deg"] = optional_json(r.error_deg);
   j["answered"] = r.answered;
   j["fallback"] = r.fallback.empty() ? Json(nullptr) : Json(r.fallback);
+  j["unanswered"] = r.unanswered.empty() ? Json(nullptr) : Json(r.unanswered);
   if (!r.feasible_kind.empty()) {
     j["feasible_set"] = {{"kind", r.feasible_kind}, {"vertices", r.feasible_vertices}};
     j["truth_in_feasible"] = r.truth_in_feasible ? Json(*r.truth_in_feasible) : Json(nullptr);
     j["worst_case_deg"] = optional_json(r.worst_case_deg);
+    j["worst_case_space"] = r.worst_case_space;
+    j["worst_case_space_error_deg"] = optional_json(r.worst_case_space_error_deg);
   }
   return j;
 }
@@ -276,7 +282,8 @@ CLI::App* add_benchmark_command(CLI::App& app, BenchmarkCliOptions& o) {
       ->check(CLI::IsMember({"include", "exclude"}))
       ->capture_default_str();
   cmd->add_option("--edge-sigma", o.edge_sigma,
-                  "the edge-based methods' Gaussian derivative scale, in pixels, more than 0 and at most 64")
+                  "the Gaussian derivative scale of the edge-based methods and the grey-edge baselines, in "
+                  "pixels, more than 0 and at most 64")
       ->capture_default_str();
   cmd->add_option("--threads", o.threads, "worker threads, 0 for the machine's cores")->capture_default_str();
   cmd->add_option("--csv", o.csv_path, "write one row per method to this CSV file");
@@ -299,6 +306,10 @@ int run_benchmark_command(const BenchmarkCliOptions& o) {
   const PixelSettings settings = pixel_settings(o.pixels);
   const std::vector<BenchmarkImage> images = dataset(o);
   BenchmarkOptions options;
+  for (std::size_t i = 0; i < o.methods.size(); ++i)
+    if (std::find(o.methods.begin(), o.methods.begin() + static_cast<std::ptrdiff_t>(i), o.methods[i]) !=
+        o.methods.begin() + static_cast<std::ptrdiff_t>(i))
+      throw InputError("--methods", 0, quoted_text(o.methods[i]) + " is given twice");
   if (!o.methods.empty()) options.methods = o.methods;
   options.pixels = settings.rules;
   options.saturation_max = settings.saturation_max;

@@ -80,12 +80,18 @@ BenchmarkRecord merged_record(const Json& j, const Place& at, std::size_t images
   r.error_deg = optional_field(j, "error_deg", at);
   r.answered = get<bool>(j, "answered", at);
   if (!member(j, "fallback", at).is_null()) r.fallback = get<std::string>(j, "fallback", at);
+  if (!member(j, "unanswered", at).is_null()) r.unanswered = get<std::string>(j, "unanswered", at);
+  if (r.answered == !r.unanswered.empty()) bad(at, "\"answered\" and \"unanswered\" disagree");
   if (j.contains("feasible_set")) {
     const Json& f = j.at("feasible_set");
     r.feasible_kind = get<std::string>(f, "kind", at);
     r.feasible_vertices = get<std::size_t>(f, "vertices", at);
     if (!member(j, "truth_in_feasible", at).is_null()) r.truth_in_feasible = get<bool>(j, "truth_in_feasible", at);
     r.worst_case_deg = optional_field(j, "worst_case_deg", at);
+    r.worst_case_space = get<std::string>(j, "worst_case_space", at);
+    if (r.worst_case_space != "map" && r.worst_case_space != "illuminant")
+      bad(at, "\"worst_case_space\" is " + quoted_text(r.worst_case_space) + ", not \"map\" or \"illuminant\"");
+    r.worst_case_space_error_deg = optional_field(j, "worst_case_space_error_deg", at);
   }
   return r;
 }

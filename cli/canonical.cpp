@@ -9,6 +9,7 @@
 #include <gmcc/photo/learn_canonical.h>
 
 #include <filesystem>
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -91,9 +92,15 @@ int run_canonical(const CanonicalOptions& o) {
           std::to_string(pixels) + " pixels kept, each divided by its image's light (the "
           "canonical light is white, 1,1,1)";
   if (space_3d) {
+    const std::vector<Colour> gamut = learner3.gamut();
+    if (std::all_of(gamut.begin(), gamut.end(), [](const Colour& c) { return sgn(c.r) == 0 && sgn(c.g) == 0 && sgn(c.b) == 0; }))
+      throw InputError(o.images.size() == 1 ? o.images.front() : "--from-images", 0,
+                       "no canonical colour: every kept pixel of " +
+                           std::string(o.images.size() == 1 ? "the image" : "every image") +
+                           " is black (0,0,0) after the black level, so the 3-D gamut would be empty or black only");
     text += o.intensity == "max" ? ", each image scaled so that its largest channel is 1" : "";
     text += "; the vertices of the hull of their colours (3-D)\nr,g,b\n";
-    for (const Colour& c : learner3.gamut()) text += exact(c.r) + "," + exact(c.g) + "," + exact(c.b) + "\n";
+    for (const Colour& c : gamut) text += exact(c.r) + "," + exact(c.g) + "," + exact(c.b) + "\n";
   } else if (lifts) {
     text += "; the vertices of the hull of their chromaticities, as chromaticity lifts r/b,g/b,1\n";
     text += "r/b,g/b,1\n";

@@ -18,6 +18,7 @@
 
 #include "json_output.h"
 #include "output_files.h"
+#include "provenance.h"
 #include "select.h"
 #include "write_stdout.h"
 
@@ -191,7 +192,8 @@ void describe_image(std::ostream& text, const std::string& path, const RgbImage&
 CLI::App* add_estimate_command(CLI::App& app, EstimateOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "estimate",
-      "Estimate the light of linear camera images (8/16-bit PNG or TIFF) by gamut mapping: "
+      "Estimate the light of linear camera images (8/16-bit PNG or TIFF, or camera raw files through "
+      "LibRaw: DNG, CR2, NEF, ..., each Bayer quad one pixel) by gamut mapping: "
       "pixels to colours by explicit pre-processing (docs/conventions.md §8), then the feasible "
       "set and the three selection rules against one canonical gamut.");
   cmd->add_option("--canonical", o.canonical_path, "canonical colours, one r,g,b per line")
@@ -247,9 +249,11 @@ namespace {
 // (hull refused: it passes chromaticity lifts).
 Settings settings_3d(const EstimateOptions& o) {
   const CLI::App* cmd = o.pixels.command;
-  for (const char* name : {"--expand", "--expand-policy", "--on-empty", "--illuminant-worst-case"})
+  for (const char* name : {"--expand", "--expand-policy", "--on-empty", "--illuminant-worst-case"}) {
     if (cmd && cmd->count(name))
       throw InputError(name, 0, "applies to the 2-D perspective route, not --space 3d");
+    drop_recorded_option(name);  // the provenance lists what is in effect
+  }
   PixelOptions pixel_options = o.pixels;
   if (cmd && cmd->count("--colour-set")) {
     if (o.pixels.colour_set == "hull")
@@ -258,6 +262,7 @@ Settings settings_3d(const EstimateOptions& o) {
                        "hull-3d (the default) or distinct");
   } else {
     pixel_options.colour_set = "hull-3d";
+    record_option_in_effect("--colour-set", "hull-3d");
   }
   EstimateOptions plain = o;
   plain.pixels = pixel_options;
@@ -275,6 +280,34 @@ Estimate3Options estimate3_options(const EstimateOptions& o, const Settings& s) 
     for (const std::string& r : o.rules_3d) options.rules.push_back(rule_3_from_string(r));
   }
   return options;
+}
+
+// One 3-D rule's answer: its line of the summary on `text`, and its JSON. Errors against a
+// truth in their own spaces: the recovery error (light against light) and the map-space error,
+// the space of the worst case, which bounds it whenever the truth is in F3.
+Json rule_3d_output(std::ostream& text, Rule3 rule, const ImageSelection3& sel) {
+  const MapEstimate3& m = sel.selection.estimate;
+  Json j = {{"map", m.map}, {"method", m.method}, {"error_bound", m.error_bound}};
+  if (sel.selection.worst_case_deg) j["worst_case_deg"] = *sel.selection.worst_case_deg;
+  text << "  " << to_string(rule);
+  if (sel.light) {
+    const std::array<double, 3>& e = *sel.light;
+    j["light"] = e;
+    text << "  light (" << fixed(e[0], 6) << ", " << fixed(e[1], 6) << ", " << fixed(e[2], 6) << ")";
+    if (sel.recovery_error_deg) {
+      j["recovery_error_deg"] = *sel.recovery_error_deg;
+      text << "  recovery error " << fixed(*sel.recovery_error_deg, 3) << " deg";
+    }
+  } else {
+    text << "  no light (a map component is 0)";
+  }
+  if (sel.map_error_deg) {
+    j["map_error_deg"] = *sel.map_error_deg;
+    text << "  map error " << fixed(*sel.map_error_deg, 3) << " deg";
+  }
+  if (sel.selection.worst_case_deg) text << "  worst case (map) " << fixed(*sel.selection.worst_case_deg, 3) << " deg";
+  text << "\n";
+  return j;
 }
 
 // `gmcc estimate --space 3d`: CRULE on each image's pixel colours against the prepared 3-D
@@ -298,7 +331,9 @@ int run_estimate_3d(const EstimateOptions& o) {
         s.truths.empty() ? s.truth : std::optional<Colour>(truth_of_image(s.truths, path, o.truths_path).light);
     ImageEstimate3 r;
     try {
-      r = estimate_3d(prepared, colours, options);
+      Estimate3Options with_truth = options;
+      with_truth.truth = truth;
+      r = estimate_3d(prepared, colours, with_truth);
     } catch (const UnboundedFeasibleSet& e) {
       throw InputError(path, 0, e.what());
     }
@@ -309,32 +344,22 @@ int run_estimate_3d(const EstimateOptions& o) {
     describe_pixels(text, path, image, colours, rules);
     text << "\n  feasible set (3-D): " << to_string(r.lazy_feasible.kind()) << ", " << r.lazy_feasible.size()
          << " vertices\n";
+    if (truth) {
+      // Decided exactly on F3's rows (feasible_ray_3d.h): some positive multiple of c ⊘ e in F3.
+      record["truth"] = {{"light", {to_string(truth->r), to_string(truth->g), to_string(truth->b)}},
+                         {"in_feasible_set", *r.truth_in_feasible}};
+      text << "  true light (" << fmt(to_double_nearest(truth->r)) << ", " << fmt(to_double_nearest(truth->g)) << ", "
+           << fmt(to_double_nearest(truth->b)) << "): its map " << (*r.truth_in_feasible ? "inside" : "outside")
+           << " the feasible set (up to intensity)\n";
+    }
     for (Rule3 rule : options.rules) {
       const std::optional<ImageSelection3>& sel = r[rule];
       if (!sel) continue;
-      const MapEstimate3& m = sel->selection.estimate;
-      Json j = {{"map", m.map}, {"method", m.method}, {"error_bound", m.error_bound}};
-      if (sel->selection.worst_case_deg) j["worst_case_deg"] = *sel->selection.worst_case_deg;
-      text << "  " << to_string(rule);
-      if (sel->light) {
-        const std::array<double, 3>& e = *sel->light;
-        j["light"] = e;
-        text << "  light (" << fixed(e[0], 6) << ", " << fixed(e[1], 6) << ", " << fixed(e[2], 6) << ")";
-        if (truth) {
-          const double error = recovery_angular_error_deg(e, *truth);
-          j["recovery_error_deg"] = error;
-          text << "  recovery error " << fixed(error, 3) << " deg";
-        }
-      } else {
-        text << "  no light (a map component is 0)";
-      }
-      if (sel->selection.worst_case_deg) text << "  worst case " << fixed(*sel->selection.worst_case_deg, 3) << " deg";
-      text << "\n";
-      estimates[to_string(rule)] = std::move(j);
+      estimates[to_string(rule)] = rule_3d_output(text, rule, *sel);
       if (outputs && sel->light) {
         const std::string stem = std::filesystem::path(path).stem().string();
         outputs->add(stem + "_" + to_string(rule) + ".png",
-                     encode_png16(corrected(image, rules, rules.saturation.value_or(65536), m.map)));
+                     encode_png16(corrected(image, rules, rules.saturation.value_or(65536), sel->selection.estimate.map)));
       }
     }
     if (r.lazy_feasible.kind() == ConvexKind3::empty)
@@ -358,8 +383,10 @@ int run_estimate_3d(const EstimateOptions& o) {
 int run_estimate(const EstimateOptions& o) {
   if (o.space == "3d") return run_estimate_3d(o);
   const CLI::App* cmd = o.pixels.command;
-  for (const char* name : {"--rules", "--black", "--centroid"})
+  for (const char* name : {"--rules", "--black", "--centroid"}) {
     if (cmd && cmd->count(name)) throw InputError(name, 0, "applies to --space 3d");
+    drop_recorded_option(name);  // the provenance lists what is in effect
+  }
   const Settings s = settings_of(o);
   const ColourTable canonical = read_colour_csv(o.canonical_path);
   const PreparedCanonical prepared = [&] {

@@ -51,7 +51,7 @@ std::optional<Rational> fraction_option(const char* name, const std::string& tex
 }  // namespace
 
 void add_images_argument(CLI::App& cmd, std::vector<std::string>& images) {
-  cmd.add_option("images", images, "image files (PNG or TIFF, linear RGB)")->required();
+  cmd.add_option("images", images, "image files: linear RGB PNG or TIFF, or camera raw files (DNG, CR2, NEF, ... through LibRaw)")->required();
 }
 
 CLI::Option* add_truths_option(CLI::App& cmd, std::string& path, const std::string& use) {

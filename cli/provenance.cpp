@@ -86,6 +86,10 @@ void record_command(const CLI::App& app) {
   recorded() = std::move(c);
 }
 
+void record_option_in_effect(const std::string& name, const std::string& value) { recorded().options[name] = value; }
+
+void drop_recorded_option(const std::string& name) { recorded().options.erase(name); }
+
 Json provenance_json(bool inputs_by_path) {
   Json p;
   p["software"] = "gmcc";

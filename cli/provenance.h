@@ -16,6 +16,14 @@ namespace gmcc::cli {
 /// Remember the parsed command line (call once, after parsing).
 void record_command(const CLI::App& app);
 
+/// Amend the recorded options to what the run put in effect: `name` recorded with `value` (a
+/// default the route replaces, a level read from a file), or left out (an option of another route
+/// that this run does not use: a default of the 2-D route on a 3-D run records nothing).
+///@{
+void record_option_in_effect(const std::string& name, const std::string& value);
+void drop_recorded_option(const std::string& name);
+///@}
+
 /// The record: {"software", "version", "commit", "command", "options",
 /// "inputs"}, inputs being the files read so far, in the order read, or sorted by path when
 /// `inputs_by_path` (a run that reads its inputs in parallel: the same record every run).

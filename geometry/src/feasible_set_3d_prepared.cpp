@@ -2,6 +2,8 @@
 // prepared route", docs/derivations.md §4.6): image hull first, then the filtered exact clip of
 // polytope_clip.cpp; the CGAL pieces and the LP route are behind internal/crule_exact.h.
 #include <gmcc/geometry/colour_hull_3.h>
+#include <gmcc/geometry/convex_hull.h>
+#include <gmcc/geometry/feasible_ray_3d.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/geometry/integers_over_lcm.h>
@@ -14,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -204,7 +207,33 @@ std::vector<Point3> image_points(const std::vector<Colour>& image, bool hull_ver
   return image.size() < hull_from ? p : extreme_points_3(p);
 }
 
-// The hull's vertices always (colour_hull_vertices): the same filter, then the exact hull.
+// The extreme points of sorted, distinct, flat points (affinely at most 2-dimensional): the one
+// point, a segment's ends (lexicographic order is monotone along a line), or the vertices of the
+// exact 2-D hull of a projection onto a coordinate plane that keeps the points' plane 2-dimensional
+// (then the projection is one to one on that plane). Sorted.
+std::vector<Point3> flat_extreme_points(const std::vector<Point3>& p) {
+  const int dimension = affine_dimension(p);
+  if (dimension <= 0) return p;
+  if (dimension == 1) return {p.front(), p.back()};
+  for (int drop = 2; drop >= 0; --drop) {
+    std::map<Point2, const Point3*> back;
+    std::vector<Point2> projected;
+    for (const Point3& q : p) {
+      const Point2 x = drop == 0 ? Point2{q.y, q.z} : drop == 1 ? Point2{q.x, q.z} : Point2{q.x, q.y};
+      projected.push_back(x);
+      back.emplace(x, &q);
+    }
+    const ConvexSet2 hull = convex_hull(projected);
+    if (hull.kind != ConvexKind::polygon) continue;
+    std::vector<Point3> out;
+    for (const Point2& v : hull.vertices) out.push_back(*back.at(v));
+    return sorted_unique(std::move(out));
+  }
+  return p;  // not reached: a plane projects onto some coordinate plane one to one
+}
+
+// The hull's vertices always (colour_hull_vertices): the same filter, then the exact hull; flat
+// colours' own extreme points.
 std::vector<Point3> hull_vertices(const std::vector<Colour>& colours) {
   if (colours.empty()) throw std::invalid_argument("colour_hull_vertices: no colours");
   for (const Colour& c : colours)
@@ -214,7 +243,8 @@ std::vector<Point3> hull_vertices(const std::vector<Colour>& colours) {
   if (colours.size() >= prefilter_from) p = hull_candidates(colours);
   else
     for (const Colour& c : colours) p.push_back({c.r, c.g, c.b});
-  return extreme_points_3(sorted_unique(std::move(p)));
+  p = extreme_points_3(sorted_unique(std::move(p)));
+  return affine_dimension(p) < 3 ? flat_extreme_points(p) : p;
 }
 
 }  // namespace
@@ -290,6 +320,80 @@ LazyConvexSet3 feasible_set_3d_lazy(const std::vector<GamutConstraint3>& constra
   return LazyConvexSet3(internal::feasible_set_3d_lp(parts));
 }
 
+namespace {
+
+// The feasible t > 0 of rows t·k <= b, as fractions compared by cross-multiplication (every
+// denominator > 0): the least upper bound and the greatest lower bound seen, and whether a row
+// already refused every t > 0.
+struct RayInterval {
+  mpz_class hi_num, hi_den;  // hi_den = 0: no upper bound yet
+  mpz_class lo_num = 0, lo_den = 1;  // t > lo (strict while lo = 0, the ray's origin)
+  bool lo_strict = true;
+  bool empty = false;
+
+  // t·k <= b.
+  void add(const mpz_class& k, const mpz_class& b) {
+    const int sk = sgn(k);
+    if (sk == 0) {
+      empty = empty || sgn(b) < 0;
+    } else if (sk > 0) {  // t <= b/k
+      if (sgn(b) <= 0) empty = true;
+      else if (sgn(hi_den) == 0 || b * hi_den < hi_num * k) hi_num = b, hi_den = k;
+    } else if (sgn(b) < 0) {  // t >= b/k = (-b)/(-k) > 0
+      const mpz_class n = -b, d = -k;
+      if (n * lo_den > lo_num * d || (lo_strict && n * lo_den == lo_num * d))
+        lo_num = n, lo_den = d, lo_strict = false;
+    }  // k < 0 and b >= 0: every t > 0
+  }
+  bool meets() const {
+    if (empty) return false;
+    if (sgn(hi_den) == 0) return true;
+    const mpz_class l = lo_num * hi_den, h = hi_num * lo_den;
+    return lo_strict ? l < h : l <= h;
+  }
+};
+
+}  // namespace
+
+bool feasible_set_3d_meets_ray(const std::vector<GamutConstraint3>& constraints, const Point3& d) {
+  if (constraints.empty()) throw std::invalid_argument("feasible_set_3d_meets_ray: no gamut constraint");
+  if (sgn(d.x) <= 0 || sgn(d.y) <= 0 || sgn(d.z) <= 0)
+    throw std::invalid_argument("feasible_set_3d_meets_ray: the map needs every component > 0");
+  // D: a positive integer multiple of d (the same ray).
+  const mpz_class ld = lcm_of_denominators_of(d.x, d.y, d.z);
+  const mpz_class D[3] = {times_lcm(d.x, ld), times_lcm(d.y, ld), times_lcm(d.z, ld)};
+  RayInterval t;
+  for (const GamutConstraint3& g : constraints) {
+    const internal::CanonicalPlanes3& c = internal::FeasibleSet3Access::planes(*g.canonical);
+    const std::vector<Point3> points = internal::image_points(*g.image, g.hull_vertices);
+    bool bounded[3] = {false, false, false};  // as feasible_set_3d: every colour 0 in a channel
+    for (const Point3& p : points)
+      for (int k = 0; k < 3; ++k) bounded[k] = bounded[k] || sgn(coord(p, k)) > 0;
+    for (int k = 0; k < 3; ++k)
+      if (!bounded[k])
+        throw UnboundedFeasibleSet(std::string("every image colour has ") + "rgb"[k] +
+                                   " = 0: that map component is unconstrained and the feasible "
+                                   "set is unbounded");
+    std::vector<internal::IntegerPlane3> own;  // the prepared integer planes exist in 3-D only
+    if (c.dimension != 3)
+      for (const internal::HalfSpace3& h : c.half_spaces) own.push_back(internal::integer_plane(h));
+    const std::vector<internal::IntegerPlane3>& planes = c.dimension == 3 ? c.integer.planes : own;
+    for (const Point3& p : points) {
+      // The row (a ⊙ p)·(t·d) <= b times L·ld (L the lcm of p's denominators): t·(a·q) <= L·ld·b
+      // with q = (L·p) ⊙ D, integers.
+      const mpz_class L = lcm_of_denominators_of(p.x, p.y, p.z);
+      const mpz_class q[3] = {times_lcm(p.x, L) * D[0], times_lcm(p.y, L) * D[1], times_lcm(p.z, L) * D[2]};
+      const mpz_class scale = L * ld;
+      for (const internal::IntegerPlane3& h : planes) {
+        const mpz_class k = h.a[0] * q[0] + h.a[1] * q[1] + h.a[2] * q[2];
+        t.add(k, h.b * scale);
+        if (t.empty) return false;
+      }
+    }
+  }
+  return t.meets();
+}
+
 std::vector<std::size_t> colour_hull_vertex_indices(const std::vector<std::array<double, 3>>& colours) {
   if (colours.empty()) throw std::invalid_argument("colour_hull_vertex_indices: no colours");
   for (const auto& c : colours)
@@ -306,7 +410,16 @@ std::vector<std::size_t> colour_hull_vertex_indices(const std::vector<std::array
     candidates.resize(colours.size());
     for (std::size_t i = 0; i < colours.size(); ++i) candidates[i] = i;
   }
-  return internal::extreme_point_indices_3(colours, candidates);
+  std::vector<std::size_t> out = internal::extreme_point_indices_3(colours, candidates);
+  std::vector<Point3> points;
+  for (std::size_t i : out) points.push_back(exact(i));
+  if (internal::affine_dimension(points) == 3) return out;
+  // Flat colours: their own extreme points (as colour_hull_vertices), by index.
+  const std::vector<Point3> extreme = internal::flat_extreme_points(internal::sorted_unique(points));
+  std::vector<std::size_t> kept;
+  for (std::size_t k = 0; k < out.size(); ++k)
+    if (std::binary_search(extreme.begin(), extreme.end(), points[k])) kept.push_back(out[k]);
+  return kept;
 }
 
 std::vector<Colour> colour_hull_vertices(const std::vector<Colour>& colours) {

@@ -1,5 +1,6 @@
 #include <gmcc/input/image_derivatives.h>
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -74,11 +75,20 @@ DoubleImage gaussian_derivative(const DoubleImage& image, double sigma, Derivati
   const std::vector<double> g = kernel(sigma, 0);
   if (order == DerivativeOrder::zero) return convolve(convolve(image, g, 0), g, 1);
   DoubleImage out{image.width, image.height, std::vector<double>(image.samples.size())};
+  // A channel constant over the image has derivatives exactly 0 (the edge is replicated): they
+  // are set so, where the convolutions would leave round-off that reads as a direction.
+  std::array<bool, 3> flat{true, true, true};
+  for (std::size_t i = 3; i < image.samples.size(); ++i) flat[i % 3] = flat[i % 3] && image.samples[i] == image.samples[i % 3];
+  const auto zero_flat = [&](DoubleImage& d) {
+    for (std::size_t i = 0; i < d.samples.size(); ++i)
+      if (flat[i % 3]) d.samples[i] = 0;
+  };
   if (order == DerivativeOrder::first) {
     const std::vector<double> d = kernel(sigma, 1);
     const DoubleImage fx = convolve(convolve(image, d, 0), g, 1), fy = convolve(convolve(image, g, 0), d, 1);
     for (std::size_t i = 0; i < out.samples.size(); ++i)
       out.samples[i] = std::sqrt(fx.samples[i] * fx.samples[i] + fy.samples[i] * fy.samples[i]);
+    zero_flat(out);
     return out;
   }
   const std::vector<double> d1 = kernel(sigma, 1), d2 = kernel(sigma, 2);
@@ -87,6 +97,7 @@ DoubleImage gaussian_derivative(const DoubleImage& image, double sigma, Derivati
   for (std::size_t i = 0; i < out.samples.size(); ++i)
     out.samples[i] = std::sqrt(fxx.samples[i] * fxx.samples[i] + 4 * fxy.samples[i] * fxy.samples[i] +
                                fyy.samples[i] * fyy.samples[i]);
+  zero_flat(out);
   return out;
 }
 

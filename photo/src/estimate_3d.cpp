@@ -1,11 +1,13 @@
 #include <gmcc/photo/estimate_3d.h>
 
+#include <gmcc/geometry/feasible_ray_3d.h>
 #include <gmcc/selection/centroid_3.h>
 #include <gmcc/selection/max_trace.h>
 #include <gmcc/selection/max_volume.h>
 
 #include "internal/names.h"
 
+#include <climits>
 #include <cmath>
 #include <stdexcept>
 
@@ -32,11 +34,22 @@ const std::optional<ImageSelection3>& ImageEstimate3::operator[](Rule3 rule) con
 
 std::optional<std::array<double, 3>> light_of_map_3(const Point3& d, const Colour& c) {
   if (sgn(d.x) == 0 || sgn(d.y) == 0 || sgn(d.z) == 0) return std::nullopt;
-  // e = c ⊘ d in ℚ, then to doubles and unit length (a reported direction, not a decision).
-  const double e[3] = {to_double_nearest(c.r / d.x), to_double_nearest(c.g / d.y),
-                       to_double_nearest(c.b / d.z)};
-  const double n = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-  return std::array<double, 3>{e[0] / n, e[1] / n, e[2] / n};
+  // e = c ⊘ d in ℚ, scaled by 2^-s so that the largest component lies in [2^-2, 2^2] (s from
+  // the bit lengths: x ∈ [2^(nb - db - 1), 2^(nb - db + 1)) for nb, db those of its numerator and
+  // denominator), then to doubles and unit length (a reported direction, not a decision).
+  Rational e[3] = {Rational(c.r / d.x), Rational(c.g / d.y), Rational(c.b / d.z)};
+  long s = LONG_MIN;
+  for (const Rational& x : e)
+    s = std::max(s, static_cast<long>(mpz_sizeinbase(x.get_num_mpz_t(), 2)) -
+                        static_cast<long>(mpz_sizeinbase(x.get_den_mpz_t(), 2)));
+  double v[3];
+  for (int k = 0; k < 3; ++k) {
+    if (s > 0) mpq_div_2exp(e[k].get_mpq_t(), e[k].get_mpq_t(), static_cast<mp_bitcnt_t>(s));
+    else mpq_mul_2exp(e[k].get_mpq_t(), e[k].get_mpq_t(), static_cast<mp_bitcnt_t>(-s));
+    v[k] = to_double_nearest(e[k]);
+  }
+  const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  return std::array<double, 3>{v[0] / n, v[1] / n, v[2] / n};
 }
 
 double recovery_angular_error_deg(const std::array<double, 3>& estimate, const Colour& truth) {
@@ -58,16 +71,28 @@ ImageEstimate3 estimate_3d(const std::vector<GamutConstraint3>& constraints, con
   const Colour& c = o.canonical_light;
   if (sgn(c.r) <= 0 || sgn(c.g) <= 0 || sgn(c.b) <= 0)
     throw std::invalid_argument("the canonical light needs every channel > 0");
+  if (o.truth && (sgn(o.truth->r) <= 0 || sgn(o.truth->g) <= 0 || sgn(o.truth->b) <= 0))
+    throw std::invalid_argument("the true light needs every channel > 0");
   bool want[3] = {false, false, false};
   for (Rule3 r : o.rules) want[static_cast<int>(r)] = true;
 
   ImageEstimate3 out;
+  // The true map c ⊘ e (its ray: F3 knows the light only up to intensity).
+  std::optional<Point3> true_map;
+  if (o.truth) true_map = Point3{Rational(c.r / o.truth->r), Rational(c.g / o.truth->g), Rational(c.b / o.truth->b)};
   auto light_of = [&](Selection3 s) {
     ImageSelection3 i{std::move(s), std::nullopt};
-    i.light = light_of_map_3(measured_map(i.selection.estimate), c);
+    const Point3 m = measured_map(i.selection.estimate);
+    i.light = light_of_map_3(m, c);
+    if (true_map) {
+      if (sgn(m.x) != 0 || sgn(m.y) != 0 || sgn(m.z) != 0)
+        i.map_error_deg = diagonal_map_angular_error_deg(m, *true_map);
+      if (i.light) i.recovery_error_deg = recovery_angular_error_deg(*i.light, *o.truth);
+    }
     return i;
   };
   out.lazy_feasible = feasible_set_3d_lazy(constraints);
+  if (true_map) out.truth_in_feasible = feasible_set_3d_meets_ray(constraints, *true_map);
   const LazyConvexSet3& F = out.lazy_feasible;
   if (F.kind() != ConvexKind3::empty) {
     if (want[0]) out.max_volume = light_of(with_worst_case(F, max_volume(F)));

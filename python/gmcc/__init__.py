@@ -935,19 +935,24 @@ def benchmark(images, truths, *, folds=None, folds_file=None, methods=None, inte
     pixel_rule : {'none', 'gijsenij'}, default 'none'
         ``'gijsenij'``: Gijsenij et al. (2010)'s rule, the fractions 5/255 and 245/255.
     edge_sigma : float, default 1.0
-        The edge-based methods' Gaussian derivative scale in pixels, in (0, 64].
+        The Gaussian derivative scale in pixels, in (0, 64], of the edge-based methods and of
+        the grey-edge baselines.
     frame : bool, default True
         Return pandas DataFrames (when pandas is installed) rather than lists of dicts.
 
     Returns
     -------
     summary : pandas.DataFrame or list of dict
-        One row per method: method, images, answered, empty, and the recovery error's
+        One row per method: method, images, answered, empty, unanswered_other (answered +
+        empty + unanswered_other = images), and the recovery error's
         mean_deg, median_deg, trimean_deg, best25_deg, worst25_deg, p95_deg, max_deg (None when
         no image was answered), truth_in_feasible, worst_case_covers, worst_case_correlation.
     records : pandas.DataFrame or list of dict
         One row per image and method: image, fold, method, light, error_deg, answered,
-        fallback, feasible_kind, feasible_vertices, truth_in_feasible, worst_case_deg.
+        fallback, unanswered (why the method gave no light of its own, or None),
+        feasible_kind, feasible_vertices, truth_in_feasible (decided exactly; None without a
+        feasible set), worst_case_deg, worst_case_space ('illuminant' or 'map': the space the
+        worst case bounds) and worst_case_space_error_deg (the error in that space).
 
     Raises
     ------

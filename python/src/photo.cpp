@@ -142,6 +142,9 @@ light : tuple of (float, float, float) or None
     The light c ⊘ d with unit length; None when a component of d is 0.
 recovery_error_deg : float or None
     With a truth: the angle between ``light`` and the true light, degrees; else None.
+map_error_deg : float or None
+    With a truth: the angle between the map and the true map c ⊘ e, degrees: the space of
+    ``worst_case_deg``, which bounds it whenever ``Estimate3.truth_in_feasible``; else None.
 )doc")
       .def_property_readonly("rule", [](const PySelection3& s) { return s.rule; })
       .def_property_readonly("method", [](const PySelection3& s) { return s.s.selection.estimate.method; },
@@ -161,8 +164,10 @@ recovery_error_deg : float or None
         if (!s.s.light) return py::none();
         return py::make_tuple((*s.s.light)[0], (*s.s.light)[1], (*s.s.light)[2]);
       }, "The light c ⊘ d with unit length; None when a component of d is 0.")
-      .def_property_readonly("recovery_error_deg", [](const PySelection3& s) { return optional_double(s.recovery_error_deg); },
+      .def_property_readonly("recovery_error_deg", [](const PySelection3& s) { return optional_double(s.s.recovery_error_deg); },
                              "With a truth: the angle between the light and the true light, degrees.")
+      .def_property_readonly("map_error_deg", [](const PySelection3& s) { return optional_double(s.s.map_error_deg); },
+                             "With a truth: the angle between the map and the true map, degrees.")
       .def("__repr__", [](const PySelection3& s) {
         const auto& d = s.s.selection.estimate.map;
         return "ImageSelection3(" + s.rule + " (" + g10(d[0]) + ", " + g10(d[1]) + ", " + g10(d[2]) + "))";
@@ -188,6 +193,9 @@ max_volume, centroid, max_trace : ImageSelection3 or None
     Each rule's answer; None when not asked for or when F3 holds no map.
 selections : dict of str to ImageSelection3 or None
     The three, keyed 'max_volume', 'centroid', 'max_trace'.
+truth_in_feasible : bool or None
+    With a truth: whether some positive multiple of the true map c ⊘ e lies in F3, decided
+    exactly (feasible_ray_3d.h); None without a truth.
 colours : int
     How many image colours went in (after the pixel rules).
 pixels : dict of str to int, or None
@@ -205,6 +213,9 @@ pixels : dict of str to int, or None
         d["max_trace"] = py::cast(e.max_trace);
         return d;
       })
+      .def_property_readonly("truth_in_feasible", [](const PyEstimate3& e) -> py::object {
+        return e.truth_in_feasible ? py::object(py::bool_(*e.truth_in_feasible)) : py::object(py::none());
+      }, "With a truth: whether some positive multiple of the true map lies in F3; else None.")
       .def_property_readonly("colours", [](const PyEstimate3& e) { return e.colours; },
                              "How many image colours went in (after the pixel rules).")
       .def_property_readonly("pixels", [](const PyEstimate3& e) -> py::object {
@@ -263,8 +274,7 @@ void bind_functions(py::module_& m) {
             }
           }
         }
-        std::optional<Colour> t;
-        if (!truth.is_none()) t = positive_light(truth, "truth");
+        if (!truth.is_none()) o.truth = positive_light(truth, "truth");
         ImageColours ic;
         ic.colours = colours;
         ic.set = set == ColourSet::hull_3d ? ColourSet::hull_3d : ColourSet::distinct;
@@ -277,11 +287,10 @@ void bind_functions(py::module_& m) {
           throw py::value_error(std::string("image: ") + e.what());
         }
         out.feasible = std::move(r.lazy_feasible);
+        out.truth_in_feasible = r.truth_in_feasible;
         auto wrap = [&](std::optional<ImageSelection3>& s, Rule3 rule) -> std::optional<PySelection3> {
           if (!s) return std::nullopt;
-          PySelection3 p{std::move(*s), to_string(rule), std::nullopt};
-          if (t && p.s.light) p.recovery_error_deg = recovery_angular_error_deg(*p.s.light, *t);
-          return p;
+          return PySelection3{std::move(*s), to_string(rule)};
         };
         out.max_volume = wrap(r.max_volume, Rule3::max_volume);
         out.centroid = wrap(r.centroid, Rule3::centroid);

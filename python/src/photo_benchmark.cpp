@@ -36,6 +36,7 @@ py::dict summary_dict(const BenchmarkSummary& s) {
   d["max_deg"] = stat(s.errors.max);
   const bool gamut = is_gamut_method(s.method);
   d["empty"] = gamut ? py::object(py::int_(s.empty)) : py::object(py::none());
+  d["unanswered_other"] = s.unanswered_other;
   d["truth_in_feasible"] = gamut ? py::object(py::float_(double(s.truth_in_feasible) / double(s.images)))
                                  : py::object(py::none());
   d["worst_case_covers"] = optional_double(s.worst_case_covers);
@@ -130,6 +131,10 @@ void bind_benchmark(py::module_& m) {
           d["truth_in_feasible"] =
               rec.truth_in_feasible ? py::object(py::bool_(*rec.truth_in_feasible)) : py::object(py::none());
           d["worst_case_deg"] = optional_double(rec.worst_case_deg);
+          d["worst_case_space"] =
+              rec.worst_case_space.empty() ? py::object(py::none()) : py::object(py::str(rec.worst_case_space));
+          d["worst_case_space_error_deg"] = optional_double(rec.worst_case_space_error_deg);
+          d["unanswered"] = rec.unanswered.empty() ? py::object(py::none()) : py::object(py::str(rec.unanswered));
           records.append(d);
         }
         return py::make_tuple(summaries, records);

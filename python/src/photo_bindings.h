@@ -38,9 +38,8 @@ struct Canonical3 {
 
 // One 3-D rule's answer on an image, with its error against the truth when one was given.
 struct PySelection3 {
-  ImageSelection3 s;
+  ImageSelection3 s;  // with its errors against a truth (estimate_3d.h)
   std::string rule;
-  std::optional<double> recovery_error_deg;
 };
 
 // gmcc.Estimate3: F3 of one image and the rules' answers.
@@ -52,6 +51,7 @@ struct PyEstimate3 {
     return *exact;
   }
   std::optional<PySelection3> max_volume, centroid, max_trace;
+  std::optional<bool> truth_in_feasible;  // with a truth (ImageEstimate3::truth_in_feasible)
   std::optional<PixelCounts> pixels;
   std::size_t colours = 0;
 };

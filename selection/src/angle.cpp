@@ -113,6 +113,14 @@ double angle_deg(const std::array<Rational, 3>& u_exact, const std::array<Ration
         cross2_from([&](int i, int j) { return exact_cross(u_exact[i], v_exact[j], u_exact[j], v_exact[i]); });
     if (const auto deg = tight_angle(exact2, d)) return *deg;
   }
+  // Parallel vectors (u×v = 0 exactly): 0 or 180 degrees exactly, where the rounded 160-bit
+  // inputs would leave a cross product of round-off.
+  bool parallel = true;
+  for (int k = 0; k < 3 && parallel; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    parallel = u_exact[i] * v_exact[j] == u_exact[j] * v_exact[i];
+  }
+  if (parallel) return u_exact[0] * v_exact[0] + u_exact[1] * v_exact[1] + u_exact[2] * v_exact[2] >= 0 ? 0.0 : 180.0;
   return angle_mpfr(u_exact, v_exact);
 }
 

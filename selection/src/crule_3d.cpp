@@ -1,4 +1,5 @@
 #include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/integers_over_lcm.h>
 #include <gmcc/numerics/may_be_largest.h>
 #include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/selection/crule_3d.h>
@@ -6,6 +7,7 @@
 
 #include "internal/angle.h"
 
+#include <array>
 #include <cstddef>
 #include <stdexcept>
 
@@ -60,10 +62,23 @@ Selection3 with_worst_case(const LazyConvexSet3& F, MapEstimate3 e) {
   return s;
 }
 
+namespace {
+// The primitive integer vector on u's ray (u times the lcm of its denominators, divided by the
+// gcd of the results): the same for every positive multiple of u.
+std::array<Rational, 3> ray_of(const Point3& u) {
+  const mpz_class l = lcm_of_denominators_of(u.x, u.y, u.z);
+  mpz_class z[3] = {times_lcm(u.x, l), times_lcm(u.y, l), times_lcm(u.z, l)};
+  divide_by_content_of(z[0], z[1], z[2]);
+  return {Rational(z[0]), Rational(z[1]), Rational(z[2])};
+}
+}  // namespace
+
 double diagonal_map_angular_error_deg(const Point3& u, const Point3& v) {
   if (is_zero(u) || is_zero(v))
     throw std::invalid_argument("diagonal_map_angular_error_deg: a zero map has no direction");
-  return internal::angle_deg({u.x, u.y, u.z}, {v.x, v.y, v.z});
+  // Rays, not points: the same angle, rounded the same way, for every positive multiple of
+  // either map (so that a worst case and an error to the same ray are equal doubles).
+  return internal::angle_deg(ray_of(u), ray_of(v));
 }
 
 double worst_case_map_deg_3d(const ConvexSet3& F, const Point3& m) {

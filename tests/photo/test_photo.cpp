@@ -4,10 +4,13 @@
 // imply, and chromaticity lifts refused.
 #include <gmcc/geometry/colour_hull_3.h>
 #include <gmcc/geometry/convex_hull.h>
+#include <gmcc/geometry/feasible_ray_3d.h>
+#include <gmcc/geometry/feasible_set.h>
 #include <gmcc/photo/estimate_3d.h>
 #include <gmcc/photo/learn_canonical.h>
 
 #include <boost/test/unit_test.hpp>
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -167,4 +170,140 @@ BOOST_AUTO_TEST_CASE(estimate_3d_refuses_chromaticity_lifts) {
   }
   ImageColours none;
   BOOST_CHECK_THROW(estimate_3d(canonical, none), std::invalid_argument);
+}
+
+namespace {
+
+Rational power_of_two(int k) {
+  Rational x(1);
+  if (k >= 0) mpq_mul_2exp(x.get_mpq_t(), x.get_mpq_t(), static_cast<mp_bitcnt_t>(k));
+  else mpq_div_2exp(x.get_mpq_t(), x.get_mpq_t(), static_cast<mp_bitcnt_t>(-k));
+  return x;
+}
+
+std::vector<Colour> scaled(const std::vector<Colour>& cs, const Rational& s) {
+  std::vector<Colour> out;
+  for (const Colour& c : cs) out.push_back({c.r * s, c.g * s, c.b * s});
+  return out;
+}
+
+}  // namespace
+
+// Photographs with dark pixels kept: canonical colours and image colours with zero channels, so
+// F3 has vertices on coordinate planes. The truth is decided on F3's rows (never "false" for want
+// of a perspective image), and wherever it is in F3 each rule's map-space error is at most its
+// certified worst case, the space that worst case bounds.
+BOOST_AUTO_TEST_CASE(truth_in_f3_and_worst_cases_in_their_own_space) {
+  std::mt19937 rng(4141);
+  std::uniform_int_distribution<int> u(0, 12), pos(1, 12), light(2, 9);
+  int truths_in = 0, truths_out = 0, zero_component = 0;
+  for (int scene = 0; scene < 120; ++scene) {
+    std::vector<Colour> surfaces;
+    for (int i = 0; i < 14; ++i) surfaces.push_back({Rational(u(rng)), Rational(u(rng)), Rational(u(rng))});
+    surfaces.push_back({Rational(pos(rng)), Rational(pos(rng)), Rational(pos(rng))});
+    const Colour e{Rational(light(rng), 4), Rational(light(rng), 4), Rational(light(rng), 4)};
+    ImageColours image;
+    image.set = ColourSet::distinct;
+    for (std::size_t i = 0; i < surfaces.size(); ++i)
+      if (i % 2 == 0 || i + 1 == surfaces.size())
+        image.colours.push_back({surfaces[i].r * e.r, surfaces[i].g * e.g, surfaces[i].b * e.b});
+    if (scene % 2) image.colours.push_back({Rational(pos(rng)), Rational(pos(rng)), Rational(pos(rng))});
+    const CanonicalConstraints3 canonical(surfaces);
+    Estimate3Options o;
+    o.truth = e;
+    o.canonical_light = Colour{1, 1, 1};
+    ImageEstimate3 r;
+    try {
+      r = estimate_3d(canonical, image, o);
+    } catch (const UnboundedFeasibleSet&) {
+      continue;
+    }
+    BOOST_TEST_REQUIRE(r.truth_in_feasible.has_value());
+    const Point3 truth_map{Rational(1) / e.r, Rational(1) / e.g, Rational(1) / e.b};
+    BOOST_TEST(*r.truth_in_feasible == feasible_set_3d_meets_ray({{&canonical, &image.colours}}, truth_map));
+    for (const Point3& v : r.feasible.vertices)
+      zero_component += sgn(v.x) == 0 || sgn(v.y) == 0 || sgn(v.z) == 0;
+    (*r.truth_in_feasible ? truths_in : truths_out)++;
+    for (Rule3 rule : all_rules_3) {
+      if (!r[rule]) continue;
+      const ImageSelection3& s = *r[rule];
+      if (s.light) {
+        BOOST_TEST_REQUIRE(s.recovery_error_deg.has_value());
+        BOOST_TEST(*s.recovery_error_deg == recovery_angular_error_deg(*s.light, e));
+      }
+      if (*r.truth_in_feasible && s.selection.worst_case_deg) {
+        BOOST_TEST_REQUIRE(s.map_error_deg.has_value());
+        BOOST_TEST(*s.map_error_deg <= *s.selection.worst_case_deg, "scene " << scene << " " << to_string(rule) << " " << *s.map_error_deg << " > " << *s.selection.worst_case_deg << " kind " << to_string(r.feasible.kind) << " n " << r.feasible.vertices.size());
+      }
+    }
+  }
+  // The image under its light is always in F3 here (its colours are canonical colours under e),
+  // the added random colour sometimes throws it out.
+  BOOST_TEST(truths_in > 40);
+  BOOST_TEST(zero_component > 0);
+  Estimate3Options bad;
+  bad.truth = Colour{1, 0, 1};
+  const CanonicalConstraints3 canonical({Colour{1, 1, 1}});
+  ImageColours one;
+  one.colours = {Colour{1, 1, 1}};
+  BOOST_CHECK_THROW(estimate_3d(canonical, one, bad), std::invalid_argument);
+}
+
+// Lights at any representable scale: a canonical gamut, an image and a truth scaled by 2^±600
+// (far beyond double's range when formed as c ⊘ d in doubles) give the same light, the same
+// errors and the same truth in F3 as unscaled, and light_of_map_3 is exact-scale invariant.
+BOOST_AUTO_TEST_CASE(lights_at_extreme_scales) {
+  std::mt19937 rng(17);
+  const std::vector<Colour> surfaces = sphere_points(rng, 40);
+  const Colour e{Rational(3, 2), 1, Rational(1, 2)};
+  std::vector<Colour> pixels;
+  for (std::size_t i = 0; i < surfaces.size(); i += 2)
+    pixels.push_back({surfaces[i].r * e.r, surfaces[i].g * e.g, surfaces[i].b * e.b});
+  // Scales of the canonical gamut, the image, the truth and the canonical light (whose maps stay
+  // within double's range: the maps are reported as doubles too).
+  auto run = [&](int canonical_k, int image_k, int truth_k, int light_k) {
+    const CanonicalConstraints3 canonical(scaled(surfaces, power_of_two(canonical_k)));
+    ImageColours image;
+    image.colours = scaled(pixels, power_of_two(image_k));
+    Estimate3Options o;
+    const Rational t = power_of_two(truth_k), c = power_of_two(light_k);
+    o.truth = Colour{e.r * t, e.g * t, e.b * t};
+    o.canonical_light = Colour{c, c, c};
+    return estimate_3d(canonical, image, o);
+  };
+  const ImageEstimate3 plain = run(0, 0, 0, 0);
+  BOOST_TEST_REQUIRE(plain.max_trace.has_value());
+  for (const std::array<int, 4>& k : std::vector<std::array<int, 4>>{{600, 0, 0, 0},
+                                                                     {-600, 0, 0, 0},
+                                                                     {0, 600, 0, 0},
+                                                                     {0, -600, 0, 0},
+                                                                     {0, 0, 600, 0},
+                                                                     {0, 0, -600, 0},
+                                                                     {600, 0, 0, 600},
+                                                                     {-600, 0, 0, -600},
+                                                                     {600, 600, -600, 600}}) {
+    const ImageEstimate3 r = run(k[0], k[1], k[2], k[3]);
+    BOOST_TEST((r.truth_in_feasible == plain.truth_in_feasible));
+    for (Rule3 rule : all_rules_3) {
+      BOOST_TEST_REQUIRE(r[rule]->light.has_value());
+      for (int c = 0; c < 3; ++c) {
+        BOOST_TEST(std::isfinite((*r[rule]->light)[c]));
+        BOOST_TEST((*r[rule]->light)[c] == (*plain[rule]->light)[c], boost::test_tools::tolerance(1e-12));
+      }
+      BOOST_TEST(*r[rule]->recovery_error_deg == *plain[rule]->recovery_error_deg, boost::test_tools::tolerance(1e-9));
+    }
+  }
+  const Point3 d{Rational(2), Rational(4), Rational(4)};
+  const auto base = light_of_map_3(d, Colour{1, 1, 1});
+  for (int k : {-1070, -600, -1, 1, 600, 1070}) {
+    const Rational s = power_of_two(k);
+    const auto l = light_of_map_3(Point3{d.x * s, d.y * s, d.z * s}, Colour{1, 1, 1});
+    BOOST_TEST_REQUIRE(l.has_value());
+    BOOST_TEST((*l == *base));  // a power of two is divided out exactly
+  }
+  // Components more than 2^1100 apart: the small one underflows to 0, never a NaN.
+  const auto wide = light_of_map_3(Point3{Rational(1), power_of_two(1100), Rational(1)}, Colour{1, 1, 1});
+  BOOST_TEST_REQUIRE(wide.has_value());
+  BOOST_TEST((*wide)[1] == 0.0);
+  BOOST_TEST((*wide)[0] == std::sqrt(0.5), boost::test_tools::tolerance(1e-15));
 }

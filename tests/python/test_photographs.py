@@ -211,3 +211,27 @@ def test_reproduce_refuses_an_expansion_beyond_the_limit():
     for expand in ("1e151", "1e400"):
         with pytest.raises(ValueError, match="1e150"):
             gmcc.reproduce_synthetic(scenes=1, expand=expand, expand_policy="multiplicative")
+
+
+def test_truth_in_f3_and_lights_at_any_scale():
+    """Issue 41: with dark pixels (a zero channel) the truth is still decided, the map-space error
+    is within its worst case, and an image array and truth scaled by 2^600 (floats far outside
+    a light's double range once divided) give the same light and errors as unscaled."""
+    rng = np.random.default_rng(41)
+    s = rng.integers(0, 900, size=(30, 3))
+    s[::3, 0] = 0  # surfaces with a zero channel: F3 reaches the coordinate planes
+    s = np.vstack([s, [[400, 300, 200]]])
+    canonical = gmcc.prepare_canonical_3d(s)
+    e = np.array([7, 11, 5])
+    img = (s * e).reshape(1, -1, 3).astype(float)
+    r = gmcc.estimate_3d(canonical, img, truth=e)
+    assert r.truth_in_feasible is True
+    assert gmcc.estimate_3d(canonical, img).truth_in_feasible is None
+    for sel in (r.max_volume, r.centroid, r.max_trace):
+        assert sel.map_error_deg <= sel.worst_case_deg
+    big = gmcc.estimate_3d(canonical, img * 2.0**600, truth=e * 2.0**600)
+    assert big.truth_in_feasible is True
+    for a, b in ((r.max_volume, big.max_volume), (r.centroid, big.centroid), (r.max_trace, big.max_trace)):
+        assert np.all(np.isfinite(b.light))
+        assert np.allclose(a.light, b.light, rtol=0, atol=1e-12)
+        assert abs(a.recovery_error_deg - b.recovery_error_deg) < 1e-9

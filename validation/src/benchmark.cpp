@@ -4,7 +4,7 @@
 
 #include "benchmark_methods.h"
 
-#include <gmcc/geometry/perspective_image.h>
+#include <gmcc/geometry/feasible_set.h>
 #include <gmcc/input/camera_image.h>
 #include <gmcc/numerics/interrupt.h>
 #include <gmcc/input/image_file.h>
@@ -71,9 +71,6 @@ void parallel_for(std::size_t n, unsigned threads, const std::function<void(std:
   if (progress) progress(done);
 }
 
-// The perspective map (m1, m2) of the map c ⊘ e that takes light e to the white canonical light.
-Point2 true_perspective_map(const Colour& e) { return {Rational(e.b / e.r), Rational(e.b / e.g)}; }
-
 }  // namespace
 
 const std::vector<std::string>& benchmark_methods() {
@@ -137,27 +134,20 @@ FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, c
   return c;
 }
 
-// A 3-D estimate from some gamut types' constraints, and whether the true light's map lies in
-// its feasible set; no estimate when F3 is unbounded.
+// A 3-D estimate from some gamut types' constraints, with the truth's errors and whether the
+// true light's map lies in F3 (estimate_3d.h); no estimate when F3 is unbounded.
 struct Estimate3InF {
   std::optional<ImageEstimate3> estimate;
-  std::optional<bool> truth_in_feasible;
 };
 Estimate3InF estimate_in_f(const std::vector<GamutConstraint3>& types, const std::vector<Rule3>& rules,
                            const Colour& e) {
   Estimate3InF out;
   Estimate3Options eo;
   eo.rules = rules;
+  eo.truth = e;
   try {
     out.estimate = estimate_3d(types, eo);
-  } catch (const std::domain_error&) {  // unbounded F3: no estimate
-    return out;
-  }
-  if (out.estimate->feasible.kind != ConvexKind3::empty) {
-    const std::optional<ConvexSet2> image = perspective_image(out.estimate->feasible);
-    out.truth_in_feasible = image && contains(*image, true_perspective_map(e));
-  } else {
-    out.truth_in_feasible = false;
+  } catch (const UnboundedFeasibleSet&) {  // unbounded F3: no estimate
   }
   return out;
 }
@@ -166,16 +156,22 @@ Estimate3InF estimate_in_f(const std::vector<GamutConstraint3>& types, const std
 BenchmarkRecord record_3d(const char* method, const Estimate3InF& est, Rule3 rule) {
   BenchmarkRecord rec;
   rec.method = method;
-  if (est.estimate) {
-    rec.feasible_kind = to_string(est.estimate->feasible.kind);
-    rec.feasible_vertices = est.estimate->feasible.vertices.size();
-    rec.truth_in_feasible = est.truth_in_feasible;
-    const std::optional<ImageSelection3>& s = (*est.estimate)[rule];
-    if (s && s->light) {
-      rec.light = s->light;
-      rec.answered = true;
-      rec.worst_case_deg = s->selection.worst_case_deg;
-    }
+  if (!est.estimate) {
+    rec.unanswered = "unbounded";
+    return rec;
+  }
+  rec.feasible_kind = to_string(est.estimate->lazy_feasible.kind());
+  rec.feasible_vertices = est.estimate->lazy_feasible.size();
+  rec.truth_in_feasible = est.estimate->truth_in_feasible;
+  rec.worst_case_space = "map";
+  const std::optional<ImageSelection3>& s = (*est.estimate)[rule];
+  if (s) rec.worst_case_deg = s->selection.worst_case_deg;
+  if (s && s->light) {
+    rec.light = s->light;
+    rec.answered = true;
+    rec.worst_case_space_error_deg = s->map_error_deg;
+  } else {
+    rec.unanswered = s ? "no_positive_map" : "empty";
   }
   return rec;
 }
@@ -211,6 +207,7 @@ std::vector<BenchmarkRecord> records_edges(const FoldCanonicals& c, const Reduce
     }
     BenchmarkRecord rec;
     rec.method = kEdge[k];
+    rec.unanswered = "no_colours";
     if (available) rec = record_3d(kEdge[k], estimate_in_f(types, {Rule3::max_trace}, e), Rule3::max_trace);
     out.push_back(std::move(rec));
   }
@@ -232,10 +229,13 @@ std::vector<BenchmarkRecord> records_2d(const PreparedCanonical& canonical, cons
     if (!n.rule2[k]) continue;
     BenchmarkRecord rec;
     rec.method = gm2d_method(k);
+    rec.unanswered = "no_colours";
     if (scene) {
       rec.feasible_kind = to_string(scene->feasible.kind);
       rec.feasible_vertices = scene->feasible.vertices.size();
       if (scene->truth) rec.truth_in_feasible = scene->truth->in_feasible_set;
+      rec.worst_case_space = "illuminant";
+      rec.unanswered = scene->feasible.kind == ConvexKind::empty ? "empty" : "no_positive_map";
       const std::optional<Selection>& s = scene->selections[k];
       if (s && s->estimate.valid && s->estimate.map[0] > 0 && s->estimate.map[1] > 0) {
         // e = c ⊘ (m1, m2, 1), c white: (1/m1, 1/m2, 1), unit length.
@@ -243,7 +243,18 @@ std::vector<BenchmarkRecord> records_2d(const PreparedCanonical& canonical, cons
         const double len = std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
         rec.light = std::array<double, 3>{l[0] / len, l[1] / len, l[2] / len};
         rec.answered = true;
-        rec.worst_case_deg = s->worst_case_illuminant_deg;
+        rec.unanswered.clear();
+        // The illuminant-space worst case, or, where F or the map touches an axis (lights
+        // without bound: no illuminant worst case), the map-space one with the map-space error.
+        const std::optional<RuleErrors>* t = scene->truth ? &scene->truth->errors[k] : nullptr;
+        if (s->worst_case_illuminant_deg) {
+          rec.worst_case_deg = s->worst_case_illuminant_deg;
+          if (t && *t && (*t)->positive_map) rec.worst_case_space_error_deg = (*t)->illuminant_error_deg;
+        } else {
+          rec.worst_case_space = "map";
+          rec.worst_case_deg = s->worst_case_deg;
+          if (t && *t) rec.worst_case_space_error_deg = (*t)->map_error_deg;
+        }
       }
     }
     out.push_back(std::move(rec));
@@ -270,6 +281,7 @@ std::vector<BenchmarkRecord> records_of(std::size_t i, const FoldCanonicals& c, 
     rec.method = baseline_method(b);
     rec.light = r.baselines[b];
     rec.answered = r.baselines[b].has_value();
+    if (!rec.answered) rec.unanswered = "no_light";
     keep({std::move(rec)});
   }
   std::vector<BenchmarkRecord> out;
@@ -293,9 +305,11 @@ BenchmarkResult run_benchmark(const std::vector<BenchmarkImage>& images, const B
   if (o.shard_count < 1 || o.shard_index < 1 || o.shard_index > o.shard_count)
     throw std::invalid_argument("a shard K/N needs 1 <= K <= N");
   const Needs n = needs_of(o.methods);
+  const bool grey_edge = n.baseline[static_cast<std::size_t>(Baseline::grey_edge_1)] ||
+                         n.baseline[static_cast<std::size_t>(Baseline::grey_edge_2)];
+  if ((n.order[0] || n.order[1] || grey_edge) && !(o.edge_sigma > 0 && o.edge_sigma <= 64))
+    throw std::invalid_argument("the edge-based methods' and grey edge's sigma must be in (0, 64] pixels");
   if (n.order[0] || n.order[1]) {
-    if (!(o.edge_sigma > 0 && o.edge_sigma <= 64))
-      throw std::invalid_argument("the edge-based methods' sigma must be in (0, 64] pixels");
     if (o.pixels.prefilter_sigma != 0)
       throw std::invalid_argument("the edge-based methods take no pre-filter (their derivatives are Gaussian already)");
   }

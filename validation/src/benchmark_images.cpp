@@ -34,7 +34,9 @@ namespace internal {
 Needs needs_of(const std::vector<std::string>& methods) {
   Needs n;
   n.baseline[0] = true;  // grey world: every gamut method's fallback
+  std::set<std::string> seen;
   for (const std::string& m : methods) {
+    if (!seen.insert(m).second) throw std::invalid_argument("benchmark method \"" + m + "\" is given twice");
     bool known = false;
     for (int k = 0; k < 3; ++k)
       if (m == kGm3d[k]) n.gm3d = n.rule3[k] = known = true;
@@ -107,7 +109,12 @@ Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs&
   }
   const DoubleImage linear = linear_image(image, rules.black_level);
   for (std::size_t b = 0; b < all_baselines.size(); ++b)
-    if (n.baseline[b]) r.baselines[b] = grey_edge_estimate(linear, kept.kept, baseline_parameters(all_baselines[b]));
+    if (n.baseline[b]) {
+      // Grey edge at the run's derivative scale (the edge-based methods' σ).
+      GreyEdgeParameters p = baseline_parameters(all_baselines[b]);
+      if (p.order != DerivativeOrder::zero) p.sigma = o.edge_sigma;
+      r.baselines[b] = grey_edge_estimate(linear, kept.kept, p);
+    }
   return r;
 }
 

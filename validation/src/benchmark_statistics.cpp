@@ -61,12 +61,14 @@ std::vector<BenchmarkSummary> summarise_benchmark(const std::vector<BenchmarkRec
       ++s.images;
       gamut = gamut || !r.feasible_kind.empty();
       if (r.answered) ++s.answered;
-      if (!r.feasible_kind.empty() && !r.answered) ++s.empty;
+      else if (r.unanswered == "empty" || r.unanswered == "no_positive_map") ++s.empty;
+      else ++s.unanswered_other;
       if (r.error_deg) errors.push_back(*r.error_deg);
       if (r.truth_in_feasible && *r.truth_in_feasible) ++s.truth_in_feasible;
-      if (r.answered && r.worst_case_deg && r.error_deg) {
-        wc.push_back({*r.worst_case_deg, *r.error_deg});
-        covered += *r.error_deg <= *r.worst_case_deg;
+      const std::optional<double>& e = r.worst_case_space_error_deg;
+      if (r.answered && r.worst_case_deg && e) {
+        wc.push_back({*r.worst_case_deg, *e});
+        covered += *e <= *r.worst_case_deg;
       }
     }
     s.errors = error_statistics(errors);

@@ -86,7 +86,7 @@ struct GamutConstraint3 {
 /// the pixel, edge and 2nd-order feasible sets, there by a float LP). Exact, every kind: the box
 /// of every type (the smallest X_k/P_k) clipped by every type's rows in one pass as above, the LP
 /// route over all the rows for the degenerate kinds. One constraint gives feasible_set_3d above.
-/// 	hrows std::invalid_argument if `constraints` is empty or as feasible_set_3d for any of them.
+/// \throws std::invalid_argument if `constraints` is empty or as feasible_set_3d for any of them.
 /// Complexity: as feasible_set_3d with the rows of every type.
 ConvexSet3 feasible_set_3d(const std::vector<GamutConstraint3>& constraints);
 

@@ -39,7 +39,8 @@ enum class DerivativeOrder { zero = 0, first = 1, second = 2 };
 /// [−⌈3σ⌉, ⌈3σ⌉] and normalised to sum 1; the 1st-order kernel −x/σ²·G_σ(x) normalised so that
 /// Σ x·k(x) = −1 (a ramp's slope exactly), the 2nd-order (x²/σ⁴ − 1/σ²)·G_σ(x) with its mean
 /// removed and normalised so that Σ x²/2·k(x) = 1; separable, the image's edge replicated.
-/// σ = 0 with order 0 returns the image itself; order 1 or 2 needs σ > 0.
+/// σ = 0 with order 0 returns the image itself; order 1 or 2 needs σ > 0. A channel constant over
+/// the whole image has 1st- and 2nd-order magnitudes exactly 0 (its true value), never round-off.
 /// \returns per pixel and channel: f_σ (order 0), or the magnitudes above (orders 1, 2), >= 0.
 /// \throws std::invalid_argument for σ < 0, σ > 64, not finite, or 0 with order 1 or 2.
 DoubleImage gaussian_derivative(const DoubleImage& image, double sigma, DerivativeOrder order);

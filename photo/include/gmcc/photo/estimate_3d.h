@@ -38,6 +38,16 @@ struct ImageSelection3 {
   /// e = c ⊘ d with unit length, from the map as measured (measured_map); absent when d has a
   /// zero component (F3 = {0} or a face of it on a coordinate plane: no light)
   std::optional<std::array<double, 3>> light;
+  /// With a true light e (Estimate3Options::truth), the errors of this answer, each in its own
+  /// space (docs/photographs.md §8):
+  /// - `map_error_deg`: the angle between the map d and the true map c ⊘ e, the space of
+  ///   Selection3::worst_case_deg, which bounds it whenever the truth is in F3
+  ///   (ImageEstimate3::truth_in_feasible); absent when d = 0;
+  /// - `recovery_error_deg`: the angle between `light` and e (Hordley & Finlayson 2006), what
+  ///   benchmarks report; absent without a light.
+  ///@{
+  std::optional<double> map_error_deg, recovery_error_deg;
+  ///@}
 };
 
 /// F3 of one image and the rules asked for. Absent rules were not asked for, or F3 is empty.
@@ -52,6 +62,10 @@ struct ImageEstimate3 {
   ///@{
   std::optional<ImageSelection3> max_volume, centroid, max_trace;
   ///@}
+  /// With a true light e (Estimate3Options::truth): whether some positive multiple of the true
+  /// map c ⊘ e lies in F3, decided exactly on F3's rows (feasible_ray_3d.h), whatever F3's kind
+  /// and whether or not F3 holds maps with a zero component; absent without a truth.
+  std::optional<bool> truth_in_feasible;
   /// The answer of `rule` (an absent one when not asked for or F3 is empty).
   const std::optional<ImageSelection3>& operator[](Rule3 rule) const;
 };
@@ -67,6 +81,9 @@ struct Estimate3Options {
   /// about a third of F3's cost on a photograph). The rules' answers are the same either way; a
   /// caller that prints only doubles (the CLI, Python) leaves it false and reads lazy_feasible.
   bool exact_feasible_set = true;
+  /// The true light e, every channel > 0, when known: then ImageEstimate3::truth_in_feasible and
+  /// each rule's map-space and recovery errors are filled.
+  std::optional<Colour> truth;
 };
 
 /// Gamut mapping in 3-D on one image's colours.
@@ -75,7 +92,7 @@ struct Estimate3Options {
 /// \param options the rules, the centroid's route and the canonical light.
 /// \throws std::invalid_argument if `image` holds chromaticity lifts (ColourSet::hull: they are
 ///         not pixel colours, and F3 from them would be meaningless), has no colour, or the
-///         canonical light has a channel <= 0; UnboundedFeasibleSet (feasible_set.h) when every
+///         canonical light or the truth has a channel <= 0; UnboundedFeasibleSet (feasible_set.h) when every
 ///         colour has some channel 0.
 ImageEstimate3 estimate_3d(const CanonicalConstraints3& canonical, const ImageColours& image,
                            const Estimate3Options& options = {});
@@ -86,12 +103,15 @@ ImageEstimate3 estimate_3d(const CanonicalConstraints3& canonical, const ImageCo
 /// feasible sets ("1-jet": pixels and 1st-order edges; "2-jet": with 2nd-order edges too), where
 /// max-trace is their selection. Every type's canonical gamut must share one intensity scale
 /// (docs/photographs.md §5). One constraint is estimate_3d above on its colours.
-/// 	hrows std::invalid_argument if `constraints` is empty or the canonical light has a channel
-///         <= 0, and as feasible_set_3d.
+/// \throws std::invalid_argument if `constraints` is empty or the canonical light or the truth
+///         has a channel <= 0, and as feasible_set_3d.
 ImageEstimate3 estimate_3d(const std::vector<GamutConstraint3>& constraints, const Estimate3Options& options = {});
 
 /// The light a 3-D map implies, e = c ⊘ d, with unit length (docs/conventions.md §2); absent
-/// when a component of d is 0. O(1).
+/// when a component of d is 0. e is formed exactly and scaled by a power of two (exact) so that
+/// its largest component is near 1 before it is rounded and normalised: the same light for d and
+/// 2^k·d at any representable scale, never an overflow, an underflow of the largest component or
+/// a NaN. O(1).
 std::optional<std::array<double, 3>> light_of_map_3(const Point3& d, const Colour& canonical_light);
 
 /// The recovery angular error (degrees) between a light estimate and the true light: the angle

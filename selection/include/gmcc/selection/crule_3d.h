@@ -17,7 +17,8 @@ namespace gmcc {
 /// The angle, in degrees, between two diagonal maps as 3-vectors (the map-space angular error of
 /// Finlayson & Hordley 1999 §4, in 3-D; a 2-D map m compares as (m1, m2, 1)): atan2(|u×v|, u·v)
 /// from the exact maps, within about one ulp — the same computation as every 2-D angular error
-/// (angular_error.h). \throws std::invalid_argument if either is 0.
+/// (angular_error.h), on each map's ray (its primitive integer vector), so that every positive
+/// multiple of a map gives the same double. \throws std::invalid_argument if either is 0.
 double diagonal_map_angular_error_deg(const Point3& estimate, const Point3& truth);
 
 /// max over d ∈ F3 \ {0} of the angle to m: the angle to a fixed direction is quasi-convex on

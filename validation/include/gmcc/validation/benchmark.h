@@ -87,8 +87,9 @@ struct BenchmarkOptions {
   bool black_level_given = false;
   CanonicalIntensity intensity = CanonicalIntensity::max;  ///< 3-D learning (learn_canonical.h)
   CanonicalBlack black = CanonicalBlack::include;          ///< 3-D canonical gamut with black
-  /// The edge-based methods' derivative scale σ, in pixels, in (0, 64] (edge_colours.h; the
-  /// neighbourhood rule is its default). Their edge colours are scaled by the same factor as the
+  /// The derivative scale σ, in pixels, in (0, 64], of the edge-based methods (edge_colours.h; the
+  /// neighbourhood rule is its default) and of the grey-edge baselines (grey_edge.h), so that the
+  /// two families see the same derivatives. The edge colours are scaled by the same factor as the
   /// image's pixel colours, so that every gamut type shares one intensity scale.
   double edge_sigma = 1;
   unsigned threads = 0;  ///< worker threads; 0: the machine's cores
@@ -111,14 +112,28 @@ struct BenchmarkRecord {
   std::optional<double> error_deg;  ///< recovery angular error against the measured light
   bool answered = false;            ///< the method itself gave the light
   std::string fallback;             ///< "grey_world" when the light is grey world's, else empty
-  /// Gamut methods: the feasible set's kind and vertex count; whether the true light's map lies
-  /// in it (exactly; 3-D: some positive multiple, via its perspective image); the rule's worst
-  /// case (2-D: illuminant space; 3-D: map space), degrees.
+  /// Why the method gave no light of its own (empty when `answered`): gamut methods `empty` (F
+  /// empty), `no_positive_map` (F holds maps, the rule's has a zero component: no light),
+  /// `unbounded` (every kept colour of a type has a zero channel), `no_colours` (no kept colour,
+  /// or none of an edge type, in the image or in the fold's training images); baselines
+  /// `no_light` (nothing to average: a black or constant image).
+  std::string unanswered;
+  /// Gamut methods: the feasible set's kind and vertex count (empty kind: no feasible set was
+  /// formed, `unanswered` says why); whether the true light's map lies in it, decided exactly
+  /// (2-D: the true perspective map in F; 3-D: some positive multiple of c ⊘ e in F3, on F3's
+  /// rows, feasible_ray_3d.h), absent without a feasible set; the rule's certified worst case in
+  /// degrees and the space it bounds (`illuminant` in 2-D, `map` in 3-D and in 2-D where F or the
+  /// map touches an axis), with the answer's error in that same space, computed from the same
+  /// exact maps as the worst case (map: the angle between the rule's map and c ⊘ e; illuminant:
+  /// between their lights), absent when the method did not answer. Whenever the truth is in F,
+  /// that error is at most the worst case.
   ///@{
   std::string feasible_kind;
   std::size_t feasible_vertices = 0;
   std::optional<bool> truth_in_feasible;
   std::optional<double> worst_case_deg;
+  std::string worst_case_space;
+  std::optional<double> worst_case_space_error_deg;
   ///@}
 };
 
@@ -128,10 +143,14 @@ struct BenchmarkSummary {
   std::size_t images = 0;    ///< estimated (every image of the dataset)
   std::size_t answered = 0;  ///< answered by the method itself
   std::size_t empty = 0;     ///< gamut methods: F empty, or no positive map (then grey world)
+  /// Gamut methods: no feasible set formed (no colour of a type it needs, or an unbounded F3);
+  /// baselines: no light. Every method's answered + empty + unanswered_other = images.
+  std::size_t unanswered_other = 0;
   ErrorStatistics errors;    ///< over every image with a light (answered or fallback)
-  /// Gamut methods: images whose true light lies in F, of those with an answer; the share of
-  /// answered images whose error is at most the worst case; the Spearman rank correlation of
-  /// worst case and error over them (absent with fewer than 3).
+  /// Gamut methods: images whose true light lies in F (decided exactly, of every image); the
+  /// share of answered images whose error in the worst case's own space (BenchmarkRecord::
+  /// worst_case_space_error_deg) is at most the worst case; the Spearman rank correlation of
+  /// worst case and that error over them (absent with fewer than 3).
   ///@{
   std::size_t truth_in_feasible = 0;
   std::optional<double> worst_case_covers, worst_case_correlation;
