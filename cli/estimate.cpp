@@ -54,12 +54,11 @@ Settings settings_of(const EstimateOptions& o) {
 }
 
 // The light a perspective map m implies under the canonical light c: d = (m1, m2, 1) takes the
-// image to the canonical colours, so e = c ⊘ d = (c1/m1, c2/m2, c3), here with unit length.
-std::array<double, 3> light_of(const std::array<double, 2>& m, const Colour& c) {
-  const double e[3] = {to_double_nearest(c.r) / m[0], to_double_nearest(c.g) / m[1],
-                       to_double_nearest(c.b)};
-  const double n = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-  return {e[0] / n, e[1] / n, e[2] / n};
+// image to the canonical colours, so e = c ⊘ d = (c1/m1, c2/m2, c3), here with unit length;
+// absent unless m > 0. The lift taken exactly: light_of_map_3's scaling, any magnitude.
+std::optional<std::array<double, 3>> light_of(const std::array<double, 2>& m, const Colour& c) {
+  if (!(m[0] > 0 && m[1] > 0)) return std::nullopt;
+  return light_of_map_3(Point3{Rational(m[0]), Rational(m[1]), Rational(1)}, c);
 }
 
 // The white-balanced image under the diagonal map m (2-D: (m1, m2, 1)): every kept channel
@@ -414,7 +413,9 @@ int run_estimate(const EstimateOptions& o) {
       const std::optional<Selection>& sel = result.selections[k];
       if (!sel || !sel->estimate.valid) continue;
       const std::string key = to_string(k);
-      const std::array<double, 3> e = light_of(sel->estimate.map, prepared.options.canonical_illuminant);
+      const std::optional<std::array<double, 3>> light = light_of(sel->estimate.map, prepared.options.canonical_illuminant);
+      if (!light) continue;  // a map component <= 0: no light
+      const std::array<double, 3>& e = *light;
       estimates[key] = {{"map", sel->estimate.map}, {"light", e}};
       text << "  " << key << "  light (" << fixed(e[0], 6) << ", " << fixed(e[1], 6) << ", "
            << fixed(e[2], 6) << ")";

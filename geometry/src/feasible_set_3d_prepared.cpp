@@ -363,6 +363,13 @@ bool feasible_set_3d_meets_ray(const std::vector<GamutConstraint3>& constraints,
   const mpz_class ld = lcm_of_denominators_of(d.x, d.y, d.z);
   const mpz_class D[3] = {times_lcm(d.x, ld), times_lcm(d.y, ld), times_lcm(d.z, ld)};
   RayInterval t;
+  // Without a row b < 0 (every canonical gamut holds black, say) no t > 0 has a lower bound, so
+  // the rows with b > 0 (upper bounds, all positive) cannot empty the interval: only the rows
+  // through the origin (b = 0) are read, k <= 0 on each.
+  bool lower_bounds = false;
+  for (const GamutConstraint3& g : constraints)
+    for (const internal::HalfSpace3& h : internal::FeasibleSet3Access::planes(*g.canonical).half_spaces)
+      lower_bounds = lower_bounds || sgn(h.b) < 0;
   for (const GamutConstraint3& g : constraints) {
     const internal::CanonicalPlanes3& c = internal::FeasibleSet3Access::planes(*g.canonical);
     const std::vector<Point3> points = internal::image_points(*g.image, g.hull_vertices);
@@ -385,6 +392,7 @@ bool feasible_set_3d_meets_ray(const std::vector<GamutConstraint3>& constraints,
       const mpz_class q[3] = {times_lcm(p.x, L) * D[0], times_lcm(p.y, L) * D[1], times_lcm(p.z, L) * D[2]};
       const mpz_class scale = L * ld;
       for (const internal::IntegerPlane3& h : planes) {
+        if (!lower_bounds && sgn(h.b) > 0) continue;
         const mpz_class k = h.a[0] * q[0] + h.a[1] * q[1] + h.a[2] * q[2];
         t.add(k, h.b * scale);
         if (t.empty) return false;

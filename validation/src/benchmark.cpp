@@ -238,10 +238,9 @@ std::vector<BenchmarkRecord> records_2d(const PreparedCanonical& canonical, cons
       rec.unanswered = scene->feasible.kind == ConvexKind::empty ? "empty" : "no_positive_map";
       const std::optional<Selection>& s = scene->selections[k];
       if (s && s->estimate.valid && s->estimate.map[0] > 0 && s->estimate.map[1] > 0) {
-        // e = c ⊘ (m1, m2, 1), c white: (1/m1, 1/m2, 1), unit length.
-        const double l[3] = {1 / s->estimate.map[0], 1 / s->estimate.map[1], 1.0};
-        const double len = std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
-        rec.light = std::array<double, 3>{l[0] / len, l[1] / len, l[2] / len};
+        // e = c ⊘ (m1, m2, 1), c white, unit length (any magnitude of m).
+        rec.light = light_of_map_3(Point3{Rational(s->estimate.map[0]), Rational(s->estimate.map[1]), Rational(1)},
+                                   Colour{Rational(1), Rational(1), Rational(1)});
         rec.answered = true;
         rec.unanswered.clear();
         // The illuminant-space worst case, or, where F or the map touches an axis (lights

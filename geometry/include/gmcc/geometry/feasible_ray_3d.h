@@ -23,7 +23,8 @@ namespace gmcc {
 ///         image, a negative channel; UnboundedFeasibleSet when every colour of a type has some
 ///         channel 0).
 /// Complexity: the image hulls (as feasible_set_3d), then O(k·f) integer dot products for k
-/// image-hull vertices and f canonical half-spaces of each type.
+/// image-hull vertices and f canonical half-spaces of each type; with no row b < 0 (black in every
+/// gamut) only the f₀ half-spaces through the origin are read, O(k·f₀).
 bool feasible_set_3d_meets_ray(const std::vector<GamutConstraint3>& constraints, const Point3& d);
 
 }  // namespace gmcc
