@@ -10,6 +10,8 @@
 #include <CGAL/QP_models.h>
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace gmcc {
@@ -76,6 +78,67 @@ LpSolution solve_rows(const LinearProgram& lp, const std::vector<std::size_t>& t
 }
 }  // namespace
 
+namespace {
+
+// A double filter for the rows' violation test, its bound proved here: each coefficient and
+// right-hand side as mpq_get_d truncates it (relative error below 2u), used only when every
+// non-zero one lies in [2^-400, 2^400] (then every product below is a normal double). For a point
+// x with the same property, a row's excess Σ a_j·x_j − b computed in doubles over n = variables
+// terms has |s~ − s| <= (5.1u + (n + 1)·u)·T + O(u²) with T = Σ|a_j·x_j| + |b| (each product of
+// two inputs within 2u each, rounded once; then n additions), below 16u·T~ for n <= 8. A row
+// with s~ < −16u·T~ certainly holds at x and is passed over; every other row is tested exactly,
+// so the rows found violated, and so the rounds, are those of the exact test alone.
+class RowFilter {
+ public:
+  explicit RowFilter(const LinearProgram& lp) : n_(lp.variables) {
+    if (n_ > 8) return;  // beyond the bound's term count: no filter
+    rows_.resize(lp.rows.size() * (n_ + 1));
+    usable_.assign(lp.rows.size(), 1);
+    for (std::size_t i = 0; i < lp.rows.size(); ++i) {
+      for (std::size_t j = 0; j <= n_; ++j) {
+        const Rational& v = j < n_ ? lp.rows[i][j] : lp.rhs[i];
+        const std::optional<double> d = in_range(v);
+        if (!d) usable_[i] = 0;
+        else rows_[i * (n_ + 1) + j] = *d;
+      }
+    }
+  }
+  // x as doubles, when every coordinate is in the filter's range.
+  static std::optional<std::vector<double>> point(const std::vector<Rational>& x) {
+    std::vector<double> d;
+    for (const Rational& v : x) {
+      const std::optional<double> e = in_range(v);
+      if (!e) return std::nullopt;
+      d.push_back(*e);
+    }
+    return d;
+  }
+  bool certainly_satisfied(std::size_t i, const std::vector<double>& x) const {
+    if (usable_.empty() || !usable_[i]) return false;
+    const double* r = &rows_[i * (n_ + 1)];
+    double s = -r[n_], t = std::fabs(r[n_]);
+    for (std::size_t j = 0; j < n_; ++j) {
+      const double p = r[j] * x[j];
+      s += p, t += std::fabs(p);
+    }
+    return s < -16 * 0x1p-53 * t;
+  }
+
+ private:
+  static std::optional<double> in_range(const Rational& v) {
+    if (sgn(v) == 0) return 0.0;
+    const double d = mpq_get_d(v.get_mpq_t());
+    const double m = std::fabs(d);
+    if (!(m >= 0x1p-400 && m <= 0x1p400)) return std::nullopt;
+    return d;
+  }
+  std::size_t n_;
+  std::vector<double> rows_;
+  std::vector<char> usable_;
+};
+
+}  // namespace
+
 LpSolution solve_linear_program(const LinearProgram& lp) {
   if (lp.objective.size() != lp.variables || lp.rows.size() != lp.rhs.size())
     throw std::invalid_argument("solve_linear_program: inconsistent sizes");
@@ -97,14 +160,26 @@ LpSolution solve_linear_program(const LinearProgram& lp) {
     if (!taken[i]) taken[i] = true, take.push_back(i);
   }
   constexpr std::size_t per_round = 64;
+  const RowFilter filter(lp);
+  std::vector<std::vector<mpz_class>> integers(lp.rows.size());  // integer rows, made when first needed
   for (;;) {
     LpSolution s = solve_rows(lp, take);
     // Infeasible on a subset: infeasible. Unbounded on a subset says nothing: every row at once.
     if (s.status == LpStatus::infeasible) return s;
     if (s.status == LpStatus::unbounded) return every_row();
+    const std::optional<std::vector<double>> x = RowFilter::point(s.x);
+    // x times the lcm D of its denominators: a row's excess has the sign of its integer row
+    // (integer_row) dotted with (X, −D), no gcd.
+    const mpz_class D = lcm_of_denominators(s.x);
+    std::vector<mpz_class> X;
+    for (const Rational& v : s.x) X.push_back(times_lcm(v, D));
     std::vector<std::pair<Rational, std::size_t>> violated;
     for (std::size_t i = 0; i < lp.rows.size(); ++i) {
-      if (taken[i]) continue;
+      if (taken[i] || (x && filter.certainly_satisfied(i, *x))) continue;
+      if (integers[i].empty()) integers[i] = integer_row(lp.rows[i], &lp.rhs[i]);
+      mpz_class dot = -integers[i][lp.variables] * D;
+      for (std::size_t j = 0; j < lp.variables; ++j) dot += integers[i][j] * X[j];
+      if (sgn(dot) <= 0) continue;
       Rational excess = -lp.rhs[i];
       for (std::size_t j = 0; j < lp.variables; ++j)
         if (sgn(lp.rows[i][j]) != 0) excess += lp.rows[i][j] * s.x[j];
