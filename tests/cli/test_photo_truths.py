@@ -181,6 +181,11 @@ def main():
             rc, out, err = r.run("estimate", "--space", "3d", "--canonical", c, "--truth", "1,1,1",
                                  os.path.join(tmp, names[0]))
             expect(rc == 0 and "the feasible set (up to intensity)" in out, out)
+            # The 2-D route records none of the 3-D route's options.
+            options = r.json("estimate", "--canonical", c, os.path.join(tmp, names[0]))["provenance"]["options"]
+            for name in ("--rules", "--black", "--centroid"):
+                expect(name not in options, (name, options))
+            expect(options["--colour-set"] == "hull", options)
 
         def lights_at_any_scale():
             e = lights[3]  # an image without a stray colour: F3 holds positive maps
