@@ -26,7 +26,7 @@ namespace gmcc::cli {
 namespace {
 
 struct Settings {
-  SelectSceneOptions scene;
+  SelectSceneOptions scene;  // its illuminants: --illuminants, for either route
   PixelSettings pixels;
   std::optional<Colour> truth;                 // --truth: the one image's light
   std::map<std::string, TruthRow> truths;      // --truths: each image's light and own pixel rules
@@ -50,6 +50,16 @@ Settings settings_of(const EstimateOptions& o) {
   s.scene.expansion = expansion_option(o.expand_factor, o.expand_policy);
   s.scene.on_empty = recovery_policy_from_string(o.on_empty);
   s.scene.illuminant_worst_case = o.illuminant_worst_case != "off";
+  if (!o.illuminants_path.empty()) {
+    const ColourTable lights = read_colour_csv(o.illuminants_path);
+    require_pixel_colours(lights, "--illuminants");
+    for (std::size_t i = 0; i < lights.colours.size(); ++i) {
+      const Colour& l = lights.colours[i];
+      if (sgn(l.r) <= 0 || sgn(l.g) <= 0 || sgn(l.b) <= 0)
+        throw InputError(o.illuminants_path, lights.lines[i], "a plausible light needs every channel > 0");
+    }
+    s.scene.illuminants = lights.colours;
+  }
   return s;
 }
 
@@ -214,6 +224,10 @@ CLI::App* add_estimate_command(CLI::App& app, EstimateOptions& o) {
   cmd->add_option("--on-empty", o.on_empty, "none | grow-canonical | min-violation")
       ->check(CLI::IsMember({"none", "grow-canonical", "min-violation"}))
       ->capture_default_str();
+  cmd->add_option("--illuminants", o.illuminants_path,
+                  "plausible lights, one r,g,b per line: only maps of plausible lights are kept (2d: "
+                  "Finlayson's illumination constraint on perspective maps; 3d: the cone of their maps, "
+                  "Barnard's ECRULE)");
   cmd->add_option("--illuminant-worst-case", o.illuminant_worst_case,
                   "on | off: each rule's illuminant-space worst case")
       ->check(CLI::IsMember({"on", "off"}))
@@ -274,6 +288,7 @@ Estimate3Options estimate3_options(const EstimateOptions& o, const Settings& s) 
   options.canonical_light = s.scene.canonical_illuminant;
   options.route = o.centroid == "exact" ? Crule3dRoute::exact : Crule3dRoute::certified;
   options.exact_feasible_set = false;  // only its kind and vertex count are printed
+  if (s.scene.illuminants) options.illuminants = *s.scene.illuminants;
   if (!o.rules_3d.empty()) {
     options.rules.clear();
     for (const std::string& r : o.rules_3d) options.rules.push_back(rule_3_from_string(r));
@@ -307,6 +322,29 @@ Json rule_3d_output(std::ostream& text, Rule3 rule, const ImageSelection3& sel) 
   if (sel.selection.worst_case_deg) text << "  worst case (map) " << fixed(*sel.selection.worst_case_deg, 3) << " deg";
   text << "\n";
   return j;
+}
+
+// With plausible lights and no rule's light: whether F3 itself holds a positive map (then the
+// constraint removed every one: "F3 holds maps, none of a plausible light"), in the text and JSON.
+void constraint_outcome(std::ostream& text, Json& record, const CanonicalConstraints3& prepared,
+                        const ImageColours& colours, const Estimate3Options& options, const ImageEstimate3& r) {
+  if (options.illuminants.empty()) return;
+  bool any = false;
+  for (Rule3 rule : options.rules) any = any || (r[rule] && r[rule]->light);
+  Json c = {{"lights", options.illuminants.size()}, {"plausible_map", any}};
+  if (!any) {
+    Estimate3Options plain = options;
+    plain.illuminants.clear();
+    plain.truth.reset();
+    plain.rules = {Rule3::max_trace};
+    const std::optional<ImageSelection3>& m = estimate_3d(prepared, colours, plain).max_trace;
+    const bool f3_positive = m && m->light;
+    c["unconstrained_positive_map"] = f3_positive;
+    text << (f3_positive ? "  no light: F3 holds maps, none of a plausible light (F3 ∩ the cone of the "
+                           "--illuminants lights' maps has no map with every component > 0)\n"
+                         : "  no light: F3 itself holds no map with every component > 0\n");
+  }
+  record["constraint"] = std::move(c);
 }
 
 // `gmcc estimate --space 3d`: CRULE on each image's pixel colours against the prepared 3-D
@@ -363,6 +401,7 @@ int run_estimate_3d(const EstimateOptions& o) {
     }
     if (r.lazy_feasible.kind() == ConvexKind3::empty)
       text << "  no estimate: no diagonal map takes every kept colour into the canonical gamut\n";
+    constraint_outcome(text, record, prepared, colours, options, r);
     record["estimates"] = std::move(estimates);
     images.push_back(std::move(record));
   }

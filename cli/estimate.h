@@ -24,6 +24,7 @@ struct EstimateOptions {
   std::string expand_factor = "0";
   std::string on_empty = "none";
   std::string illuminant_worst_case = "on";
+  std::string illuminants_path;               // plausible lights, r,g,b per line (the constraint)
   bool json = false;
   std::string corrected_dir;
   std::string space = "2d";            // 2d: the perspective route; 3d: CRULE on pixel colours

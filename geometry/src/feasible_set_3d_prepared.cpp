@@ -6,6 +6,7 @@
 #include <gmcc/geometry/feasible_ray_3d.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
+#include <gmcc/geometry/illumination_cone_3d.h>
 #include <gmcc/geometry/integers_over_lcm.h>
 #include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/numerics/rational_to_float.h>
@@ -17,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -400,6 +402,27 @@ bool feasible_set_3d_meets_ray(const std::vector<GamutConstraint3>& constraints,
     }
   }
   return t.meets();
+}
+
+Point3 feasible_set_3d_box(const std::vector<GamutConstraint3>& constraints) {
+  if (constraints.empty()) throw std::invalid_argument("feasible_set_3d: no gamut constraint");
+  std::optional<Point3> box;
+  for (const GamutConstraint3& g : constraints) {
+    internal::check_colours(*g.image, "image");
+    const internal::CanonicalPlanes3& c = internal::FeasibleSet3Access::planes(*g.canonical);
+    Point3 P{0, 0, 0};
+    for (const Colour& p : *g.image) P.x = std::max(P.x, p.r), P.y = std::max(P.y, p.g), P.z = std::max(P.z, p.b);
+    for (int k = 0; k < 3; ++k)
+      if (sgn(coord(P, k)) == 0)
+        throw UnboundedFeasibleSet(std::string("every image colour has ") + "rgb"[k] +
+                                   " = 0: that map component is unconstrained and the feasible "
+                                   "set is unbounded");
+    const Point3 b{Rational(c.max.x / P.x), Rational(c.max.y / P.y), Rational(c.max.z / P.z)};
+    if (!box) box = b;
+    else
+      for (int k = 0; k < 3; ++k) coord(*box, k) = std::min(coord(*box, k), coord(b, k));
+  }
+  return *box;
 }
 
 std::vector<std::size_t> colour_hull_vertex_indices(const std::vector<std::array<double, 3>>& colours) {

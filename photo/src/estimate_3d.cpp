@@ -1,6 +1,7 @@
 #include <gmcc/photo/estimate_3d.h>
 
 #include <gmcc/geometry/feasible_ray_3d.h>
+#include <gmcc/geometry/illumination_cone_3d.h>
 #include <gmcc/selection/centroid_3.h>
 #include <gmcc/selection/max_trace.h>
 #include <gmcc/selection/max_volume.h>
@@ -91,8 +92,15 @@ ImageEstimate3 estimate_3d(const std::vector<GamutConstraint3>& constraints, con
     }
     return i;
   };
-  out.lazy_feasible = feasible_set_3d_lazy(constraints);
-  if (true_map) out.truth_in_feasible = feasible_set_3d_meets_ray(constraints, *true_map);
+  // With plausible lights, their maps' cone as one more gamut type, truncated beyond F3's box.
+  std::vector<GamutConstraint3> all = constraints;
+  std::optional<CanonicalConstraints3> cone;
+  if (!o.illuminants.empty()) {
+    cone.emplace(illumination_cone_3d(o.illuminants, c, feasible_set_3d_box(constraints)));
+    all.push_back({&*cone, &illumination_cone_colour(), false});
+  }
+  out.lazy_feasible = feasible_set_3d_lazy(all);
+  if (true_map) out.truth_in_feasible = feasible_set_3d_meets_ray(all, *true_map);
   const LazyConvexSet3& F = out.lazy_feasible;
   if (F.kind() != ConvexKind3::empty) {
     if (want[0]) out.max_volume = light_of(with_worst_case(F, max_volume(F)));

@@ -307,3 +307,77 @@ BOOST_AUTO_TEST_CASE(lights_at_extreme_scales) {
   BOOST_TEST((*wide)[1] == 0.0);
   BOOST_TEST((*wide)[0] == std::sqrt(0.5), boost::test_tools::tolerance(1e-15));
 }
+
+// The illumination constraint in 3-D (Barnard's ECRULE; illumination_cone_3d.h): F3 ∩ K, K the cone
+// of the plausible lights' maps, against an independent description of the same set. Every
+// vertex of the constrained set lies in F3 and in K (its central projection in the hull of the
+// maps' projections); every vertex of F3 in K is in it, and so is every point of F3 whose
+// projection is in that hull (sampled as convex combinations of F3's vertices); max-trace on the
+// smaller set never exceeds it on F3; the truth is in the constrained set iff it is in F3 and in K.
+BOOST_AUTO_TEST_CASE(illumination_cone_constrains_f3_exactly) {
+  std::mt19937 rng(45);
+  std::uniform_int_distribution<int> u(1, 12), w(0, 4), light(2, 12);
+  int empty_positive = 0, nonempty = 0;
+  for (int scene = 0; scene < 60; ++scene) {
+    std::vector<Colour> surfaces;
+    for (int i = 0; i < 12; ++i) surfaces.push_back({Rational(u(rng)), Rational(u(rng)), Rational(u(rng))});
+    const Colour e{Rational(light(rng)), Rational(light(rng)), Rational(light(rng))};
+    ImageColours image;
+    for (std::size_t i = 0; i < surfaces.size(); i += 2)
+      image.colours.push_back({surfaces[i].r * e.r, surfaces[i].g * e.g, surfaces[i].b * e.b});
+    std::vector<Colour> lights;
+    const int n = 1 + scene % 5;
+    for (int j = 0; j < n; ++j) lights.push_back({Rational(light(rng)), Rational(light(rng)), Rational(light(rng))});
+    if (scene % 2 == 0) lights.push_back({e.r * 3, e.g * 3, e.b * 3});  // the true light among them, brighter
+    const CanonicalConstraints3 canonical(surfaces);
+    Estimate3Options plain, constrained;
+    plain.truth = constrained.truth = e;
+    constrained.illuminants = lights;
+    const ImageEstimate3 F = estimate_3d(canonical, image, plain), FK = estimate_3d(canonical, image, constrained);
+    // K's projections (c = white: the maps 1/l).
+    std::vector<Point2> kp;
+    for (const Colour& l : lights) {
+      const Rational a = 1 / l.r, b = 1 / l.g, c = 1 / l.b, s = a + b + c;
+      kp.push_back({Rational(a / s), Rational(b / s)});
+    }
+    const ConvexSet2 K = convex_hull(kp);
+    auto in_k = [&](const Point3& v) {
+      const Rational s = v.x + v.y + v.z;
+      return sgn(s) == 0 || contains(K, Point2{Rational(v.x / s), Rational(v.y / s)});
+    };
+    for (const Point3& v : FK.feasible.vertices) {
+      BOOST_TEST(contains(F.feasible, v), "scene " << scene);
+      BOOST_TEST(in_k(v), "scene " << scene);
+    }
+    for (const Point3& v : F.feasible.vertices)
+      if (in_k(v)) BOOST_TEST(contains(FK.feasible, v), "scene " << scene);
+    for (int k = 0; k < 20 && !F.feasible.vertices.empty(); ++k) {
+      Point3 p{0, 0, 0};
+      Rational total = 0;
+      for (const Point3& v : F.feasible.vertices) {
+        const Rational t(w(rng));
+        p = {Rational(p.x + t * v.x), Rational(p.y + t * v.y), Rational(p.z + t * v.z)};
+        total += t;
+      }
+      if (sgn(total) == 0) continue;
+      p = {Rational(p.x / total), Rational(p.y / total), Rational(p.z / total)};
+      if (in_k(p)) BOOST_TEST(contains(FK.feasible, p), "scene " << scene);
+    }
+    const Point3 truth_map{1 / e.r, 1 / e.g, 1 / e.b};
+    BOOST_TEST(*FK.truth_in_feasible == (*F.truth_in_feasible && in_k(truth_map)), "scene " << scene);
+    if (FK.max_trace && F.max_trace) {
+      const Point3 a = measured_map(FK.max_trace->selection.estimate), b = measured_map(F.max_trace->selection.estimate);
+      const Rational ta = a.x + a.y + a.z, tb = b.x + b.y + b.z;
+      BOOST_TEST(ta <= tb);
+      (FK.max_trace->light ? nonempty : empty_positive)++;
+    }
+  }
+  BOOST_TEST(nonempty > 10);  // both outcomes reached: lights that admit maps and lights that do not
+  BOOST_TEST(empty_positive > 3);
+  Estimate3Options bad;
+  bad.illuminants = {Colour{1, 0, 1}};
+  const CanonicalConstraints3 canonical({Colour{1, 1, 1}, Colour{2, 1, 1}});
+  ImageColours one;
+  one.colours = {Colour{1, 1, 1}};
+  BOOST_CHECK_THROW(estimate_3d(canonical, one, bad), std::invalid_argument);
+}

@@ -84,6 +84,11 @@ struct Estimate3Options {
   /// The true light e, every channel > 0, when known: then ImageEstimate3::truth_in_feasible and
   /// each rule's map-space and recovery errors are filled.
   std::optional<Colour> truth;
+  /// Plausible lights (camera RGB, every channel > 0): when given, F3 is intersected with the
+  /// cone of their maps c ⊘ l (the illumination constraint in 3-D, Barnard's ECRULE;
+  /// illumination_cone_3d.h) and every rule, worst case and truth test reads F3 ∩ cone; empty:
+  /// no constraint.
+  std::vector<Colour> illuminants;
 };
 
 /// Gamut mapping in 3-D on one image's colours.
@@ -92,8 +97,8 @@ struct Estimate3Options {
 /// \param options the rules, the centroid's route and the canonical light.
 /// \throws std::invalid_argument if `image` holds chromaticity lifts (ColourSet::hull: they are
 ///         not pixel colours, and F3 from them would be meaningless), has no colour, or the
-///         canonical light or the truth has a channel <= 0; UnboundedFeasibleSet (feasible_set.h) when every
-///         colour has some channel 0.
+///         canonical light, the truth or a plausible light has a channel <= 0;
+///         UnboundedFeasibleSet (feasible_set.h) when every colour has some channel 0.
 ImageEstimate3 estimate_3d(const CanonicalConstraints3& canonical, const ImageColours& image,
                            const Estimate3Options& options = {});
 
@@ -103,8 +108,8 @@ ImageEstimate3 estimate_3d(const CanonicalConstraints3& canonical, const ImageCo
 /// feasible sets ("1-jet": pixels and 1st-order edges; "2-jet": with 2nd-order edges too), where
 /// max-trace is their selection. Every type's canonical gamut must share one intensity scale
 /// (docs/photographs.md §5). One constraint is estimate_3d above on its colours.
-/// \throws std::invalid_argument if `constraints` is empty or the canonical light or the truth
-///         has a channel <= 0, and as feasible_set_3d.
+/// \throws std::invalid_argument if `constraints` is empty or the canonical light, the truth or
+///         a plausible light has a channel <= 0, and as feasible_set_3d.
 ImageEstimate3 estimate_3d(const std::vector<GamutConstraint3>& constraints, const Estimate3Options& options = {});
 
 /// The light a 3-D map implies, e = c ⊘ d, with unit length (docs/conventions.md §2); absent
