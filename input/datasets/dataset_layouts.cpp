@@ -295,13 +295,13 @@ ChartFrame read_chart_frame(const std::string& coords) {
   return c;
 }
 
-// The PNG must be the frame scaled by one factor, to within a pixel's rounding on each axis: a
-// rotated (portrait against landscape) or cropped image would put the chart in the wrong place.
+// The PNG must be the frame scaled by one factor s, each side rounded to a whole pixel: w = s·fw
+// + dw, h = s·fh + dh with |dw|, |dh| <= 1/2, so |h·fw - w·fh| = |dh·fw - dw·fh| <= (fw + fh)/2.
+// A rotated (portrait against landscape) or cropped image would put the chart in the wrong place.
 void check_frame_shape(const std::string& png, std::size_t w, std::size_t h, const ChartFrame& c,
                        const std::string& coords) {
   const Rational W(static_cast<long>(w)), H(static_cast<long>(h));
-  const Rational off = abs(H * c.width - W * c.height);  // |h - w·fh/fw|·fw, and |w - h·fw/fh|·fh
-  if (off > c.width || off > c.height)
+  if (2 * abs(H * c.width - W * c.height) > c.width + c.height)
     throw InputError(png, 0,
                      std::to_string(w) + "x" + std::to_string(h) + " pixels, not the shape of its chart's frame " +
                          to_string(c.width) + "x" + to_string(c.height) + " (" + coords +
