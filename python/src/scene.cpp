@@ -160,7 +160,9 @@ void bind_images(py::module_& m) {
           info["pattern"] = meta.pattern;
           info["black_min"] = meta.black_min;
           info["black_max"] = meta.black_max;
-          info["black"] = std::vector<std::uint32_t>(meta.black.begin(), meta.black.end());
+          py::list black;
+          for (std::uint32_t b : meta.black) black.append(b);
+          info["black"] = std::move(black);
           info["white"] = meta.white;
           info["camera"] = meta.camera;
           info["saturated"] = meta.saturated;
