@@ -54,6 +54,11 @@ def main():
             expect(rc == 0, err)
             ra, rb = records(a), records(b)
             expect(len(ra) == 6 * 11 and len(ra) == len(rb), len(ra))
+            # The provenance states the levels the images were read with: the MAT file's, not the
+            # options' defaults (--black-level 0 --saturation max).
+            levels = json.loads(open(a).readline())["provenance"]["image_levels"]
+            expect(len(levels) == 6 and all(x["black_level"] == 512 and x["saturation"] == 15000 and
+                                            x["black_from"] == x["saturation_from"] == "given" for x in levels), levels)
             for x, y in zip(ra, rb):
                 x.pop("image"), y.pop("image")
                 expect(x == y, (x, y))
