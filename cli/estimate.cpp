@@ -19,6 +19,7 @@
 #include "json_output.h"
 #include "output_files.h"
 #include "provenance.h"
+#include "raw_report.h"
 #include "select.h"
 #include "write_stdout.h"
 
@@ -104,10 +105,11 @@ std::string fixed(double x, int digits) {
 }
 
 // An image read and made colours by the run's pixel rules and its own (its truth-table row).
+// A raw file's reading is kept in `raw` (its pattern empty for any other image).
 ImageColours colours_of(const std::string& path, const Settings& s, const EstimateOptions& o, RgbImage& image,
-                        PixelRules& rules) {
+                        PixelRules& rules, RawImage& raw) {
   const TruthRow* row = s.truths.empty() ? nullptr : &truth_of_image(s.truths, path, o.truths_path);
-  return image_colours_of(path, s.pixels, &image, &rules, row, o.truths_path);
+  return image_colours_of(path, s.pixels, &image, &rules, row, o.truths_path, &raw);
 }
 
 // The run's output on stdout: the JSON document (its images last) or the summary.
@@ -190,9 +192,11 @@ void describe_pixels(std::ostream& text, const std::string& path, const RgbImage
 
 // The summary's lines on an image's pixels and its feasible set.
 void describe_image(std::ostream& text, const std::string& path, const RgbImage& image, const ImageColours& colours,
-                    const PixelRules& rules, const SceneResult& result) {
+                    const PixelRules& rules, const SceneResult& result, const RawImage& raw) {
   describe_pixels(text, path, image, colours, rules);
-  text << "\n  feasible set: " << to_string(result.feasible.kind) << ", "
+  text << "\n";
+  if (!raw.pattern.empty()) text << raw_text(raw);
+  text << "  feasible set: " << to_string(result.feasible.kind) << ", "
        << result.feasible.vertices.size() << " vertices\n";
 }
 
@@ -313,7 +317,8 @@ Json rule_3d_output(std::ostream& text, Rule3 rule, const ImageSelection3& sel) 
       text << "  recovery error " << fixed(*sel.recovery_error_deg, 3) << " deg";
     }
   } else {
-    text << "  no light (a map component is 0)";
+    text << "  no light (a map component is 0: likely dark pixels with a zero channel, which the default "
+            "pixel rules keep; drop them with --dark 1 or --pixel-rule gijsenij)";
   }
   if (sel.map_error_deg) {
     j["map_error_deg"] = *sel.map_error_deg;
@@ -363,7 +368,8 @@ int run_estimate_3d(const EstimateOptions& o) {
   for (const std::string& path : o.images) {
     RgbImage image;
     PixelRules rules;
-    const ImageColours colours = colours_of(path, s, o, image, rules);
+    RawImage raw;
+    const ImageColours colours = colours_of(path, s, o, image, rules, raw);
     const std::optional<Colour> truth =
         s.truths.empty() ? s.truth : std::optional<Colour>(truth_of_image(s.truths, path, o.truths_path).light);
     ImageEstimate3 r;
@@ -379,7 +385,12 @@ int run_estimate_3d(const EstimateOptions& o) {
     record["feasible_set"] = {{"kind", to_string(r.lazy_feasible.kind())}, {"vertices", r.lazy_feasible.size()}};
     Json estimates = Json::object();
     describe_pixels(text, path, image, colours, rules);
-    text << "\n  feasible set (3-D): " << to_string(r.lazy_feasible.kind()) << ", " << r.lazy_feasible.size()
+    text << "\n";
+    if (!raw.pattern.empty()) {
+      record["raw"] = raw_json(raw);
+      text << raw_text(raw);
+    }
+    text << "  feasible set (3-D): " << to_string(r.lazy_feasible.kind()) << ", " << r.lazy_feasible.size()
          << " vertices\n";
     if (truth) {
       // Decided exactly on F3's rows (feasible_ray_3d.h): some positive multiple of c ⊘ e in F3.
@@ -443,11 +454,13 @@ int run_estimate(const EstimateOptions& o) {
   for (const std::string& path : o.images) {
     RgbImage image;
     PixelRules rules;
-    const ImageColours colours = colours_of(path, s, o, image, rules);
+    RawImage raw;
+    const ImageColours colours = colours_of(path, s, o, image, rules, raw);
     const SceneResult result = select_image(prepared, canonical, s, o.truths_path, path, colours);
     Json record = image_record(path, image, colours);
     Json estimates = Json::object();
-    describe_image(text, path, image, colours, rules, result);
+    if (!raw.pattern.empty()) record["raw"] = raw_json(raw);
+    describe_image(text, path, image, colours, rules, result, raw);
     for (Rule k : all_rules) {
       const std::optional<Selection>& sel = result.selections[k];
       if (!sel || !sel->estimate.valid) continue;

@@ -5,6 +5,7 @@
 #include "accuracy.h"
 #include "benchmark.h"
 #include "canonical.h"
+#include "dataset.h"
 #include "estimate.h"
 #include "exit_cleanup.h"
 #include "integer_option.h"
@@ -102,7 +103,8 @@ int main(int argc, char** argv) {
       command(app, add_select_command, plain(run_select)), command(app, add_accuracy_command, plain(run_accuracy)),
       command(app, add_reproduce_command, run_reproduce), command(app, add_estimate_command, plain(run_estimate)),
       command(app, add_merge_command, plain(run_merge)), command(app, add_canonical_command, plain(run_canonical)),
-      command(app, add_benchmark_command, plain(run_benchmark_command))};
+      command(app, add_benchmark_command, plain(run_benchmark_command)),
+      command(app, add_dataset_command, plain(run_dataset))};
   CLI::App* cite = app.add_subcommand(
       "cite", "print a BibTeX entry for this build of gmcc (version, git commit, commit date) "
               "and the paper it implements (docs/cli.md \"Provenance\")");

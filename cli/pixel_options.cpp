@@ -150,14 +150,15 @@ PixelSettings pixel_settings(const PixelOptions& o) {
 }
 
 ImageColours image_colours_of(const std::string& path, const PixelSettings& s, RgbImage* image_out,
-                              PixelRules* rules_out, const TruthRow* row, const std::string& truths_path) {
+                              PixelRules* rules_out, const TruthRow* row, const std::string& truths_path,
+                              RawImage* raw_out) {
   PixelRules rules = s.rules;
   ImageLevels levels;
   if (s.black_level_given) levels.black = rules.black_level;
   levels.saturation = rules.saturation;
   if (row && row->black_level) levels.black = row->black_level;
   if (row && row->saturation) levels.saturation = row->saturation;
-  RgbImage image = read_camera_image(path, levels, rules);
+  RgbImage image = read_camera_image(path, levels, rules, raw_out);
   if (s.saturation_max && !levels.saturation) rules.saturation = (1u << image.bits) - 1;
   std::optional<RgbImage> own_mask;
   if (row) {

@@ -4,6 +4,7 @@
 
 #include <gmcc/input/image_file.h>
 #include <gmcc/input/image_pixels.h>
+#include <gmcc/input/raw_file.h>
 #include <gmcc/input/truth_table.h>
 
 #include <CLI/CLI.hpp>
@@ -51,10 +52,12 @@ PixelSettings pixel_settings(const PixelOptions& options);
 
 /// Read the image at `path` and apply the settings to it (the mask must have its size), with the
 /// image's own rules from its truth-table row when given (black level, saturation, chart polygon,
-/// and a mask image whose path is relative to the folder of `truths_path`).
+/// and a mask image whose path is relative to the folder of `truths_path`). `raw_out`, when
+/// given and the file is a camera raw file: what its reading used (read_camera_image).
 /// \throws InputError naming the file.
 ImageColours image_colours_of(const std::string& path, const PixelSettings& settings,
                               RgbImage* image_out = nullptr, PixelRules* rules_out = nullptr,
-                              const TruthRow* row = nullptr, const std::string& truths_path = "");
+                              const TruthRow* row = nullptr, const std::string& truths_path = "",
+                              RawImage* raw_out = nullptr);
 
 }  // namespace gmcc::cli

@@ -3,6 +3,7 @@
 #include "citation_template.h"
 
 #include <gmcc/input/build_info.h>
+#include <gmcc/input/camera_image.h>
 #include <gmcc/input/file_digest.h>
 
 #include <algorithm>
@@ -105,6 +106,22 @@ Json provenance_json(bool inputs_by_path) {
   for (const FileDigest& f : files)
     inputs.push_back(Json{{"path", f.path}, {"bytes", f.bytes}, {"sha256", f.sha256}});
   p["inputs"] = std::move(inputs);
+  // The levels each image was read with (a dataset's or a raw file's own, which the options do
+  // not show); only when images were read, so that other outputs keep their bytes.
+  std::vector<ImageLevelsUsed> levels = image_levels_used();
+  if (inputs_by_path)
+    std::stable_sort(levels.begin(), levels.end(),
+                     [](const ImageLevelsUsed& a, const ImageLevelsUsed& b) { return a.path < b.path; });
+  if (!levels.empty()) {
+    Json images = Json::array();
+    for (const ImageLevelsUsed& l : levels)
+      images.push_back(Json{{"path", l.path},
+                            {"black_level", l.black.size() == 1 ? Json(l.black[0]) : Json(l.black)},
+                            {"black_from", l.black_from},
+                            {"saturation", l.saturation ? Json(*l.saturation) : Json(nullptr)},
+                            {"saturation_from", l.saturation_from}});
+    p["image_levels"] = std::move(images);
+  }
   return p;
 }
 

@@ -251,6 +251,63 @@ std::pair<std::size_t, std::size_t> png_size(const fs::path& file) {
   return {be(16), be(20)};
 }
 
+// A Gehler-Shi coordinate file's frame (its first line: the width and height of the image the
+// coordinates were taken in, whole numbers, "4368 2912" or "4368.000000 2912.000000") and the
+// chart's four corners (the next four lines), read exactly.
+struct ChartFrame {
+  Rational width, height;
+  std::array<std::array<Rational, 2>, 4> corner;
+};
+
+ChartFrame read_chart_frame(const std::string& coords) {
+  const std::string text = read_text_file(coords, {std::size_t(1) << 20, "chart coordinates", "lines x y"});
+  std::istringstream in(text);
+  std::string line;
+  std::vector<std::pair<std::size_t, std::array<std::string, 2>>> lines;  // number, the two fields
+  for (std::size_t number = 1; lines.size() < 5 && std::getline(in, line); ++number) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream fields(line);
+    std::array<std::string, 2> f;
+    std::string extra;
+    if (!(fields >> f[0])) continue;  // a blank line
+    if (!(fields >> f[1]) || (fields >> extra)) throw InputError(coords, number, "expected two numbers x y");
+    lines.push_back({number, f});
+  }
+  if (lines.size() < 5) throw InputError(coords, 0, "expected a frame line \"width height\" and four corners");
+  ChartFrame c;
+  std::array<Rational, 2> v[5];
+  for (int k = 0; k < 5; ++k)
+    for (int j = 0; j < 2; ++j) try {
+        v[k][j] = parse_rational(lines[k].second[j]);
+      } catch (const std::invalid_argument& e) {
+        throw InputError(coords, lines[k].first, e.what());
+      }
+  // 22 of the files as shipped (all for images outside the 568) have no frame line: their first
+  // line is a corner, with a fraction; read as a frame it would scale the chart wrongly.
+  for (int j = 0; j < 2; ++j)
+    if (sgn(v[0][j]) <= 0 || v[0][j].get_den() != 1)
+      throw InputError(coords, lines[0].first,
+                       "no frame line: the first line must be the frame's width and height, whole numbers "
+                       "(\"4368 2912\"); found " + lines[0].second[0] + " " + lines[0].second[1] + ", a corner");
+  c.width = v[0][0];
+  c.height = v[0][1];
+  for (int k = 0; k < 4; ++k) c.corner[k] = v[k + 1];
+  return c;
+}
+
+// The PNG must be the frame scaled by one factor s, each side rounded to a whole pixel: w = s·fw
+// + dw, h = s·fh + dh with |dw|, |dh| <= 1/2, so |h·fw - w·fh| = |dh·fw - dw·fh| <= (fw + fh)/2.
+// A rotated (portrait against landscape) or cropped image would put the chart in the wrong place.
+void check_frame_shape(const std::string& png, std::size_t w, std::size_t h, const ChartFrame& c,
+                       const std::string& coords) {
+  const Rational W(static_cast<long>(w)), H(static_cast<long>(h));
+  if (2 * abs(H * c.width - W * c.height) > c.width + c.height)
+    throw InputError(png, 0,
+                     std::to_string(w) + "x" + std::to_string(h) + " pixels, not the shape of its chart's frame " +
+                         to_string(c.width) + "x" + to_string(c.height) + " (" + coords +
+                         ", line 1): a rotated or cropped image would have its chart masked in the wrong place");
+}
+
 }  // namespace
 
 std::vector<TruthRow> read_gehler_shi(const std::string& dir_text, std::map<std::string, int>& folds) {
@@ -287,21 +344,18 @@ std::vector<TruthRow> read_gehler_shi(const std::string& dir_text, std::map<std:
       if (sgn(e[k]) <= 0) throw InputError(file, 0, "real_rgb: image " + std::to_string(i + 1) + " has a channel <= 0");
     }
     row.light = {e[0], e[1], e[2]};
-    row.black_level = names[i].rfind("IMG", 0) == 0 ? 129 : 1;
-    // The chart: four corners in a frame of the stated size, scaled to the image's.
+    // Shi's description.txt: 129 subtracted from images 87-568 (the Canon 5D's, IMG_*), nothing
+    // from images 1-86 (the Canon 1D's, 8D5U*).
+    row.black_level = names[i].rfind("IMG", 0) == 0 ? 129 : 0;
     const std::string stem = names[i].substr(0, names[i].find('.'));
     const std::string coords = (dir / "coordinates" / (stem + "_macbeth.txt")).string();
-    const std::string text = read_text_file(coords, {std::size_t(1) << 20, "chart coordinates", "lines x y"});
-    std::istringstream in(text);
-    double fw = 0, fh = 0;
-    std::array<std::array<double, 2>, 4> corner{};
-    if (!(in >> fw >> fh) || !(fw > 0) || !(fh > 0)) throw InputError(coords, 1, "expected the frame's width and height");
-    for (int k = 0; k < 4; ++k)
-      if (!(in >> corner[k][0] >> corner[k][1])) throw InputError(coords, std::size_t(k) + 2, "expected a corner x y");
-    const auto [w, h] = png_size(dir / images / names[i]);
+    const ChartFrame chart = read_chart_frame(coords);
+    const fs::path png = dir / images / names[i];
+    const auto [w, h] = png_size(png);
+    check_frame_shape(png.string(), w, h, chart, coords);
     for (int k : {0, 1, 3, 2})
-      row.chart.push_back({Rational(corner[k][0]) * Rational(static_cast<long>(w)) / Rational(fw),
-                           Rational(corner[k][1]) * Rational(static_cast<long>(h)) / Rational(fh)});
+      row.chart.push_back({chart.corner[k][0] * Rational(static_cast<long>(w)) / chart.width,
+                           chart.corner[k][1] * Rational(static_cast<long>(h)) / chart.height});
     rows.push_back(std::move(row));
   }
   if (rows.empty()) throw InputError(dir_text, 0, "no images");

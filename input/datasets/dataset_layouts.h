@@ -38,12 +38,18 @@ std::vector<TruthRow> read_cube_plus(const std::string& dir);
 /// `real_illum_568.mat` (variable `real_rgb`, one row per image in that order; the name
 /// `real_illum_568..mat` it is sometimes shipped under is accepted), the chart coordinates
 /// `coordinates/<name>_macbeth.txt` (a line "width height" of the frame the coordinates are in,
-/// then the chart's four corners "x y", in the order 1, 2, 4, 3 around it, scaled here to the
-/// image's size) and, optionally, the standard split `threefoldCVsplit.mat` (`te_split`: three
-/// lists of 1-based image indices). Black level 129 for the Canon 5D images (names beginning
-/// `IMG`), 1 for the others, as the public loaders subtract; no saturation level is assumed.
+/// whole numbers, then the chart's four corners "x y", in the order 1, 2, 4, 3 around it, read
+/// exactly and scaled here to the image's size) and, optionally, the standard split
+/// `threefoldCVsplit.mat` (`te_split`: three lists of 1-based image indices). Each PNG must be
+/// its frame scaled by one factor to within a pixel on each axis (109 of the 568 frames are
+/// portrait, and so are their PNGs). Black level as Shi's `description.txt` (shipped with the
+/// lights) computes the ground truth: 129 for the Canon 5D images (names beginning `IMG`, images
+/// 87-568), 0 for the Canon 1D's (`8D5U*`, images 1-86); no saturation level is assumed.
 /// \returns the rows, and in `folds` each image's fold (0, 1, 2) from the split, empty without it.
-/// \throws InputError naming the file.
+/// \throws InputError naming the file: a coordinate file without its frame line (its first line
+///         fractional: a corner, as in 22 files of the download, all for images outside the 568)
+///         or with fewer than five lines, a PNG whose shape is not its frame's (rotated or
+///         cropped), a MATLAB variable of the wrong shape, a light channel <= 0.
 std::vector<TruthRow> read_gehler_shi(const std::string& dir, std::map<std::string, int>& folds);
 
 }  // namespace gmcc

@@ -13,6 +13,7 @@
 #include <cctype>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 namespace gmcc {
 namespace {
@@ -30,13 +31,71 @@ char colour_letter(int c) { return c == 0 ? 'R' : c == 2 ? 'B' : 'G'; }
 
 }  // namespace
 
+// The extensions of the raw formats LibRaw reads (its list of supported cameras and formats,
+// https://www.libraw.org/supported-cameras, and dcraw's, whose decoders it carries): Adobe DNG
+// and GoPro's GPR (a DNG), and the makers' own containers.
 bool is_raw_file_name(const std::string& path) {
-  static const std::array<const char*, 22> extensions = {"dng", "cr2", "cr3", "nef", "nrw", "arw", "srf", "sr2",
-                                                         "raf", "orf", "rw2", "rwl", "pef", "srw", "3fr", "iiq",
-                                                         "erf", "kdc", "dcr", "mos", "mrw", "x3f"};
+  static const std::array extensions = {
+      "3fr", "ari", "arw", "bay", "bmq", "cap", "cine", "cr2", "cr3", "crw", "cs1", "dc2",
+      "dcr", "dng", "drf", "dsc", "erf", "fff", "gpr", "ia",  "iiq", "k25", "kc2", "kdc",
+      "mdc", "mef", "mos", "mrw", "nef", "nrw", "orf", "ori", "pef", "pxn", "qtk", "raf",
+      "raw", "rdc", "rw2", "rwl", "rwz", "sr2", "srf", "srw", "sti", "x3f"};
   const std::string e = lower_extension(path);
   return std::any_of(extensions.begin(), extensions.end(), [&](const char* x) { return e == x; });
 }
+
+namespace {
+
+// What a walk over a TIFF's directories finds (TIFF 6.0 §2 "Image File Directory"; DNG 1.6 for
+// the tags): IFD 0, the chain after it and the SubIFDs (tag 330) below any of them, at most 64
+// directories, every offset checked against the file's size.
+struct TiffScan {
+  bool cfa = false;   // PhotometricInterpretation 32803 (CFA) or 34892 (LinearRaw), or DNGVersion
+  bool vc5 = false;   // Compression 9: the VC-5 wavelet codec of GoPro's GPR (DNG 1.6 adds no code 9)
+};
+
+TiffScan scan_tiff(const std::string& b) {
+  TiffScan scan;
+  if (b.size() < 8) return scan;
+  const bool little = b.compare(0, 4, "II*\0", 4) == 0;
+  if (!little && b.compare(0, 4, "MM\0*", 4) != 0) return scan;
+  auto u16 = [&](std::size_t at) -> std::uint32_t {
+    const auto x = [&](std::size_t k) { return std::uint32_t(static_cast<unsigned char>(b[at + k])); };
+    return little ? x(0) | x(1) << 8 : x(0) << 8 | x(1);
+  };
+  auto u32 = [&](std::size_t at) -> std::uint32_t {
+    return little ? u16(at) | u16(at + 2) << 16 : u16(at) << 16 | u16(at + 2);
+  };
+  std::vector<std::uint32_t> todo = {u32(4)};
+  for (int seen = 0; !todo.empty() && seen < 64; ++seen) {
+    const std::size_t ifd = todo.back();
+    todo.pop_back();
+    if (ifd < 8 || ifd + 2 > b.size()) continue;
+    const std::size_t n = u16(ifd);
+    if (ifd + 2 + 12 * n + 4 > b.size()) continue;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t e = ifd + 2 + 12 * k;
+      const std::uint32_t tag = u16(e), type = u16(e + 2), count = u32(e + 4);
+      const std::uint32_t value = type == 3 ? u16(e + 8) : u32(e + 8);  // SHORT or LONG, the first
+      if (tag == 262 && (value == 32803 || value == 34892)) scan.cfa = true;
+      if (tag == 50706) scan.cfa = true;
+      if (tag == 259 && value == 9) scan.vc5 = true;
+      if (tag == 330 && (type == 4 || type == 13)) {
+        if (count == 1) {
+          todo.push_back(value);
+        } else if (count < 64 && std::size_t(value) + 4 * count <= b.size()) {
+          for (std::uint32_t i = 0; i < count; ++i) todo.push_back(u32(value + 4 * i));
+        }
+      }
+    }
+    todo.push_back(u32(ifd + 2 + 12 * n));  // the next directory (0: none)
+  }
+  return scan;
+}
+
+}  // namespace
+
+bool is_raw_file_content(const std::string& bytes) { return scan_tiff(bytes).cfa; }
 
 namespace {
 
@@ -122,14 +181,47 @@ void quads_to_pixels(const unsigned short* mosaic, const libraw_image_sizes_t& s
 
 }  // namespace
 
+namespace {
+
+// What LibRaw reports through its callbacks, kept for gmcc's message instead of printed: its
+// default handlers write to stderr (libraw_datastream.cpp, default_data_callback and
+// default_memory_callback).
+struct LibRawReports {
+  std::string data;    // the first data error: "data corrupted at N" or "unexpected end of file"
+  std::string memory;  // the first memory error
+};
+
+void capture_data_error(void* to, const char*, const int offset) {
+  std::string& d = static_cast<LibRawReports*>(to)->data;
+  if (d.empty()) d = offset < 0 ? "unexpected end of file" : "data corrupted at byte " + std::to_string(offset);
+}
+
+void capture_memory_error(void* to, const char*, const char* where) {
+  std::string& m = static_cast<LibRawReports*>(to)->memory;
+  if (m.empty()) m = std::string("out of memory in ") + (where ? where : "LibRaw");
+}
+
+}  // namespace
+
 RawImage decode_raw_image(const std::string& bytes, const std::string& file, const RawLevels& levels) {
   auto raw = std::make_unique<LibRaw>();
+  LibRawReports reports;
+  raw->set_dataerror_handler(capture_data_error, &reports);
+  raw->set_memerror_handler(capture_memory_error, &reports);
   auto fail = [&](const std::string& what, int code) {
-    return InputError(file, 0, what + " (LibRaw: " + libraw_strerror(code) + ")");
+    std::string why = libraw_strerror(code);
+    if (!reports.data.empty()) why = reports.data;
+    if (!reports.memory.empty()) why = reports.memory;
+    return InputError(file, 0, what + " (LibRaw " LIBRAW_VERSION_STR ": " + why + ")");
   };
-  if (const int e = raw->open_buffer(const_cast<char*>(bytes.data()), bytes.size()))
-    throw fail(e == LIBRAW_FILE_UNSUPPORTED ? "not a raw file LibRaw " LIBRAW_VERSION_STR " reads" : "cannot read the raw file",
-               e);
+  if (const int e = raw->open_buffer(const_cast<char*>(bytes.data()), bytes.size())) {
+    if (e == LIBRAW_FILE_UNSUPPORTED && scan_tiff(bytes).vc5)
+      throw InputError(file, 0,
+                       "VC-5 compressed raw data (GoPro GPR, DNG compression 9): this LibRaw " LIBRAW_VERSION_STR
+                       " has no VC-5 decoder (LibRaw decodes it only when built with GoPro's gpr library, "
+                       "USE_GPRSDK, and Debian's is not); convert it to an uncompressed DNG first");
+    throw fail(e == LIBRAW_FILE_UNSUPPORTED ? "not a raw file LibRaw reads" : "cannot read the raw file", e);
+  }
   const libraw_image_sizes_t& size = raw->imgdata.sizes;
   if (std::size_t(size.raw_width) * size.raw_height > max_image_pixels)
     throw InputError(file, 0, "more than 2^28 photosites (" + std::to_string(size.raw_width) + "x" +
@@ -141,6 +233,10 @@ RawImage decode_raw_image(const std::string& bytes, const std::string& file, con
                                   : "not a Bayer mosaic (a linear DNG, Foveon or monochrome sensor): only 2x2 "
                                     "Bayer mosaics are read");
   if (const int e = raw->unpack()) throw fail("cannot decode the raw data", e);
+  // A data error LibRaw reported but decoded past (a truncated or damaged file whose missing
+  // photosites it filled): the mosaic is not the camera's, so it is refused like a failed decode.
+  if (!reports.data.empty() || !reports.memory.empty())
+    throw fail("corrupt or incomplete raw data", LIBRAW_DATA_ERROR);
   const unsigned short* mosaic = raw->imgdata.rawdata.raw_image;
   if (!mosaic) throw InputError(file, 0, "no Bayer mosaic in the file: only 2x2 Bayer mosaics are read");
   if (size.width < 2 || size.height < 2) throw InputError(file, 0, "fewer than 2x2 photosites");
@@ -149,6 +245,9 @@ RawImage decode_raw_image(const std::string& bytes, const std::string& file, con
   out.pattern = bayer_pattern(*raw, file);
   const std::array<std::uint32_t, 4> black = quad_black_levels(*raw, levels, file);
   out.white = levels.white ? *levels.white : raw->imgdata.color.maximum;
+  out.black = black;
+  out.black_given = levels.black.has_value();
+  out.white_given = levels.white.has_value();
   out.black_min = *std::min_element(black.begin(), black.end());
   out.black_max = *std::max_element(black.begin(), black.end());
   if (out.white > 32768)

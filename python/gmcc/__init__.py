@@ -371,8 +371,10 @@ def read_image(path, *, black_level=None, saturation=None):
         ``estimate_3d``, ``select`` or a learner's ``add`` as ``**rules`` (a raw file: 0 and
         65535, its black level being subtracted already).
     info : dict
-        ``bits`` (8 or 16) and ``raw``: None, or for a raw file its ``pattern`` (e.g. 'RGGB'),
-        ``black_min``, ``black_max``, ``white``, ``camera`` and ``saturated`` (quads).
+        ``bits`` (8 or 16) and ``raw``: None, or for a raw file (by its extension, or a TIFF of
+        raw sensor data by its content) its ``pattern`` (e.g. 'RGGB'), ``black`` (the level at
+        each of the quad's four positions, in the pattern's order), ``black_min``, ``black_max``,
+        ``white``, ``camera`` and ``saturated`` (quads).
 
     Raises
     ------

@@ -155,11 +155,14 @@ void bind_images(py::module_& m) {
           throw py::value_error(e.what());
         }
         py::object raw = py::none();
-        if (is_raw_file_name(path)) {
+        if (!meta.pattern.empty()) {  // a raw file, by its name or its content
           py::dict info;
           info["pattern"] = meta.pattern;
           info["black_min"] = meta.black_min;
           info["black_max"] = meta.black_max;
+          py::list black;
+          for (std::uint32_t b : meta.black) black.append(b);
+          info["black"] = std::move(black);
           info["white"] = meta.white;
           info["camera"] = meta.camera;
           info["saturated"] = meta.saturated;

@@ -11,12 +11,27 @@ first MATLAB file).
 
 import json
 import os
+import shutil
+import struct
 import subprocess
 import sys
 import tempfile
+import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from cli_harness import Runner, expect  # noqa: E402
+
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def png_of_size(width, height):
+    """An 8-bit RGB PNG of mid grey."""
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+    body = zlib.compress(b"".join(b"\0" + b"\x80" * (3 * width) for _ in range(height)))
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0))
+            + chunk(b"IDAT", body) + chunk(b"IEND", b""))
 
 
 def records(path):
@@ -39,6 +54,11 @@ def main():
             expect(rc == 0, err)
             ra, rb = records(a), records(b)
             expect(len(ra) == 6 * 11 and len(ra) == len(rb), len(ra))
+            # The provenance states the levels the images were read with: the MAT file's, not the
+            # options' defaults (--black-level 0 --saturation max).
+            levels = json.loads(open(a).readline())["provenance"]["image_levels"]
+            expect(len(levels) == 6 and all(x["black_level"] == 512 and x["saturation"] == 15000 and
+                                            x["black_from"] == x["saturation_from"] == "given" for x in levels), levels)
             for x, y in zip(ra, rb):
                 x.pop("image"), y.pop("image")
                 expect(x == y, (x, y))
@@ -89,6 +109,76 @@ def main():
             expect(len(ra) == 6 * 11 and ra == rb, (len(ra), ra[:1], rb[:1]))
             expect([x["fold"] for x in ra[::11]] == [0, 1, 2, 0, 1, 2], [x["fold"] for x in ra[::11]])
 
+        def dataset_table_equals_the_layout():
+            # `gmcc dataset` writes what the layout read as a truth table; benchmark on that table
+            # gives the layout run's records, and its folds file is the shipped split.
+            for layout, folder, extra in (("nus", "nus", ["--folds", "3"]), ("cube+", "cube", ["--folds", "2"]),
+                                          ("gehler-shi", "gehler", [])):
+                d = os.path.join(tmp, folder)
+                table, folds = os.path.join(tmp, folder + "_read.csv"), os.path.join(tmp, folder + "_folds_read.csv")
+                p = subprocess.run([binary, "dataset", "--layout", layout, "--images", d] +
+                                   (["--folds-out", folds] if layout == "gehler-shi" else []),
+                                   capture_output=True, text=True, timeout=120)
+                expect(p.returncode == 0 and p.stdout.startswith("# gmcc-provenance: "), p.stderr)
+                with open(table, "w") as f:
+                    f.write(p.stdout)
+                a, b = os.path.join(tmp, folder + "_l.jsonl"), os.path.join(tmp, folder + "_t.jsonl")
+                common = ["--methods", "gm3d-max-trace,grey-world", "--no-progress"]
+                rc, out, err = r.run("--layout", layout, "--images", d, *extra, *common, "--records", a)
+                expect(rc == 0, err)
+                rc, out, err = r.run("--images", d, "--truths", table, *extra, *common, "--records", b,
+                                     *(["--folds-file", folds] if layout == "gehler-shi" else []))
+                expect(rc == 0, err)
+                expect(records(a) == records(b), (layout, records(a)[:1], records(b)[:1]))
+            rows = [line.split(",") for line in open(os.path.join(tmp, "gehler_read.csv")).read().splitlines()[2:]]
+            expect([x[4] for x in rows] == ["0", "0", "129", "129", "129", "129"], rows)  # Shi's description.txt
+            expect(open(os.path.join(tmp, "gehler_folds_read.csv")).read().splitlines()[1:] ==
+                   open(os.path.join(tmp, "gehler_folds.csv")).read().splitlines(), "folds")
+            p = subprocess.run([binary, "dataset", "--layout", "nus", "--images", os.path.join(tmp, "nus"),
+                                "--folds-out", os.path.join(tmp, "x.csv")], capture_output=True, text=True)
+            expect(p.returncode == 2 and "--folds-out" in p.stderr and not os.path.exists(os.path.join(tmp, "x.csv")),
+                   p.stderr)
+
+        def gehler_shi_shapes_and_frames_checked():
+            # A copy of the folder with one PNG rotated (portrait against its landscape frame), then
+            # one coordinate file without its frame line (the first line a corner, as 22 real ones).
+            src = os.path.join(tmp, "gehler")
+            for case in ("rotated", "frameless", "half"):
+                d = os.path.join(tmp, "gehler_" + case)
+                shutil.copytree(src, d)
+                png = os.path.join(d, "png", "IMG_0302.png")
+                coords = os.path.join(d, "coordinates", "IMG_0302_macbeth.txt")
+                if case == "rotated":
+                    with open(png, "wb") as f:
+                        f.write(png_of_size(32, 48))
+                elif case == "frameless":
+                    with open(coords, "w") as f:
+                        f.write("15.5 10.25\n22 10\n15 15\n22 15\n1 1\n")
+                else:  # a 25 x 17 copy of the 24 x 16 frame's image: the frame scaled, rounded: accepted
+                    with open(png, "wb") as f:
+                        f.write(png_of_size(49, 33))
+                p = subprocess.run([binary, "dataset", "--layout", "gehler-shi", "--images", d],
+                                   capture_output=True, text=True, timeout=120)
+                if case == "half":
+                    expect(p.returncode == 0, p.stderr)
+                    continue
+                expect(p.returncode == 2 and p.stdout == "" and p.stderr.count("\n") == 1, (case, p.stderr))
+                if case == "rotated":
+                    expect(png in p.stderr and "32x48" in p.stderr and "24x16" in p.stderr, p.stderr)
+                else:
+                    expect(coords + ":1:" in p.stderr and "no frame line" in p.stderr, p.stderr)
+                rc, out, err = r.run("--layout", "gehler-shi", "--images", d, "--no-progress", "--methods",
+                                     "grey-world", "--records", os.path.join(d, "r.jsonl"))
+                expect(rc == 2 and not os.path.exists(os.path.join(d, "r.jsonl")), err)
+
+        def verify_script_on_written_datasets():
+            # scripts/verify-datasets on the NUS and Cube+ folders the tool wrote (their MAT and
+            # text files; the script makes its own stand-in images).
+            script = os.path.join(os.path.dirname(os.path.dirname(HERE)), "scripts", "verify-datasets")
+            p = subprocess.run([sys.executable, script, "--gmcc", binary, os.path.join(tmp, "nus"),
+                                os.path.join(tmp, "cube")], capture_output=True, text=True, timeout=600)
+            expect(p.returncode == 0 and p.stdout.count("ok    ") == 4, (p.stdout, p.stderr))
+
         def matio_loaded_on_demand():
             # libmatio (and HDF5, libcurl, GnuTLS behind it) is opened on the first MATLAB file, not
             # linked: every other command starts without loading it (docs/performance.md "Start-up").
@@ -98,7 +188,8 @@ def main():
             expect(needed and not any("matio" in line or "hdf5" in line for line in needed), needed)
 
         r.check_all(nus_equals_its_table, cube_equals_its_table, gehler_shi_equals_its_table, broken_layouts,
-                    matio_loaded_on_demand)
+                    dataset_table_equals_the_layout, gehler_shi_shapes_and_frames_checked,
+                    verify_script_on_written_datasets, matio_loaded_on_demand)
         return r.finish()
 
 

@@ -189,8 +189,24 @@ def main():
             rc, _, err = r.run(*base, "--bin", "0", png)
             expect(rc == 2 and "--bin" in err, err)
 
+        def no_light_names_its_cause():
+            # One dark pixel (0, 0, 50) among chips: in 3-D it forces the map's red and green to 0
+            # (the canonical gamut holds no colour (0, 0, t > 0) but black), so no rule has a
+            # light; the summary names the cause and the option, and with it every rule answers.
+            sys.path.insert(0, os.path.join(ROOT, "tests", "support"))
+            from png16 import write_png16
+            chips = [(17394, 17749, 19888), (7837, 1283, 1247), (15210, 5548, 2182), (16582, 19653, 14942),
+                     (14677, 17525, 2742), (5356, 7027, 6373), (3571, 7938, 6236), (12385, 20001, 20108)]
+            path = os.path.join(tmp, "dark_pixel.png")
+            write_png16(path, [chips[:4], chips[4:], [(0, 0, 50)] + chips[1:4]])
+            rc, out, err = r.run("--space", "3d", "--canonical", CANONICAL, path)
+            expect(rc == 0 and out.count("no light (a map component is 0: likely dark pixels with a zero channel")
+                   == 3 and out.count("--dark 1 or --pixel-rule gijsenij") == 3, out)
+            rc, out, err = r.run("--space", "3d", "--canonical", CANONICAL, "--dark", "1", path)
+            expect(rc == 0 and "no light" not in out and out.count("  light (") == 3, out)
+
         r.check_all(png_equals_tiff, pixel_counts, agrees_with_select_on_exact_colours, hull_equals_distinct,
-                    learned_canonical, truths_file, corrected_images, bad_inputs)
+                    learned_canonical, truths_file, corrected_images, bad_inputs, no_light_names_its_cause)
         return r.finish()
 
 

@@ -4,6 +4,7 @@
 // against hand-computed counts and an independent point-in-polygon test.
 #include <gmcc/input/image_file.h>
 #include <gmcc/input/image_pixels.h>
+#include <gmcc/input/raw_file.h>
 #include <gmcc/validation/mondrian.h>
 
 #include "sort_keys.h"
@@ -548,6 +549,64 @@ BOOST_AUTO_TEST_CASE(float_images_follow_the_integer_rules) {
   BOOST_TEST(image_colours(bad, one).counts.kept == 2u);
   one.black_level = -1;
   BOOST_CHECK_THROW(image_colours(bad, one), std::invalid_argument);
+}
+
+// Which files go to LibRaw: by extension (LibRaw's formats, any case), and by content a TIFF of
+// raw sensor data under any name. The TIFFs are written here byte by byte (TIFF 6.0 §2), in both
+// byte orders: IFD 0 an RGB thumbnail whose SubIFD (tag 330) holds the CFA data, as DNGs do.
+namespace {
+std::string tiff_with_subifd(bool little, std::uint16_t sub_photometric, bool dng_version) {
+  std::string b;
+  auto put16 = [&](std::uint32_t v) {
+    if (little) b += {char(v & 255), char(v >> 8 & 255)};
+    else b += {char(v >> 8 & 255), char(v & 255)};
+  };
+  auto put32 = [&](std::uint32_t v) {
+    if (little) { put16(v & 0xffff); put16(v >> 16); }
+    else { put16(v >> 16); put16(v & 0xffff); }
+  };
+  auto entry = [&](std::uint16_t tag, std::uint16_t type, std::uint32_t value) {
+    put16(tag); put16(type); put32(1);
+    if (type == 3) { put16(value); put16(0); } else put32(value);
+  };
+  b += little ? "II" : "MM";
+  put16(42);
+  put32(8);                      // IFD 0 at 8
+  const std::uint16_t n0 = dng_version ? 3 : 2;
+  put16(n0);
+  entry(262, 3, 2);              // RGB
+  entry(330, 4, 8 + 2 + 12 * n0 + 4);  // the SubIFD right after IFD 0
+  if (dng_version) entry(50706, 1, 0x01040000);
+  put32(0);
+  put16(1);
+  entry(262, 3, sub_photometric);
+  put32(0);
+  return b;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(raw_files_by_extension_and_by_content) {
+  for (const char* name : {"a.dng", "b.CRW", "c.gpr", "d.Mef", "e.raw", "f.cap", "g.fff", "h.rwz", "dir.x/i.nef"})
+    BOOST_TEST(is_raw_file_name(name), name);
+  for (const char* name : {"a.png", "b.tif", "c.tiff", "d", "e.dng.png", "raw", ".crw/x.jpg"})
+    BOOST_TEST(!is_raw_file_name(name), name);
+  for (bool little : {true, false}) {
+    BOOST_TEST(is_raw_file_content(tiff_with_subifd(little, 32803, false)));   // CFA in a SubIFD
+    BOOST_TEST(is_raw_file_content(tiff_with_subifd(little, 34892, false)));   // LinearRaw
+    BOOST_TEST(is_raw_file_content(tiff_with_subifd(little, 2, true)));        // DNGVersion in IFD 0
+    BOOST_TEST(!is_raw_file_content(tiff_with_subifd(little, 2, false)));      // RGB only
+    std::string cut = tiff_with_subifd(little, 32803, false);
+    cut.resize(cut.size() - 10);  // the SubIFD cut off: not read past the end
+    BOOST_TEST(!is_raw_file_content(cut));
+  }
+  RgbImage rgb;
+  rgb.width = 2;
+  rgb.height = 1;
+  rgb.bits = 16;
+  rgb.samples = {1, 2, 3, 4, 5, 6};
+  BOOST_TEST(!is_raw_file_content(encode_tiff16(rgb)));
+  BOOST_TEST(!is_raw_file_content(encode_png16(rgb)));
+  BOOST_TEST(!is_raw_file_content(""));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
       table << i << ".PNG," << light_text << ",2048,2050 1050 2060 1050 2060 1060 2050 1060\n";
     }
   }
-  // Gehler-Shi: 6 images (IMG_* of the Canon 5D, black 129; 8D5U* of the Canon 1D, black 1),
+  // Gehler-Shi: 6 images (IMG_* of the Canon 5D, black 129; 8D5U* of the Canon 1D, black 0),
   // 48 × 32, the lights in real_illum_568.mat, chart corners in a half-size frame, and a split.
   {
     const std::string dir = out + "/gehler";
@@ -136,7 +136,7 @@ int main(int argc, char** argv) {
     folds << "image,fold\n";
     for (int i = 0; i < n; ++i) {
       const double e[3] = {l(rng), l(rng), l(rng)};
-      const int black = names[i].rfind("IMG", 0) == 0 ? 129 : 1;
+      const int black = names[i].rfind("IMG", 0) == 0 ? 129 : 0;
       // The chart in image pixels: columns 30..44, rows 20..30 (1-based box for draw).
       write(dir + "/png/" + names[i] + ".png", encode_png16(draw(rng, 48, 32, e, black, 65535, 21, 30, 31, 44)));
       for (int k = 0; k < 3; ++k) lights[i + k * n] = e[k];
