@@ -79,13 +79,15 @@ std::vector<BenchmarkImage> dataset(const BenchmarkCliOptions& o) {
 std::string table(const BenchmarkResult& r) {
   std::ostringstream t;
   char line[256];
-  std::snprintf(line, sizeof line, "%-16s %6s %8s %7s %7s %7s %7s %7s %7s %7s %7s %7s\n", "method", "images",
+  int w = 16;  // the method column: as wide as the longest name asked for
+  for (const BenchmarkSummary& s : r.summaries) w = std::max(w, static_cast<int>(s.method.size()));
+  std::snprintf(line, sizeof line, "%-*s %6s %8s %7s %7s %7s %7s %7s %7s %7s %7s %7s\n", w, "method", "images",
                 "answered", "mean", "median", "trimean", "best25", "worst25", "p95", "max", "in F", "wc>=err");
   t << line;
   for (const BenchmarkSummary& s : r.summaries) {
     const ErrorStatistics& e = s.errors;
     const bool gamut = is_gamut_method(s.method);
-    std::snprintf(line, sizeof line, "%-16s %6zu %8zu %7.2f %7.2f %7.2f %7.2f %7.2f %7.2f %7.2f %7s %7s\n",
+    std::snprintf(line, sizeof line, "%-*s %6zu %8zu %7.2f %7.2f %7.2f %7.2f %7.2f %7.2f %7.2f %7s %7s\n", w,
                   s.method.c_str(), s.images, s.answered, e.mean, e.median, e.trimean, e.best25, e.worst25, e.p95,
                   e.max, gamut ? (fixed(100.0 * double(s.truth_in_feasible) / double(s.images), 1) + "%").c_str() : "",
                   s.worst_case_covers ? (fixed(100.0 * *s.worst_case_covers, 1) + "%").c_str() : "");
@@ -272,7 +274,11 @@ CLI::App* add_benchmark_command(CLI::App& app, BenchmarkCliOptions& o) {
                   "grey-edge-2 (the default: these eleven), and the edge-based gamut methods with max-trace "
                   "(Gijsenij et al. 2010): gm3d-edge1-max-trace, gm3d-edge2-max-trace (the gamuts of 1st- and "
                   "2nd-order derivative magnitudes), gm3d-1jet-max-trace (pixel and 1st-order feasible sets "
-                  "intersected), gm3d-2jet-max-trace (pixel, 1st and 2nd order)")
+                  "intersected), gm3d-2jet-max-trace (pixel, 1st and 2nd order), and each 3-D and 2-D rule with "
+                  "the illumination constraint of the fold's training lights: gm3d-max-trace-constrained, "
+                  "gm3d-max-volume-constrained, gm3d-centroid-constrained (F3 within the cone of their maps, "
+                  "Barnard's ECRULE), gm2d-max-area-constrained, gm2d-mean-2d-constrained, "
+                  "gm2d-mean-3d-constrained (F within the hull of their perspective maps)")
       ->delimiter(',')
       ->check(CLI::IsMember(benchmark_methods()));
   cmd->add_option("--intensity", o.intensity, "3-D canonical learning: max or none (as gmcc canonical)")

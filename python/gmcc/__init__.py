@@ -839,7 +839,7 @@ def prepare_canonical_3d(canonical, *, black="include") -> Canonical3:
 
 @_doc
 def estimate_3d(canonical, image, truth=None, *, rules=None, centroid="certified",
-                canonical_illuminant=(1, 1, 1), mask=None, black_level=0, saturation=None,
+                canonical_illuminant=(1, 1, 1), illuminants=None, mask=None, black_level=0, saturation=None,
                 dark=0, dark_fraction=None, bright_fraction=None, pixel_rule="none",
                 colour_set="hull-3d") -> Estimate3:
     """3-D gamut mapping on one image: F3 and the rules max-volume, centroid and max-trace.
@@ -857,13 +857,18 @@ def estimate_3d(canonical, image, truth=None, *, rules=None, centroid="certified
         An image goes through the pixel rules below; an ImageColours must hold pixel colours
         (chromaticity lifts are refused); colours are taken as they are.
     truth : sequence of 3 numbers, optional
-        The true light (every channel > 0): each rule's ``recovery_error_deg``.
+        The true light (every channel > 0): ``truth_in_feasible`` and each rule's
+        ``recovery_error_deg`` and ``map_error_deg``.
     rules : iterable of str, optional
         Of 'max_volume', 'centroid', 'max_trace' (default None: all three).
     centroid : {'certified', 'exact'}, default 'certified'
         The centroid as a certified double, or in Q (max-volume and max-trace are exact).
     canonical_illuminant : sequence of 3 numbers, default (1, 1, 1)
         The canonical light c; a map d implies the light c ⊘ d.
+    illuminants : iterable of sequences of 3 numbers, optional
+        Plausible lights (every channel > 0): F3 is intersected with the cone of their maps
+        c ⊘ l (the illumination constraint in 3-D, Barnard's ECRULE; docs/math.md §1e), and
+        every rule, worst case and truth test reads F3 ∩ cone.
     @pixel_rules@
     colour_set : {'hull-3d', 'distinct'}, default 'hull-3d'
         The colours an image is reduced to ('hull' gives chromaticity lifts: refused).
@@ -884,7 +889,7 @@ def estimate_3d(canonical, image, truth=None, *, rules=None, centroid="certified
         An argument of the wrong type (e.g. ``canonical`` not a Canonical3).
     """
     return _core.estimate_3d(canonical, image, truth, rules=rules, centroid=centroid,
-                             canonical_illuminant=canonical_illuminant, mask=mask,
+                             canonical_illuminant=canonical_illuminant, illuminants=illuminants, mask=mask,
                              black_level=black_level, saturation=saturation, dark=dark,
                              dark_fraction=dark_fraction, bright_fraction=bright_fraction,
                              pixel_rule=pixel_rule, colour_set=colour_set)
@@ -916,7 +921,11 @@ def benchmark(images, truths, *, folds=None, folds_file=None, methods=None, inte
         edge-based gamut methods of Gijsenij, Gevers & van de Weijer (2010 §4), each with
         max-trace, are asked for by name: ``gm3d-edge1-max-trace``, ``gm3d-edge2-max-trace``
         (1st- and 2nd-order derivative gamuts), ``gm3d-1jet-max-trace`` (pixel and 1st-order
-        feasible sets intersected), ``gm3d-2jet-max-trace`` (and the 2nd order).
+        feasible sets intersected), ``gm3d-2jet-max-trace`` (and the 2nd order); and each gamut
+        rule with the illumination constraint of the fold's training lights:
+        ``gm3d-max-trace-constrained``, ``gm3d-max-volume-constrained``,
+        ``gm3d-centroid-constrained``, ``gm2d-max-area-constrained``, ``gm2d-mean-2d-constrained``,
+        ``gm2d-mean-3d-constrained`` (docs/photographs.md §7a).
     intensity : {'max', 'none'}, default 'max'
         How each training image is scaled before the 3-D union (``gmcc benchmark --intensity``):
         its largest white-balanced channel made 1, or as it is.

@@ -385,7 +385,8 @@ def image_colours(image: npt.NDArray[Any], *, mask: Optional[npt.NDArray[np.bool
 def prepare_canonical_3d(canonical: Union[_Colours, ImageColours], *, black: str = "include") -> Canonical3: ...
 def estimate_3d(canonical: Canonical3, image: Any, truth: Optional[_Light] = None, *,
                 rules: Optional[Iterable[str]] = None, centroid: str = "certified",
-                canonical_illuminant: _Light = (1, 1, 1), mask: Optional[npt.NDArray[np.bool_]] = None,
+                canonical_illuminant: _Light = (1, 1, 1), illuminants: Optional[Iterable[_Light]] = None,
+                mask: Optional[npt.NDArray[np.bool_]] = None,
                 black_level: _Number = 0, saturation: Optional[_Number] = None, dark: _Number = 0,
                 dark_fraction: Optional[_Number] = None, bright_fraction: Optional[_Number] = None,
                 pixel_rule: str = "none", colour_set: str = "hull-3d") -> Estimate3: ...

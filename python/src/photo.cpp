@@ -249,7 +249,7 @@ void bind_functions(py::module_& m) {
   m.def(
       "estimate_3d",
       [](const Canonical3& canonical, py::handle image, py::handle truth, py::object rules, const std::string& centroid,
-         py::handle canonical_illuminant, py::object mask, py::object black_level, py::object saturation,
+         py::handle canonical_illuminant, py::object illuminants, py::object mask, py::object black_level, py::object saturation,
          py::object dark, py::object dark_fraction, py::object bright_fraction, const std::string& pixel_rule,
          const std::string& colour_set) {
         PyEstimate3 out;
@@ -275,6 +275,8 @@ void bind_functions(py::module_& m) {
           }
         }
         if (!truth.is_none()) o.truth = positive_light(truth, "truth");
+        if (!illuminants.is_none())
+          for (py::handle l : illuminants) o.illuminants.push_back(positive_light(l, "illuminants"));
         ImageColours ic;
         ic.colours = colours;
         ic.set = set == ColourSet::hull_3d ? ColourSet::hull_3d : ColourSet::distinct;
@@ -298,7 +300,8 @@ void bind_functions(py::module_& m) {
         return out;
       },
       py::arg("canonical"), py::arg("image"), py::arg("truth") = py::none(), py::kw_only(), py::arg("rules") = py::none(),
-      py::arg("centroid") = "certified", py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1), GMCC_PIXEL_ARGS,
+      py::arg("centroid") = "certified", py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1),
+      py::arg("illuminants") = py::none(), GMCC_PIXEL_ARGS,
       "estimate_3d (estimate_3d.h). Public: gmcc.estimate_3d.");
 }
 

@@ -79,6 +79,8 @@ const std::vector<std::string>& benchmark_methods() {
     for (Rule rule : all_rules) names.push_back(gm2d_method(rule));
     for (std::size_t b = 0; b < all_baselines.size(); ++b) names.push_back(baseline_method(b));
     names.insert(names.end(), std::begin(kEdge), std::end(kEdge));
+    for (const char* c : {kGm3dConstrained[2], kGm3dConstrained[0], kGm3dConstrained[1]}) names.push_back(c);
+    for (Rule rule : all_rules) names.push_back(gm2d_constrained_method(rule));
     return names;
   }();
   return m;
@@ -89,7 +91,8 @@ bool is_edge_gamut_method(const std::string& method) {
 }
 
 const std::vector<std::string>& default_benchmark_methods() {
-  static const std::vector<std::string> m(benchmark_methods().begin(), benchmark_methods().end() - std::size(kEdge));
+  static const std::vector<std::string> m(
+      benchmark_methods().begin(), benchmark_methods().begin() + 3 + all_rules.size() + all_baselines.size());
   return m;
 }
 
@@ -100,6 +103,8 @@ struct FoldCanonicals {
   std::optional<CanonicalConstraints3> gamut3;
   std::optional<CanonicalConstraints3> edges[2];  // absent when no training image has such colours
   std::optional<PreparedCanonical> gamut2;
+  std::vector<Colour> lights;  // the training images' lights: the constrained methods' plausible lights
+  std::optional<PreparedCanonical> gamut2c;  // gamut2 with the illumination constraint of `lights`
 };
 
 FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, const std::vector<Reduced>& reduced,
@@ -123,6 +128,8 @@ FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, c
   }
   if (training == 0) throw std::invalid_argument("fold " + std::to_string(fold) + " has no training image (one fold only)");
   FoldCanonicals c;
+  for (std::size_t i = 0; i < images.size(); ++i)
+    if (images[i].fold != fold) c.lights.push_back(images[i].light);
   if (n.gm3d) c.gamut3.emplace(learner3.gamut(), o.black);
   for (int k = 0; k < 2; ++k)
     if (n.order[k] && edges[k].contributing() > 0) c.edges[k].emplace(edges[k].gamut(), o.black);
@@ -130,6 +137,11 @@ FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, c
     std::vector<Colour> lifts;
     for (const Point2& p : learner2.gamut()) lifts.push_back({p.x, p.y, Rational(1)});
     c.gamut2.emplace(prepare_canonical(lifts, SelectSceneOptions{}));
+    if (n.gm2dc) {
+      SelectSceneOptions constrained;
+      constrained.illuminants = c.lights;
+      c.gamut2c.emplace(prepare_canonical(lifts, constrained));
+    }
   }
   return c;
 }
@@ -140,11 +152,12 @@ struct Estimate3InF {
   std::optional<ImageEstimate3> estimate;
 };
 Estimate3InF estimate_in_f(const std::vector<GamutConstraint3>& types, const std::vector<Rule3>& rules,
-                           const Colour& e) {
+                           const Colour& e, const std::vector<Colour>& plausible = {}) {
   Estimate3InF out;
   Estimate3Options eo;
   eo.rules = rules;
   eo.truth = e;
+  eo.illuminants = plausible;
   try {
     out.estimate = estimate_3d(types, eo);
   } catch (const UnboundedFeasibleSet&) {  // unbounded F3: no estimate
@@ -176,16 +189,20 @@ BenchmarkRecord record_3d(const char* method, const Estimate3InF& est, Rule3 rul
   return rec;
 }
 
-// The 3-D rules' records of one image.
-std::vector<BenchmarkRecord> records_3d(const CanonicalConstraints3& canonical, const Reduced& r, const Colour& e,
-                                        const Needs& n) {
-  std::vector<Rule3> rules;
-  for (Rule3 rule : all_rules_3)
-    if (n.rule3[static_cast<int>(rule)]) rules.push_back(rule);
+// The 3-D rules' records of one image: unconstrained, and with the fold's training lights as the
+// plausible lights (F3 ∩ the cone of their maps).
+std::vector<BenchmarkRecord> records_3d(const FoldCanonicals& c, const Reduced& r, const Colour& e, const Needs& n) {
   std::vector<BenchmarkRecord> out;
-  if (rules.empty()) return out;
-  const Estimate3InF est = estimate_in_f({{&canonical, &r.hull3}}, rules, e);
-  for (Rule3 rule : rules) out.push_back(record_3d(kGm3d[static_cast<int>(rule)], est, rule));
+  for (const bool constrained : {false, true}) {
+    std::vector<Rule3> rules;
+    for (Rule3 rule : all_rules_3)
+      if ((constrained ? n.rule3c : n.rule3)[static_cast<int>(rule)]) rules.push_back(rule);
+    if (rules.empty()) continue;
+    const Estimate3InF est =
+        estimate_in_f({{&*c.gamut3, &r.hull3}}, rules, e, constrained ? c.lights : std::vector<Colour>{});
+    for (Rule3 rule : rules)
+      out.push_back(record_3d((constrained ? kGm3dConstrained : kGm3d)[static_cast<int>(rule)], est, rule));
+  }
   return out;
 }
 
@@ -214,9 +231,13 @@ std::vector<BenchmarkRecord> records_edges(const FoldCanonicals& c, const Reduce
   return out;
 }
 
-// The 2-D rules' records of one image: the select pipeline on its chromaticity lifts.
-std::vector<BenchmarkRecord> records_2d(const PreparedCanonical& canonical, const Reduced& r, const Colour& e,
-                                        const Needs& n) {
+// The 2-D rules' records of one image: the select pipeline on its chromaticity lifts, against
+// the fold's gamut, or with `constrained` against it with the illumination constraint.
+std::vector<BenchmarkRecord> records_2d(const FoldCanonicals& c, const Reduced& r, const Colour& e, const Needs& n,
+                                        bool constrained) {
+  const PreparedCanonical& canonical = constrained ? *c.gamut2c : *c.gamut2;
+  const PerRule<bool>& asked = constrained ? n.rule2c : n.rule2;
+  if (std::none_of(all_rules.begin(), all_rules.end(), [&](Rule k) { return asked[k]; })) return {};
   std::optional<SceneResult> scene;
   if (!r.lifts.empty()) {
     try {
@@ -226,9 +247,9 @@ std::vector<BenchmarkRecord> records_2d(const PreparedCanonical& canonical, cons
   }
   std::vector<BenchmarkRecord> out;
   for (Rule k : all_rules) {
-    if (!n.rule2[k]) continue;
+    if (!asked[k]) continue;
     BenchmarkRecord rec;
-    rec.method = gm2d_method(k);
+    rec.method = constrained ? gm2d_constrained_method(k) : gm2d_method(k);
     rec.unanswered = "no_colours";
     if (scene) {
       rec.feasible_kind = to_string(scene->feasible.kind);
@@ -272,9 +293,10 @@ std::vector<BenchmarkRecord> records_of(std::size_t i, const FoldCanonicals& c, 
       made[name] = std::move(rec);
     }
   };
-  if (n.gm3d) keep(records_3d(*c.gamut3, r, e, n));
+  if (n.gm3d) keep(records_3d(c, r, e, n));
   keep(records_edges(c, r, e, n));
-  if (n.gm2d) keep(records_2d(*c.gamut2, r, e, n));
+  if (n.gm2d) keep(records_2d(c, r, e, n, false));
+  if (n.gm2dc) keep(records_2d(c, r, e, n, true));
   for (std::size_t b = 0; b < all_baselines.size(); ++b) {
     BenchmarkRecord rec;
     rec.method = baseline_method(b);

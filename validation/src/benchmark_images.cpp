@@ -42,6 +42,10 @@ Needs needs_of(const std::vector<std::string>& methods) {
       if (m == kGm3d[k]) n.gm3d = n.rule3[k] = known = true;
     for (Rule rule : all_rules)
       if (m == gm2d_method(rule)) n.gm2d = n.rule2[rule] = known = true;
+    for (int k = 0; k < 3; ++k)
+      if (m == kGm3dConstrained[k]) n.gm3d = n.rule3c[k] = known = true;
+    for (Rule rule : all_rules)
+      if (m == gm2d_constrained_method(rule)) n.gm2d = n.gm2dc = n.rule2c[rule] = known = true;
     // An edge-based method needs the pixel colours too: their scale is its edge colours' scale.
     for (int k = 0; k < 4; ++k)
       if (m == kEdge[k]) {

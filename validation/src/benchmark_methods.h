@@ -16,8 +16,10 @@
 
 namespace gmcc::internal {
 
-// The 3-D pixel-gamut methods, indexed by Rule3.
+// The 3-D pixel-gamut methods, indexed by Rule3; the same with the illumination constraint.
 inline const char* const kGm3d[3] = {"gm3d-max-volume", "gm3d-centroid", "gm3d-max-trace"};
+inline const char* const kGm3dConstrained[3] = {"gm3d-max-volume-constrained", "gm3d-centroid-constrained",
+                                                "gm3d-max-trace-constrained"};
 // A key with dashes for underscores: how methods are named.
 inline std::string dashed(std::string key) {
   std::replace(key.begin(), key.end(), '_', '-');
@@ -26,6 +28,7 @@ inline std::string dashed(std::string key) {
 
 // The 2-D perspective route's method for `rule` (gm2d-max-area, …), and a baseline's (grey-world, …).
 inline std::string gm2d_method(Rule rule) { return "gm2d-" + dashed(to_string(rule)); }
+inline std::string gm2d_constrained_method(Rule rule) { return gm2d_method(rule) + "-constrained"; }
 inline std::string baseline_method(std::size_t b) { return dashed(to_string(all_baselines[b])); }
 // The edge-based methods (max-trace): edge-1, edge-2, 1-jet (pixel ∩ edge-1), 2-jet (∩ edge-2).
 inline const char* const kEdge[4] = {"gm3d-edge1-max-trace", "gm3d-edge2-max-trace", "gm3d-1jet-max-trace",
@@ -46,6 +49,10 @@ struct Needs {
   bool gm3d = false, gm2d = false;  // gm3d: the pixel colours' 3-D hull and canonical gamut
   std::array<bool, 3> rule3{};
   PerRule<bool> rule2{};
+  // The rules with the illumination constraint (the fold's training lights).
+  std::array<bool, 3> rule3c{};
+  PerRule<bool> rule2c{};
+  bool gm2dc = false;
   std::array<bool, 4> edge{};  // the edge-based methods
   std::array<bool, 2> order{};  // the 1st- and 2nd-order edge colours and canonical gamuts
   std::array<bool, all_baselines.size()> baseline{};

@@ -59,12 +59,16 @@ std::vector<BenchmarkImage> benchmark_dataset(const std::string& images_dir, con
 /// Weijer (2010 §4), each with max-trace: `gm3d-edge1-max-trace` (the gamut of 1st-order
 /// derivative magnitudes), `gm3d-edge2-max-trace` (2nd order), `gm3d-1jet-max-trace` (the
 /// intersection of the pixel and 1st-order feasible sets), `gm3d-2jet-max-trace` (pixel, 1st and
-/// 2nd order), in that order (docs/photographs.md §5).
+/// 2nd order), in that order (docs/photographs.md §5); then the six gamut rules with the
+/// illumination constraint learned per fold (the training images' lights as the plausible lights,
+/// never the test fold's): `gm3d-max-trace-constrained`, `gm3d-max-volume-constrained`,
+/// `gm3d-centroid-constrained` (F3 ∩ the cone of their maps, Barnard's ECRULE,
+/// illumination_cone_3d.h), `gm2d-max-area-constrained`, `gm2d-mean-2d-constrained`,
+/// `gm2d-mean-3d-constrained` (F ∩ the hull of their perspective maps, Finlayson 1996 §5).
 const std::vector<std::string>& benchmark_methods();
 
 /// The methods a run takes when none are named: the first eleven of benchmark_methods() (every
-/// pixel gamut method and baseline; the edge-based methods, which take the image derivatives and
-/// two more canonical gamuts, are asked for by name).
+/// pixel gamut method and baseline; the edge-based and constrained methods are asked for by name).
 const std::vector<std::string>& default_benchmark_methods();
 
 /// Whether `method` is a gamut-mapping method (`gm3d-…`, `gm2d-…`): it has a feasible set, an
