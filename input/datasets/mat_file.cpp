@@ -108,6 +108,47 @@ class Reader {
     return out;
   }
 
+  // A character (`chars`) or numeric array's data element `re`, of `count` values, into `a`.
+  void data_of(const Element& re, bool chars, std::size_t count, MatArray& a) const {
+    const std::size_t size = type_size(re.type);
+    if (size == 0 || re.bytes % size != 0) fail("an array's data is not of a numeric type");
+    const std::size_t n = re.bytes / size;
+    if (chars) {
+      a.kind = MatArray::chars;
+      if (re.type == miUTF8 ? n < count : n != count)
+        fail("a character array of " + std::to_string(count) + " characters holds " + std::to_string(n));
+      a.text.reserve(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        std::uint32_t c = size == 1 ? re.data[i] : size == 2 ? (swap_ ? (re.data[2 * i] << 8 | re.data[2 * i + 1]) : (re.data[2 * i + 1] << 8 | re.data[2 * i])) : u32(re.data + 4 * i);
+        a.text += c < 128 ? static_cast<char>(c) : '?';
+      }
+      return;
+    }
+    if (n != count) fail("a numeric array of " + std::to_string(count) + " values holds " + std::to_string(n));
+    a.kind = MatArray::numeric;
+    a.numbers.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      unsigned char b[8];
+      for (std::size_t k = 0; k < size; ++k) b[k] = re.data[i * size + (swap_ ? size - 1 - k : k)];
+      double v = 0;
+      switch (re.type) {
+        case miINT8: v = static_cast<std::int8_t>(b[0]); break;
+        case miUINT8: case miUTF8: v = b[0]; break;
+        case miINT16: { std::int16_t x; std::memcpy(&x, b, 2); v = x; break; }
+        case miUINT16: case miUTF16: { std::uint16_t x; std::memcpy(&x, b, 2); v = x; break; }
+        case miINT32: { std::int32_t x; std::memcpy(&x, b, 4); v = x; break; }
+        case miUINT32: case miUTF32: { std::uint32_t x; std::memcpy(&x, b, 4); v = x; break; }
+        case miSINGLE: { float x; std::memcpy(&x, b, 4); v = x; break; }
+        case miDOUBLE: { std::memcpy(&v, b, 8); break; }
+        case miINT64: { std::int64_t x; std::memcpy(&x, b, 8); v = static_cast<double>(x); break; }
+        case miUINT64: { std::uint64_t x; std::memcpy(&x, b, 8); v = static_cast<double>(x); break; }
+        default: break;
+      }
+      a.numbers.push_back(v);
+    }
+    // An imaginary part, if any, is not read (a.complex says it is there).
+  }
+
   // The miMATRIX element whose data is [data, data + bytes): its name, and the array.
   MatArray matrix(const unsigned char* data, std::size_t bytes, std::string* name, int depth) const {
     MatArray a;
@@ -151,44 +192,8 @@ class Reader {
       return a;
     }
     if (cls == mxCHAR || (cls >= mxDOUBLE && cls <= mxUINT64)) {
-      Element re = element(data, at, bytes, "array data");
-      const std::size_t size = type_size(re.type);
-      if (size == 0 || re.bytes % size != 0) fail("an array's data is not of a numeric type");
-      const std::size_t n = re.bytes / size;
-      if (cls == mxCHAR) {
-        a.kind = MatArray::chars;
-        if (re.type == miUTF8 ? n < count : n != count)
-          fail("a character array of " + std::to_string(count) + " characters holds " + std::to_string(n));
-        a.text.reserve(n);
-        for (std::size_t i = 0; i < n; ++i) {
-          std::uint32_t c = size == 1 ? re.data[i] : size == 2 ? (swap_ ? (re.data[2 * i] << 8 | re.data[2 * i + 1]) : (re.data[2 * i + 1] << 8 | re.data[2 * i])) : u32(re.data + 4 * i);
-          a.text += c < 128 ? static_cast<char>(c) : '?';
-        }
-        return a;
-      }
-      if (n != count) fail("a numeric array of " + std::to_string(count) + " values holds " + std::to_string(n));
-      a.kind = MatArray::numeric;
-      a.numbers.reserve(n);
-      for (std::size_t i = 0; i < n; ++i) {
-        unsigned char b[8];
-        for (std::size_t k = 0; k < size; ++k) b[k] = re.data[i * size + (swap_ ? size - 1 - k : k)];
-        double v = 0;
-        switch (re.type) {
-          case miINT8: v = static_cast<std::int8_t>(b[0]); break;
-          case miUINT8: case miUTF8: v = b[0]; break;
-          case miINT16: { std::int16_t x; std::memcpy(&x, b, 2); v = x; break; }
-          case miUINT16: case miUTF16: { std::uint16_t x; std::memcpy(&x, b, 2); v = x; break; }
-          case miINT32: { std::int32_t x; std::memcpy(&x, b, 4); v = x; break; }
-          case miUINT32: case miUTF32: { std::uint32_t x; std::memcpy(&x, b, 4); v = x; break; }
-          case miSINGLE: { float x; std::memcpy(&x, b, 4); v = x; break; }
-          case miDOUBLE: { std::memcpy(&v, b, 8); break; }
-          case miINT64: { std::int64_t x; std::memcpy(&x, b, 8); v = static_cast<double>(x); break; }
-          case miUINT64: { std::uint64_t x; std::memcpy(&x, b, 8); v = static_cast<double>(x); break; }
-          default: break;
-        }
-        a.numbers.push_back(v);
-      }
-      return a;  // an imaginary part, if any, is not read (a.complex says it is there)
+      data_of(element(data, at, bytes, "array data"), cls == mxCHAR, count, a);
+      return a;
     }
     a.kind = MatArray::other;  // struct, object, sparse, function: not read
     return a;
