@@ -76,9 +76,9 @@ Matio load_matio(const std::string& file) {
   get(m.cell, "Mat_VarGetCell");
   // One line per error, always gmcc's: libmatio's log goes to keep_matio_message, and HDF5's
   // automatic printing of its error stack (14 lines for a truncated file) is turned off.
-  decltype(&::Mat_LogInitFunc) log_init = nullptr;
-  get(log_init, "Mat_LogInitFunc");
-  log_init("gmcc", keep_matio_message);
+  // (Both looked up, not required: a libmatio without Mat_LogInitFunc still reads the file.)
+  if (auto log_init = reinterpret_cast<decltype(&::Mat_LogInitFunc)>(dlsym(lib, "Mat_LogInitFunc")))
+    log_init("gmcc", keep_matio_message);
   using SetAuto = int (*)(std::int64_t, void*, void*);  // H5Eset_auto2(H5E_DEFAULT = 0, NULL, NULL)
   if (auto set_auto = reinterpret_cast<SetAuto>(dlsym(lib, "H5Eset_auto2"))) set_auto(0, nullptr, nullptr);
   return m;  // the library stays loaded for the process
