@@ -88,31 +88,39 @@ MinViolation min_violation(const ConvexSet2& canonical, const std::vector<Point2
   out.violation = s.value;
   const Rational& t = out.violation;
 
-  // The minimisers: every row at t = t*, clipped from the box these rows imply.
-  Rational q1 = 0, q2 = 0, x_hi = canonical.vertices[0].x, y_hi = canonical.vertices[0].y;
-  for (const Point2& q : qs) q1 = std::max(q1, q.x), q2 = std::max(q2, q.y);
-  for (const Point2& v : canonical.vertices) x_hi = std::max(x_hi, v.x), y_hi = std::max(y_hi, v.y);
-  const Rational mx = (x_hi + t) / q1, my = (y_hi + t) / q2;
-  std::vector<Point2> cycle{{0, 0}, {mx, 0}, {mx, my}, {0, my}};
-  for (const Point2& q : qs)
-    for (const HalfPlane& h : planes) {
-      cycle = internal::clip(cycle, {Rational(h.a * q.x), Rational(h.b * q.y), Rational(h.c + t * l1(h))});
-      GMCC_CHECK(!cycle.empty(), "min_violation: the optimal t* has a minimiser");
-    }
-  for (const HalfPlane& h : hard) cycle = internal::clip(cycle, h);
-  out.feasible = canonical_convex_set(std::move(cycle));
-  GMCC_CHECK(out.feasible.kind != ConvexKind::empty, "min_violation: the optimal t* has a minimiser");
-
-  // The offset gamut G ⊕ t*·[−1, 1]², clipped from its own bounding box.
+  // The offset gamut G ⊕ t*·[−1, 1]² (with t* < 0, the set of points whose square lies in G).
   const Rational r = abs(t);
   Rational x_lo = canonical.vertices[0].x, y_lo = canonical.vertices[0].y;
-  for (const Point2& v : canonical.vertices) x_lo = std::min(x_lo, v.x), y_lo = std::min(y_lo, v.y);
-  std::vector<Point2> g{{Rational(x_lo - r), Rational(y_lo - r)},
-                        {Rational(x_hi + r), Rational(y_lo - r)},
-                        {Rational(x_hi + r), Rational(y_hi + r)},
-                        {Rational(x_lo - r), Rational(y_hi + r)}};
-  for (const HalfPlane& h : planes) g = internal::clip(g, {h.a, h.b, Rational(h.c + t * l1(h))});
-  out.canonical = canonical_convex_set(std::move(g));
+  Rational x_hi = x_lo, y_hi = y_lo;
+  for (const Point2& v : canonical.vertices) {
+    x_lo = std::min(x_lo, v.x), y_lo = std::min(y_lo, v.y);
+    x_hi = std::max(x_hi, v.x), y_hi = std::max(y_hi, v.y);
+  }
+  if (sgn(t) >= 0) {
+    // A Minkowski sum: the hull of every vertex moved to the square's four corners (O(m log m);
+    // clipping the box by the m offset half-planes one by one was O(m²) exact work).
+    std::vector<Point2> corners;
+    for (const Point2& v : canonical.vertices)
+      for (const Rational& dx : {Rational(-r), r})
+        for (const Rational& dy : {Rational(-r), r}) corners.push_back({Rational(v.x + dx), Rational(v.y + dy)});
+    out.canonical = convex_hull(corners);
+  } else {  // an erosion (F is not empty): the box clipped by the offset half-planes
+    std::vector<Point2> g{{Rational(x_lo - r), Rational(y_lo - r)},
+                          {Rational(x_hi + r), Rational(y_lo - r)},
+                          {Rational(x_hi + r), Rational(y_hi + r)},
+                          {Rational(x_lo - r), Rational(y_hi + r)}};
+    for (const HalfPlane& h : planes) g = internal::clip(g, {h.a, h.b, Rational(h.c + t * l1(h))});
+    out.canonical = canonical_convex_set(std::move(g));
+  }
+
+  // The minimisers: the maps m >= 0 meeting every row at t = t*, that is m ⊙ q in the offset gamut
+  // for every image vertex q (each row is one of its half-planes, the bounding box's among them),
+  // within C: the offset gamut's feasible set, by feasible_set's filtered clip. It replaced one
+  // sequential exact clip per row (k·(m + 4) of them: 317,000 and 82 s for a 1394-vertex gamut and
+  // 227 image vertices, issue 42), with the same set.
+  out.feasible = constraint ? feasible_set(CanonicalConstraints(out.canonical, *constraint), qs)
+                            : feasible_set(out.canonical, qs);
+  GMCC_CHECK(out.feasible.kind != ConvexKind::empty, "min_violation: the optimal t* has a minimiser");
   return out;
 }
 
