@@ -24,6 +24,7 @@
 #include <thread>
 
 #include "benchmark_outputs.h"
+#include "exit_cleanup.h"
 #include "integer_option.h"
 #include "json_fields.h"
 #include "output_files.h"
@@ -61,6 +62,7 @@ std::vector<BenchmarkImage> dataset(const BenchmarkCliOptions& o) {
                                      : o.layout == "cube+"      ? read_cube_plus(o.images_dir)
                                      : o.layout == "gehler-shi" ? read_gehler_shi(o.images_dir, shipped_folds)
                                                                 : read_truth_table(o.truths_path);
+  if (o.layout == "table") require_paths_under_folder(rows, o.truths_path);
   if (o.folds_path.empty() && o.folds.empty() && !shipped_folds.empty())
     return benchmark_dataset(o.images_dir, rows, &shipped_folds,
                              (std::filesystem::path(o.images_dir) / "threefoldCVsplit.mat").string(), 0);
@@ -165,8 +167,7 @@ Json header_json(std::size_t images, const std::vector<std::string>& methods, co
 // --plot: benchmark.dat (per method, index k: its sorted errors and the share of images at or
 // below each; then index M: per method its 5th, 25th, 50th, 75th and 95th percentiles) and
 // benchmark.gp (cumulative error curves, and the distributions as boxes), drawn by gnuplot.
-void write_plot(const BenchmarkResult& result, const std::string& dir, const Json& provenance) {
-  ensure_directory(dir);
+void write_plot(const BenchmarkResult& result, PlotFiles& plot, const Json& provenance) {
   std::string dat = "# gmcc-provenance: " + provenance.dump() + "\n# gmcc benchmark: recovery angular errors (deg) per method\n";
   std::vector<std::string> names;
   for (const BenchmarkSummary& s : result.summaries) {
@@ -216,8 +217,8 @@ void write_plot(const BenchmarkResult& result, const std::string& dir, const Jso
         " using 1:3:2:6:5 with candlesticks whiskerbars lw 1.5 lc rgb '#1f77b4', "
         "'' index " + std::to_string(names.size()) + " using 1:4:4:4:4 with candlesticks lw 2 lc rgb '#d62728'\n"
         "  unset xtics; set xtics auto\n  unset multiplot\n  set output\n}\n";
-  PendingFile(std::filesystem::path(dir) / "benchmark.dat").commit(dat);
-  PendingFile(std::filesystem::path(dir) / "benchmark.gp").commit(gp);
+  plot.dat->commit(dat);
+  plot.gp->commit(gp);
 }
 
 }  // namespace
@@ -244,10 +245,17 @@ void write_outputs(const BenchmarkResult& result, const ImageOf& images, const s
   write_stdout(table(result));
 }
 
-int draw(const BenchmarkResult& result, const std::string& plot_dir, const Json& provenance) {
-  if (plot_dir.empty()) return 0;
-  write_plot(result, plot_dir, provenance);
-  return draw_with_gnuplot(plot_dir, "benchmark", "gmcc benchmark");
+PlotFiles::PlotFiles(const std::string& plot_dir) : dir(plot_dir) {
+  if (dir.empty()) return;
+  ensure_directory(dir);
+  dat.emplace(std::filesystem::path(dir) / "benchmark.dat");
+  gp.emplace(std::filesystem::path(dir) / "benchmark.gp");
+}
+
+int draw(const BenchmarkResult& result, PlotFiles& plot, const Json& provenance) {
+  if (plot.dir.empty()) return 0;
+  write_plot(result, plot, provenance);
+  return draw_with_gnuplot(plot.dir, "benchmark", "gmcc benchmark");
 }
 
 CLI::App* add_benchmark_command(CLI::App& app, BenchmarkCliOptions& o) {
@@ -355,6 +363,7 @@ int run_benchmark_command(const BenchmarkCliOptions& o) {
   if (!o.csv_path.empty()) csv_file.emplace(o.csv_path);
   if (!o.json_path.empty()) json_file.emplace(o.json_path);
   if (!o.records_path.empty()) records_file.emplace(o.records_path);
+  PlotFiles plot(o.plot_dir);
   const auto start = std::chrono::steady_clock::now();
   if (!o.no_progress)
     options.progress = [start](std::size_t done, std::size_t total) {
@@ -362,12 +371,13 @@ int run_benchmark_command(const BenchmarkCliOptions& o) {
       if (s < 2) return;
       std::cerr << "\rgmcc benchmark: " << done << " of " << total << " images, " << fixed(s, 1) << " s"
                 << (done == total ? "\n" : "") << std::flush;
+      set_progress_line_open(done != total);
     };
   const BenchmarkResult result = run_benchmark(images, options);
   ImageOf of;
   for (const BenchmarkImage& im : images) of.name.push_back(im.name), of.fold.push_back(im.fold);
   write_outputs(result, of, options.methods, shard, provenance_json(true), csv_file, json_file, records_file);
-  return draw(result, o.plot_dir, provenance_json(true));
+  return draw(result, plot, provenance_json(true));
 }
 
 }  // namespace gmcc::cli

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <set>
@@ -62,10 +63,18 @@ bool is_benchmark_records(const std::string& file) {
 
 namespace {
 
+// An angle in degrees read from a record: from 0 to 180 or none (a forged value is refused).
+std::optional<double> angle_field(const Json& j, const char* name, const Place& at) {
+  const std::optional<double> x = optional_field(j, name, at);
+  if (x && !(*x >= 0 && *x <= 180)) bad(at, std::string(name) + " " + std::to_string(*x) + " is not an angle from 0 to 180 degrees");
+  return x;
+}
+
 // One record line of a benchmark's shard (`images` images, `methods` its methods): the record, the
-// position of its method in `method`, its image's name and fold noted in `of` and `named`.
+// position of its method in `method`, its image's name and fold noted in `seen` (and checked
+// against what earlier records said of that image).
 BenchmarkRecord merged_record(const Json& j, const Place& at, std::size_t images, const std::vector<std::string>& methods,
-                              std::size_t& method, ImageOf& of, std::vector<bool>& named) {
+                              std::size_t& method, std::map<std::size_t, std::pair<std::string, int>>& seen) {
   BenchmarkRecord r;
   r.image = get<std::size_t>(j, "index", at);
   if (r.image >= images) bad(at, "image index " + std::to_string(r.image) + " beyond the run's " + std::to_string(images));
@@ -73,11 +82,19 @@ BenchmarkRecord merged_record(const Json& j, const Place& at, std::size_t images
   const auto m = std::find(methods.begin(), methods.end(), r.method);
   if (m == methods.end()) bad(at, "method " + quoted_text(r.method) + " is not in the run");
   method = static_cast<std::size_t>(m - methods.begin());
-  of.name[r.image] = get<std::string>(j, "image", at);
-  of.fold[r.image] = get<int>(j, "fold", at);
-  named[r.image] = true;
-  if (!member(j, "light", at).is_null()) r.light = get<std::array<double, 3>>(j, "light", at);
-  r.error_deg = optional_field(j, "error_deg", at);
+  std::pair<std::string, int> image{get<std::string>(j, "image", at), get<int>(j, "fold", at)};
+  if (image.second < 0) bad(at, "fold " + std::to_string(image.second) + " is negative");
+  const auto [known, fresh] = seen.emplace(r.image, image);
+  if (!fresh && known->second != image)
+    bad(at, "image index " + std::to_string(r.image) + " is " + quoted_text(image.first) + " in fold " +
+                std::to_string(image.second) + " here, " + quoted_text(known->second.first) + " in fold " +
+                std::to_string(known->second.second) + " in an earlier record");
+  if (!member(j, "light", at).is_null()) {
+    r.light = get<std::array<double, 3>>(j, "light", at);
+    for (double x : *r.light)
+      if (!(x >= 0) || !std::isfinite(x)) bad(at, "light: a channel that is negative or not finite");
+  }
+  r.error_deg = angle_field(j, "error_deg", at);
   r.answered = get<bool>(j, "answered", at);
   if (!member(j, "fallback", at).is_null()) r.fallback = get<std::string>(j, "fallback", at);
   if (!member(j, "unanswered", at).is_null()) r.unanswered = get<std::string>(j, "unanswered", at);
@@ -87,13 +104,42 @@ BenchmarkRecord merged_record(const Json& j, const Place& at, std::size_t images
     r.feasible_kind = get<std::string>(f, "kind", at);
     r.feasible_vertices = get<std::size_t>(f, "vertices", at);
     if (!member(j, "truth_in_feasible", at).is_null()) r.truth_in_feasible = get<bool>(j, "truth_in_feasible", at);
-    r.worst_case_deg = optional_field(j, "worst_case_deg", at);
+    r.worst_case_deg = angle_field(j, "worst_case_deg", at);
     r.worst_case_space = get<std::string>(j, "worst_case_space", at);
     if (r.worst_case_space != "map" && r.worst_case_space != "illuminant")
       bad(at, "\"worst_case_space\" is " + quoted_text(r.worst_case_space) + ", not \"map\" or \"illuminant\"");
-    r.worst_case_space_error_deg = optional_field(j, "worst_case_space_error_deg", at);
+    r.worst_case_space_error_deg = angle_field(j, "worst_case_space_error_deg", at);
   }
   return r;
+}
+
+// The images' names and folds once every (image, method) of the header's `images` is read: each
+// in range is read at most once, so all are there exactly when the count matches; otherwise the
+// first one missing is named (found in the order of the keys read). No two indices may share a
+// name. Nothing is made for the header's count before the records bear it out.
+template <class Read>
+ImageOf complete_images(const Read& read, const std::map<std::size_t, std::pair<std::string, int>>& seen,
+                        std::size_t images, const std::vector<std::string>& methods, const std::string& first_file) {
+  if (images > read.size() || read.size() != images * methods.size()) {
+    std::pair<std::size_t, std::size_t> missing{0, 0};
+    for (const auto& [key, value] : read) {
+      if (key != missing) break;
+      missing = missing.second + 1 < methods.size() ? std::make_pair(key.first, key.second + 1) : std::make_pair(key.first + 1, std::size_t(0));
+    }
+    const auto name = seen.find(missing.first);
+    throw InputError(first_file, 0, "image " + (name != seen.end() ? name->second.first : "#" + std::to_string(missing.first)) +
+                                        " under " + methods[missing.second] + " is in none of the files: a shard is missing");
+  }
+  ImageOf of;
+  std::map<std::string, std::size_t> index_of;
+  for (const auto& [index, image] : seen) {
+    if (const auto [other, fresh] = index_of.emplace(image.first, index); !fresh)
+      throw InputError(first_file, 0, "image " + quoted_text(image.first) + " has two indices, " + std::to_string(other->second) +
+                                          " and " + std::to_string(index) + ": the records were altered");
+    of.name.push_back(image.first);
+    of.fold.push_back(image.second);
+  }
+  return of;
 }
 
 }  // namespace
@@ -104,14 +150,16 @@ int merge_benchmark(const std::vector<std::string>& files, const std::string& cs
   if (!csv_path.empty()) csv_file.emplace(csv_path);
   if (!json_path.empty()) json_file.emplace(json_path);
   if (!records_path.empty()) records_file.emplace(records_path);
+  PlotFiles plot(plot_dir);
   std::optional<Json> provenance, setup;
   std::string first_file;
   std::size_t images = 0;
   std::vector<std::string> methods;
   // (index, method position) -> record, and where it was read.
   std::map<std::pair<std::size_t, std::size_t>, std::pair<BenchmarkRecord, Place>> read;
-  ImageOf of;
-  std::vector<bool> named;
+  // Each image's name and fold as the records give them; the header's image count is checked
+  // against the records read before anything is made for that many.
+  std::map<std::size_t, std::pair<std::string, int>> seen;
   std::set<std::string> shards;
   for (const std::string& file : files) {
     const auto lines = json_lines(file);
@@ -141,34 +189,28 @@ int merge_benchmark(const std::vector<std::string>& files, const std::string& cs
           first_file = file;
           images = get<std::size_t>(h, "images", at);
           methods = get<std::vector<std::string>>(h, "methods", at);
-          of.name.assign(images, "");
-          of.fold.assign(images, 0);
-          named.assign(images, false);
+          if (methods.empty()) bad(at, "a run of no methods");
         } else if (*setup != h) {
           bad(at, "another run than " + first_file + "'s (only \"shard\" may differ)");
         }
         continue;
       }
       std::size_t method = 0;
-      BenchmarkRecord r = merged_record(j, at, images, methods, method, of, named);
+      BenchmarkRecord r = merged_record(j, at, images, methods, method, seen);
       const auto key = std::make_pair(r.image, method);
-      if (const auto seen = read.find(key); seen != read.end())
-        bad(at, "image " + of.name[r.image] + " under " + r.method + " is already in " + seen->second.second.file +
-                           ":" + std::to_string(seen->second.second.line));
+      if (const auto earlier = read.find(key); earlier != read.end())
+        bad(at, "image " + seen.at(r.image).first + " under " + r.method + " is already in " + earlier->second.second.file +
+                           ":" + std::to_string(earlier->second.second.line));
       read.emplace(key, std::make_pair(std::move(r), at));
     }
   }
   if (!setup) throw InputError(files.front(), 0, "no benchmark records");
-  for (std::size_t i = 0; i < images; ++i)
-    for (std::size_t k = 0; k < methods.size(); ++k)
-      if (!read.count({i, k}))
-        throw InputError(first_file, 0, "image " + (named[i] ? of.name[i] : "#" + std::to_string(i)) + " under " +
-                                            methods[k] + " is in none of the files: a shard is missing");
+  const ImageOf of = complete_images(read, seen, images, methods, first_file);
   BenchmarkResult result;
   for (auto& [key, value] : read) result.records.push_back(std::move(value.first));
   result.summaries = summarise_benchmark(result.records, methods);
   write_outputs(result, of, methods, "1/1", *provenance, csv_file, json_file, records_file);
-  return draw(result, plot_dir, *provenance);
+  return draw(result, plot, *provenance);
 }
 
 }  // namespace gmcc::cli

@@ -26,7 +26,15 @@ void write_outputs(const BenchmarkResult& result, const ImageOf& images, const s
                    std::optional<PendingFile>& csv_file, std::optional<PendingFile>& json_file,
                    std::optional<PendingFile>& records_file);
 
-// The plot in `plot_dir` (none when empty), drawn with gnuplot; the exit status.
-int draw(const BenchmarkResult& result, const std::string& plot_dir, const nlohmann::ordered_json& provenance);
+// --plot's folder and its two files, opened before any work (as reproduce does), so a folder that
+// cannot be written is reported before the run and nothing else is written; none when dir is empty.
+struct PlotFiles {
+  explicit PlotFiles(const std::string& plot_dir);
+  std::string dir;
+  std::optional<PendingFile> dat, gp;
+};
+
+// The plot into `plot`'s files (none when its dir is empty), drawn with gnuplot; the exit status.
+int draw(const BenchmarkResult& result, PlotFiles& plot, const nlohmann::ordered_json& provenance);
 
 }  // namespace gmcc::cli

@@ -163,6 +163,16 @@ void remove_temporaries() noexcept {
   errno = saved_errno;
 }
 
+namespace {
+std::atomic<bool> progress_line_open{false};
+}  // namespace
+
+void set_progress_line_open(bool open) noexcept { progress_line_open.store(open); }
+
+void end_progress_line() noexcept {
+  if (progress_line_open.exchange(false)) write_stderr("\n");
+}
+
 void write_stderr(const char* text) noexcept {
   for (std::size_t left = std::strlen(text); left > 0;) {
     const ssize_t n = ::write(STDERR_FILENO, text, left);

@@ -61,4 +61,11 @@ void remove_temporaries() noexcept;
 /// Write `text` to stderr with write(2): async-signal-safe, no allocation.
 void write_stderr(const char* text) noexcept;
 
+/// A progress line on stderr left open (`\r…` without its newline, true) or ended (false).
+void set_progress_line_open(bool open) noexcept;
+
+/// Ends an open progress line with a newline, so that an error message starts a line of its own
+/// (async-signal-safe).
+void end_progress_line() noexcept;
+
 }  // namespace gmcc::cli

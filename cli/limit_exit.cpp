@@ -30,6 +30,7 @@ void exit_at_limit(const char* reached) noexcept {
                          activity.c_str());
     activity_mutex.unlock();
   }
+  end_progress_line();
   write_stderr(message);
   write_stderr("\n");
   remove_temporaries();

@@ -64,6 +64,12 @@ int print_help_or_version(const CLI::App& app, const CLI::Error& e) {
   return status;
 }
 
+// stderr for an error message, on a line of its own (an open progress line ended first).
+std::ostream& error_out() {
+  gmcc::cli::end_progress_line();
+  return std::cerr;
+}
+
 // A subcommand: what CLI11 parsed into, and what runs it then (its options live as long as it).
 struct Command {
   CLI::App* app;
@@ -141,7 +147,7 @@ int main(int argc, char** argv) {
     gmcc::cli::write_stdout("");  // what a command wrote without write_stdout, flushed and checked
     return status;
   } catch (const gmcc::InputError& e) {
-    std::cerr << "gmcc: error: " << e.what() << "\n";
+    error_out() << "gmcc: error: " << e.what() << "\n";
     return 2;
   } catch (const std::bad_alloc&) {
     gmcc::cli::exit_out_of_memory();
@@ -150,10 +156,10 @@ int main(int argc, char** argv) {
     if (gmcc::cli::memory_limit_mib() && (e.code() == std::errc::resource_unavailable_try_again ||
                                           e.code() == std::errc::not_enough_memory))
       gmcc::cli::exit_out_of_memory();
-    std::cerr << "gmcc: internal error: " << e.what() << "\n";
+    error_out() << "gmcc: internal error: " << e.what() << "\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "gmcc: internal error: " << e.what() << "\n";
+    error_out() << "gmcc: internal error: " << e.what() << "\n";
     return 1;
   }
 }

@@ -5,6 +5,7 @@
 #include "integer_option.h"
 #include "limit_exit.h"
 #include "output_files.h"
+#include "exit_cleanup.h"
 #include "expansion_option.h"
 #include "provenance.h"
 #include "write_stdout.h"
@@ -171,6 +172,7 @@ ExperimentConfig config_from(const ReproduceOptions& o) {
                    static_cast<unsigned long long>(total));
       if (done == total) std::fputc('\n', stderr);
       std::fflush(stderr);
+      set_progress_line_open(done != total);
     };
   return c;
 }

@@ -1,5 +1,7 @@
 #include "dataset_layouts.h"
 
+#include "mat_file.h"
+
 #include <gmcc/geometry/rational.h>
 #include <gmcc/input/file_digest.h>
 #include <gmcc/input/input_error.h>
@@ -14,6 +16,7 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <type_traits>
 
@@ -27,22 +30,31 @@ std::string find_image(const fs::path& dir, const std::string& stem, const std::
   for (const char* sub : {"", "PNG"})
     for (const char* ending : {".PNG", ".png"}) {
       const fs::path p = fs::path(sub) / (stem + ending);
-      if (fs::exists(dir / p)) return p.string();
+      if (fs::exists(dir / p)) {
+        require_regular_file((dir / p).string(), "image");
+        return p.string();
+      }
     }
   throw InputError(listed_in, 0, "no image " + stem + ".PNG in " + dir.string() + " or its PNG/ folder");
 }
 
-// libmatio, loaded on the first MATLAB file rather than linked: linking it loads HDF5, libcurl
-// and GnuTLS into every gmcc process, about 8 ms of start-up that every other command paid
-// (docs/performance.md "Start-up"). GMCC_MATIO_SONAME is the soname of the libmatio the build
-// found (input/datasets/CMakeLists.txt); its header gives the types and signatures.
+// libmatio, loaded on the first MATLAB 7.3 (HDF5) file rather than linked: linking it loads
+// HDF5, libcurl and GnuTLS into every gmcc process, about 8 ms of start-up that every other
+// command paid (docs/performance.md "Start-up"). MATLAB 5 files (what the datasets ship) are read
+// by mat_file.h from the bytes gmcc read itself. GMCC_MATIO_SONAME is the soname of the libmatio
+// the build found (input/datasets/CMakeLists.txt); its header gives the types and signatures.
 struct Matio {
   decltype(&::Mat_Open) open = nullptr;
   decltype(&::Mat_Close) close = nullptr;
   decltype(&::Mat_VarRead) read = nullptr;
+  decltype(&::Mat_VarReadInfo) read_info = nullptr;
   decltype(&::Mat_VarFree) free = nullptr;
   decltype(&::Mat_VarGetCell) cell = nullptr;
 };
+
+// libmatio's last message (it would print it on stderr), quoted in gmcc's error instead.
+thread_local std::string matio_message;
+void keep_matio_message(int, char* message) { matio_message = message ? message : ""; }
 
 Matio load_matio(const std::string& file) {
   void* lib = dlopen(GMCC_MATIO_SONAME, RTLD_NOW | RTLD_LOCAL);
@@ -59,8 +71,16 @@ Matio load_matio(const std::string& file) {
   get(m.open, "Mat_Open");
   get(m.close, "Mat_Close");
   get(m.read, "Mat_VarRead");
+  get(m.read_info, "Mat_VarReadInfo");
   get(m.free, "Mat_VarFree");
   get(m.cell, "Mat_VarGetCell");
+  // One line per error, always gmcc's: libmatio's log goes to keep_matio_message, and HDF5's
+  // automatic printing of its error stack (14 lines for a truncated file) is turned off.
+  // (Both looked up, not required: a libmatio without Mat_LogInitFunc still reads the file.)
+  if (auto log_init = reinterpret_cast<decltype(&::Mat_LogInitFunc)>(dlsym(lib, "Mat_LogInitFunc")))
+    log_init("gmcc", keep_matio_message);
+  using SetAuto = int (*)(std::int64_t, void*, void*);  // H5Eset_auto2(H5E_DEFAULT = 0, NULL, NULL)
+  if (auto set_auto = reinterpret_cast<SetAuto>(dlsym(lib, "H5Eset_auto2"))) set_auto(0, nullptr, nullptr);
   return m;  // the library stays loaded for the process
 }
 
@@ -83,58 +103,131 @@ struct MatVar {
   }
 };
 
-// A numeric variable's values as doubles, column-major, with its rows and columns.
-struct Numbers {
-  std::size_t rows = 0, cols = 0;
-  std::vector<double> v;
-  double at(std::size_t i, std::size_t j) const { return v[i + j * rows]; }
-};
-
 template <class T>
 void append(const void* data, std::size_t n, std::vector<double>& out) {
   const T* p = static_cast<const T*>(data);
   for (std::size_t i = 0; i < n; ++i) out.push_back(static_cast<double>(p[i]));
 }
 
-// A real numeric matrix's values as doubles, column-major, with its rows and columns.
-Numbers numbers_of(const matvar_t* v, const char* name, const std::string& file) {
-  if (v->rank != 2 || v->isComplex) throw InputError(file, 0, std::string(name) + ": expected a real matrix");
-  Numbers out{v->dims[0], v->dims[1], {}};
-  const std::size_t n = out.rows * out.cols;
-  switch (v->class_type) {
-    case MAT_C_DOUBLE: append<double>(v->data, n, out.v); break;
-    case MAT_C_SINGLE: append<float>(v->data, n, out.v); break;
-    case MAT_C_UINT16: append<std::uint16_t>(v->data, n, out.v); break;
-    case MAT_C_INT16: append<std::int16_t>(v->data, n, out.v); break;
-    case MAT_C_UINT32: append<std::uint32_t>(v->data, n, out.v); break;
-    case MAT_C_INT32: append<std::int32_t>(v->data, n, out.v); break;
-    case MAT_C_UINT8: append<std::uint8_t>(v->data, n, out.v); break;
-    default: throw InputError(file, 0, std::string(name) + ": expected numbers");
+// A libmatio variable as a MatArray, every count checked against the bytes libmatio holds.
+MatArray array_of(const matvar_t* v, const std::string& file, int depth) {
+  MatArray a;
+  if (depth > 8) throw InputError(file, 0, "cells nested more than 8 deep");
+  std::size_t n = 1;
+  for (int k = 0; k < v->rank; ++k) {
+    a.dims.push_back(v->dims[k]);
+    n *= v->dims[k];
   }
-  for (double x : out.v)
-    if (!std::isfinite(x)) throw InputError(file, 0, std::string(name) + ": a value that is not finite");
+  a.complex = v->isComplex != 0;
+  auto hold = [&](std::size_t size) {
+    if (n != 0 && (!v->data || v->nbytes / size < n))
+      throw InputError(file, 0, "an array of " + std::to_string(n) + " elements holds fewer");
+  };
+  switch (v->class_type) {
+    case MAT_C_CELL:
+      a.kind = MatArray::cell;
+      hold(sizeof(matvar_t*));
+      for (std::size_t i = 0; i < n; ++i) {
+        const matvar_t* c = matio(file).cell(const_cast<matvar_t*>(v), static_cast<int>(i));
+        if (!c) throw InputError(file, 0, "a missing cell");
+        a.cells.push_back(array_of(c, file, depth + 1));
+      }
+      return a;
+    case MAT_C_CHAR: {
+      a.kind = MatArray::chars;
+      const bool wide = v->data_type == MAT_T_UINT16 || v->data_type == MAT_T_UTF16;
+      hold(wide ? 2 : 1);
+      for (std::size_t i = 0; i < n; ++i) {
+        const unsigned c = wide ? static_cast<const std::uint16_t*>(v->data)[i] : static_cast<const unsigned char*>(v->data)[i];
+        a.text += c < 128 ? static_cast<char>(c) : '?';
+      }
+      return a;
+    }
+    case MAT_C_DOUBLE: hold(8); a.kind = MatArray::numeric; append<double>(v->data, n, a.numbers); return a;
+    case MAT_C_SINGLE: hold(4); a.kind = MatArray::numeric; append<float>(v->data, n, a.numbers); return a;
+    case MAT_C_UINT16: hold(2); a.kind = MatArray::numeric; append<std::uint16_t>(v->data, n, a.numbers); return a;
+    case MAT_C_INT16: hold(2); a.kind = MatArray::numeric; append<std::int16_t>(v->data, n, a.numbers); return a;
+    case MAT_C_UINT32: hold(4); a.kind = MatArray::numeric; append<std::uint32_t>(v->data, n, a.numbers); return a;
+    case MAT_C_INT32: hold(4); a.kind = MatArray::numeric; append<std::int32_t>(v->data, n, a.numbers); return a;
+    case MAT_C_UINT8: hold(1); a.kind = MatArray::numeric; append<std::uint8_t>(v->data, n, a.numbers); return a;
+    default: a.kind = MatArray::other; return a;
+  }
+}
+
+// The variables `names` of a MATLAB 7.3 (HDF5) file, through libmatio: each one's declared size
+// checked against what the file's bytes can hold (deflate's 1032:1) before it is read.
+std::map<std::string, MatArray> mat73_variables(const std::string& file, std::size_t file_bytes,
+                                                const std::vector<const char*>& names) {
+  matio_message.clear();
+  MatFile mat{matio(file).open(file.c_str(), MAT_ACC_RDONLY)};
+  if (!mat.mat) throw InputError(file, 0, "not a MATLAB file libmatio reads" + (matio_message.empty() ? "" : ": " + matio_message));
+  std::map<std::string, MatArray> out;
+  for (const char* name : names) {
+    matio_message.clear();
+    MatVar info{matio(file).read_info(mat.mat, name)};
+    if (!info.var) {
+      // Absent, or HDF5 could not read the file as far as the variable (a truncated file).
+      if (!matio_message.empty()) throw InputError(file, 0, std::string(name) + ": unreadable (" + matio_message + ")");
+      continue;
+    }
+    double declared = 8;
+    for (int k = 0; k < info.var->rank; ++k) declared *= static_cast<double>(info.var->dims[k]);
+    if (declared > 1032.0 * static_cast<double>(file_bytes) + 4096)
+      throw InputError(file, 0, std::string(name) + ": declares more values than the file's " + std::to_string(file_bytes) + " bytes can hold");
+    MatVar m{matio(file).read(mat.mat, name)};
+    if (!m.var) throw InputError(file, 0, std::string(name) + ": unreadable" + (matio_message.empty() ? "" : " (" + matio_message + ")"));
+    out.emplace(name, array_of(m.var, file, 0));
+  }
   return out;
 }
 
-Numbers numbers(mat_t* mat, const char* name, const std::string& file) {
-  MatVar m{matio(file).read(mat, name)};
-  if (!m.var) throw InputError(file, 0, std::string("no variable ") + name);
-  return numbers_of(m.var, name, file);
+// The variables of the MATLAB file `file`, read whole by gmcc (a regular file: a FIFO or device
+// is refused, since libmatio would open it again) within `max_bytes`; `names` are those a
+// MATLAB 7.3 file is asked for (a MATLAB 5 file's are all read).
+std::map<std::string, MatArray> mat_variables(const std::string& file, std::size_t max_bytes, const char* noun,
+                                              const std::vector<const char*>& names) {
+  require_regular_file(file, noun);
+  const std::string bytes = read_binary_file(file, max_bytes, noun);
+  if (is_mat5(bytes)) return read_mat5(bytes, file);
+  if (bytes.size() > 520 && bytes.compare(512, 8, "\x89HDF\r\n\x1a\n") == 0) return mat73_variables(file, bytes.size(), names);
+  throw InputError(file, 0, "not a MATLAB 5 or 7.3 MAT-file");
 }
 
-// A char array's text (MATLAB stores characters as 8- or 16-bit codes).
-std::string text_of(const matvar_t* v, const std::string& file) {
-  if (v->class_type != MAT_C_CHAR) throw InputError(file, 0, "all_image_names: a cell that is not text");
-  std::size_t n = 1;
-  for (int k = 0; k < v->rank; ++k) n *= v->dims[k];
-  std::string s;
-  if (v->data_type == MAT_T_UINT16 || v->data_type == MAT_T_UTF16) {
-    const std::uint16_t* p = static_cast<const std::uint16_t*>(v->data);
-    for (std::size_t i = 0; i < n; ++i) s += p[i] < 128 ? static_cast<char>(p[i]) : '?';
-  } else {
-    s.assign(static_cast<const char*>(v->data), n);
-  }
-  return s;
+// "no variable NAME", and for a MATLAB 7.3 file that HDF5 reads only in part, that it may be damaged.
+std::string no_variable(const char* name, const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  char head[10] = {};
+  in.read(head, sizeof head);
+  return std::string("no variable ") + name +
+         (std::string(head, sizeof head) == "MATLAB 7.3" ? " (or the MATLAB 7.3 file is truncated or damaged)" : "");
+}
+
+// A real numeric matrix's values as doubles, column-major, with its rows and columns.
+struct Numbers {
+  std::size_t rows = 0, cols = 0;
+  std::vector<double> v;
+  double at(std::size_t i, std::size_t j) const { return v[i + j * rows]; }
+};
+
+Numbers numbers_of(const MatArray& a, const char* name, const std::string& file) {
+  if (a.dims.size() != 2 || a.complex) throw InputError(file, 0, std::string(name) + ": expected a real matrix");
+  if (a.kind != MatArray::numeric) throw InputError(file, 0, std::string(name) + ": expected numbers");
+  for (double x : a.numbers)
+    if (!std::isfinite(x)) throw InputError(file, 0, std::string(name) + ": a value that is not finite");
+  return Numbers{a.dims[0], a.dims[1], a.numbers};
+}
+
+Numbers numbers(const std::map<std::string, MatArray>& vars, const char* name, const std::string& file) {
+  const auto it = vars.find(name);
+  if (it == vars.end()) throw InputError(file, 0, no_variable(name, file));
+  return numbers_of(it->second, name, file);
+}
+
+// Text for a message: control characters as '?', at most 80 characters.
+std::string printable(const std::string& s) {
+  std::string out;
+  for (char c : s.substr(0, 80)) out += static_cast<unsigned char>(c) < 32 || c == 127 ? '?' : c;
+  return s.size() > 80 ? out + "…" : out;
 }
 
 // A level (black or saturation) as an integer code 0..65535.
@@ -160,30 +253,39 @@ std::vector<TruthRow> read_nus_camera(const std::string& dir_text) {
   if (found.size() != 1)
     throw InputError(dir_text, 0, found.empty() ? "no <camera>_gt.mat (a NUS camera folder)" : "several *_gt.mat files");
   const std::string file = found[0].string();
-  // Recorded for provenance like every input (the bytes are read again by libmatio).
-  read_binary_file(file, std::size_t(256) << 20, "ground-truth file");
-  MatFile mat{matio(file).open(file.c_str(), MAT_ACC_RDONLY)};
-  if (!mat.mat) throw InputError(file, 0, "not a MATLAB file libmatio reads");
-  const Numbers lights = numbers(mat.mat, "groundtruth_illuminants", file);
-  const Numbers coords = numbers(mat.mat, "CC_coords", file);
-  const std::uint32_t black = level(numbers(mat.mat, "darkness_level", file), "darkness_level", file);
-  const std::uint32_t saturation = level(numbers(mat.mat, "saturation_level", file), "saturation_level", file);
-  MatVar names{matio(file).read(mat.mat, "all_image_names")};
-  if (!names.var || names.var->class_type != MAT_C_CELL) throw InputError(file, 0, "all_image_names: expected a cell array");
-  std::size_t n = 1;
-  for (int k = 0; k < names.var->rank; ++k) n *= names.var->dims[k];
+  const std::map<std::string, MatArray> vars =
+      mat_variables(file, mat_max_file_bytes, "ground-truth file",
+                    {"groundtruth_illuminants", "CC_coords", "darkness_level", "saturation_level", "all_image_names"});
+  const Numbers lights = numbers(vars, "groundtruth_illuminants", file);
+  const Numbers coords = numbers(vars, "CC_coords", file);
+  const std::uint32_t black = level(numbers(vars, "darkness_level", file), "darkness_level", file);
+  const std::uint32_t saturation = level(numbers(vars, "saturation_level", file), "saturation_level", file);
+  const auto names = vars.find("all_image_names");
+  if (names == vars.end() || names->second.kind != MatArray::cell) throw InputError(file, 0, "all_image_names: expected a cell array");
+  const std::size_t n = names->second.cells.size();
   if (lights.rows != n || lights.cols != 3) throw InputError(file, 0, "groundtruth_illuminants: expected one r,g,b per image");
   if (coords.rows != n || coords.cols != 4) throw InputError(file, 0, "CC_coords: expected y1,y2,x1,x2 per image");
   std::vector<TruthRow> rows;
+  std::set<std::string> seen;
   for (std::size_t i = 0; i < n; ++i) {
-    const matvar_t* cell = matio(file).cell(names.var, static_cast<int>(i));
-    if (!cell) throw InputError(file, 0, "all_image_names: a missing cell");
+    const MatArray& cell = names->second.cells[i];
     // Names may be wrapped in one more cell (a cell of 1×1 cells).
-    const matvar_t* c = cell->class_type == MAT_C_CELL ? matio(file).cell(const_cast<matvar_t*>(cell), 0) : cell;
-    if (!c) throw InputError(file, 0, "all_image_names: an empty cell");
+    const MatArray* c = &cell;
+    if (cell.kind == MatArray::cell) {
+      if (cell.cells.empty()) throw InputError(file, 0, "all_image_names: an empty cell");
+      c = &cell.cells[0];
+    }
+    if (c->kind != MatArray::chars) throw InputError(file, 0, "all_image_names: a cell that is not text");
+    const std::string& name = c->text;
+    // A name is a file name in the folder: no path (it would be read outside --images).
+    if (name.empty() || name == "." || name == ".." || name.find_first_of("/\\") != std::string::npos ||
+        std::any_of(name.begin(), name.end(), [](char ch) { return static_cast<unsigned char>(ch) < 32 || ch == 127; }))
+      throw InputError(file, 0, "all_image_names: image " + std::to_string(i + 1) + " is not a file name (a path, empty, or a control character): " + printable(name));
+    if (!seen.insert(name).second)
+      throw InputError(file, 0, "all_image_names: " + printable(name) + " named twice (an image would be in its own training set)");
     TruthRow row;
     row.line = i + 1;
-    row.image = find_image(dir, text_of(c, file), file);
+    row.image = find_image(dir, name, file);
     Rational e[3];
     for (int k = 0; k < 3; ++k) {
       e[k] = Rational(lights.at(i, static_cast<std::size_t>(k)));
@@ -204,7 +306,9 @@ std::vector<TruthRow> read_nus_camera(const std::string& dir_text) {
 std::vector<TruthRow> read_cube_plus(const std::string& dir_text) {
   const fs::path dir(dir_text);
   const std::string file = (dir / "cube+_gt.txt").string();
-  const std::string text = read_text_file(file, {std::size_t(16) << 20, "ground-truth file", "lines r g b"});
+  require_regular_file(file, "ground-truth file");
+  std::string text = read_text_file(file, {std::size_t(16) << 20, "ground-truth file", "lines r g b"});
+  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);  // a UTF-8 byte-order mark, as truth tables take
   std::vector<TruthRow> rows;
   std::istringstream in(text);
   std::string line;
@@ -242,6 +346,7 @@ namespace {
 
 // A PNG's width and height from its header (IHDR), without decoding it.
 std::pair<std::size_t, std::size_t> png_size(const fs::path& file) {
+  require_regular_file(file.string(), "image");
   std::ifstream in(file, std::ios::binary);
   unsigned char h[24] = {};
   in.read(reinterpret_cast<char*>(h), sizeof h);
@@ -326,10 +431,7 @@ std::vector<TruthRow> read_gehler_shi(const std::string& dir_text, std::map<std:
   fs::path lights_file = dir / "real_illum_568.mat";
   if (!fs::exists(lights_file)) lights_file = dir / "real_illum_568..mat";
   const std::string file = lights_file.string();
-  read_binary_file(file, std::size_t(64) << 20, "ground-truth file");
-  MatFile mat{matio(file).open(file.c_str(), MAT_ACC_RDONLY)};
-  if (!mat.mat) throw InputError(file, 0, "not a MATLAB file libmatio reads");
-  const Numbers lights = numbers(mat.mat, "real_rgb", file);
+  const Numbers lights = numbers(mat_variables(file, mat_max_file_bytes, "ground-truth file", {"real_rgb"}), "real_rgb", file);
   if (lights.rows != names.size() || lights.cols != 3)
     throw InputError(file, 0, "real_rgb: expected one r,g,b per image of " + (dir / images).string() + " (" +
                                   std::to_string(names.size()) + ")");
@@ -349,6 +451,7 @@ std::vector<TruthRow> read_gehler_shi(const std::string& dir_text, std::map<std:
     row.black_level = names[i].rfind("IMG", 0) == 0 ? 129 : 0;
     const std::string stem = names[i].substr(0, names[i].find('.'));
     const std::string coords = (dir / "coordinates" / (stem + "_macbeth.txt")).string();
+    require_regular_file(coords, "chart coordinates");
     const ChartFrame chart = read_chart_frame(coords);
     const fs::path png = dir / images / names[i];
     const auto [w, h] = png_size(png);
@@ -364,16 +467,12 @@ std::vector<TruthRow> read_gehler_shi(const std::string& dir_text, std::map<std:
   folds.clear();
   if (fs::exists(split)) {
     const std::string sfile = split.string();
-    read_binary_file(sfile, std::size_t(64) << 20, "split file");
-    MatFile s{matio(file).open(sfile.c_str(), MAT_ACC_RDONLY)};
-    if (!s.mat) throw InputError(sfile, 0, "not a MATLAB file libmatio reads");
-    MatVar te{matio(file).read(s.mat, "te_split")};
-    if (!te.var || te.var->class_type != MAT_C_CELL) throw InputError(sfile, 0, "te_split: expected a cell array");
-    std::size_t n = 1;
-    for (int k = 0; k < te.var->rank; ++k) n *= te.var->dims[k];
+    const std::map<std::string, MatArray> vars = mat_variables(sfile, mat_max_file_bytes, "split file", {"te_split"});
+    const auto te = vars.find("te_split");
+    if (te == vars.end() || te->second.kind != MatArray::cell) throw InputError(sfile, 0, "te_split: expected a cell array");
+    const std::size_t n = te->second.cells.size();
     for (std::size_t f = 0; f < n; ++f) {
-      const matvar_t* c = matio(file).cell(te.var, static_cast<int>(f));
-      if (!c) throw InputError(sfile, 0, "te_split: a fold that is not a list");
+      const MatArray& c = te->second.cells[f];
       for (double x : numbers_of(c, "te_split", sfile).v) {
         if (x < 1 || x > double(rows.size()) || x != std::floor(x))
           throw InputError(sfile, 0, "te_split: an index outside 1.." + std::to_string(rows.size()));

@@ -8,6 +8,8 @@
 
 #include "sort_keys.h"
 
+#include <gmcc/numerics/interrupt.h>
+
 #include <algorithm>
 #include <cmath>
 #include <array>
@@ -104,6 +106,38 @@ void sort_keys(std::vector<std::uint64_t>& keys) {
 
 }  // namespace
 
+namespace {
+
+// An edge's rows: those whose centre line y = j + ½ meets its closed y-span, clipped to
+// [first, last]; the only rows where it can cross, touch or lie on the line.
+struct EdgeRows {
+  long long from, to;
+  std::size_t edge;
+};
+
+// The rows of the image (height `height`) each edge of `polygon` spans, in order of `from`.
+std::vector<EdgeRows> edge_rows(const std::vector<Point2>& polygon, std::size_t height) {
+  std::vector<EdgeRows> out;
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point2& a = polygon[i];
+    const Point2& b = polygon[(i + 1) % n];
+    const long long from = std::max<long long>(0, ceil_of(std::min(a.y, b.y) - Rational(1, 2)));
+    const long long to = std::min<long long>(static_cast<long long>(height) - 1, floor_of(std::max(a.y, b.y) - Rational(1, 2)));
+    if (from <= to) out.push_back({from, to, i});
+  }
+  std::sort(out.begin(), out.end(), [](const EdgeRows& p, const EdgeRows& q) { return p.from < q.from; });
+  return out;
+}
+
+}  // namespace
+
+std::uint64_t polygon_work(const std::vector<Point2>& polygon, std::size_t height) {
+  std::uint64_t work = polygon.size();
+  for (const EdgeRows& e : edge_rows(polygon, height)) work += static_cast<std::uint64_t>(e.to - e.from + 1);
+  return work;
+}
+
 std::vector<bool> polygon_cover(const std::vector<Point2>& polygon, std::size_t width,
                                 std::size_t height) {
   if (polygon.size() < 3) throw std::invalid_argument("a mask polygon needs at least 3 vertices");
@@ -113,15 +147,12 @@ std::vector<bool> polygon_cover(const std::vector<Point2>& polygon, std::size_t 
   // pairs of the sorted crossings of the non-horizontal edges, counted
   // half-open at their lower end so that a vertex on the line is crossed once
   // or not at all; the boundary is added by closed intervals: crossings
-  // themselves, vertices on the line, and horizontal edges on it.
-  Rational y_min = polygon[0].y, y_max = polygon[0].y;
-  for (const Point2& p : polygon) {
-    y_min = std::min(y_min, p.y);
-    y_max = std::max(y_max, p.y);
-  }
-  const long long first = std::max<long long>(0, ceil_of(y_min - Rational(1, 2)));
-  const long long last =
-      std::min<long long>(static_cast<long long>(height) - 1, floor_of(y_max - Rational(1, 2)));
+  // themselves, vertices on the line, and horizontal edges on it. A sweep over
+  // the rows keeps the edges whose y-span holds the row (edge_rows), so a row
+  // costs its own edges only, and each edge's slope is divided once.
+  const std::vector<EdgeRows> rows = edge_rows(polygon, height);
+  std::vector<Rational> slope(n);
+  std::vector<bool> has_slope(n, false);
   std::vector<Rational> crossings;
   auto mark = [&](long long row, const Rational& lo, const Rational& hi) {
     const long long a = std::max<long long>(0, ceil_of(lo - Rational(1, 2)));
@@ -129,10 +160,19 @@ std::vector<bool> polygon_cover(const std::vector<Point2>& polygon, std::size_t 
         std::min<long long>(static_cast<long long>(width) - 1, floor_of(hi - Rational(1, 2)));
     for (long long x = a; x <= b; ++x) cover[static_cast<std::size_t>(row) * width + x] = true;
   };
-  for (long long row = first; row <= last; ++row) {
+  std::vector<EdgeRows> active;
+  std::size_t next = 0;
+  for (long long row = rows.empty() ? 0 : rows.front().from; next < rows.size() || !active.empty(); ++row) {
+    if (active.empty() && next < rows.size()) row = std::max(row, rows[next].from);
+    while (next < rows.size() && rows[next].from <= row) active.push_back(rows[next++]);
+    active.erase(std::remove_if(active.begin(), active.end(), [&](const EdgeRows& e) { return e.to < row; }),
+                 active.end());
+    if (active.empty()) continue;
+    check_interrupt();
     const Rational y = Rational(static_cast<long>(2 * row + 1), 2);
     crossings.clear();
-    for (std::size_t i = 0; i < n; ++i) {
+    for (const EdgeRows& e : active) {
+      const std::size_t i = e.edge;
       const Point2& a = polygon[i];
       const Point2& b = polygon[(i + 1) % n];
       if (a.y == y && b.y == y) {
@@ -141,8 +181,8 @@ std::vector<bool> polygon_cover(const std::vector<Point2>& polygon, std::size_t 
       }
       if (a.y == y) mark(row, a.x, a.x);
       if ((a.y <= y) != (b.y <= y)) {
-        const Rational x = a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y);
-        crossings.push_back(x);
+        if (!has_slope[i]) slope[i] = (b.x - a.x) / (b.y - a.y), has_slope[i] = true;
+        crossings.push_back(a.x + slope[i] * (y - a.y));
       }
     }
     std::sort(crossings.begin(), crossings.end());
@@ -156,15 +196,15 @@ namespace {
 
 // The pixels the rules leave out: inside an excluded polygon, or not kept by the mask.
 std::vector<bool> excluded_pixels(const PixelRules& rules, std::size_t w, std::size_t h) {
-  // The exact cover costs one rational crossing test per edge and row the polygon spans: bounded
-  // before any work (docs/cli.md "Resource limits").
+  // The exact cover costs a rational crossing per edge and row the edge spans, and a few rational
+  // operations per vertex: bounded before any work (docs/cli.md "Resource limits").
   std::uint64_t work = 0;
   for (const std::vector<Point2>& polygon : rules.exclude_polygons) {
-    work += std::uint64_t(polygon.size()) * h;
+    work += polygon.size() > max_polygon_work ? max_polygon_work + 1 : polygon_work(polygon, h);
     if (work > max_polygon_work)
       throw std::invalid_argument("the exclusion polygons (" + std::to_string(polygon.size()) +
                                   " vertices in the last) on " + std::to_string(h) +
-                                  " rows would take more than 2^25 exact edge tests (about 30 s): "
+                                  " rows would take more than 2^20 exact edge crossings and vertices: "
                                   "give fewer vertices, or a mask image");
   }
   std::vector<bool> excluded(w * h, false);

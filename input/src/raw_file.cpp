@@ -226,6 +226,12 @@ RawImage decode_raw_image(const std::string& bytes, const std::string& file, con
   if (std::size_t(size.raw_width) * size.raw_height > max_image_pixels)
     throw InputError(file, 0, "more than 2^28 photosites (" + std::to_string(size.raw_width) + "x" +
                                   std::to_string(size.raw_height) + ")");
+  // The header bound of images (image_file.cpp): no more photosites than the file's bytes can
+  // decompress to at 4096:1, checked before unpack() decodes (and allocates) them.
+  if (std::size_t(size.raw_width) * size.raw_height > 4096 * bytes.size() + 4096)
+    throw InputError(file, 0, "the header declares " + std::to_string(size.raw_width) + "x" +
+                                  std::to_string(size.raw_height) + " photosites, more than the file's " +
+                                  std::to_string(bytes.size()) + " bytes can hold (4096:1)");
   const unsigned filters = raw->imgdata.idata.filters;
   if (filters == 0 || filters == 9 || filters < 1000)
     throw InputError(file, 0,

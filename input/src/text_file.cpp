@@ -142,6 +142,18 @@ std::string read_text_file(const std::string& path, const TextFileRules& rules) 
   return bytes;
 }
 
+void require_regular_file(const std::string& path, const std::string& noun) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+  if (S_ISREG(st.st_mode)) return;
+  const char* kind = S_ISFIFO(st.st_mode)  ? "a FIFO"
+                     : S_ISDIR(st.st_mode) ? "a directory"
+                     : S_ISSOCK(st.st_mode) ? "a socket"
+                     : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device"
+                                                                   : "a special file";
+  throw InputError(path, 0, std::string("is ") + kind + ", not a " + noun + " (a dataset's files must be regular files)");
+}
+
 std::string read_binary_file(const std::string& path, std::size_t max_bytes,
                              const std::string& noun) {
   TextFileRules rules{max_bytes, noun, noun, true};

@@ -127,6 +127,20 @@ const TruthRow& truth_of_image(const std::map<std::string, TruthRow>& rows, cons
   return t->second;
 }
 
+void require_paths_under_folder(const std::vector<TruthRow>& rows, const std::string& table_path) {
+  for (const TruthRow& r : rows)
+    for (const std::string* p : {&r.image, &r.mask}) {
+      if (p->empty()) continue;
+      const std::filesystem::path path(*p);
+      bool up = false;
+      for (const std::filesystem::path& part : path) up = up || part == "..";
+      if (path.has_root_path() || up)
+        throw InputError(table_path, r.line,
+                         std::string(p == &r.image ? "image " : "mask ") + quoted_text(*p) +
+                             (up ? " leaves" : " is outside") + " the --images folder (a path relative to it, without .., is expected)");
+    }
+}
+
 std::map<std::string, int> read_folds_file(const std::string& path) {
   const std::string text = read_text_file(path, {std::size_t(64) << 20, "folds file", "text lines image,fold"});
   const auto lines = data_lines(text);

@@ -50,6 +50,7 @@ std::vector<BenchmarkImage> benchmark_images(const std::string& images, const st
   std::vector<BenchmarkImage> dataset;
   try {
     const std::vector<TruthRow> rows = read_truth_table(truths);
+    require_paths_under_folder(rows, truths);
     if (!folds_file.is_none()) {
       if (!folds.is_none()) throw py::value_error("folds, folds_file: give one, not both");
       const std::string path = py::str(folds_file);

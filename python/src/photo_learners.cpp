@@ -9,13 +9,41 @@
 #include <pybind11/stl.h>
 
 #include <memory>
+#include <mutex>
 
 namespace gmcc::python {
 namespace {
 
+// A learner with its own mutex: add() and gamut() run with the GIL released, so Python threads
+// sharing one learner would otherwise change its hull at once (a double free, issue 42). Every
+// method takes the mutex, with the GIL released while it waits and works, so threads on different
+// learners still run in parallel.
+template <class Learner>
+struct Locked : Learner {
+  using Learner::Learner;
+  mutable std::mutex mutex;
+  // f(learner) under the mutex, without the GIL.
+  template <class F>
+  auto with(F f) const {
+    return without_gil([&] {
+      std::lock_guard<std::mutex> lock(mutex);
+      return f(static_cast<const Learner&>(*this));
+    });
+  }
+  template <class F>
+  auto with(F f) {
+    return without_gil([&] {
+      std::lock_guard<std::mutex> lock(mutex);
+      return f(static_cast<Learner&>(*this));
+    });
+  }
+};
+using Learner3 = Locked<CanonicalLearner3>;
+using Learner2 = Locked<CanonicalLearner2>;
+
 // CanonicalLearner3: its constructor and add().
-py::class_<CanonicalLearner3> bind_learner3(py::module_& m) {
-  py::class_<CanonicalLearner3> learner(m, "CanonicalLearner3", R"doc(A 3-D canonical gamut learned image by image from photographs with known lights.
+py::class_<Learner3> bind_learner3(py::module_& m) {
+  py::class_<Learner3> learner(m, "CanonicalLearner3", R"doc(A 3-D canonical gamut learned image by image from photographs with known lights.
 
 Each training image's pixel colours p are divided by its light e, p ⊘ e, scaled as
 ``intensity`` says, and the canonical gamut is the hull of the union over the images (Forsyth
@@ -42,7 +70,7 @@ ValueError
 )doc");
   learner.def(py::init([](const std::string& intensity) {
              try {
-               return CanonicalLearner3(canonical_intensity_from_string(intensity));
+               return std::make_unique<Learner3>(canonical_intensity_from_string(intensity));
              } catch (const std::invalid_argument& e) {
                throw py::value_error(std::string("intensity: ") + e.what());
              }
@@ -50,15 +78,15 @@ ValueError
            py::kw_only(), py::arg("intensity") = "max")
       .def(
           "add",
-          [](CanonicalLearner3& l, py::handle image, py::handle light, py::object mask, py::object black_level,
+          [](Learner3& l, py::handle image, py::handle light, py::object mask, py::object black_level,
              py::object saturation, py::object dark, py::object dark_fraction, py::object bright_fraction,
              const std::string& pixel_rule, const std::string& colour_set) {
             const Colour e = positive_light(light, "light");
             const std::vector<Colour> c = pixel_colours_of(
                 image, pixel_args(mask, black_level, saturation, dark, dark_fraction, bright_fraction, pixel_rule, colour_set),
                 "image");
-            without_gil([&] {
-              l.add(c, e);
+            l.with([&](auto& learner) {
+              learner.add(c, e);
               return 0;
             });
           },
@@ -89,9 +117,9 @@ TypeError
 }
 
 // CanonicalLearner3's gamut, exact and in floating point, prepared, and its counts.
-void bind_learner3_results(py::class_<CanonicalLearner3>& learner) {
-  learner.def("gamut", [](const CanonicalLearner3& l) {
-             const std::vector<Colour> g = without_gil([&] { return l.gamut(); });
+void bind_learner3_results(py::class_<Learner3>& learner) {
+  learner.def("gamut", [](const Learner3& l) {
+             const std::vector<Colour> g = l.with([](const CanonicalLearner3& x) { return x.gamut(); });
              py::list out;
              for (const Colour& c : g) out.append(colour_tuple(c));
              return out;
@@ -104,7 +132,7 @@ Returns
 list of tuple of (Fraction, Fraction, Fraction)
     The vertices, sorted; empty before any colour was added.
 )doc")
-      .def("gamut_float", [](const CanonicalLearner3& l) { return colours_array(l.gamut()); },
+      .def("gamut_float", [](const Learner3& l) { return colours_array(l.with([](const CanonicalLearner3& x) { return x.gamut(); })); },
            R"doc(The learned gamut's vertices as the nearest doubles.
 
 As gamut() (Forsyth 1990 §3; docs/photographs.md §2), in floating point.
@@ -114,10 +142,10 @@ Returns
 numpy.ndarray of float64, shape (n, 3)
     The vertices, in gamut()'s order.
 )doc")
-      .def("prepare", [](const CanonicalLearner3& l, const std::string& black) {
+      .def("prepare", [](const Learner3& l, const std::string& black) {
              Canonical3 out;
              out.black = black_from(black);
-             const std::vector<Colour> g = l.gamut();
+             const std::vector<Colour> g = l.with([](const CanonicalLearner3& x) { return x.gamut(); });
              if (g.empty()) throw py::value_error("prepare: no colour has been added");
              out.colours = g.size();
              out.constraints = without_gil([&] { return std::make_shared<const CanonicalConstraints3>(g, out.black); });
@@ -141,13 +169,13 @@ Raises
 ValueError
     No colour has been added, or an unknown ``black``.
 )doc")
-      .def_property_readonly("images", &CanonicalLearner3::images)
-      .def_property_readonly("contributing", &CanonicalLearner3::contributing);
+      .def_property_readonly("images", [](const Learner3& l) { return l.with([](const CanonicalLearner3& x) { return x.images(); }); })
+      .def_property_readonly("contributing", [](const Learner3& l) { return l.with([](const CanonicalLearner3& x) { return x.contributing(); }); });
 }
 
 // CanonicalLearner2.
 void bind_learner2(py::module_& m) {
-  py::class_<CanonicalLearner2>(m, "CanonicalLearner2", R"doc(A 2-D (perspective) canonical gamut learned image by image.
+  py::class_<Learner2>(m, "CanonicalLearner2", R"doc(A 2-D (perspective) canonical gamut learned image by image.
 
 The hull of the perspective chromaticities of each training image's colours divided by its
 light (Finlayson & Hordley 1999 eq. 10; Finlayson 1996; learn_canonical.h,
@@ -158,10 +186,10 @@ Attributes
 images : int
     How many images were added.
 )doc")
-      .def(py::init<>())
+      .def(py::init([] { return std::make_unique<Learner2>(); }))
       .def(
           "add",
-          [](CanonicalLearner2& l, py::handle image, py::handle light, py::object mask, py::object black_level,
+          [](Learner2& l, py::handle image, py::handle light, py::object mask, py::object black_level,
              py::object saturation, py::object dark, py::object dark_fraction, py::object bright_fraction,
              const std::string& pixel_rule) {
             const Colour e = positive_light(light, "light");
@@ -174,8 +202,8 @@ images : int
             } else {
               c = colours_from(image, "image");
             }
-            without_gil([&] {
-              l.add(c, e);
+            l.with([&](auto& learner) {
+              learner.add(c, e);
               return 0;
             });
           },
@@ -203,9 +231,9 @@ ValueError
 TypeError
     An argument of the wrong type.
 )doc").c_str())
-      .def("gamut", [](const CanonicalLearner2& l) {
+      .def("gamut", [](const Learner2& l) {
              py::list out;
-             for (const Point2& p : l.gamut()) out.append(py::make_tuple(to_fraction(p.x), to_fraction(p.y), 1));
+             for (const Point2& p : l.with([](const CanonicalLearner2& x) { return x.gamut(); })) out.append(py::make_tuple(to_fraction(p.x), to_fraction(p.y), 1));
              return out;
            }, R"doc(The learned gamut as chromaticity lifts, a canonical gamut for prepare_canonical.
 
@@ -217,13 +245,13 @@ Returns
 list of tuple of (Fraction, Fraction, int)
     The lifts (x, y, 1), exact, counter-clockwise.
 )doc")
-      .def_property_readonly("images", &CanonicalLearner2::images);
+      .def_property_readonly("images", [](const Learner2& l) { return l.with([](const CanonicalLearner2& x) { return x.images(); }); });
 }
 
 }  // namespace
 
 void bind_learners(py::module_& m) {
-  py::class_<CanonicalLearner3> learner3 = bind_learner3(m);
+  py::class_<Learner3> learner3 = bind_learner3(m);
   bind_learner3_results(learner3);
   bind_learner2(m);
 }

@@ -63,6 +63,18 @@ def main():
                 x.pop("image"), y.pop("image")
                 expect(x == y, (x, y))
 
+        def nus_mat73_equals_mat5():
+            # The same ground truth as MATLAB 7.3 (HDF5, read through libmatio): the same records,
+            # and nothing on stderr (HDF5's and libmatio's own messages are kept off it).
+            a, b = os.path.join(tmp, "m5.jsonl"), os.path.join(tmp, "m73.jsonl")
+            common = ["--folds", "3", "--methods", "grey-world,gm3d-max-trace", "--no-progress"]
+            rc, out, err = r.run("--layout", "nus", "--images", os.path.join(tmp, "nus"), *common, "--records", a)
+            expect(rc == 0 and err == "", err)
+            rc, out, err = r.run("--layout", "nus", "--images", os.path.join(tmp, "nus73"), *common, "--records", b)
+            expect(rc == 0 and err == "", err)
+            ra, rb = records(a), records(b)
+            expect(len(ra) == 12 and ra == rb, (ra[:1], rb[:1]))
+
         def cube_equals_its_table():
             a, b = os.path.join(tmp, "c.jsonl"), os.path.join(tmp, "d.jsonl")
             common = ["--folds", "2", "--methods", "gm3d-max-trace,grey-world", "--no-progress"]
@@ -182,13 +194,13 @@ def main():
         def matio_loaded_on_demand():
             # libmatio (and HDF5, libcurl, GnuTLS behind it) is opened on the first MATLAB file, not
             # linked: every other command starts without loading it (docs/performance.md "Start-up").
-            # The NUS and Gehler-Shi layouts above read MATLAB files through it.
+            # MATLAB 7.3 files (nus73 above) are read through it; MATLAB 5 files by gmcc itself.
             dynamic = subprocess.run(["readelf", "-d", binary], capture_output=True, text=True, check=True).stdout
             needed = [line for line in dynamic.splitlines() if "(NEEDED)" in line]
             expect(needed and not any("matio" in line or "hdf5" in line for line in needed), needed)
 
-        r.check_all(nus_equals_its_table, cube_equals_its_table, gehler_shi_equals_its_table, broken_layouts,
-                    dataset_table_equals_the_layout, gehler_shi_shapes_and_frames_checked,
+        r.check_all(nus_equals_its_table, nus_mat73_equals_mat5, cube_equals_its_table, gehler_shi_equals_its_table,
+                    broken_layouts, dataset_table_equals_the_layout, gehler_shi_shapes_and_frames_checked,
                     verify_script_on_written_datasets, matio_loaded_on_demand)
         return r.finish()
 

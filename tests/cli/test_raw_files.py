@@ -24,6 +24,7 @@ import json
 import math
 import os
 import random
+import struct
 import sys
 import tempfile
 
@@ -194,7 +195,30 @@ def main():
             rc, out, err = r.run("estimate", "--canonical", canonical, odd, prefix=[])
             expect(rc == 2 and "RGGR" in err and "only red, two greens and blue" in err, err)
 
-        r.check_all(dng_equals_png, levels_override_metadata, benchmark_on_dngs, unreadable_files)
+        def header_bound():
+            # A small DNG whose header declares 16384 x 16384 lossless-JPEG photosites (issue 42):
+            # refused from the header, before LibRaw decodes it, as images are (4096:1), and
+            # within a memory limit far below the gigabyte the decode took.
+            small = os.path.join(tmp, "small.dng")
+            write_dng(small, [[100] * 32 for _ in range(24)], white=WHITE)
+            with open(small, "rb") as f:
+                b = bytearray(f.read())
+            (ifd,) = struct.unpack_from("<I", b, 4)
+            (count,) = struct.unpack_from("<H", b, ifd)
+            for k in range(count):
+                at = ifd + 2 + 12 * k
+                tag, kind = struct.unpack_from("<HH", b, at)
+                if tag in (256, 257, 278):  # ImageWidth, ImageLength, RowsPerStrip
+                    struct.pack_into("<I", b, at + 8, 16384)
+                if tag == 259:  # Compression: lossless JPEG
+                    struct.pack_into("<H", b, at + 8, 7)
+            big = os.path.join(tmp, "declares_big.dng")
+            with open(big, "wb") as f:
+                f.write(b)
+            rc, out, err = r.run("--memory-limit", "400", "estimate", "--canonical", canonical, big, prefix=[])
+            expect(rc == 2 and err.count("\n") == 1 and "4096:1" in err and big in err, (rc, err))
+
+        r.check_all(dng_equals_png, levels_override_metadata, benchmark_on_dngs, unreadable_files, header_bound)
         return r.finish()
 
 

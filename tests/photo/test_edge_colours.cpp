@@ -6,9 +6,12 @@
 #include <gmcc/photo/edge_colours.h>
 #include <gmcc/photo/estimate_3d.h>
 #include <gmcc/photo/learn_canonical.h>
+#include <gmcc/input/image_derivatives.h>
+#include <gmcc/numerics/interrupt.h>
 
 #include <boost/test/unit_test.hpp>
 
+#include <cmath>
 #include <random>
 
 using namespace gmcc;
@@ -107,6 +110,44 @@ BOOST_AUTO_TEST_CASE(joint_estimate_of_pixel_and_edge_gamuts) {
   BOOST_TEST((alone.max_trace->selection.estimate.exact == as_joint.max_trace->selection.estimate.exact));
   BOOST_TEST((alone.max_volume->selection.estimate.exact == as_joint.max_volume->selection.estimate.exact));
   BOOST_CHECK_THROW(estimate_3d(std::vector<GamutConstraint3>{}), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(tiny_sigmas_give_central_differences) {
+  // Issue 42: below σ ≈ 0.026 the sampled Gaussian's tails underflow (the first-order kernel's
+  // moment was 0, 0/0 made it NaN), and below about 1e-154 σ² itself (the centre was NaN). The
+  // derivatives are now their limit, central differences: on a ramp of slope 3 in x, the first
+  // derivative's magnitude is 3 inside, the second 0, and the smoothing is the identity.
+  DoubleImage ramp{8, 6, std::vector<double>(8 * 6 * 3)};
+  for (std::size_t y = 0; y < 6; ++y)
+    for (std::size_t x = 0; x < 8; ++x)
+      for (std::size_t c = 0; c < 3; ++c) ramp.samples[3 * (y * 8 + x) + c] = 3.0 * static_cast<double>(x) + static_cast<double>(c);
+  for (double sigma : {0.02, 1e-100, 1e-300}) {
+    const DoubleImage d1 = gaussian_derivative(ramp, sigma, DerivativeOrder::first);
+    const DoubleImage d2 = gaussian_derivative(ramp, sigma, DerivativeOrder::second);
+    const DoubleImage d0 = gaussian_derivative(ramp, sigma, DerivativeOrder::zero);
+    for (std::size_t y = 0; y < 6; ++y)
+      for (std::size_t x = 1; x + 1 < 8; ++x)
+        for (std::size_t c = 0; c < 3; ++c) {
+          BOOST_TEST(d1.samples[3 * (y * 8 + x) + c] == 3.0);
+          BOOST_TEST(std::abs(d2.samples[3 * (y * 8 + x) + c]) < 1e-9);  // [1, -2, 1] up to rounding
+        }
+    BOOST_TEST((d0.samples == ramp.samples));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(derivatives_stop_at_an_interrupt) {
+  // Issue 42 item 4: the convolutions check for an interrupt row by row, so a Ctrl-C in the
+  // Python module is answered within a row at any σ, not after the image.
+  DoubleImage im{64, 64, std::vector<double>(64 * 64 * 3, 1.0)};
+  interrupt_requested.store(true);
+  bool stopped = false;
+  try {
+    gaussian_derivative(im, 64, DerivativeOrder::second);
+  } catch (const Interrupted&) {
+    stopped = true;
+  }
+  interrupt_requested.store(false);
+  BOOST_TEST(stopped);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

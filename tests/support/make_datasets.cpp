@@ -1,6 +1,7 @@
 // Writes small colour-constancy datasets in the layouts they ship in, for tests/cli/test_datasets.py:
 //   OUT/nus/TestCam_gt.mat (MATLAB 5, by libmatio's writer: all_image_names, groundtruth_illuminants,
-//   darkness_level, saturation_level, CC_coords) and OUT/nus/PNG/<name>.PNG;
+//   darkness_level, saturation_level, CC_coords) and OUT/nus/PNG/<name>.PNG, and the same as
+//   MATLAB 7.3 (HDF5) in OUT/nus73;
 //   OUT/cube/cube+_gt.txt and OUT/cube/<k>.PNG (2060 × 1060, so that the SpyderCube corner exists);
 // and, for each, OUT/<layout>_table.csv: the same dataset as a truth table with black_level,
 // saturation and chart columns, written from what the tool drew (not from the readers).
@@ -86,24 +87,29 @@ int main(int argc, char** argv) {
             << x1 - 1 << " " << y1 - 1 << " " << x2 + 1 << " " << y1 - 1 << " " << x2 + 1 << " " << y2 + 1 << " "
             << x1 - 1 << " " << y2 + 1 << "\n";
     }
-    mat_t* mat = Mat_CreateVer((dir + "/TestCam_gt.mat").c_str(), nullptr, MAT_FT_MAT5);
-    std::size_t dims[2] = {std::size_t(n), 3};
-    put(mat, Mat_VarCreate("groundtruth_illuminants", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, lights.data(), 0));
-    dims[1] = 4;
-    put(mat, Mat_VarCreate("CC_coords", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, coords.data(), 0));
-    double b = black, s = saturation;
-    std::size_t one[2] = {1, 1};
-    put(mat, Mat_VarCreate("darkness_level", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, one, &b, 0));
-    put(mat, Mat_VarCreate("saturation_level", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, one, &s, 0));
-    std::size_t cell_dims[2] = {std::size_t(n), 1};
-    matvar_t* cell = Mat_VarCreate("all_image_names", MAT_C_CELL, MAT_T_CELL, 2, cell_dims, nullptr, 0);
-    for (int i = 0; i < n; ++i) {
-      std::size_t d[2] = {1, names[i].size()};
-      Mat_VarSetCell(cell, i, Mat_VarCreate(nullptr, MAT_C_CHAR, MAT_T_UINT8, 2, d, names[i].data(), 0));
+    // The same ground truth as MATLAB 5 (what NUS ships) and, in OUT/nus73 beside copies of the
+    // images, as MATLAB 7.3 (HDF5), the other route of the reader (issue 42).
+    std::system(("mkdir -p " + out + "/nus73 && cp -r " + dir + "/PNG " + out + "/nus73/").c_str());
+    for (const auto& [path, version] : {std::pair{dir + "/TestCam_gt.mat", MAT_FT_MAT5}, {out + "/nus73/TestCam_gt.mat", MAT_FT_MAT73}}) {
+      mat_t* mat = Mat_CreateVer(path.c_str(), nullptr, version);
+      std::size_t dims[2] = {std::size_t(n), 3};
+      put(mat, Mat_VarCreate("groundtruth_illuminants", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, lights.data(), 0));
+      dims[1] = 4;
+      put(mat, Mat_VarCreate("CC_coords", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, coords.data(), 0));
+      double b = black, s = saturation;
+      std::size_t one[2] = {1, 1};
+      put(mat, Mat_VarCreate("darkness_level", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, one, &b, 0));
+      put(mat, Mat_VarCreate("saturation_level", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, one, &s, 0));
+      std::size_t cell_dims[2] = {std::size_t(n), 1};
+      matvar_t* cell = Mat_VarCreate("all_image_names", MAT_C_CELL, MAT_T_CELL, 2, cell_dims, nullptr, 0);
+      for (int i = 0; i < n; ++i) {
+        std::size_t d[2] = {1, names[i].size()};
+        Mat_VarSetCell(cell, i, Mat_VarCreate(nullptr, MAT_C_CHAR, MAT_T_UINT8, 2, d, names[i].data(), 0));
+      }
+      Mat_VarWrite(mat, cell, MAT_COMPRESSION_NONE);
+      Mat_VarFree(cell);
+      Mat_Close(mat);
     }
-    Mat_VarWrite(mat, cell, MAT_COMPRESSION_NONE);
-    Mat_VarFree(cell);
-    Mat_Close(mat);
   }
   // Cube+: 4 images, 2060 × 1060, black 2048; the SpyderCube corner (rows >= 1050, columns >= 2050)
   // painted bright.

@@ -127,6 +127,12 @@ FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, c
       if (n.order[k]) edges[k].add(reduced[i].edges[k], images[i].light, scale);
   }
   if (training == 0) throw std::invalid_argument("fold " + std::to_string(fold) + " has no training image (one fold only)");
+  // Training images that give only black (a black level or saturation that leaves no colour):
+  // no canonical gamut can be learned, a fault of the input, not of the program.
+  if ((n.gm3d && learner3.contributing() == 0) || (n.gm2d && learner2.gamut().empty()))
+    throw InputError("fold " + std::to_string(fold), 0,
+                     "its " + std::to_string(training) + " training images give no colour above black (the black "
+                     "level, saturation and dark rules leave none): no canonical gamut can be learned");
   FoldCanonicals c;
   for (std::size_t i = 0; i < images.size(); ++i)
     if (images[i].fold != fold) c.lights.push_back(images[i].light);

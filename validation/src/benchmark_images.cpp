@@ -149,6 +149,22 @@ std::vector<BenchmarkImage> benchmark_dataset(const std::string& images_dir, con
     if (!r.mask.empty()) im.mask_path = (std::filesystem::path(images_dir) / r.mask).string();
     images.push_back(std::move(im));
   }
+  // The folds checked against the dataset: every image the folds file names is in it, and at least
+  // two folds hold images (each fold's gamuts are learned from the others).
+  std::set<std::string> names;
+  std::set<int> used;
+  for (const BenchmarkImage& im : images) {
+    names.insert(im.name);
+    used.insert(im.fold);
+  }
+  const std::string source = folds ? folds_path : "--folds";
+  if (folds)
+    for (const auto& [name, fold] : *folds)
+      if (!names.count(name)) throw InputError(folds_path, 0, "image " + name + " is not in the dataset");
+  if (used.size() < 2)
+    throw InputError(source, 0, "every image is in one fold (" + std::to_string(images.size()) +
+                                    " images): cross-validation needs images in at least 2 folds, each fold's "
+                                    "gamuts learned from the others");
   return images;
 }
 

@@ -168,9 +168,13 @@ struct FloatPixelRules {
 ///         saturation that is negative or not finite, or a `keep` of the wrong size.
 ImageColours image_colours(const FloatRgbImage& image, const FloatPixelRules& rules);
 
-/// Most exact edge tests the exclusion polygons of one image may take, Σ vertices × rows: 2^25
-/// (about 30 s; more is refused with std::invalid_argument before any work).
-inline constexpr std::uint64_t max_polygon_work = std::uint64_t(1) << 25;
+/// Most exact work the exclusion polygons of one image may take, Σ over polygons of polygon_work:
+/// 2^20 (more is refused with std::invalid_argument before any work).
+inline constexpr std::uint64_t max_polygon_work = std::uint64_t(1) << 20;
+
+/// The exact work of `polygon`'s cover on an image of `height` rows: its vertices plus, per
+/// edge, the rows whose centre line meets the edge's y-span (one rational crossing each).
+std::uint64_t polygon_work(const std::vector<Point2>& polygon, std::size_t height);
 
 /// The pixels a polygon excludes, row-major (true: centre inside or on the
 /// boundary). Exposed for tests and reports.

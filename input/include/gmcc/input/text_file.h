@@ -40,4 +40,10 @@ std::string read_text_file(const std::string& path, const TextFileRules& rules);
 /// \throws InputError as read_text_file, except for NUL bytes.
 std::string read_binary_file(const std::string& path, std::size_t max_bytes, const std::string& noun);
 
+/// Refuses, before opening it, a path that is not a regular file (or a symbolic link to one): a
+/// dataset's files, found by listing its folder, are read by their names, sometimes twice
+/// (libmatio opens a MATLAB 7.3 file again), so a FIFO there could block for ever.
+/// \throws InputError naming the file: missing, or a FIFO, device, socket or directory.
+void require_regular_file(const std::string& path, const std::string& noun);
+
 }  // namespace gmcc

@@ -51,6 +51,11 @@ std::map<std::string, TruthRow> truth_rows_by_image(std::vector<TruthRow> rows);
 const TruthRow& truth_of_image(const std::map<std::string, TruthRow>& rows, const std::string& image_path,
                                const std::string& truths_path);
 
+/// A benchmark's table: refuses an `image` or `mask` path that is absolute or has a `..`
+/// component, since the benchmark reads every image under its `--images` folder only.
+/// \throws InputError naming the table and the line.
+void require_paths_under_folder(const std::vector<TruthRow>& rows, const std::string& table_path);
+
 /// Read a folds file `image,fold` (fold an integer >= 0) as a map from image to fold.
 /// \throws InputError naming the file and line.
 std::map<std::string, int> read_folds_file(const std::string& path);
