@@ -235,3 +235,57 @@ def test_truth_in_f3_and_lights_at_any_scale():
         assert np.all(np.isfinite(b.light))
         assert np.allclose(a.light, b.light, rtol=0, atol=1e-12)
         assert abs(a.recovery_error_deg - b.recovery_error_deg) < 1e-9
+
+
+def lp_max_trace_in_cone(A, b, q, maps):
+    """Independent float LP over F3 ∩ cone(maps): maximise d1 + d2 + d3 over (d, λ) with
+    A (d ∘ q) <= b, d = Σ λ_j maps_j, d, λ >= 0; and whether the maximiser d is unique."""
+    linprog = scipy_optimize.linprog
+    n = len(maps)
+    rows = (A[:, None, :] * q[None, :, :]).reshape(-1, 3)
+    A_ub = np.hstack([rows, np.zeros((len(rows), n))])
+    b_ub = np.repeat(b, len(q))
+    A_eq = np.hstack([np.eye(3), -np.asarray(maps, float).T])
+    c = np.concatenate([-np.ones(3), np.zeros(n)])
+    r = linprog(c, A_ub=A_ub, b_ub=b_ub, A_eq=A_eq, b_eq=np.zeros(3), bounds=[(0, None)] * (3 + n), method="highs")
+    assert r.status == 0
+    unique = True
+    for k in range(3):
+        ends = []
+        for sign in (1, -1):
+            ck = np.zeros(3 + n)
+            ck[k] = sign
+            t = linprog(ck, A_ub=np.vstack([A_ub, np.concatenate([np.ones(3), np.zeros(n)])[None, :] * -1]),
+                        b_ub=np.concatenate([b_ub, [r.fun]]), A_eq=A_eq, b_eq=np.zeros(3),
+                        bounds=[(0, None)] * (3 + n), method="highs")
+            ends.append(sign * t.fun)
+        unique = unique and abs(ends[0] - ends[1]) <= 1e-7 * max(1.0, abs(r.x[k]))
+    return r.x[:3], unique
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_constrained_max_trace_agrees_with_a_float_lp(seed):
+    """Issue 45: max-trace over F3 ∩ cone(plausible lights' maps) against an independent float LP
+    (SciPy's HiGHS) to 0.1 degree wherever the LP's maximiser is unique."""
+    rng = np.random.default_rng(300 + seed)
+    canonical_colours = rng.integers(1, 1000, size=(40, 3))
+    light = rng.integers(5, 30, size=3)
+    w = rng.dirichlet(np.ones(40) * 0.3, size=30)
+    image = np.floor((w @ canonical_colours) * light / 10).reshape(5, 6, 3).astype(np.uint16)
+    lights = rng.integers(5, 30, size=(6, 3))
+    prepared = gmcc.prepare_canonical_3d(canonical_colours)
+    r = gmcc.estimate_3d(prepared, image, rules=["max_trace"], illuminants=lights.tolist())
+    g = np.vstack([canonical_colours, np.zeros((1, 3))]).astype(float)
+    hull = scipy_spatial.ConvexHull(g)
+    q = image.reshape(-1, 3).astype(float)
+    maps = 1.0 / lights
+    x, unique = lp_max_trace_in_cone(hull.equations[:, :3], -hull.equations[:, 3], q, maps)
+    if r.max_trace.light is None or min(x) <= 1e-12:
+        assert max(x) <= 1e-9 or r.max_trace.light is not None, "the LP finds a positive map gmcc does not"
+        pytest.skip("no positive map in F3 ∩ cone")
+    if not unique:
+        pytest.skip("the LP's maximiser is not unique")
+    assert angle(r.max_trace.map, x) <= 0.1
+    # The constraint only removes maps: the trace is at most the unconstrained one.
+    free = gmcc.estimate_3d(prepared, image, rules=["max_trace"])
+    assert sum(r.max_trace.map) <= sum(free.max_trace.map) * (1 + 1e-12)
