@@ -287,12 +287,13 @@ std::vector<Point2> check_candidates(ByteReader& in, const ConvexSet2& G, const 
 // An empty F: min_violation finds a positive least violation, attained at its minimisers.
 void check_min_violation(const ConvexSet2& G, const std::vector<Point2>& image) {
   const gmcc::MinViolation v = gmcc::min_violation(G, image);
+  stage("min_violation");
   FUZZ_CHECK(sgn(v.violation) > 0, "min_violation: violation <= 0 for an empty F");
   FUZZ_CHECK(v.feasible.kind != ConvexKind::empty, "min_violation: no minimiser");
   check_canonical(v.feasible, "min_violation's minimisers");
   FUZZ_CHECK(gmcc::gamut_violation(G, image, v.feasible.vertices[0]) == v.violation,
              "min_violation: the violation is not attained at a minimiser");
-  stage("min_violation");
+  stage("min_violation checks");
 }
 
 // GMCC_FUZZ_TIMES: select_maps's parts one by one, to say which is slow.

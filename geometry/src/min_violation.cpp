@@ -1,5 +1,6 @@
 #include <gmcc/geometry/convex_hull.h>
 #include <gmcc/geometry/feasible_set.h>
+#include <gmcc/geometry/integers_over_lcm.h>
 #include <gmcc/geometry/min_violation.h>
 #include <gmcc/numerics/internal_check.h>
 
@@ -7,6 +8,7 @@
 #include "internal/linear_program.h"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 namespace gmcc {
@@ -68,14 +70,29 @@ MinViolation min_violation(const ConvexSet2& canonical, const std::vector<Point2
   internal::LinearProgram lp;
   lp.variables = 3;
   lp.objective = {0, 0, 1};
-  for (const Point2& q : qs)
-    for (const HalfPlane& h : planes) {
-      lp.rows.push_back({Rational(h.a * q.x), Rational(h.b * q.y), Rational(-l1(h))});
-      lp.rhs.push_back(h.c);
+  // Each row times the positive L_h·L_q that makes it integral (L_h, L_q the lcms of the plane's
+  // and the point's denominators): the same half-space, so the same LP, in integers (the rows'
+  // products and the generation's exact tests without gcds).
+  std::vector<std::array<mpz_class, 4>> zp;  // (A, B, C, |A| + |B|) of each plane
+  for (const HalfPlane& h : planes) {
+    const mpz_class L = lcm_of_denominators_of(h.a, h.b, h.c);
+    const mpz_class A = times_lcm(h.a, L), B = times_lcm(h.b, L);
+    zp.push_back({A, B, times_lcm(h.c, L), mpz_class(abs(A) + abs(B))});
+  }
+  for (const Point2& q : qs) {
+    const mpz_class L = lcm_of_denominators_of(q.x, q.y);
+    const mpz_class Q1 = times_lcm(q.x, L), Q2 = times_lcm(q.y, L);
+    for (const std::array<mpz_class, 4>& h : zp) {
+      lp.rows.push_back({Rational(h[0] * Q1), Rational(h[1] * Q2), Rational(-h[3] * L)});
+      lp.rhs.push_back(Rational(h[2] * L));
     }
-  // Constraint generation starts from the first image vertex's rows, m >= 0 and C: they bound t
-  // below when G_c is a polygon (otherwise the solver takes every row; docs/math.md §1b).
-  for (std::size_t r = 0; r < planes.size(); ++r) lp.initial.push_back(r);
+  }
+  // Constraint generation starts from the first image vertex's four bounding-box rows (the last
+  // four of `planes`), m >= 0 and C: x <= x_hi and −x <= −x_lo give t >= (x_lo − x_hi)/2, so t is
+  // bounded below from the first round, and each round's exact solve stays small (starting from
+  // all of the first vertex's rows made every round solve over the whole gamut's edges; the
+  // solver takes every row if a subset is unbounded: docs/math.md §1b).
+  for (std::size_t r = planes.size() - 4; r < planes.size(); ++r) lp.initial.push_back(r);
   lp.rows.push_back({-1, 0, 0}), lp.rhs.push_back(0);
   lp.rows.push_back({0, -1, 0}), lp.rhs.push_back(0);
   for (const HalfPlane& h : hard) lp.rows.push_back({h.a, h.b, 0}), lp.rhs.push_back(h.c);
