@@ -38,8 +38,6 @@ void reject_inapplicable(const SelectOptions& o) {
   if (o.space == "3d") {
     if (is_given("--expand", o.expand_factor, "0") || is_given("--expand-policy", o.expand_policy, "none"))
       throw InputError("--expand", 0, "expansion applies to the 2-D gamut only, not to --space 3d");
-    if (!o.illuminants_path.empty())
-      throw InputError("--illuminants", 0, "the illumination constraint is 2-D only, not --space 3d");
     if (is_given("--on-empty", o.on_empty, "none"))
       throw InputError("--on-empty", 0,
                        "recovery policies are 2-D only, not --space 3d; with --black include the "
@@ -169,7 +167,8 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
   cmd->add_option("--illuminants", o.illuminants_path,
                   "plausible lights, one r,g,b per line (as the camera sees them): keep only the "
                   "maps in the convex hull of their maps c ⊘ e (Finlayson 1996); c is "
-                  "--canonical-illuminant, so give it too");
+                  "--canonical-illuminant, so give it too. --space 3d: F3 within the cone of their "
+                  "maps (Barnard's ECRULE), c white");
   cmd->add_option("--truth", o.truth,
                   "r,g,b of the true light under which the image was taken (as the camera sees "
                   "it): adds each rule's map-space, illuminant and reproduction errors against "

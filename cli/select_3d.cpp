@@ -3,6 +3,7 @@
 #include "json_output.h"
 
 #include <gmcc/geometry/feasible_set.h>
+#include <gmcc/geometry/illumination_cone_3d.h>
 #include <gmcc/selection/crule_3d.h>
 #include <gmcc/input/colour_csv.h>
 
@@ -40,6 +41,32 @@ Json selection_json(const Selection3& s) {
   return j;
 }
 
+// CRULE on F3 ∩ the cone of the plausible lights' maps (the illumination constraint in 3-D,
+// Barnard's ECRULE; illumination_cone_3d.h), the canonical light white: F3 exact with its volume,
+// max-volume and the centroid exact, as crule_3d.
+Crule3d constrained_crule_3d(const ColourTable& canonical, const ColourTable& image, CanonicalBlack black,
+                             const std::string& lights_path) {
+  const ColourTable lights = read_colour_csv(lights_path);
+  require_pixel_colours(lights, "--illuminants");
+  for (std::size_t i = 0; i < lights.colours.size(); ++i) {
+    const Colour& l = lights.colours[i];
+    if (sgn(l.r) <= 0 || sgn(l.g) <= 0 || sgn(l.b) <= 0)
+      throw InputError(lights_path, lights.lines[i], "a plausible light needs every channel > 0");
+  }
+  const CanonicalConstraints3 prepared(canonical.colours, black);
+  std::vector<GamutConstraint3> types{{&prepared, &image.colours}};
+  const CanonicalConstraints3 cone =
+      illumination_cone_3d(lights.colours, Colour{Rational(1), Rational(1), Rational(1)}, feasible_set_3d_box(types));
+  types.push_back({&cone, &illumination_cone_colour()});
+  const LazyConvexSet3 F = feasible_set_3d_lazy(types);
+  Crule3dSelections s = crule_3d_selections(F, Crule3dRoute::exact);
+  Crule3d r;
+  r.feasible = F.exact();
+  r.volume = volume(r.feasible);
+  r.max_volume = std::move(s.max_volume), r.centroid = std::move(s.centroid);
+  return r;
+}
+
 }  // namespace
 
 int run_select_3d(const SelectOptions& o) {
@@ -51,7 +78,8 @@ int run_select_3d(const SelectOptions& o) {
   require_pixel_colours(image, "select --space 3d");
   Crule3d r;
   try {
-    r = crule_3d(canonical.colours, image.colours, black);
+    r = o.illuminants_path.empty() ? crule_3d(canonical.colours, image.colours, black)
+                                   : constrained_crule_3d(canonical, image, black, o.illuminants_path);
   } catch (const UnboundedFeasibleSet& e) {
     throw InputError(o.image_path, 0, e.what());
   }
@@ -80,6 +108,7 @@ int run_select_3d(const SelectOptions& o) {
                             {"colours", canonical.colours.size()}};
     j["input"] = {{"canonical_colours", canonical.colours.size()},
                   {"image_colours", image.colours.size()}};
+    if (!o.illuminants_path.empty()) j["constraint"] = {{"illuminants_file", o.illuminants_path}};
     finish_document(j);
     out << j.dump(2) << "\n";
   } else {

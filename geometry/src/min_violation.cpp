@@ -40,6 +40,26 @@ std::vector<Point2> image_vertices(const ConvexSet2& canonical, const std::vecto
   feasible_set(canonical, image);  // validates exactly as feasible_set does
   return convex_hull(image).vertices;
 }
+// The LP's rows (a·q1)·m1 + (b·q2)·m2 − ‖(a, b)‖₁·t <= c for every image vertex q and half-plane,
+// each times the positive L_h·L_q that makes it integral (L_h, L_q the lcms of the plane's and the
+// point's denominators): the same half-space, so the same LP, in integers (the rows' products and
+// the generation's exact tests without gcds).
+void add_rows(internal::LinearProgram& lp, const std::vector<Point2>& qs, const std::vector<HalfPlane>& planes) {
+  std::vector<std::array<mpz_class, 4>> zp;  // (A, B, C, |A| + |B|) of each plane
+  for (const HalfPlane& h : planes) {
+    const mpz_class L = lcm_of_denominators_of(h.a, h.b, h.c);
+    const mpz_class A = times_lcm(h.a, L), B = times_lcm(h.b, L);
+    zp.push_back({A, B, times_lcm(h.c, L), mpz_class(abs(A) + abs(B))});
+  }
+  for (const Point2& q : qs) {
+    const mpz_class L = lcm_of_denominators_of(q.x, q.y);
+    const mpz_class Q1 = times_lcm(q.x, L), Q2 = times_lcm(q.y, L);
+    for (const std::array<mpz_class, 4>& h : zp) {
+      lp.rows.push_back({Rational(h[0] * Q1), Rational(h[1] * Q2), Rational(-h[3] * L)});
+      lp.rhs.push_back(Rational(h[2] * L));
+    }
+  }
+}
 }  // namespace
 
 Rational gamut_violation(const ConvexSet2& canonical, const std::vector<Point2>& image,
@@ -70,23 +90,7 @@ MinViolation min_violation(const ConvexSet2& canonical, const std::vector<Point2
   internal::LinearProgram lp;
   lp.variables = 3;
   lp.objective = {0, 0, 1};
-  // Each row times the positive L_h·L_q that makes it integral (L_h, L_q the lcms of the plane's
-  // and the point's denominators): the same half-space, so the same LP, in integers (the rows'
-  // products and the generation's exact tests without gcds).
-  std::vector<std::array<mpz_class, 4>> zp;  // (A, B, C, |A| + |B|) of each plane
-  for (const HalfPlane& h : planes) {
-    const mpz_class L = lcm_of_denominators_of(h.a, h.b, h.c);
-    const mpz_class A = times_lcm(h.a, L), B = times_lcm(h.b, L);
-    zp.push_back({A, B, times_lcm(h.c, L), mpz_class(abs(A) + abs(B))});
-  }
-  for (const Point2& q : qs) {
-    const mpz_class L = lcm_of_denominators_of(q.x, q.y);
-    const mpz_class Q1 = times_lcm(q.x, L), Q2 = times_lcm(q.y, L);
-    for (const std::array<mpz_class, 4>& h : zp) {
-      lp.rows.push_back({Rational(h[0] * Q1), Rational(h[1] * Q2), Rational(-h[3] * L)});
-      lp.rhs.push_back(Rational(h[2] * L));
-    }
-  }
+  add_rows(lp, qs, planes);
   // Constraint generation starts from the first image vertex's four bounding-box rows (the last
   // four of `planes`), m >= 0 and C: x <= x_hi and −x <= −x_lo give t >= (x_lo − x_hi)/2, so t is
   // bounded below from the first round, and each round's exact solve stays small (starting from

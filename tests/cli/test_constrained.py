@@ -9,7 +9,8 @@
   the summary says that F3 itself holds maps ("F3 holds maps, none of a plausible light"), the
   JSON's `constraint` says the same; a plausible light with a channel <= 0 is refused naming the
   file and line;
-- the 2-D route takes the same file (Finlayson's constraint in perspective);
+- the 2-D route takes the same file (Finlayson's constraint in perspective), and so does
+  `select --space 3d` (F3 ∩ cone: all of F3 when the truth is plausible, {0} when no light is);
 - `benchmark` with the constrained methods: the constrained set is a subset of the unconstrained
   one (a truth in it is in F too), and every method's answered + empty + unanswered_other is the
   number of images.
@@ -118,7 +119,19 @@ def main():
             for row in csv.DictReader(x for x in open(table) if not x.startswith("#")):
                 expect(int(row["answered"]) + int(row["empty"]) + int(row["unanswered_other"]) == 9, row)
 
-        r.check_all(constrained_estimate_recovers_the_truth, implausible_lights_say_so, a_bad_light_names_its_line,
+        def select_3d_takes_the_constraint():
+            image_csv = r.file("r,g,b\n" + "".join(f"{s[0] * e[0]},{s[1] * e[1]},{s[2] * e[2]}\n" for s in surfaces))
+            free = r.json("select", "--space", "3d", "--canonical", canonical, "--image", image_csv)
+            near_doc = r.json("select", "--space", "3d", "--canonical", canonical, "--image", image_csv,
+                              "--illuminants", near)
+            # F3 is the segment from 0 towards c ⊘ e, inside the cone: the constraint keeps it all.
+            expect(near_doc["feasible_set"]["vertices"] == free["feasible_set"]["vertices"], near_doc["feasible_set"])
+            far_doc = r.json("select", "--space", "3d", "--canonical", canonical, "--image", image_csv,
+                             "--illuminants", far)
+            expect(far_doc["feasible_set"]["kind"] == "point" and
+                   far_doc["feasible_set"]["vertices"] == [["0", "0", "0"]], far_doc["feasible_set"])
+
+        r.check_all(select_3d_takes_the_constraint, constrained_estimate_recovers_the_truth, implausible_lights_say_so, a_bad_light_names_its_line,
                     the_2d_route_takes_the_file, benchmark_constrained_methods)
         return r.finish()
 

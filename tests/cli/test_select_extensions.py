@@ -126,8 +126,9 @@ def main():
                 expect(lo <= x <= hi, mv)
 
         def crule_3d_rejects_2d_options():
+            # (--illuminants applies to --space 3d too since issue 45: tests/cli/test_constrained.py.)
             for extra in (["--expand", "0.1", "--expand-policy", "multiplicative"],
-                          ["--on-empty", "min-violation"], ["--illuminants", square]):
+                          ["--on-empty", "min-violation"]):
                 rc, out, err = r.run("--space", "3d", "--canonical", cube, "--image", one, *extra)
                 expect(rc == 2 and out == "" and "3d" in err, (extra, rc, out, err))
             rc, out, err = r.run("--space", "3d", "--canonical", cube, "--image",
