@@ -188,6 +188,26 @@ std::vector<Point3> hull_candidates(const std::vector<Colour>& image) {
   return out;
 }
 
+// Throws UnboundedFeasibleSet when a channel of P, the image's largest channels, is 0 (that map
+// component is unconstrained).
+void require_bounded(const Point3& P) {
+  for (int k = 0; k < 3; ++k)
+    if (sgn(coord(P, k)) == 0)
+      throw UnboundedFeasibleSet(std::string("every image colour has ") + "rgb"[k] +
+                                 " = 0: that map component is unconstrained and the feasible "
+                                 "set is unbounded");
+}
+
+// The box 0 <= d_k <= X_k/P_k of one type (X its canonical gamut's largest channels, P its image's)
+// met with `box`, the smallest over the types so far. \throws as require_bounded.
+void shrink_box(std::optional<Point3>& box, const CanonicalPlanes3& c, const Point3& P) {
+  require_bounded(P);
+  const Point3 b{Rational(c.max.x / P.x), Rational(c.max.y / P.y), Rational(c.max.z / P.z)};
+  if (!box) box = b;
+  else
+    for (int k = 0; k < 3; ++k) coord(*box, k) = std::min(coord(*box, k), coord(b, k));
+}
+
 // Below this many colours every distinct colour is kept: a colour that is no hull vertex gives
 // only rows implied by the others (F3 is the same set), and the clip dismisses each such row in
 // one box test or one pass over the vertices, which costs less than an exact hull.
@@ -295,15 +315,7 @@ LazyConvexSet3 feasible_set_3d_lazy(const std::vector<GamutConstraint3>& constra
     points.push_back(internal::image_points(*g.image, g.hull_vertices));
     Point3 P{0, 0, 0};
     for (const Point3& p : points.back()) P.x = std::max(P.x, p.x), P.y = std::max(P.y, p.y), P.z = std::max(P.z, p.z);
-    for (int k = 0; k < 3; ++k)
-      if (sgn(coord(P, k)) == 0)
-        throw UnboundedFeasibleSet(std::string("every image colour has ") + "rgb"[k] +
-                                   " = 0: that map component is unconstrained and the feasible "
-                                   "set is unbounded");
-    const Point3 b{Rational(c.max.x / P.x), Rational(c.max.y / P.y), Rational(c.max.z / P.z)};
-    if (!box) box = b;
-    else
-      for (int k = 0; k < 3; ++k) coord(*box, k) = std::min(coord(*box, k), coord(b, k));
+    internal::shrink_box(box, c, P);
     all_full = all_full && c.dimension == 3;
   }
   if (all_full) {
@@ -375,14 +387,9 @@ bool feasible_set_3d_meets_ray(const std::vector<GamutConstraint3>& constraints,
   for (const GamutConstraint3& g : constraints) {
     const internal::CanonicalPlanes3& c = internal::FeasibleSet3Access::planes(*g.canonical);
     const std::vector<Point3> points = internal::image_points(*g.image, g.hull_vertices);
-    bool bounded[3] = {false, false, false};  // as feasible_set_3d: every colour 0 in a channel
-    for (const Point3& p : points)
-      for (int k = 0; k < 3; ++k) bounded[k] = bounded[k] || sgn(coord(p, k)) > 0;
-    for (int k = 0; k < 3; ++k)
-      if (!bounded[k])
-        throw UnboundedFeasibleSet(std::string("every image colour has ") + "rgb"[k] +
-                                   " = 0: that map component is unconstrained and the feasible "
-                                   "set is unbounded");
+    Point3 P{0, 0, 0};  // as feasible_set_3d: every colour 0 in a channel leaves F3 unbounded
+    for (const Point3& p : points) P.x = std::max(P.x, p.x), P.y = std::max(P.y, p.y), P.z = std::max(P.z, p.z);
+    internal::require_bounded(P);
     std::vector<internal::IntegerPlane3> own;  // the prepared integer planes exist in 3-D only
     if (c.dimension != 3)
       for (const internal::HalfSpace3& h : c.half_spaces) own.push_back(internal::integer_plane(h));
@@ -412,15 +419,7 @@ Point3 feasible_set_3d_box(const std::vector<GamutConstraint3>& constraints) {
     const internal::CanonicalPlanes3& c = internal::FeasibleSet3Access::planes(*g.canonical);
     Point3 P{0, 0, 0};
     for (const Colour& p : *g.image) P.x = std::max(P.x, p.r), P.y = std::max(P.y, p.g), P.z = std::max(P.z, p.b);
-    for (int k = 0; k < 3; ++k)
-      if (sgn(coord(P, k)) == 0)
-        throw UnboundedFeasibleSet(std::string("every image colour has ") + "rgb"[k] +
-                                   " = 0: that map component is unconstrained and the feasible "
-                                   "set is unbounded");
-    const Point3 b{Rational(c.max.x / P.x), Rational(c.max.y / P.y), Rational(c.max.z / P.z)};
-    if (!box) box = b;
-    else
-      for (int k = 0; k < 3; ++k) coord(*box, k) = std::min(coord(*box, k), coord(b, k));
+    internal::shrink_box(box, c, P);
   }
   return *box;
 }

@@ -74,6 +74,14 @@ class Tally:
         return 1 if self.failed else 0
 
 
+def angle(u, v):
+    """The angle in degrees between two 3-vectors (atan2 of |u×v| and u·v), in floats."""
+    import math
+    dot = sum(a * b for a, b in zip(u, v))
+    cross = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+    return math.degrees(math.atan2(math.sqrt(sum(c * c for c in cross)), dot))
+
+
 def expect(cond, what):
     if not cond:
         raise AssertionError(what)

@@ -28,15 +28,8 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "support"))
-from cli_harness import Runner, expect  # noqa: E402
+from cli_harness import Runner, angle, expect  # noqa: E402
 from png16 import write_png16  # noqa: E402
-
-
-def angle(u, v):
-    import math
-    dot = sum(a * b for a, b in zip(u, v))
-    cross = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
-    return math.degrees(math.atan2(math.sqrt(sum(c * c for c in cross)), dot))
 
 
 def main():
