@@ -165,10 +165,9 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
       ->check(CLI::IsMember({"drop", "reject"}))
       ->capture_default_str();
   cmd->add_option("--illuminants", o.illuminants_path,
-                  "plausible lights, one r,g,b per line (as the camera sees them): keep only the "
-                  "maps in the convex hull of their maps c ⊘ e (Finlayson 1996); c is "
-                  "--canonical-illuminant, so give it too. --space 3d: F3 within the cone of their "
-                  "maps (Barnard's ECRULE), c white");
+                  "plausible lights, one r,g,b per line: keep only the maps in the hull of their maps "
+                  "c ⊘ e (Finlayson 1996; c is --canonical-illuminant, give it too); --space 3d: F3 "
+                  "within the cone of their maps (Barnard's ECRULE), c white");
   cmd->add_option("--truth", o.truth,
                   "r,g,b of the true light under which the image was taken (as the camera sees "
                   "it): adds each rule's map-space, illuminant and reproduction errors against "
