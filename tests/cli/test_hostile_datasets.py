@@ -21,7 +21,7 @@ import tempfile
 import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from cli_harness import Runner, expect  # noqa: E402
+from cli_harness import Runner, expect, memory_limit  # noqa: E402
 
 # MATLAB 5 data types and array classes (MAT-File Format, tables 1-1 and 1-3).
 miINT8, miUINT8, miINT32, miUINT32, miDOUBLE, miMATRIX, miCOMPRESSED = 1, 2, 5, 6, 9, 14, 15
@@ -127,11 +127,11 @@ def main():
             v = nus_variables(names)
             v[0] = big
             d = nus_folder(mat_file(v))
-            refused(d, "Cam_gt.mat", "claim", prefix=["--memory-limit", "400"])
+            refused(d, "Cam_gt.mat", "claim", prefix=memory_limit(binary, 400))
             # A cell array declaring 10^8 cells.
             v = nus_variables(names)
             v[4] = matrix("all_image_names", mxCELL, [10000, 10000], chars("x"))
-            refused(nus_folder(mat_file(v)), "Cam_gt.mat", "claim", prefix=["--memory-limit", "400"])
+            refused(nus_folder(mat_file(v)), "Cam_gt.mat", "claim", prefix=memory_limit(binary, 400))
 
         def compressed_zeros():
             # 64 MB of zeros (about 64 KB compressed) declared as a uint8 matrix: refused at the
@@ -144,7 +144,7 @@ def main():
             packed = z.compress(inner) + z.compress(b"\0" * n) + z.flush()
             v = nus_variables(names)
             content = mat_file(v[:1]) + struct.pack("<II", miCOMPRESSED, len(packed)) + packed
-            refused(nus_folder(content), "Cam_gt.mat", "16 MiB", prefix=["--memory-limit", "400"])
+            refused(nus_folder(content), "Cam_gt.mat", "16 MiB", prefix=memory_limit(binary, 400))
 
         def byte_flips():
             # 80 copies of a valid file with 1 to 8 random bytes changed (seeded): each ends with an
@@ -315,7 +315,7 @@ def main():
                 h = json.loads(part[1])
                 h["benchmark"]["images"] = 10 ** 8
                 part[1] = json.dumps(h)
-            (rc, out, err), p = merge(forged[0], part1=forged[1], limit=["--memory-limit", "400"])
+            (rc, out, err), p = merge(forged[0], part1=forged[1], limit=memory_limit(binary, 400))
             one_line(rc, out, err, "shard is missing")
             # A negative error, an image renamed in one of its records, a negative fold.
             for field, value, word in (("error_deg", -3.0, "angle"), ("image", "PNG/renamed.PNG", "earlier record"),

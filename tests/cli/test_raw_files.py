@@ -31,7 +31,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "support"))
-from cli_harness import Runner, expect  # noqa: E402
+from cli_harness import Runner, expect, memory_limit  # noqa: E402
 from dng import write_dng  # noqa: E402
 from png16 import write_png16  # noqa: E402
 
@@ -215,7 +215,7 @@ def main():
             big = os.path.join(tmp, "declares_big.dng")
             with open(big, "wb") as f:
                 f.write(b)
-            rc, out, err = r.run("--memory-limit", "400", "estimate", "--canonical", canonical, big, prefix=[])
+            rc, out, err = r.run(*memory_limit(binary, 400), "estimate", "--canonical", canonical, big, prefix=[])
             expect(rc == 2 and err.count("\n") == 1 and "4096:1" in err and big in err, (rc, err))
 
         r.check_all(dng_equals_png, levels_override_metadata, benchmark_on_dngs, unreadable_files, header_bound)
