@@ -51,25 +51,8 @@ Settings settings_of(const EstimateOptions& o) {
   s.scene.expansion = expansion_option(o.expand_factor, o.expand_policy);
   s.scene.on_empty = recovery_policy_from_string(o.on_empty);
   s.scene.illuminant_worst_case = o.illuminant_worst_case != "off";
-  if (!o.illuminants_path.empty()) {
-    const ColourTable lights = read_colour_csv(o.illuminants_path);
-    require_pixel_colours(lights, "--illuminants");
-    for (std::size_t i = 0; i < lights.colours.size(); ++i) {
-      const Colour& l = lights.colours[i];
-      if (sgn(l.r) <= 0 || sgn(l.g) <= 0 || sgn(l.b) <= 0)
-        throw InputError(o.illuminants_path, lights.lines[i], "a plausible light needs every channel > 0");
-    }
-    s.scene.illuminants = lights.colours;
-  }
+  if (!o.illuminants_path.empty()) s.scene.illuminants = plausible_lights(o.illuminants_path);
   return s;
-}
-
-// The light a perspective map m implies under the canonical light c: d = (m1, m2, 1) takes the
-// image to the canonical colours, so e = c ⊘ d = (c1/m1, c2/m2, c3), here with unit length;
-// absent unless m > 0. The lift taken exactly: light_of_map_3's scaling, any magnitude.
-std::optional<std::array<double, 3>> light_of(const std::array<double, 2>& m, const Colour& c) {
-  if (!(m[0] > 0 && m[1] > 0)) return std::nullopt;
-  return light_of_map_3(Point3{Rational(m[0]), Rational(m[1]), Rational(1)}, c);
 }
 
 // The white-balanced image under the diagonal map m (2-D: (m1, m2, 1)): every kept channel
@@ -465,7 +448,7 @@ int run_estimate(const EstimateOptions& o) {
       const std::optional<Selection>& sel = result.selections[k];
       if (!sel || !sel->estimate.valid) continue;
       const std::string key = to_string(k);
-      const std::optional<std::array<double, 3>> light = light_of(sel->estimate.map, prepared.options.canonical_illuminant);
+      const std::optional<std::array<double, 3>> light = light_of_perspective_map(sel->estimate.map, prepared.options.canonical_illuminant);
       if (!light) continue;  // a map component <= 0: no light
       const std::array<double, 3>& e = *light;
       estimates[key] = {{"map", sel->estimate.map}, {"light", e}};

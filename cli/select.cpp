@@ -95,6 +95,17 @@ void reject_inapplicable(const SelectOptions& o) {
 
 }  // namespace
 
+std::vector<Colour> plausible_lights(const std::string& path) {
+  const ColourTable lights = read_colour_csv(path);
+  require_pixel_colours(lights, "--illuminants");
+  for (std::size_t i = 0; i < lights.colours.size(); ++i) {
+    const Colour& l = lights.colours[i];
+    if (sgn(l.r) <= 0 || sgn(l.g) <= 0 || sgn(l.b) <= 0)
+      throw InputError(path, lights.lines[i], "a plausible light needs every channel > 0");
+  }
+  return lights.colours;
+}
+
 Colour light_option(const std::string& name, const std::string& text) {
   try {
     const ColourTable c = parse_colour_csv(text, name);

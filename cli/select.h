@@ -50,6 +50,10 @@ struct SelectOptions {
 /// every channel > 0. \throws InputError naming the option and quoting the text.
 Colour light_option(const std::string& name, const std::string& text);
 
+/// The plausible lights of an --illuminants file for the 3-D illumination constraint: pixel
+/// colours, every channel > 0. \throws InputError naming the file and the line of a bad light.
+std::vector<Colour> plausible_lights(const std::string& path);
+
 /// Register the subcommand and its options on `app`; returns the subcommand.
 CLI::App* add_select_command(CLI::App& app, SelectOptions& options);
 

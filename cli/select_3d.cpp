@@ -46,17 +46,11 @@ Json selection_json(const Selection3& s) {
 // max-volume and the centroid exact, as crule_3d.
 Crule3d constrained_crule_3d(const ColourTable& canonical, const ColourTable& image, CanonicalBlack black,
                              const std::string& lights_path) {
-  const ColourTable lights = read_colour_csv(lights_path);
-  require_pixel_colours(lights, "--illuminants");
-  for (std::size_t i = 0; i < lights.colours.size(); ++i) {
-    const Colour& l = lights.colours[i];
-    if (sgn(l.r) <= 0 || sgn(l.g) <= 0 || sgn(l.b) <= 0)
-      throw InputError(lights_path, lights.lines[i], "a plausible light needs every channel > 0");
-  }
+  const std::vector<Colour> lights = plausible_lights(lights_path);
   const CanonicalConstraints3 prepared(canonical.colours, black);
   std::vector<GamutConstraint3> types{{&prepared, &image.colours}};
   const CanonicalConstraints3 cone =
-      illumination_cone_3d(lights.colours, Colour{Rational(1), Rational(1), Rational(1)}, feasible_set_3d_box(types));
+      illumination_cone_3d(lights, Colour{Rational(1), Rational(1), Rational(1)}, feasible_set_3d_box(types));
   types.push_back({&cone, &illumination_cone_colour()});
   const LazyConvexSet3 F = feasible_set_3d_lazy(types);
   Crule3dSelections s = crule_3d_selections(F, Crule3dRoute::exact);

@@ -53,6 +53,11 @@ std::optional<std::array<double, 3>> light_of_map_3(const Point3& d, const Colou
   return std::array<double, 3>{v[0] / n, v[1] / n, v[2] / n};
 }
 
+std::optional<std::array<double, 3>> light_of_perspective_map(const std::array<double, 2>& m, const Colour& c) {
+  if (!(m[0] > 0 && m[1] > 0)) return std::nullopt;
+  return light_of_map_3(Point3{Rational(m[0]), Rational(m[1]), Rational(1)}, c);
+}
+
 double recovery_angular_error_deg(const std::array<double, 3>& estimate, const Colour& truth) {
   return diagonal_map_angular_error_deg({estimate[0], estimate[1], estimate[2]},
                                         {truth.r, truth.g, truth.b});

@@ -153,37 +153,33 @@ FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, c
 }
 
 // A 3-D estimate from some gamut types' constraints, with the truth's errors and whether the
-// true light's map lies in F3 (estimate_3d.h); no estimate when F3 is unbounded.
-struct Estimate3InF {
-  std::optional<ImageEstimate3> estimate;
-};
-Estimate3InF estimate_in_f(const std::vector<GamutConstraint3>& types, const std::vector<Rule3>& rules,
-                           const Colour& e, const std::vector<Colour>& plausible = {}) {
-  Estimate3InF out;
+// true light's map lies in F3 (estimate_3d.h); none when F3 is unbounded.
+std::optional<ImageEstimate3> estimate_in_f(const std::vector<GamutConstraint3>& types, const std::vector<Rule3>& rules,
+                                            const Colour& e, const std::vector<Colour>& plausible = {}) {
   Estimate3Options eo;
   eo.rules = rules;
   eo.truth = e;
   eo.illuminants = plausible;
   try {
-    out.estimate = estimate_3d(types, eo);
-  } catch (const UnboundedFeasibleSet&) {  // unbounded F3: no estimate
+    return estimate_3d(types, eo);
+  } catch (const UnboundedFeasibleSet&) {
+    return std::nullopt;
   }
-  return out;
 }
 
 // One 3-D rule's record from an estimate (light absent where the rule gave none).
-BenchmarkRecord record_3d(const char* method, const Estimate3InF& est, Rule3 rule) {
+BenchmarkRecord record_3d(const char* method, const std::optional<ImageEstimate3>& est, Rule3 rule) {
   BenchmarkRecord rec;
   rec.method = method;
-  if (!est.estimate) {
+  if (!est) {
     rec.unanswered = "unbounded";
     return rec;
   }
-  rec.feasible_kind = to_string(est.estimate->lazy_feasible.kind());
-  rec.feasible_vertices = est.estimate->lazy_feasible.size();
-  rec.truth_in_feasible = est.estimate->truth_in_feasible;
+  rec.feasible_kind = to_string(est->lazy_feasible.kind());
+  rec.feasible_vertices = est->lazy_feasible.size();
+  rec.truth_in_feasible = est->truth_in_feasible;
   rec.worst_case_space = "map";
-  const std::optional<ImageSelection3>& s = (*est.estimate)[rule];
+  const std::optional<ImageSelection3>& s = (*est)[rule];
   if (s) rec.worst_case_deg = s->selection.worst_case_deg;
   if (s && s->light) {
     rec.light = s->light;
@@ -204,7 +200,7 @@ std::vector<BenchmarkRecord> records_3d(const FoldCanonicals& c, const Reduced& 
     for (Rule3 rule : all_rules_3)
       if ((constrained ? n.rule3c : n.rule3)[static_cast<int>(rule)]) rules.push_back(rule);
     if (rules.empty()) continue;
-    const Estimate3InF est =
+    const std::optional<ImageEstimate3> est =
         estimate_in_f({{&*c.gamut3, &r.hull3}}, rules, e, constrained ? c.lights : std::vector<Colour>{});
     for (Rule3 rule : rules)
       out.push_back(record_3d((constrained ? kGm3dConstrained : kGm3d)[static_cast<int>(rule)], est, rule));
@@ -265,9 +261,7 @@ std::vector<BenchmarkRecord> records_2d(const FoldCanonicals& c, const Reduced& 
       rec.unanswered = scene->feasible.kind == ConvexKind::empty ? "empty" : "no_positive_map";
       const std::optional<Selection>& s = scene->selections[k];
       if (s && s->estimate.valid && s->estimate.map[0] > 0 && s->estimate.map[1] > 0) {
-        // e = c ⊘ (m1, m2, 1), c white, unit length (any magnitude of m).
-        rec.light = light_of_map_3(Point3{Rational(s->estimate.map[0]), Rational(s->estimate.map[1]), Rational(1)},
-                                   Colour{Rational(1), Rational(1), Rational(1)});
+        rec.light = light_of_perspective_map(s->estimate.map, Colour{Rational(1), Rational(1), Rational(1)});
         rec.answered = true;
         rec.unanswered.clear();
         // The illuminant-space worst case, or, where F or the map touches an axis (lights

@@ -119,6 +119,11 @@ ImageEstimate3 estimate_3d(const std::vector<GamutConstraint3>& constraints, con
 /// a NaN. O(1).
 std::optional<std::array<double, 3>> light_of_map_3(const Point3& d, const Colour& canonical_light);
 
+/// The light a perspective map m implies (the 2-D route: d = (m1, m2, 1), e = c ⊘ d), unit
+/// length, by light_of_map_3 on the lift taken exactly; absent unless m1, m2 > 0. O(1).
+std::optional<std::array<double, 3>> light_of_perspective_map(const std::array<double, 2>& m,
+                                                              const Colour& canonical_light);
+
 /// The recovery angular error (degrees) between a light estimate and the true light: the angle
 /// between them as 3-vectors (Hordley & Finlayson 2006), computed as every angle in gmcc
 /// (angular_error.h) from the exact truth and the estimate taken exactly. \throws
