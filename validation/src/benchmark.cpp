@@ -12,6 +12,7 @@
 #include <gmcc/photo/edge_colours.h>
 #include <gmcc/photo/estimate_3d.h>
 #include <gmcc/photo/grey_edge.h>
+#include <gmcc/selection/gcie.h>
 #include <gmcc/selection/prepare_canonical.h>
 #include <gmcc/selection/select_scene.h>
 
@@ -81,6 +82,7 @@ const std::vector<std::string>& benchmark_methods() {
     names.insert(names.end(), std::begin(kEdge), std::end(kEdge));
     for (const char* c : {kGm3dConstrained[2], kGm3dConstrained[0], kGm3dConstrained[1]}) names.push_back(c);
     for (Rule rule : all_rules) names.push_back(gm2d_constrained_method(rule));
+    names.push_back(kGcie);
     return names;
   }();
   return m;
@@ -105,12 +107,13 @@ struct FoldCanonicals {
   std::optional<PreparedCanonical> gamut2;
   std::vector<Colour> lights;  // the training images' lights: the constrained methods' plausible lights
   std::optional<PreparedCanonical> gamut2c;  // gamut2 with the illumination constraint of `lights`
+  std::optional<GcieGamuts> gcie;  // GCIE: the canonical gamut (the training colours' perspective hull) under each light
 };
 
 FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, const std::vector<Reduced>& reduced,
                           const BenchmarkOptions& o, const Needs& n) {
   CanonicalLearner3 learner3(o.intensity);
-  CanonicalLearner2 learner2;
+  CanonicalLearner2 learner2, learner_gcie;
   // Edge colours scaled by their image's pixel factor (learn_canonical.h).
   CanonicalLearner3 edges[2];
   std::size_t training = 0;
@@ -119,6 +122,7 @@ FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, c
     ++training;
     if (n.gm3d) learner3.add(reduced[i].hull3, images[i].light);
     if (n.gm2d) learner2.add(reduced[i].lifts, images[i].light);
+    if (n.gcie) learner_gcie.add(reduced[i].hull3, images[i].light);
     if (!n.order[0] && !n.order[1]) continue;
     Rational scale(1);
     if (o.intensity == CanonicalIntensity::max) scale = white_balanced_maximum(reduced[i].hull3, images[i].light);
@@ -129,7 +133,8 @@ FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, c
   if (training == 0) throw std::invalid_argument("fold " + std::to_string(fold) + " has no training image (one fold only)");
   // Training images that give only black (a black level or saturation that leaves no colour):
   // no canonical gamut can be learned, a fault of the input, not of the program.
-  if ((n.gm3d && learner3.contributing() == 0) || (n.gm2d && learner2.gamut().empty()))
+  if ((n.gm3d && learner3.contributing() == 0) || (n.gm2d && learner2.gamut().empty()) ||
+      (n.gcie && learner_gcie.gamut().empty()))
     throw InputError("fold " + std::to_string(fold), 0,
                      "its " + std::to_string(training) + " training images give no colour above black (the black "
                      "level, saturation and dark rules leave none): no canonical gamut can be learned");
@@ -137,6 +142,7 @@ FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, c
   for (std::size_t i = 0; i < images.size(); ++i)
     if (images[i].fold != fold) c.lights.push_back(images[i].light);
   if (n.gm3d) c.gamut3.emplace(learner3.gamut(), o.black);
+  if (n.gcie) c.gcie.emplace(learner_gcie.gamut(), Colour{Rational(1), Rational(1), Rational(1)}, c.lights);
   for (int k = 0; k < 2; ++k)
     if (n.order[k] && edges[k].contributing() > 0) c.edges[k].emplace(edges[k].gamut(), o.black);
   if (n.gm2d) {
@@ -282,6 +288,29 @@ std::vector<BenchmarkRecord> records_2d(const FoldCanonicals& c, const Reduced& 
   return out;
 }
 
+// A light as doubles of unit length (each channel the nearest double, then normalised).
+std::array<double, 3> unit_light(const Colour& l) {
+  std::array<double, 3> v{to_double_nearest(l.r), to_double_nearest(l.g), to_double_nearest(l.b)};
+  const double norm = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  for (double& x : v) x /= norm;
+  return v;
+}
+
+// GCIE's record of one image: the fold's training light whose gamut is most consistent with the
+// image's colours (gcie.h); no light when the image kept no colour.
+BenchmarkRecord record_gcie(const FoldCanonicals& c, const Reduced& r) {
+  BenchmarkRecord rec;
+  rec.method = kGcie;
+  if (r.hull3.empty()) {
+    rec.unanswered = "no_light";
+    return rec;
+  }
+  const Colour& l = c.lights[c.gcie->select(r.hull3).light];
+  rec.light = unit_light(l);
+  rec.answered = true;
+  return rec;
+}
+
 // Every method's record of image i, in the order asked: grey world where a method gave no light,
 // and the error against the measured light.
 std::vector<BenchmarkRecord> records_of(std::size_t i, const FoldCanonicals& c, const Reduced& r, const Colour& e,
@@ -297,6 +326,7 @@ std::vector<BenchmarkRecord> records_of(std::size_t i, const FoldCanonicals& c, 
   keep(records_edges(c, r, e, n));
   if (n.gm2d) keep(records_2d(c, r, e, n, false));
   if (n.gm2dc) keep(records_2d(c, r, e, n, true));
+  if (n.gcie) keep({record_gcie(c, r)});
   for (std::size_t b = 0; b < all_baselines.size(); ++b) {
     BenchmarkRecord rec;
     rec.method = baseline_method(b);

@@ -46,6 +46,7 @@ Needs needs_of(const std::vector<std::string>& methods) {
       if (m == kGm3dConstrained[k]) n.gm3d = n.rule3c[k] = known = true;
     for (Rule rule : all_rules)
       if (m == gm2d_constrained_method(rule)) n.gm2d = n.gm2dc = n.rule2c[rule] = known = true;
+    if (m == kGcie) n.gcie = known = true;
     // An edge-based method needs the pixel colours too: their scale is its edge colours' scale.
     for (int k = 0; k < 4; ++k)
       if (m == kEdge[k]) {
@@ -95,7 +96,7 @@ Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs&
   }
   if (kept.counts.kept == 0)
     throw InputError(im.path, 0, "no usable pixel after the mask, saturation and dark or bright rules");
-  if (n.gm3d) {
+  if (n.gm3d || n.gcie) {
     rules.colour_set = ColourSet::hull_3d;
     r.hull3 = image_colours(image, rules).colours;
   }

@@ -20,6 +20,8 @@ namespace gmcc::internal {
 inline const char* const kGm3d[3] = {"gm3d-max-volume", "gm3d-centroid", "gm3d-max-trace"};
 inline const char* const kGm3dConstrained[3] = {"gm3d-max-volume-constrained", "gm3d-centroid-constrained",
                                                 "gm3d-max-trace-constrained"};
+// Gamut-constrained illuminant estimation among the fold's training lights (gcie.h).
+inline const char* const kGcie = "gcie";
 // A key with dashes for underscores: how methods are named.
 inline std::string dashed(std::string key) {
   std::replace(key.begin(), key.end(), '_', '-');
@@ -53,6 +55,7 @@ struct Needs {
   std::array<bool, 3> rule3c{};
   PerRule<bool> rule2c{};
   bool gm2dc = false;
+  bool gcie = false;  // the pixel colours' 3-D hull and the canonical perspective chromaticities
   std::array<bool, 4> edge{};  // the edge-based methods
   std::array<bool, 2> order{};  // the 1st- and 2nd-order edge colours and canonical gamuts
   std::array<bool, all_baselines.size()> baseline{};
