@@ -286,7 +286,9 @@ CLI::App* add_benchmark_command(CLI::App& app, BenchmarkCliOptions& o) {
                   "the illumination constraint of the fold's training lights: gm3d-max-trace-constrained, "
                   "gm3d-max-volume-constrained, gm3d-centroid-constrained (F3 within the cone of their maps, "
                   "Barnard's ECRULE), gm2d-max-area-constrained, gm2d-mean-2d-constrained, "
-                  "gm2d-mean-3d-constrained (F within the hull of their perspective maps)")
+                  "gm2d-mean-3d-constrained (F within the hull of their perspective maps), and gcie (Finlayson, "
+                  "Hordley & Tastl's gamut-constrained illuminant estimation: the training light whose gamut is "
+                  "most consistent with the image)")
       ->delimiter(',')
       ->check(CLI::IsMember(benchmark_methods()));
   cmd->add_option("--intensity", o.intensity, "3-D canonical learning: max or none (as gmcc canonical)")

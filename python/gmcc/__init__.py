@@ -925,7 +925,8 @@ def benchmark(images, truths, *, folds=None, folds_file=None, methods=None, inte
         rule with the illumination constraint of the fold's training lights:
         ``gm3d-max-trace-constrained``, ``gm3d-max-volume-constrained``,
         ``gm3d-centroid-constrained``, ``gm2d-max-area-constrained``, ``gm2d-mean-2d-constrained``,
-        ``gm2d-mean-3d-constrained`` (docs/photographs.md §7a).
+        ``gm2d-mean-3d-constrained``; and ``gcie``, Finlayson, Hordley & Tastl's (2006)
+        classification among the training lights (docs/photographs.md §7a, docs/math.md §1f).
     intensity : {'max', 'none'}, default 'max'
         How each training image is scaled before the 3-D union (``gmcc benchmark --intensity``):
         its largest white-balanced channel made 1, or as it is.

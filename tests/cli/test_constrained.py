@@ -13,7 +13,11 @@
   `select --space 3d` (F3 ∩ cone: all of F3 when the truth is plausible, {0} when no light is);
 - `benchmark` with the constrained methods: the constrained set is a subset of the unconstrained
   one (a truth in it is in F too), and every method's answered + empty + unanswered_other is the
-  number of images.
+  number of images;
+- `benchmark --methods gcie` (Finlayson, Hordley & Tastl's classification, docs/math.md §1f): on
+  images of every canonical surface under one of three lights, each light in every fold, the
+  light chosen is the image's own (only it maps the surfaces' extreme chromaticities into the
+  canonical gamut), and on the random dataset every light chosen is a training light.
 
     test_constrained.py GMCC_BINARY
 """
@@ -37,6 +41,7 @@ def main():
     rng = random.Random(45)
     with tempfile.TemporaryDirectory() as tmp:
         r = Runner(binary, tmp)
+        os.mkdir(os.path.join(tmp, "gcie"))
         surfaces = [(rng.randint(20, 300), rng.randint(20, 300), rng.randint(20, 300)) for _ in range(12)]
         canonical = r.file("r,g,b\n" + "".join(f"{a},{b},{c}\n" for a, b, c in surfaces))
         e = (30, 40, 50)
@@ -95,7 +100,9 @@ def main():
                 write_png16(os.path.join(tmp, name), rows)
                 names.append(name)
                 lights.append(light)
-            truths = r.file("image,r,g,b\n" + "".join(f"{n},{a},{b},{c}\n" for n, (a, b, c) in zip(names, lights)))
+            truths = os.path.join(tmp, "bench_truths.csv")
+            with open(truths, "w") as f:
+                f.write("image,r,g,b\n" + "".join(f"{n},{a},{b},{c}\n" for n, (a, b, c) in zip(names, lights)))
             rec, table = os.path.join(tmp, "c.jsonl"), os.path.join(tmp, "c.csv")
             methods = ["gm3d-max-trace", "gm3d-max-trace-constrained", "gm3d-centroid-constrained",
                        "gm2d-mean-2d", "gm2d-mean-2d-constrained"]
@@ -112,6 +119,37 @@ def main():
             for row in csv.DictReader(x for x in open(table) if not x.startswith("#")):
                 expect(int(row["answered"]) + int(row["empty"]) + int(row["unanswered_other"]) == 9, row)
 
+        def benchmark_gcie():
+            three = [(30, 40, 50), (50, 35, 20), (25, 50, 45)]
+            names, lights = [], []
+            for i in range(9):
+                light = three[i // 3]
+                rows = [[tuple(s[k] * light[k] for k in range(3)) for s in surfaces[:6]],
+                        [tuple(s[k] * light[k] for k in range(3)) for s in surfaces[6:]]]
+                name = f"g{i}.png"
+                write_png16(os.path.join(tmp, "gcie", name), rows)
+                names.append(name)
+                lights.append(light)
+            truths = r.file("image,r,g,b\n" + "".join(f"{n},{a},{b},{c}\n" for n, (a, b, c) in zip(names, lights)))
+            rec = os.path.join(tmp, "g.jsonl")
+            rc, out, err = r.run("benchmark", "--images", os.path.join(tmp, "gcie"), "--truths", truths, "--folds", "3",
+                                 "--methods", "gcie,grey-world", "--records", rec, "--no-progress")
+            expect(rc == 0, err)
+            records = [json.loads(x) for x in open(rec)][2:]
+            for x in records:
+                if x["method"] == "gcie":
+                    expect(x["answered"] and x["error_deg"] < 1e-6, x)
+            # The random dataset of benchmark_constrained_methods: each choice is a training light.
+            truths_b = [tuple(int(v) for v in line.split(",")[1:]) for line in
+                        open(os.path.join(tmp, "bench_truths.csv")).read().splitlines()[1:]]
+            rc, out, err = r.run("benchmark", "--images", tmp, "--truths", os.path.join(tmp, "bench_truths.csv"),
+                                 "--folds", "3", "--methods", "gcie", "--records", rec, "--no-progress")
+            expect(rc == 0, err)
+            for x in [json.loads(x) for x in open(rec)][2:]:
+                fold = x["index"] % 3
+                training = [t for i, t in enumerate(truths_b) if i % 3 != fold]
+                expect(any(angle(x["light"], t) < 1e-6 for t in training), x)
+
         def select_3d_takes_the_constraint():
             image_csv = r.file("r,g,b\n" + "".join(f"{s[0] * e[0]},{s[1] * e[1]},{s[2] * e[2]}\n" for s in surfaces))
             free = r.json("select", "--space", "3d", "--canonical", canonical, "--image", image_csv)
@@ -125,7 +163,7 @@ def main():
                    far_doc["feasible_set"]["vertices"] == [["0", "0", "0"]], far_doc["feasible_set"])
 
         r.check_all(select_3d_takes_the_constraint, constrained_estimate_recovers_the_truth, implausible_lights_say_so, a_bad_light_names_its_line,
-                    the_2d_route_takes_the_file, benchmark_constrained_methods)
+                    the_2d_route_takes_the_file, benchmark_constrained_methods, benchmark_gcie)
         return r.finish()
 
 

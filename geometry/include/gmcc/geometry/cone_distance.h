@@ -35,6 +35,7 @@ class PolygonalCone {
   /// Complexity O(m) exact operations for m generators.
   explicit PolygonalCone(std::vector<Point3> generators);
 
+  /// The extreme rays g_k, in the order given.
   const std::vector<Point3>& generators() const { return g_; }
 
   /// p ∈ K, exactly. For m >= 3: n_k · p >= 0 for every facet normal, each sign decided in

@@ -33,6 +33,7 @@ class GcieGamuts {
   GcieSelection select(const std::vector<Colour>& image_colours) const;
   /// gcie_score of light i (< lights().size()).
   Rational score(std::size_t i, const std::vector<Colour>& image_colours) const;
+  /// The plausible lights, in the order given (GcieSelection::light indexes them).
   const std::vector<Colour>& lights() const { return lights_; }
 
  private:
