@@ -232,7 +232,7 @@ CLI::App* add_estimate_command(CLI::App& app, EstimateOptions& o) {
   cmd->add_option("--rules", o.rules_3d,
                   "3d: the rules to apply, of max-volume, centroid, max-trace (default all)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"max-volume", "centroid", "max-trace"}));
+      ->check(CLI::IsMember(rule_3_labels()));
   cmd->add_option("--black", o.black, "3d: include or exclude black (0,0,0) in the canonical gamut")
       ->check(CLI::IsMember({"include", "exclude"}))
       ->capture_default_str();
@@ -325,7 +325,8 @@ void constraint_outcome(std::ostream& text, Json& record, const CanonicalConstra
     plain.illuminants.clear();
     plain.truth.reset();
     plain.rules = {Rule3::max_trace};
-    const std::optional<ImageSelection3>& m = estimate_3d(prepared, colours, plain).max_trace;
+    const ImageEstimate3 unconstrained = estimate_3d(prepared, colours, plain);
+    const std::optional<ImageSelection3>& m = unconstrained[Rule3::max_trace];
     const bool f3_positive = m && m->light;
     c["unconstrained_positive_map"] = f3_positive;
     text << (f3_positive ? "  no light: F3 holds maps, none of a plausible light (F3 ∩ the cone of the "

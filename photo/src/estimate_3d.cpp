@@ -2,36 +2,12 @@
 
 #include <gmcc/geometry/feasible_ray_3d.h>
 #include <gmcc/geometry/illumination_cone_3d.h>
-#include <gmcc/selection/centroid_3.h>
-#include <gmcc/selection/max_trace.h>
-#include <gmcc/selection/max_volume.h>
-
-#include "internal/names.h"
 
 #include <climits>
 #include <cmath>
 #include <stdexcept>
 
 namespace gmcc {
-
-std::string to_string(Rule3 rule) {
-  switch (rule) {
-    case Rule3::max_volume: return "max_volume";
-    case Rule3::centroid: return "centroid";
-    case Rule3::max_trace: return "max_trace";
-  }
-  return "?";
-}
-
-Rule3 rule_3_from_string(const std::string& text) {
-  for (Rule3 r : all_rules_3)
-    if (internal::names_match(text, to_string(r))) return r;
-  throw std::invalid_argument("\"" + text + "\" is not one of max-volume, centroid, max-trace");
-}
-
-const std::optional<ImageSelection3>& ImageEstimate3::operator[](Rule3 rule) const {
-  return rule == Rule3::max_volume ? max_volume : rule == Rule3::centroid ? centroid : max_trace;
-}
 
 std::optional<std::array<double, 3>> light_of_map_3(const Point3& d, const Colour& c) {
   if (sgn(d.x) == 0 || sgn(d.y) == 0 || sgn(d.z) == 0) return std::nullopt;
@@ -79,8 +55,6 @@ ImageEstimate3 estimate_3d(const std::vector<GamutConstraint3>& constraints, con
     throw std::invalid_argument("the canonical light needs every channel > 0");
   if (o.truth && (sgn(o.truth->r) <= 0 || sgn(o.truth->g) <= 0 || sgn(o.truth->b) <= 0))
     throw std::invalid_argument("the true light needs every channel > 0");
-  bool want[3] = {false, false, false};
-  for (Rule3 r : o.rules) want[static_cast<int>(r)] = true;
 
   ImageEstimate3 out;
   // The true map c ⊘ e (its ray: F3 knows the light only up to intensity).
@@ -107,11 +81,9 @@ ImageEstimate3 estimate_3d(const std::vector<GamutConstraint3>& constraints, con
   out.lazy_feasible = feasible_set_3d_lazy(all);
   if (true_map) out.truth_in_feasible = feasible_set_3d_meets_ray(all, *true_map);
   const LazyConvexSet3& F = out.lazy_feasible;
-  if (F.kind() != ConvexKind3::empty) {
-    if (want[0]) out.max_volume = light_of(with_worst_case(F, max_volume(F)));
-    if (want[1]) out.centroid = light_of(with_worst_case(F, centroid_3(F, o.route)));
-    if (want[2]) out.max_trace = light_of(with_worst_case(F, max_trace(F)));
-  }
+  if (F.kind() != ConvexKind3::empty)
+    for (Rule3 r : o.rules)
+      if (!out[r]) out[r] = light_of(with_worst_case(F, select_rule_3(r, F, o.route)));
   if (o.exact_feasible_set) out.feasible = F.exact();
   return out;
 }

@@ -176,7 +176,7 @@ map_error_deg : float or None
 
 // 3-D gamut mapping on one image.
 void bind_estimate3(py::module_& m) {
-  py::class_<PyEstimate3>(m, "Estimate3", R"doc(3-D gamut mapping on one image: F3 and the rules' answers.
+  auto estimate3 = py::class_<PyEstimate3>(m, "Estimate3", R"doc(3-D gamut mapping on one image: F3 and the rules' answers.
 
 The exact feasible set F3 of diagonal maps taking the image's pixel colours into the canonical
 gamut (Forsyth 1990 §3; Gijsenij, Gevers & van de Weijer 2010 §3) and the selections asked for
@@ -203,14 +203,9 @@ pixels : dict of str to int, or None
 )doc")
       .def_property_readonly("feasible_set", &PyEstimate3::feasible_set, py::return_value_policy::reference_internal)
       .def_property_readonly("kind", [](const PyEstimate3& e) { return to_string(e.feasible.kind()); })
-      .def_readonly("max_volume", &PyEstimate3::max_volume)
-      .def_readonly("centroid", &PyEstimate3::centroid)
-      .def_readonly("max_trace", &PyEstimate3::max_trace)
       .def_property_readonly("selections", [](const PyEstimate3& e) {
         py::dict d;
-        d["max_volume"] = py::cast(e.max_volume);
-        d["centroid"] = py::cast(e.centroid);
-        d["max_trace"] = py::cast(e.max_trace);
+        for (Rule3 rule : all_rules_3) d[py::str(to_string(rule))] = py::cast(e.selections[rule]);
         return d;
       })
       .def_property_readonly("truth_in_feasible", [](const PyEstimate3& e) -> py::object {
@@ -224,6 +219,11 @@ pixels : dict of str to int, or None
       .def("__repr__", [](const PyEstimate3& e) {
         return "Estimate3(" + to_string(e.feasible.kind()) + ", " + std::to_string(e.feasible.size()) + " vertices)";
       });
+  // One attribute per 3-D rule, named by its key (rule_3.h): max_volume, centroid, max_trace.
+  for (Rule3 rule : all_rules_3)
+    estimate3.def_property_readonly(
+        to_string(rule).c_str(), [rule](const PyEstimate3& e) { return e.selections[rule]; },
+        "This rule's answer (ImageSelection3), or None when not asked for or when F3 holds no map.");
 }
 
 // The 3-D canonical side prepared once, and 3-D gamut mapping on an image.
@@ -294,9 +294,7 @@ void bind_functions(py::module_& m) {
           if (!s) return std::nullopt;
           return PySelection3{std::move(*s), to_string(rule)};
         };
-        out.max_volume = wrap(r.max_volume, Rule3::max_volume);
-        out.centroid = wrap(r.centroid, Rule3::centroid);
-        out.max_trace = wrap(r.max_trace, Rule3::max_trace);
+        for (Rule3 rule : all_rules_3) out.selections[rule] = wrap(r[rule], rule);
         return out;
       },
       py::arg("canonical"), py::arg("image"), py::arg("truth") = py::none(), py::kw_only(), py::arg("rules") = py::none(),

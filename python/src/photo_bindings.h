@@ -50,7 +50,7 @@ struct PyEstimate3 {
     if (!exact) exact = std::make_shared<const ConvexSet3>(feasible.exact());
     return *exact;
   }
-  std::optional<PySelection3> max_volume, centroid, max_trace;
+  PerRule3<std::optional<PySelection3>> selections;  // by rule (rule_3.h)
   std::optional<bool> truth_in_feasible;  // with a truth (ImageEstimate3::truth_in_feasible)
   std::optional<PixelCounts> pixels;
   std::size_t colours = 0;

@@ -103,12 +103,12 @@ BOOST_AUTO_TEST_CASE(joint_estimate_of_pixel_and_edge_gamuts) {
   BOOST_TEST(contains(joint.feasible, Point3{Rational(1, 2), 1, Rational(1, 4)}));
   // The true map is the largest in F3 in every direction that keeps its proportions: every
   // rule's light is the true one.
-  BOOST_TEST_REQUIRE(joint.max_trace->light.has_value());
-  BOOST_TEST(recovery_angular_error_deg(*joint.max_trace->light, {2, 1, 4}) < 1e-9);
+  BOOST_TEST_REQUIRE(joint[Rule3::max_trace]->light.has_value());
+  BOOST_TEST(recovery_angular_error_deg(*joint[Rule3::max_trace]->light, {2, 1, 4}) < 1e-9);
   const ImageEstimate3 alone = estimate_3d(cp, p), as_joint = estimate_3d(std::vector<GamutConstraint3>{{&cp, &p.colours}});
   BOOST_TEST((alone.feasible == as_joint.feasible));
-  BOOST_TEST((alone.max_trace->selection.estimate.exact == as_joint.max_trace->selection.estimate.exact));
-  BOOST_TEST((alone.max_volume->selection.estimate.exact == as_joint.max_volume->selection.estimate.exact));
+  BOOST_TEST((alone[Rule3::max_trace]->selection.estimate.exact == as_joint[Rule3::max_trace]->selection.estimate.exact));
+  BOOST_TEST((alone[Rule3::max_volume]->selection.estimate.exact == as_joint[Rule3::max_volume]->selection.estimate.exact));
   BOOST_CHECK_THROW(estimate_3d(std::vector<GamutConstraint3>{}), std::invalid_argument);
 }
 

@@ -118,8 +118,8 @@ BOOST_AUTO_TEST_CASE(estimate_3d_on_pixel_colours) {
     BOOST_TEST(to_string(rule_3_from_string(to_string(rule))) == to_string(rule));
   }
   // Max-trace: no vertex of F3 has a larger d1 + d2 + d3.
-  BOOST_TEST_REQUIRE(r.max_trace->selection.estimate.exact.has_value());
-  const Point3 m = *r.max_trace->selection.estimate.exact;
+  BOOST_TEST_REQUIRE(r[Rule3::max_trace]->selection.estimate.exact.has_value());
+  const Point3 m = *r[Rule3::max_trace]->selection.estimate.exact;
   const Rational top = m.x + m.y + m.z;
   for (const Point3& v : r.feasible.vertices) {
     const Rational t = v.x + v.y + v.z;
@@ -134,8 +134,8 @@ BOOST_AUTO_TEST_CASE(estimate_3d_on_pixel_colours) {
   Estimate3Options only;
   only.rules = {Rule3::max_trace};
   const ImageEstimate3 t = estimate_3d(canonical, image, only);
-  BOOST_TEST(!t.max_volume.has_value());
-  BOOST_TEST((t.max_trace->selection.estimate.exact == r.max_trace->selection.estimate.exact));
+  BOOST_TEST(!t[Rule3::max_volume].has_value());
+  BOOST_TEST((t[Rule3::max_trace]->selection.estimate.exact == r[Rule3::max_trace]->selection.estimate.exact));
   BOOST_TEST((t.feasible == r.feasible));
   // Without the exact F3 (what the CLI and Python ask): the same answers, F3 empty of vertices
   // until asked for, then the same set; fewer of its vertices were made exact than it has.
@@ -272,7 +272,7 @@ BOOST_AUTO_TEST_CASE(lights_at_extreme_scales) {
     return estimate_3d(canonical, image, o);
   };
   const ImageEstimate3 plain = run(0, 0, 0, 0);
-  BOOST_TEST_REQUIRE(plain.max_trace.has_value());
+  BOOST_TEST_REQUIRE(plain[Rule3::max_trace].has_value());
   for (const std::array<int, 4>& k : std::vector<std::array<int, 4>>{{600, 0, 0, 0},
                                                                      {-600, 0, 0, 0},
                                                                      {0, 600, 0, 0},
@@ -365,11 +365,11 @@ BOOST_AUTO_TEST_CASE(illumination_cone_constrains_f3_exactly) {
     }
     const Point3 truth_map{1 / e.r, 1 / e.g, 1 / e.b};
     BOOST_TEST(*FK.truth_in_feasible == (*F.truth_in_feasible && in_k(truth_map)), "scene " << scene);
-    if (FK.max_trace && F.max_trace) {
-      const Point3 a = measured_map(FK.max_trace->selection.estimate), b = measured_map(F.max_trace->selection.estimate);
+    if (FK[Rule3::max_trace] && F[Rule3::max_trace]) {
+      const Point3 a = measured_map(FK[Rule3::max_trace]->selection.estimate), b = measured_map(F[Rule3::max_trace]->selection.estimate);
       const Rational ta = a.x + a.y + a.z, tb = b.x + b.y + b.z;
       BOOST_TEST(ta <= tb);
-      (FK.max_trace->light ? nonempty : empty_positive)++;
+      (FK[Rule3::max_trace]->light ? nonempty : empty_positive)++;
     }
   }
   BOOST_TEST(nonempty > 10);  // both outcomes reached: lights that admit maps and lights that do not

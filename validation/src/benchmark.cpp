@@ -76,11 +76,12 @@ void parallel_for(std::size_t n, unsigned threads, const std::function<void(std:
 
 const std::vector<std::string>& benchmark_methods() {
   static const std::vector<std::string> m = [] {
-    std::vector<std::string> names = {"gm3d-max-trace", "gm3d-max-volume", "gm3d-centroid"};
+    std::vector<std::string> names;
+    for (Rule3 rule : benchmark_rules_3()) names.push_back(gm3d_method(rule));
     for (Rule rule : all_rules) names.push_back(gm2d_method(rule));
     for (std::size_t b = 0; b < all_baselines.size(); ++b) names.push_back(baseline_method(b));
     names.insert(names.end(), std::begin(kEdge), std::end(kEdge));
-    for (const char* c : {kGm3dConstrained[2], kGm3dConstrained[0], kGm3dConstrained[1]}) names.push_back(c);
+    for (Rule3 rule : benchmark_rules_3()) names.push_back(gm3d_constrained_method(rule));
     for (Rule rule : all_rules) names.push_back(gm2d_constrained_method(rule));
     names.push_back(kGcie);
     return names;
@@ -94,7 +95,7 @@ bool is_edge_gamut_method(const std::string& method) {
 
 const std::vector<std::string>& default_benchmark_methods() {
   static const std::vector<std::string> m(
-      benchmark_methods().begin(), benchmark_methods().begin() + 3 + all_rules.size() + all_baselines.size());
+      benchmark_methods().begin(), benchmark_methods().begin() + rule_3_count + all_rules.size() + all_baselines.size());
   return m;
 }
 
@@ -174,7 +175,7 @@ std::optional<ImageEstimate3> estimate_in_f(const std::vector<GamutConstraint3>&
 }
 
 // One 3-D rule's record from an estimate (light absent where the rule gave none).
-BenchmarkRecord record_3d(const char* method, const std::optional<ImageEstimate3>& est, Rule3 rule) {
+BenchmarkRecord record_3d(const std::string& method, const std::optional<ImageEstimate3>& est, Rule3 rule) {
   BenchmarkRecord rec;
   rec.method = method;
   if (!est) {
@@ -204,12 +205,12 @@ std::vector<BenchmarkRecord> records_3d(const FoldCanonicals& c, const Reduced& 
   for (const bool constrained : {false, true}) {
     std::vector<Rule3> rules;
     for (Rule3 rule : all_rules_3)
-      if ((constrained ? n.rule3c : n.rule3)[static_cast<int>(rule)]) rules.push_back(rule);
+      if ((constrained ? n.rule3c : n.rule3)[rule]) rules.push_back(rule);
     if (rules.empty()) continue;
     const std::optional<ImageEstimate3> est =
         estimate_in_f({{&*c.gamut3, &r.hull3}}, rules, e, constrained ? c.lights : std::vector<Colour>{});
     for (Rule3 rule : rules)
-      out.push_back(record_3d((constrained ? kGm3dConstrained : kGm3d)[static_cast<int>(rule)], est, rule));
+      out.push_back(record_3d(constrained ? gm3d_constrained_method(rule) : gm3d_method(rule), est, rule));
   }
   return out;
 }

@@ -38,12 +38,12 @@ Needs needs_of(const std::vector<std::string>& methods) {
   for (const std::string& m : methods) {
     if (!seen.insert(m).second) throw std::invalid_argument("benchmark method \"" + m + "\" is given twice");
     bool known = false;
-    for (int k = 0; k < 3; ++k)
-      if (m == kGm3d[k]) n.gm3d = n.rule3[k] = known = true;
+    for (Rule3 rule : all_rules_3)
+      if (m == gm3d_method(rule)) n.gm3d = n.rule3[rule] = known = true;
     for (Rule rule : all_rules)
       if (m == gm2d_method(rule)) n.gm2d = n.rule2[rule] = known = true;
-    for (int k = 0; k < 3; ++k)
-      if (m == kGm3dConstrained[k]) n.gm3d = n.rule3c[k] = known = true;
+    for (Rule3 rule : all_rules_3)
+      if (m == gm3d_constrained_method(rule)) n.gm3d = n.rule3c[rule] = known = true;
     for (Rule rule : all_rules)
       if (m == gm2d_constrained_method(rule)) n.gm2d = n.gm2dc = n.rule2c[rule] = known = true;
     if (m == kGcie) n.gcie = known = true;

@@ -7,6 +7,7 @@
 
 #include <gmcc/photo/grey_edge.h>
 #include <gmcc/selection/rule.h>
+#include <gmcc/selection/rule_3.h>
 
 #include <algorithm>
 #include <array>
@@ -16,10 +17,6 @@
 
 namespace gmcc::internal {
 
-// The 3-D pixel-gamut methods, indexed by Rule3; the same with the illumination constraint.
-inline const char* const kGm3d[3] = {"gm3d-max-volume", "gm3d-centroid", "gm3d-max-trace"};
-inline const char* const kGm3dConstrained[3] = {"gm3d-max-volume-constrained", "gm3d-centroid-constrained",
-                                                "gm3d-max-trace-constrained"};
 // Gamut-constrained illuminant estimation among the fold's training lights (gcie.h).
 inline const char* const kGcie = "gcie";
 // A key with dashes for underscores: how methods are named.
@@ -28,6 +25,17 @@ inline std::string dashed(std::string key) {
   return key;
 }
 
+// The 3-D pixel-gamut method of `rule` (gm3d-max-trace, …), and the same with the illumination
+// constraint (gm3d-max-trace-constrained, …).
+inline std::string gm3d_method(Rule3 rule) { return "gm3d-" + dashed(to_string(rule)); }
+inline std::string gm3d_constrained_method(Rule3 rule) { return gm3d_method(rule) + "-constrained"; }
+// The 3-D rules in the benchmark's order: max-trace (the field's selection) first, then the others.
+inline std::vector<Rule3> benchmark_rules_3() {
+  std::vector<Rule3> out{Rule3::max_trace};
+  for (Rule3 r : all_rules_3)
+    if (r != Rule3::max_trace) out.push_back(r);
+  return out;
+}
 // The 2-D perspective route's method for `rule` (gm2d-max-area, …), and a baseline's (grey-world, …).
 inline std::string gm2d_method(Rule rule) { return "gm2d-" + dashed(to_string(rule)); }
 inline std::string gm2d_constrained_method(Rule rule) { return gm2d_method(rule) + "-constrained"; }
@@ -49,10 +57,10 @@ struct Reduced {
 // Which families the methods asked for need.
 struct Needs {
   bool gm3d = false, gm2d = false;  // gm3d: the pixel colours' 3-D hull and canonical gamut
-  std::array<bool, 3> rule3{};
+  PerRule3<bool> rule3{};
   PerRule<bool> rule2{};
   // The rules with the illumination constraint (the fold's training lights).
-  std::array<bool, 3> rule3c{};
+  PerRule3<bool> rule3c{};
   PerRule<bool> rule2c{};
   bool gm2dc = false;
   bool gcie = false;  // the pixel colours' 3-D hull and the canonical perspective chromaticities

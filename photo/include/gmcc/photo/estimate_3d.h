@@ -14,6 +14,7 @@
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/input/image_pixels.h>
 #include <gmcc/selection/crule_3d.h>
+#include <gmcc/selection/rule_3.h>
 
 #include <array>
 #include <optional>
@@ -21,16 +22,6 @@
 #include <vector>
 
 namespace gmcc {
-
-/// The 3-D rules, in the order every report lists them.
-enum class Rule3 { max_volume, centroid, max_trace };
-/// Every 3-D rule, in order.
-inline constexpr std::array<Rule3, 3> all_rules_3 = {Rule3::max_volume, Rule3::centroid,
-                                                    Rule3::max_trace};
-/// `max_volume`, `centroid` or `max_trace`.
-std::string to_string(Rule3 rule);
-/// The inverse of to_string (also `max-volume`, `max-trace`). \throws std::invalid_argument.
-Rule3 rule_3_from_string(const std::string& text);
 
 /// One 3-D rule's answer on an image: the map, its worst case in F3, and the light it implies.
 struct ImageSelection3 {
@@ -58,16 +49,17 @@ struct ImageEstimate3 {
   /// F3 with its vertices made exact only on request (lazy_convex_set_3.h), always filled: its
   /// kind and vertex count, and exact() for the whole set (equal to `feasible` when that is filled)
   LazyConvexSet3 lazy_feasible;
-  /// the rules' answers
-  ///@{
-  std::optional<ImageSelection3> max_volume, centroid, max_trace;
-  ///@}
+  /// the rules' answers, by rule (rule_3.h)
+  PerRule3<std::optional<ImageSelection3>> selections;
   /// With a true light e (Estimate3Options::truth): whether some positive multiple of the true
   /// map c ⊘ e lies in F3, decided exactly on F3's rows (feasible_ray_3d.h), whatever F3's kind
   /// and whether or not F3 holds maps with a zero component; absent without a truth.
   std::optional<bool> truth_in_feasible;
   /// The answer of `rule` (an absent one when not asked for or F3 is empty).
-  const std::optional<ImageSelection3>& operator[](Rule3 rule) const;
+  ///@{
+  const std::optional<ImageSelection3>& operator[](Rule3 rule) const { return selections[rule]; }
+  std::optional<ImageSelection3>& operator[](Rule3 rule) { return selections[rule]; }
+  ///@}
 };
 
 /// What estimate_3d computes.

@@ -7,7 +7,7 @@
 ///
 /// "3-D mean" is the paper's name for a rule on the 2-D set: the mean of the cone of 3-D maps
 /// over F, seen in perspective (docs/conventions.md §10). CRULE's rules on the 3-D set of
-/// diagonal maps are Rule3 (photo) and crule_3d.h's selections.
+/// diagonal maps are Rule3 (rule_3.h).
 
 #include <gmcc/geometry/convex_set.h>
 #include <gmcc/selection/map_estimate.h>
