@@ -331,7 +331,7 @@ int run_benchmark_command(const BenchmarkCliOptions& o) {
   options.saturation_max = settings.saturation_max;
   options.black_level_given = settings.black_level_given;
   options.intensity = canonical_intensity_from_string(o.intensity);
-  options.black = o.black == "exclude" ? CanonicalBlack::exclude : CanonicalBlack::include;
+  options.black = canonical_black_from_string(o.black);
   options.threads = static_cast<unsigned>(integer_option("--threads", o.threads, 0, 1024));
   const bool edges = std::any_of(options.methods.begin(), options.methods.end(), is_edge_gamut_method);
   Rational sigma;

@@ -343,7 +343,7 @@ int run_estimate_3d(const EstimateOptions& o) {
   const Estimate3Options options = estimate3_options(o, s);
   const ColourTable canonical = read_colour_csv(o.canonical_path);
   require_pixel_colours(canonical, "--space 3d");
-  const CanonicalBlack black = o.black == "exclude" ? CanonicalBlack::exclude : CanonicalBlack::include;
+  const CanonicalBlack black = canonical_black_from_string(o.black);
   const CanonicalConstraints3 prepared(canonical.colours, black);
   const std::unique_ptr<StagedFiles> outputs = corrected_output(o);
 

@@ -87,7 +87,7 @@ ExperimentResult result_of(const json& h, const Place& at) {
   if (h.contains("crule_black")) {
     const std::string black = get<std::string>(h, "crule_black", at);
     if (black != "exclude" && black != "include") bad(at, "\"crule_black\" must be include or exclude");
-    c.crule_black = black == "exclude" ? CanonicalBlack::exclude : CanonicalBlack::include;
+    c.crule_black = canonical_black_from_string(black);
   }
   if (h.contains("crule_extended")) c.crule_extended = get<bool>(h, "crule_extended", at);
   if (h.contains("specular")) c.specular = get<double>(h, "specular", at);

@@ -156,7 +156,7 @@ ExperimentConfig config_from(const ReproduceOptions& o) {
   c.noise = bounded_option("--noise", o.noise, 1, true, "must be from 0 to 1");
   c.crule = o.crule;
   c.shading = bounded_option("--shading", o.shading, 1, false, "must be from 0 to below 1");
-  c.crule_black = o.crule_black == "exclude" ? CanonicalBlack::exclude : CanonicalBlack::include;
+  c.crule_black = canonical_black_from_string(o.crule_black);
   c.crule_extended = o.crule_extended;
   if ((c.crule_extended || c.crule_black == CanonicalBlack::exclude) && !c.crule)
     throw InputError(c.crule_extended ? "--crule-extended" : "--crule-black", 0, "needs --crule");

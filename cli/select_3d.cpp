@@ -65,7 +65,7 @@ Crule3d constrained_crule_3d(const ColourTable& canonical, const ColourTable& im
 
 int run_select_3d(const SelectOptions& o) {
   // The options that cannot apply to the 3-D route were refused by select_settings.
-  const CanonicalBlack black = o.black == "exclude" ? CanonicalBlack::exclude : CanonicalBlack::include;
+  const CanonicalBlack black = canonical_black_from_string(o.black);
   const ColourTable canonical = read_colour_csv(o.canonical_path);
   const ColourTable image = read_colour_csv(o.image_path);
   require_pixel_colours(canonical, "select --space 3d");
@@ -98,7 +98,7 @@ int run_select_3d(const SelectOptions& o) {
     if (r.max_volume) sel["max_volume"] = selection_json(*r.max_volume);
     if (r.centroid) sel["centroid"] = selection_json(*r.centroid);
     j["selections"] = sel;
-    j["canonical_gamut"] = {{"black", black == CanonicalBlack::include ? "include" : "exclude"},
+    j["canonical_gamut"] = {{"black", to_string(black)},
                             {"colours", canonical.colours.size()}};
     j["input"] = {{"canonical_colours", canonical.colours.size()},
                   {"image_colours", image.colours.size()}};

@@ -38,9 +38,11 @@ pixel_rule : {'none', 'gijsenij'}, default 'none'
 }
 
 CanonicalBlack black_from(const std::string& black) {
-  if (black == "include") return CanonicalBlack::include;
-  if (black == "exclude") return CanonicalBlack::exclude;
-  throw py::value_error("black: " + quoted_text(black) + " is not one of include, exclude");
+  try {
+    return canonical_black_from_string(black);
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(std::string("black: ") + e.what());
+  }
 }
 std::vector<Colour> pixel_colours_of(py::handle x, PixelArgs args, const char* what,
                                      std::optional<PixelCounts>* counts, ColourSet* set) {
@@ -107,7 +109,7 @@ black : str
       .def_property_readonly("colours", [](const Canonical3& c) { return c.colours; },
                              "How many colours it was prepared from.")
       .def_property_readonly("black", [](const Canonical3& c) {
-        return c.black == CanonicalBlack::include ? "include" : "exclude";
+        return to_string(c.black);
       })
       .def("__repr__", [](const Canonical3& c) {
         return "Canonical3(" + std::to_string(c.colours) + " colours, " + std::to_string(c.constraints->half_spaces()) +

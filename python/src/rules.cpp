@@ -4,6 +4,7 @@
 
 #include "bindings.h"
 #include "options.h"
+#include "photo_bindings.h"
 #include "results.h"
 
 #include <gmcc/geometry/illumination_constraint.h>
@@ -131,9 +132,7 @@ void bind_lights_and_crule(py::module_& m) {
   m.def("crule_3d", [](py::handle canonical, py::handle image, const std::string& black) {
     const std::vector<Colour> c = colours_or_pixel_colours(canonical, "canonical"),
                               i = colours_or_pixel_colours(image, "image");
-    if (black != "include" && black != "exclude")
-      throw py::value_error("black: " + quoted_text(black) + " is not one of include, exclude");
-    const CanonicalBlack b = black == "include" ? CanonicalBlack::include : CanonicalBlack::exclude;
+    const CanonicalBlack b = black_from(black);
     try {
       return released([&] { return crule_3d(c, i, b); });
     } catch (const std::invalid_argument& e) {

@@ -11,6 +11,8 @@
 
 #include <cstddef>
 #include <memory>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace gmcc {
@@ -27,6 +29,14 @@ enum class CanonicalBlack {
             ///< Barnard's CRULE; then 0 ∈ F3, so F3 is never empty and is star-shaped about 0
   exclude,  ///< Forsyth's hull of the canonical colours alone; F3 may be empty
 };
+/// `include` or `exclude`: the name every front end reads and writes (--black, JSON, Python).
+inline std::string to_string(CanonicalBlack black) { return black == CanonicalBlack::include ? "include" : "exclude"; }
+/// The inverse of to_string. \throws std::invalid_argument (quoting the text) for any other.
+inline CanonicalBlack canonical_black_from_string(const std::string& text) {
+  for (CanonicalBlack b : {CanonicalBlack::include, CanonicalBlack::exclude})
+    if (text == to_string(b)) return b;
+  throw std::invalid_argument(quoted_text(text) + " is not one of include, exclude");
+}
 
 /// G_c3 prepared once for many images (docs/math.md §1b "The prepared route"): its exact
 /// half-spaces a·x <= b (CGAL::convex_hull_3 over Epeck when it is 3-dimensional; for a planar,
