@@ -289,3 +289,59 @@ def test_constrained_max_trace_agrees_with_a_float_lp(seed):
     # The constraint only removes maps: the trace is at most the unconstrained one.
     free = gmcc.estimate_3d(prepared, image, rules=["max_trace"])
     assert sum(r.max_trace.map) <= sum(free.max_trace.map) * (1 + 1e-12)
+
+
+@pytest.mark.parametrize("seed,palette", [(41, False), (42, False), (43, True), (44, True)])
+def test_gcie_agrees_with_an_independent_nnls(tmp_path, seed, palette):
+    # GCIE (Finlayson, Hordley & Tastl 2006; docs/math.md §1f) written here in floats with SciPy's
+    # NNLS (Lawson & Hanson's active set) and Qhull: each fold's canonical chromaticities, each
+    # training light's gamut cone, the sum of squared NNLS residuals of the test image's 3-D hull
+    # vertices, the least sum (several lights at 0: the one nearest their mean chromaticity).
+    # gmcc's exact choice must be the same light wherever the float decision has no near tie.
+    # With `palette`, three lights each light four images, one in every fold: the image's own
+    # light is then among the training lights and consistent (score 0, tied with its copies);
+    # without, every light differs and no training light is consistent (the scores decide).
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
+    from png16 import write_png16
+    rng = np.random.default_rng(seed)
+    surfaces = rng.integers(50, 900, size=(25, 3))
+    images, lights, lines = [], [], ["image,r,g,b"]
+    three = rng.integers(3, 60, size=(3, 3))
+    for i in range(12):
+        e = three[i // 4] if palette else rng.integers(3, 60, size=3)
+        img = surfaces[rng.integers(0, 25, size=(5, 6))] * e
+        write_png16(tmp_path / f"g{i}.png", [[tuple(int(x) for x in px) for px in row] for row in img])
+        images.append(img.reshape(-1, 3).astype(float))
+        lights.append(e.astype(float))
+        lines.append(f"g{i}.png,{e[0]},{e[1]},{e[2]}")
+    truths = tmp_path / "truths.csv"
+    truths.write_text("\n".join(lines) + "\n")
+    _, records = gmcc.benchmark(tmp_path, truths, folds=3, methods=["gcie"], frame=False)
+    compared = consistent = 0
+    for rec in records:
+        i = int(rec["image"][1:-4])  # g<i>.png
+        training = [j for j in range(12) if j % 3 != i % 3]
+        xy = np.vstack([images[j][:, :2] / images[j][:, 2:] * lights[j][2] / lights[j][:2] for j in training])
+        hull = xy[scipy_spatial.ConvexHull(xy).vertices]
+        colours = np.unique(images[i], axis=0)
+        colours = colours[scipy_spatial.ConvexHull(colours).vertices]
+        scores, borderline = [], False
+        for j in training:
+            g = np.column_stack([lights[j][0] * hull[:, 0], lights[j][1] * hull[:, 1], np.full(len(hull), lights[j][2])])
+            g /= np.linalg.norm(g, axis=1, keepdims=True)
+            rel = [scipy_optimize.nnls(g.T, p)[1] / np.linalg.norm(p) for p in colours]
+            borderline |= any(1e-12 < r < 1e-6 for r in rel)
+            scores.append(sum((r * np.linalg.norm(p)) ** 2 if r > 1e-9 else 0.0 for r, p in zip(rel, colours)))
+        best = min(scores)
+        tied = [training[k] for k, s in enumerate(scores) if s == best] if best == 0 else \
+            [training[k] for k, s in enumerate(scores) if s <= best * (1 + 1e-9)]
+        others = sorted(s for s in scores if s > best * (1 + 1e-9))
+        if borderline or (best > 0 and len(tied) > 1) or (others and best > 0 and others[0] < best * (1 + 1e-6)):
+            continue
+        q = np.array([lights[j][:2] / lights[j].sum() for j in tied])
+        chosen = tied[int(np.argmin(((q - q.mean(axis=0)) ** 2).sum(axis=1)))]
+        assert angle(rec["light"], lights[chosen]) < 1e-6, (i, chosen, tied, scores)
+        compared += 1
+        consistent += best == 0
+    assert compared >= 9
+    assert consistent >= 9 if palette else consistent == 0
