@@ -2,7 +2,7 @@
 the chromaticity-lift trap refused at every 3-D entry; CanonicalLearner3 and estimate_3d recover
 a light exactly where F3 is a segment; 3-D max-trace agrees with an independent float linear
 program (SciPy's HiGHS, written here) to 0.1 degree wherever the LP's maximiser is unique; the
-dark and bright rules against their definition."""
+dark and bright rules against their definition; GCIE against an independent float NNLS (SciPy)."""
 
 import json
 import os
