@@ -4,9 +4,16 @@ file(REMOVE_RECURSE "${WORK}")
 include(${CMAKE_CURRENT_LIST_DIR}/step.cmake)
 step(${CMAKE_COMMAND} --install "${GMCC_BUILD}" --prefix "${WORK}/prefix")
 # Eigen and Google Benchmark hidden: the installed package must not need them.
+# -DCORE_ONLY=ON: the consumer asks for the core components, and the file formats' libraries are
+# hidden too (a geometry-only consumer must configure and build without them).
+set(core_flags "")
+if(CORE_ONLY)
+  set(core_flags -DCORE_ONLY=ON -DCMAKE_DISABLE_FIND_PACKAGE_PNG=ON -DCMAKE_DISABLE_FIND_PACKAGE_TIFF=ON
+      -DCMAKE_DISABLE_FIND_PACKAGE_GmccLibRaw=ON -DCMAKE_DISABLE_FIND_PACKAGE_GmccNettle=ON)
+endif()
 step(${CMAKE_COMMAND} -S "${CONSUMER_SRC}" -B "${WORK}/build" -G Ninja
      -DCMAKE_BUILD_TYPE=Release "-DCMAKE_PREFIX_PATH=${WORK}/prefix"
-     -DCMAKE_DISABLE_FIND_PACKAGE_Eigen3=ON -DCMAKE_DISABLE_FIND_PACKAGE_benchmark=ON)
+     -DCMAKE_DISABLE_FIND_PACKAGE_Eigen3=ON -DCMAKE_DISABLE_FIND_PACKAGE_benchmark=ON ${core_flags})
 step(${CMAKE_COMMAND} --build "${WORK}/build")
 step("${WORK}/build/consumer")
 file(GLOB_RECURSE exported "${WORK}/prefix/*.cmake")
