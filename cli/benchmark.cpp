@@ -1,4 +1,4 @@
-#include "benchmark.h"
+#include "benchmark_command.h"
 
 #include <gmcc/geometry/rational.h>
 #include <gmcc/input/input_error.h>

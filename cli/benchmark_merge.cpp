@@ -1,6 +1,6 @@
 // `gmcc merge` of `gmcc benchmark --shard` records (benchmark.h): the shards' records read, checked
 // to be one run's, each image under each method exactly once, and the run's outputs written.
-#include "benchmark.h"
+#include "benchmark_command.h"
 
 #include <gmcc/input/input_error.h>
 #include <gmcc/input/text_file.h>

@@ -3,7 +3,7 @@
 // 3 a resource limit reached (--time-limit, --memory-limit, memory exhausted); a signal ends
 // the run with its default action, temporary files removed (docs/cli.md).
 #include "accuracy.h"
-#include "benchmark.h"
+#include "benchmark_command.h"
 #include "canonical.h"
 #include "dataset.h"
 #include "estimate.h"

@@ -1,6 +1,6 @@
 #include "merge.h"
 
-#include "benchmark.h"
+#include "benchmark_command.h"
 #include "json_fields.h"
 #include "limit_exit.h"
 #include "reproduce.h"

@@ -10,7 +10,7 @@
 // F3's kind, faces, zero flags and enclosures bit for bit, and the selections' and contains()'s
 // answers on F3, each on a fresh lazy set so that an exact stage makes what it needs.
 #include <gmcc/geometry/convex_set_3.h>
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/geometry/lazy_convex_set_3.h>

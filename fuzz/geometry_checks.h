@@ -7,7 +7,7 @@
 
 #include <gmcc/geometry/convex_set.h>
 #include <gmcc/numerics/platform.h>
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 #include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/geometry/rational.h>
 

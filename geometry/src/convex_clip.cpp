@@ -3,7 +3,7 @@
 
 namespace gmcc::internal {
 
-void clip(Clipper& c, const std::vector<Vertex>& cycle, std::size_t hi, std::vector<Vertex>& out,
+void clip(PolygonClipper& c, const std::vector<Vertex>& cycle, std::size_t hi, std::vector<Vertex>& out,
           std::vector<int>& s) {
   const std::size_t n = cycle.size();
   s.resize(n);
@@ -24,7 +24,7 @@ void clip(Clipper& c, const std::vector<Vertex>& cycle, std::size_t hi, std::vec
   if (!clipped) out = cycle;
 }
 
-std::vector<Vertex> reduced(Clipper& c, const std::vector<Vertex>& cycle) {
+std::vector<Vertex> reduced(PolygonClipper& c, const std::vector<Vertex>& cycle) {
   std::vector<Vertex> v;
   v.reserve(cycle.size());
   for (const Vertex& p : cycle) {

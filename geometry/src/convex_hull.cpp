@@ -1,7 +1,7 @@
 // The 2-D hull: a filtered monotone chain. CGAL's convex_hull_2, which it replaced, is the tests'
 // and bench_hull's oracle in tests/support/cgal_references.h, not part of the library.
 #include <gmcc/geometry/convex_hull.h>
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 
 #include "internal/monotone_chain.h"
 

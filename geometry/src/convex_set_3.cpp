@@ -1,6 +1,6 @@
 #include <gmcc/geometry/convex_set_3.h>
 
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 #include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/geometry/polytope_moments.h>
 

@@ -2,7 +2,7 @@
 #include <gmcc/geometry/feasible_polygon.h>
 
 #include "internal/canonical_lines.h"
-#include "internal/clipper.h"
+#include "internal/polygon_clipper.h"
 #include "internal/convex_clip.h"
 #include "internal/extended_value.h"
 #include "internal/feasible_polygon_route.h"
@@ -17,7 +17,7 @@
 namespace gmcc {
 
 using internal::approx;
-using internal::Clipper;
+using internal::PolygonClipper;
 using internal::ConvexClip;
 using internal::ImagePoint;
 using internal::in_filter_range;
@@ -26,7 +26,7 @@ using internal::Vertex;
 
 struct internal::FeasiblePolygonState {
   std::vector<Point2> owned;        // the image hull's vertices, when the caller's may not outlive F
-  std::optional<Clipper> clipper;   // absent when F is empty before clipping ends
+  std::optional<PolygonClipper> clipper;   // absent when F is empty before clipping ends
   std::vector<Vertex> cycle;        // reduced; strictly convex when enclosed
   ConvexKind kind = ConvexKind::empty;
   bool strictly_convex = false;
@@ -98,7 +98,7 @@ ImageHull checked_image_hull(const std::vector<const Point2*>& image, std::vecto
 // its vertices are the meets of consecutive scaled edges (a positive diagonal scaling keeps the
 // order counter-clockwise), which saves q's clips and any box; `first` is then q's index, else
 // the number of image vertices.
-std::vector<Vertex> starting_cycle(Clipper& c, const internal::CanonicalLines& g, const ImageHull& h,
+std::vector<Vertex> starting_cycle(PolygonClipper& c, const internal::CanonicalLines& g, const ImageHull& h,
                                    std::size_t& first) {
   const std::size_t k_count = h.vertices.size(), m = g.lines.size();
   first = k_count;
@@ -130,7 +130,7 @@ std::vector<Vertex> starting_cycle(Clipper& c, const internal::CanonicalLines& g
 // by the map constraint's; false when F is empty. While the cycle is strictly convex, each family
 // of lines is clipped by clip_convex (when `linear`); clip() takes the lines left once it
 // degenerates, or all of them on the route kept for comparison (internal/feasible_polygon_route.h).
-bool clip_every_family(Clipper& c, const internal::CanonicalLines& g, std::size_t k_count, std::size_t first,
+bool clip_every_family(PolygonClipper& c, const internal::CanonicalLines& g, std::size_t k_count, std::size_t first,
                        bool linear, std::vector<Vertex>& cycle) {
   std::vector<Vertex> next;
   std::vector<int> sides;
@@ -177,7 +177,7 @@ FeasiblePolygon internal::FeasiblePolygonAccess::build(const CanonicalConstraint
     return result;
   }
   const std::size_t k_count = hull.vertices.size();
-  Clipper& c = st.clipper.emplace(canonical.lines_, hull.vertices, g.lines.size() * (k_count + 1) + 4 + g.extra_lines.size());
+  PolygonClipper& c = st.clipper.emplace(canonical.lines_, hull.vertices, g.lines.size() * (k_count + 1) + 4 + g.extra_lines.size());
   std::size_t first = 0;
   std::vector<Vertex> cycle = starting_cycle(c, g, hull, first);
   if (!clip_every_family(c, g, k_count, first, linear, cycle)) {
@@ -233,7 +233,7 @@ const std::vector<LongEnclosedVertex>& FeasiblePolygon::extended_vertices() cons
 const ConvexSet2& FeasiblePolygon::exact() const {
   internal::FeasiblePolygonState& st = state();
   if (st.exact) return *st.exact;
-  Clipper& c = *st.clipper;
+  PolygonClipper& c = *st.clipper;
   std::vector<Point2> points;
   points.reserve(st.cycle.size());
   for (const Vertex& p : st.cycle) points.push_back(c.point(p));

@@ -5,7 +5,7 @@
 /// (results.h). No geometry or selection is done here.
 
 #include "bindings.h"
-#include "interrupt.h"
+#include "python_interrupt.h"
 #include "photo.h"
 #include "results.h"
 

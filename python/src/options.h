@@ -4,7 +4,7 @@
 /// release of the GIL around a library call, shared by the scene, rule and experiment bindings.
 
 #include "convert.h"
-#include "interrupt.h"
+#include "python_interrupt.h"
 #include "results.h"
 
 #include <string>

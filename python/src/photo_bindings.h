@@ -4,7 +4,7 @@
 /// photo_benchmark.cpp): the 3-D result holders, the pixel arguments and the GIL's release.
 
 #include "convert.h"
-#include "interrupt.h"
+#include "python_interrupt.h"
 #include "pixels.h"
 #include "results.h"
 

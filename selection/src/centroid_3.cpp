@@ -1,4 +1,4 @@
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 #include <gmcc/geometry/polytope_moments.h>
 #include <gmcc/selection/centroid_3.h>
 

@@ -1,4 +1,4 @@
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 #include <gmcc/numerics/may_be_largest.h>
 #include <gmcc/selection/max_trace.h>
 

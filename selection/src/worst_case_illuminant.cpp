@@ -1,4 +1,4 @@
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 #include <gmcc/geometry/integers_over_lcm.h>
 #include <gmcc/selection/angular_error.h>
 #include <gmcc/selection/worst_case_illuminant.h>

@@ -4,7 +4,7 @@
 #include "../test_support.h"
 #include "feasible_set_reference.h"
 
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 #include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/geometry/intersection.h>
 

@@ -2,7 +2,7 @@
 // radius enclosures and x87 intervals of known exact values (the independent answer).
 #include "../test_support.h"
 
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 #include <gmcc/numerics/may_be_largest.h>
 
 #include <boost/test/unit_test.hpp>

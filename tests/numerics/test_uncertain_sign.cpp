@@ -4,7 +4,7 @@
 // never decide it wrongly.
 #include "../test_support.h"
 
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 #include <gmcc/numerics/platform.h>
 #include <gmcc/numerics/uncertain_sign.h>
 

@@ -4,7 +4,7 @@
 // final reduction (docs/performance.md, "Many-vertex canonical gamuts (issue 13)"). Internal to
 // gmcc::geometry.
 
-#include "internal/clipper.h"
+#include "internal/polygon_clipper.h"
 
 #include <cstddef>
 #include <vector>
@@ -13,7 +13,7 @@ namespace gmcc::internal {
 
 // Sutherland–Hodgman against line `hi`, tracking each output vertex's outgoing line. `out` and
 // `s` are reused buffers.
-void clip(Clipper& c, const std::vector<Vertex>& cycle, std::size_t hi, std::vector<Vertex>& out,
+void clip(PolygonClipper& c, const std::vector<Vertex>& cycle, std::size_t hi, std::vector<Vertex>& out,
           std::vector<int>& s);
 
 // What clip_convex did: how many lines it took, and whether the cycle is still strictly convex.
@@ -23,7 +23,7 @@ struct ConvexClip {
 };
 
 // Clips a strictly convex counter-clockwise cycle (>= 3 vertices) by lines 0, 1, … of a family
-// (add_line(e) adds line e to the Clipper and returns its index), one after another, with the
+// (add_line(e) adds line e to the PolygonClipper and returns its index), one after another, with the
 // result of clip() applied line after line: the same vertices, each with the same outgoing line,
 // from another start. It stops early, leaving the rest to clip(), once the cycle degenerates
 // (fewer than 3 vertices: a segment or a point) or empties, or when it finds the cycle not convex.
@@ -41,7 +41,7 @@ struct ConvexClip {
 // two crossing vertices it inserts, in a linked cycle: O(|cycle| + lines) for a whole polygon
 // instead of clip()'s O(|cycle|) per line.
 template <class AddLine>
-ConvexClip clip_convex(Clipper& c, std::vector<Vertex>& cycle, std::size_t count, AddLine add_line) {
+ConvexClip clip_convex(PolygonClipper& c, std::vector<Vertex>& cycle, std::size_t count, AddLine add_line) {
   constexpr std::size_t none = static_cast<std::size_t>(-1);
   std::vector<Vertex> node = std::move(cycle);
   const std::size_t n = node.size();
@@ -122,6 +122,6 @@ ConvexClip clip_convex(Clipper& c, std::vector<Vertex>& cycle, std::size_t count
 // Drop repeated and collinear vertices. Repeats: v equals w iff v lies on both lines meeting in
 // w. Collinear: consecutive p, q, r with p != q are collinear iff r lies on the line carrying the
 // edge p → q (p.out), so a repeat hands its outgoing line to the vertex it merges into.
-std::vector<Vertex> reduced(Clipper& c, const std::vector<Vertex>& cycle);
+std::vector<Vertex> reduced(PolygonClipper& c, const std::vector<Vertex>& cycle);
 
 }  // namespace gmcc::internal

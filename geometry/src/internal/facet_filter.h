@@ -3,7 +3,7 @@
 // lazy_convex_set_3.h): p against each facet's enclosed outward plane (geometry/enclosure.h).
 // Internal to gmcc::geometry.
 
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 
 #include <cstddef>
 #include <optional>

@@ -4,7 +4,7 @@
 // (angle_deg), x87 intervals (angle_deg_enclosure, for pruning), and midpoint–radius enclosures
 // (enclosed_angle_deg, the certified route). Internal to gmcc::selection.
 
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 #include <gmcc/geometry/rational.h>
 #include <gmcc/numerics/constants.h>
 

@@ -7,7 +7,7 @@
 // enclosures (geometry/enclosure.h) in doubles and x87 extended precision. Internal to
 // gmcc::selection.
 
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 
 #include <algorithm>
 #include <array>

@@ -4,7 +4,7 @@
 // cannot hold the worst case. worst_case_illuminant.cpp uses them to skip exact work;
 // scene_record.cpp to enclose the worst case at a vertex without any. Internal to gmcc::selection.
 
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 
 #include <algorithm>
 #include <array>

@@ -2,7 +2,7 @@
 // The record form's values (select_scene_record.h) from what the routes compute: an angle of the
 // exact routes as an enclosure, and an x87 enclosure as a double one. Internal to gmcc::selection.
 
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 #include <gmcc/numerics/internal_check.h>
 #include <gmcc/selection/certified_rule_errors.h>
 

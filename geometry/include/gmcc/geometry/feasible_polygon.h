@@ -9,7 +9,7 @@
 /// call away.
 
 #include <gmcc/geometry/convex_set.h>
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 #include <gmcc/geometry/feasible_set.h>
 
 #include <array>

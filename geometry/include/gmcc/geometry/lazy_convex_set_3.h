@@ -9,7 +9,7 @@
 /// form").
 
 #include <gmcc/geometry/convex_set_3.h>
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 
 #include <gmpxx.h>
 

@@ -16,7 +16,7 @@
 /// - Exact stages decide only where an enclosure cannot (a segment or point F, a thin set, an edge
 ///   that may hold the illuminant-space worst case, a recovery): select_scene, worst_case_illuminant.
 
-#include <gmcc/geometry/enclosure.h>
+#include <gmcc/geometry/rational_enclosure.h>
 #include <gmcc/selection/certified_rule_errors.h>
 #include <gmcc/selection/rule.h>
 #include <gmcc/selection/select_scene.h>

@@ -1,4 +1,4 @@
-#include "interrupt.h"
+#include "python_interrupt.h"
 
 #include <exception>
 

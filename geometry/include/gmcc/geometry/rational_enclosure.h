@@ -1,5 +1,5 @@
 #pragma once
-/// \file enclosure.h
+/// \file rational_enclosure.h
 /// Geometry's names for the enclosure family (numerics/enclosure.h): Enclosure in doubles,
 /// LongEnclosure in x87 extended precision, and an exact rational as a double enclosure.
 

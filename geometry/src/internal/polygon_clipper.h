@@ -21,7 +21,7 @@ namespace gmcc::internal {
 
 // One clipping run: the lines met so far (approximate always, exact on demand) and the
 // predicates on vertices given as pairs of lines.
-class Clipper {
+class PolygonClipper {
  public:
   struct Vertex {
     std::size_t p, q;  // the vertex is the meet of lines p and q (not parallel)
@@ -30,7 +30,7 @@ class Clipper {
     double lo[2], hi[2];  // certain bounds of its coordinates (infinite when unknown)
   };
 
-  Clipper(std::shared_ptr<const internal::CanonicalLines> g, const std::vector<ImagePoint>& qs, std::size_t lines)
+  PolygonClipper(std::shared_ptr<const internal::CanonicalLines> g, const std::vector<ImagePoint>& qs, std::size_t lines)
       : keep_(std::move(g)), g_(*keep_), hq_(qs.size()) {
     lines_.reserve(lines);
     filtered_ = g_.filtered;
@@ -326,6 +326,6 @@ class Clipper {
   bool filtered_ = true;
 };
 
-using Vertex = Clipper::Vertex;
+using Vertex = PolygonClipper::Vertex;
 
 }  // namespace gmcc::internal
