@@ -54,9 +54,12 @@ void LiveVertexFilter::place(int v) {
   where_[static_cast<std::size_t>(v)] = {o, g.packed.size()};
   g.packed.insert(g.packed.end(), {x.h[0], x.h[1], x.h[2], x.h[3], x.alpha, x.beta});
   if (!box_ok_) return;
-  for (std::size_t c = 0; c < 3; ++c) g.lo[c] = std::min(g.lo[c], x.lo[c]), g.hi[c] = std::max(g.hi[c], x.hi[c]);
-  // group_inside reads only the group's bounds: those must be in range.
-  for (std::size_t c = 0; c < 3; ++c) g.boxed = g.boxed && box_range(g.lo[c]) && box_range(g.hi[c]);
+  // group_inside reads only the group's bounds: those must be in range, as they are when every
+  // vertex's are (each bound is one of them).
+  for (std::size_t c = 0; c < 3; ++c) {
+    g.lo[c] = std::min(g.lo[c], x.lo[c]), g.hi[c] = std::max(g.hi[c], x.hi[c]);
+    g.boxed = g.boxed && box_range(x.lo[c]) && box_range(x.hi[c]);
+  }
 }
 
 void LiveVertexFilter::rebuild(const std::vector<int>& live) {
@@ -100,16 +103,6 @@ void LiveVertexFilter::update(const std::vector<int>& live, const std::vector<in
   top_ = {0, 0, 0};
   for (int v : live)
     for (std::size_t c = 0; c < 3; ++c) top_[c] = std::max(top_[c], vertices_[static_cast<std::size_t>(v)].hi[c]);
-}
-
-// True when plane i holds on the box [0, top_] ⊇ the polytope: Σ max(a_k, 0)·top_k <= b, with
-// the filter copy's coefficients within 6u of the exact ones (scaled) and the sum's roundings
-// covered by 1 + 16u on the left and 1 - 16u on the right.
-bool LiveVertexFilter::box_inside(const double* a) const {
-  if (!box_ok_) return false;
-  const double lhs =
-      (std::max(a[0], 0.0) * top_[0] + std::max(a[1], 0.0) * top_[1] + std::max(a[2], 0.0) * top_[2]) * (1 + 16 * u);
-  return lhs <= a[3] * (1 - 16 * u);
 }
 
 // max over the box of a·x is P − N, P = Σ_{a_k > 0} a_k hi_k and N = Σ_{a_k < 0} |a_k| lo_k (both

@@ -184,6 +184,8 @@ class Clipper {
     std::vector<std::size_t> sorted(order_.size());
     for (std::size_t k = 0; k < order_.size(); ++k) sorted[start[band[k]]++] = order_[k];
     order_ = std::move(sorted);
+    queue_.resize(order_.size());
+    for (std::size_t k = 0; k < order_.size(); ++k) queue_[k] = filters_[order_[k]];
   }
 
   // Marks the rows of group g implied by another row of the same facet on x >= 0, which every
@@ -275,9 +277,10 @@ class Clipper {
     }
   }
 
-  // True when plane i holds on a box containing the polytope.
-  bool box_inside(int i) const {
-    const Filter& f = filters_[static_cast<std::size_t>(i)];
+  // True when the k-th row in clipping order holds on a box containing the polytope (its filter
+  // copy read from queue_, in order).
+  bool box_inside_queued(std::size_t k) const {
+    const Filter& f = queue_[k];
     return f.usable && filter_.box_inside(f.c);
   }
 
@@ -297,6 +300,7 @@ class Clipper {
         if (c == 0) return {ClippedPolytope::Outcome::empty, {}};
         continue;
       }
+      if (box_inside_queued(k)) continue;
       const ClippedPolytope::Outcome o = clip(static_cast<int>(i));
       if (o == ClippedPolytope::Outcome::flat && flat_point_ >= 0) return point(k + 1);
       if (o != ClippedPolytope::Outcome::polytope) return {o, {}};
@@ -460,20 +464,21 @@ class Clipper {
     if (counts_) ++(filtered ? counts_->filtered : counts_->exact);
   }
 
+  // Row i cut from the polytope (run() has found that it may not hold on the bounding box).
   ClippedPolytope::Outcome clip(int i) {
-    if (box_inside(i)) {
-      return ClippedPolytope::Outcome::polytope;
-    }
     if (none_outside(i)) {
       if (counts_) counts_->filtered += static_cast<long>(live_.size());
       return ClippedPolytope::Outcome::polytope;
     }
     if (sign_.size() < vertices_.size()) sign_.resize(vertices_.size() + 64);
     int in = 0, out = 0;
+    removed_.clear(), on_.clear();
     for (int v : live_) {
       const int s = side(i, vertices_[v]);
       sign_[v] = s;
       in += s < 0, out += s > 0;
+      if (s > 0) removed_.push_back(v);  // the vertices strictly outside (removed by a cut)
+      if (s == 0) on_.push_back(v);
     }
     if (out == 0) return ClippedPolytope::Outcome::polytope;  // nothing to cut
     if (in == 0) {
@@ -514,8 +519,8 @@ class Clipper {
   void faces_to_visit(std::size_t on) {
     visit_.clear();
     bool known = on <= 1;
-    for (std::size_t k = 0; k < live_.size() && known; ++k)
-      known = sign_[live_[k]] <= 0 || vertices_[static_cast<std::size_t>(live_[k])].degree >= 0;
+    for (std::size_t k = 0; k < removed_.size() && known; ++k)  // the vertices strictly outside
+      known = vertices_[static_cast<std::size_t>(removed_[k])].degree >= 0;
     if (!known) {
       for (std::size_t f = 0; f < faces_.size(); ++f)
         if (!faces_[f].cycle.empty()) visit_.push_back(f);
@@ -523,8 +528,7 @@ class Clipper {
     }
     if (stamp_.size() < faces_.size()) stamp_.resize(faces_.size() + 64, 0);
     ++stamp_now_;
-    for (int v : live_) {
-      if (sign_[v] <= 0) continue;
+    for (int v : removed_) {
       const Vertex& x = vertices_[static_cast<std::size_t>(v)];
       for (int k = 0; k < x.degree; ++k) {
         const auto f = static_cast<std::size_t>(x.faces[static_cast<std::size_t>(k)]);
@@ -626,13 +630,9 @@ class Clipper {
     faces_.push_back(std::move(cap));
     // A vertex not strictly outside stays on a face: one strictly inside keeps every face through
     // it, one on the plane is a vertex of the cap.
-    removed_.clear(), added_.clear();
-    for (int v : live_)
-      if (sign_[v] > 0) removed_.push_back(v);
+    added_.clear();
     live_.erase(std::remove_if(live_.begin(), live_.end(), [&](int v) { return sign_[v] > 0; }), live_.end());
-    if (on == 1)
-      for (int v : live_)
-        if (sign_[v] == 0) vertices_[static_cast<std::size_t>(v)].degree = -1;
+    if (on == 1) vertices_[static_cast<std::size_t>(on_[0])].degree = -1;
     for (const Cut& c : cuts_) {
       live_.push_back(c.vertex), added_.push_back(c.vertex);
       Vertex& x = vertices_[static_cast<std::size_t>(c.vertex)];
@@ -786,8 +786,10 @@ class Clipper {
   std::vector<int> scratch_;      // scratch for cut_faces: a cut face's new cycle
   std::vector<int> next_on_cap_;  // scratch for cut_faces (-1 between cuts)
   LiveVertexFilter filter_;             // the live vertices' (after every cut)
-  std::vector<int> removed_, added_;     // scratch for cut_faces: the vertices a cut removed and made
+  std::vector<int> removed_, on_, added_;  // scratch for clip: the live vertices strictly outside the
+                                           // row and on it; the vertices a cut made
   std::vector<std::size_t> order_;  // the rows, in clipping order
+  std::vector<Filter> queue_;       // their filter copies, in that order
   std::vector<int> sign_;
   std::array<std::array<mpz_class, 3>, 3> cross_;  // scratch for exact_homogeneous
   std::vector<std::optional<WidePlane>> box_wide_;    // the box sides' double-word copies

@@ -6,6 +6,7 @@
 // clear of a group's box skips its vertices. Every answer is certified (a true answer is true of
 // the exact vertices); a false one decides nothing. Internal to gmcc::geometry.
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -41,7 +42,7 @@ class LiveVertexFilter {
   void update(const std::vector<int>& live, const std::vector<int>& removed, const std::vector<int>& added);
   // True when the half-space a·x <= b (a filter copy: a0, a1, a2, b, each within a relative 6u
   // of the exact plane's scaled by a power of 2) holds on a box containing the polytope.
-  bool box_inside(const double* a) const;
+  bool box_inside(const double* a) const;  // (inline below: it is called for most rows)
   // True when no live vertex is strictly outside the half-space (each strictly inside, exactly
   // on it, or in a group whose box holds in it).
   bool none_outside(const double* a) const;
@@ -64,5 +65,16 @@ class LiveVertexFilter {
   std::array<double, 3> top_{};  // the coordinates' upper bounds over the polytope
   bool all_filtered_ = false, box_ok_ = false;
 };
+
+// The half-space holds on the box [0, top_] ⊇ the polytope: Σ max(a_k, 0)·top_k <= b, with
+// the filter copy's coefficients within 6u of the exact ones (scaled) and the sum's roundings
+// covered by 1 + 16u on the left and 1 - 16u on the right.
+inline bool LiveVertexFilter::box_inside(const double* a) const {
+  constexpr double u = 0x1p-53;
+  if (!box_ok_) return false;
+  const double lhs =
+      (std::max(a[0], 0.0) * top_[0] + std::max(a[1], 0.0) * top_[1] + std::max(a[2], 0.0) * top_[2]) * (1 + 16 * u);
+  return lhs <= a[3] * (1 - 16 * u);
+}
 
 }  // namespace gmcc::internal
