@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace gmcc::internal {
 namespace {
@@ -31,60 +32,77 @@ void VertexDoubles::settle() {
   }
 }
 
-void LiveVertexFilter::rebuild(const std::vector<const VertexDoubles*>& live) {
+void LiveVertexFilter::add(const VertexDoubles& v) {
+  vertices_.push_back(v);
+  where_.push_back({0, 0});
+}
+
+// The octant of v's box centre about centre_ (0 when the bounds are not known).
+std::size_t LiveVertexFilter::octant(const VertexDoubles& v) const {
+  std::size_t o = 0;
+  if (box_ok_)
+    for (std::size_t c = 0; c < 3; ++c)
+      if (v.lo[c] + v.hi[c] > centre_[c]) o |= std::size_t(1) << c;
+  return o;
+}
+
+// Vertex v's record appended to its octant's group, the group's box widened to hold it.
+void LiveVertexFilter::place(int v) {
+  const VertexDoubles& x = vertices_[static_cast<std::size_t>(v)];
+  const std::size_t o = octant(x);
+  Group& g = groups_[o];
+  where_[static_cast<std::size_t>(v)] = {o, g.packed.size()};
+  g.packed.insert(g.packed.end(), {x.h[0], x.h[1], x.h[2], x.h[3], x.alpha, x.beta});
+  if (!box_ok_) return;
+  // group_inside reads only the group's bounds: those must be in range, as they are when every
+  // vertex's are (each bound is one of them).
+  for (std::size_t c = 0; c < 3; ++c) {
+    g.lo[c] = std::min(g.lo[c], x.lo[c]), g.hi[c] = std::max(g.hi[c], x.hi[c]);
+    g.boxed = g.boxed && box_range(x.lo[c]) && box_range(x.hi[c]);
+  }
+}
+
+void LiveVertexFilter::rebuild(const std::vector<int>& live) {
   const std::size_t n = live.size();
   all_filtered_ = box_ok_ = true;
   top_ = {0, 0, 0};
   double centre[3] = {0, 0, 0};
-  for (const VertexDoubles* x : live) {
-    all_filtered_ = all_filtered_ && x->filtered;
-    box_ok_ = box_ok_ && x->bounded;
+  for (int v : live) {
+    const VertexDoubles& x = vertices_[static_cast<std::size_t>(v)];
+    all_filtered_ = all_filtered_ && x.filtered;
+    box_ok_ = box_ok_ && x.bounded;
     if (!box_ok_) continue;
-    for (std::size_t c = 0; c < 3; ++c) top_[c] = std::max(top_[c], x->hi[c]), centre[c] += x->lo[c] + x->hi[c];
+    for (std::size_t c = 0; c < 3; ++c) top_[c] = std::max(top_[c], x.hi[c]), centre[c] += x.lo[c] + x.hi[c];
   }
   box_ok_ = box_ok_ && all_filtered_;
   // The groups: the octant of each vertex's box centre about the mean of those centres (one group
-  // when the bounds are not known), counted, then placed.
-  std::array<std::size_t, 9> start{};
-  octant_.assign(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (box_ok_)
-      for (std::size_t c = 0; c < 3; ++c)
-        if ((live[i]->lo[c] + live[i]->hi[c]) * double(n) > centre[c]) octant_[i] |= 1 << c;
-    ++start[static_cast<std::size_t>(octant_[i]) + 1];
+  // when the bounds are not known).
+  for (std::size_t c = 0; c < 3; ++c) centre_[c] = n > 0 ? centre[c] / double(n) : 0;
+  for (Group& g : groups_) {
+    g.packed.clear();
+    g.boxed = box_ok_;
+    for (std::size_t c = 0; c < 3; ++c) g.lo[c] = HUGE_VAL, g.hi[c] = 0;
   }
-  for (std::size_t o = 0; o < 8; ++o) start[o + 1] += start[o];
-  groups_.clear();
-  std::array<std::size_t, 8> group_of{}, next{};
-  for (std::size_t o = 0; o < 8; ++o) {
-    group_of[o] = groups_.size(), next[o] = 6 * start[o];
-    if (start[o + 1] > start[o])
-      groups_.push_back({{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {0, 0, 0}, 6 * start[o], 6 * start[o + 1], box_ok_});
-  }
-  packed_.resize(6 * n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const VertexDoubles& x = *live[i];
-    const auto o = static_cast<std::size_t>(octant_[i]);
-    double* h = &packed_[next[o]];
-    next[o] += 6;
-    h[0] = x.h[0], h[1] = x.h[1], h[2] = x.h[2], h[3] = x.h[3], h[4] = x.alpha, h[5] = x.beta;
-    if (!box_ok_) continue;
-    Group& g = groups_[group_of[o]];
-    for (std::size_t c = 0; c < 3; ++c) g.lo[c] = std::min(g.lo[c], x.lo[c]), g.hi[c] = std::max(g.hi[c], x.hi[c]);
-  }
-  // group_inside reads only the group's bounds: those must be in range.
-  for (Group& g : groups_)
-    for (std::size_t c = 0; c < 3; ++c) g.boxed = g.boxed && box_range(g.lo[c]) && box_range(g.hi[c]);
+  for (int v : live) place(v);
+  changed_ = 0;
 }
 
-// True when plane i holds on the box [0, top_] ⊇ the polytope: Σ max(a_k, 0)·top_k <= b, with
-// the filter copy's coefficients within 6u of the exact ones (scaled) and the sum's roundings
-// covered by 1 + 16u on the left and 1 - 16u on the right.
-bool LiveVertexFilter::box_inside(const double* a) const {
-  if (!box_ok_) return false;
-  const double lhs =
-      (std::max(a[0], 0.0) * top_[0] + std::max(a[1], 0.0) * top_[1] + std::max(a[2], 0.0) * top_[2]) * (1 + 16 * u);
-  return lhs <= a[3] * (1 - 16 * u);
+// A removed vertex's record becomes (0, 0, 0, 0) with α = β = 0: none_outside reads it as a vertex
+// exactly on every plane, which never fails the test; its group's box still holds the others.
+void LiveVertexFilter::update(const std::vector<int>& live, const std::vector<int>& removed,
+                              const std::vector<int>& added) {
+  changed_ += removed.size() + added.size();
+  bool fresh = !box_ok_ || changed_ >= live.size();
+  for (int v : added) fresh = fresh || !vertices_[static_cast<std::size_t>(v)].bounded;
+  if (fresh) return rebuild(live);
+  for (int v : removed) {
+    const std::array<std::size_t, 2>& w = where_[static_cast<std::size_t>(v)];
+    std::fill_n(groups_[w[0]].packed.begin() + static_cast<std::ptrdiff_t>(w[1]), 6, 0.0);
+  }
+  for (int v : added) place(v);
+  top_ = {0, 0, 0};
+  for (int v : live)
+    for (std::size_t c = 0; c < 3; ++c) top_[c] = std::max(top_[c], vertices_[static_cast<std::size_t>(v)].hi[c]);
 }
 
 // max over the box of a·x is P − N, P = Σ_{a_k > 0} a_k hi_k and N = Σ_{a_k < 0} |a_k| lo_k (both
@@ -111,9 +129,9 @@ bool LiveVertexFilter::none_outside(const double* a) const {
   const double m = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])}) * (1 + 128 * u);
   const double b = std::fabs(a[3]) * (1 + 128 * u);
   for (const Group& g : groups_) {
-    if (group_inside(g, a)) continue;
-    for (std::size_t k = g.begin; k < g.end; k += 6) {
-      const double* h = &packed_[k];
+    if (g.packed.empty() || group_inside(g, a)) continue;
+    for (std::size_t k = 0; k < g.packed.size(); k += 6) {
+      const double* h = &g.packed[k];
       const double v = a[0] * h[0] + a[1] * h[1] + a[2] * h[2] - a[3] * h[3], bound = m * h[4] + b * h[5];
       if (!(v < -bound || (bound == 0 && v == 0))) return false;
     }

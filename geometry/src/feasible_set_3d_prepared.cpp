@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -37,7 +38,16 @@ struct FeasibleSet3Access {
 };
 
 std::vector<Point3> sorted_unique(std::vector<Point3> p) {
-  std::sort(p.begin(), p.end());
+  // Sorted by index, then permuted in place by swaps: moving a Rational allocates (gmpxx's
+  // mpq_class move constructor initialises the source), swapping does not.
+  std::vector<std::size_t> order(p.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return p[i] < p[j]; });
+  for (std::size_t k = 0; k < order.size(); ++k) {  // p[k] = the old p[order[k]]
+    std::size_t j = order[k];
+    while (j < k) j = order[j];  // where the old p[order[k]] was moved to
+    if (j != k) p[k].x.swap(p[j].x), p[k].y.swap(p[j].y), p[k].z.swap(p[j].z);
+  }
   p.erase(std::unique(p.begin(), p.end()), p.end());
   return p;
 }
@@ -219,12 +229,15 @@ std::vector<Point3> image_points(const std::vector<Colour>& image, bool hull_ver
   check_colours(image, "image");
   std::vector<Point3> p;
   if (hull_vertices) {
+    p.reserve(image.size());
     for (const Colour& c : image) p.push_back({c.r, c.g, c.b});
     return sorted_unique(std::move(p));
   }
   if (image.size() >= prefilter_from) p = hull_candidates(image);
-  else
+  else {
+    p.reserve(image.size());
     for (const Colour& c : image) p.push_back({c.r, c.g, c.b});
+  }
   p = sorted_unique(std::move(p));
   return image.size() < hull_from ? p : extreme_points_3(p);
 }
@@ -289,7 +302,8 @@ CanonicalConstraints3::CanonicalConstraints3(const std::vector<Colour>& canonica
   if (c->dimension == 3) {
     std::vector<internal::IntegerPlane3> planes;
     for (const internal::HalfSpace3& h : c->half_spaces) planes.push_back(internal::integer_plane(h));
-    c->integer = internal::clip_facets(std::move(planes));
+    // With G_c3's vertices: the rows of one image point then settle some sides without arithmetic.
+    c->integer = internal::clip_facets(std::move(planes), internal::extreme_points_3(pts));
   }
   planes_ = std::move(c);
 }

@@ -69,8 +69,9 @@ void positive_weight(std::array<mpz_class, 4>& h) {
 }
 
 // The canonical order of n vertices: lexicographic, comparing truncated doubles where both are
-// known and different (truncation is monotone) and otherwise exactly, by cross-multiplication of
-// the homogeneous coordinates `exact(i)` gives.
+// known and different (truncation is monotone), taking two known zeros as equal (a non-zero
+// coordinate's truncation is non-zero: within the range policy's 2^±138) and otherwise comparing
+// exactly, by cross-multiplication of the homogeneous coordinates `exact(i)` gives.
 template <class Exact>
 std::vector<std::size_t> canonical_order(const std::vector<std::array<std::optional<double>, 3>>& key, Exact exact) {
   std::vector<std::size_t> order(key.size());
@@ -80,6 +81,7 @@ std::vector<std::size_t> canonical_order(const std::vector<std::array<std::optio
       const auto& x = key[a][static_cast<std::size_t>(k)];
       const auto& y = key[b][static_cast<std::size_t>(k)];
       if (x && y && *x != *y) return *x < *y;
+      if (x && y && *x == 0) continue;  // both exactly 0
       if (const int c = compare_exactly(exact(a), exact(b), k)) return c < 0;
     }
     return false;
@@ -153,6 +155,7 @@ LazyConvexSet3 LazyConvexSet3::ordered(ConvexKind3 kind, const std::vector<std::
   State& s = *out.state_;
   s.kind = kind;
   std::vector<std::size_t> rank(n);
+  s.enclosures.reserve(n), s.zero.reserve(n), s.homogeneous.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     rank[order[i]] = i;
     s.enclosures.push_back(enclosures[order[i]]);

@@ -17,6 +17,7 @@
 #include <memory>
 #include <numeric>
 #include <optional>
+#include <stdexcept>
 #include <utility>
 
 namespace gmcc::internal {
@@ -86,13 +87,12 @@ struct Vertex : VertexDoubles {
 };
 
 class Clipper {
-  // One ClipGroup's rows: its facets, its points exactly, their channels' signs.
+  // One ClipGroup's rows: its facets, its points exactly.
   struct Group {
     const ClipFacets* facets;
     int nf;
     std::size_t first;                              // rows of the groups before it
     std::vector<std::array<mpz_class, 4>> points;  // the points as (p·L, L)
-    std::vector<std::array<int, 3>> signs;         // their channels' signs
     const std::vector<Point3>* source;             // the points as given
     std::vector<std::optional<WidePlane>> wide;    // (p·L, L) as double-word enclosures, scaled
   };
@@ -116,13 +116,15 @@ class Clipper {
     std::size_t rows = 6;
     for (const ClipGroup& g : groups) rows += g.facets->planes.size() * g.points->size();
     filters_.reserve(rows);
-    for (const IntegerPlane3& p : box_) filters_.push_back(filter_of(p)), box_wide_.push_back(wide_plane(p));
+    constant_.reserve(rows);
+    for (const IntegerPlane3& p : box_)
+      filters_.push_back(filter_of(p)), box_wide_.push_back(wide_plane(p)), constant_.push_back(-1);
     // Row 6 + first + i·F + f of a group is (a_f ⊙ p_i)·x <= b_f (F its facets, `first` the
     // rows of the groups before it); its filter copy a~_f ⊙ p~_i, b~_f·2^-e.
     for (const ClipGroup& g : groups) {
       const int nf = static_cast<int>(g.facets->planes.size());
       if (nf == 0 || g.points->empty()) continue;
-      groups_.push_back({g.facets, nf, filters_.size() - 6, {}, {}, g.points});
+      groups_.push_back({g.facets, nf, filters_.size() - 6, {}, g.points, {}});
       for (const Point3& p : *g.points) add_point(groups_.back(), p);
     }
     rows_.resize(filters_.size());
@@ -136,7 +138,7 @@ class Clipper {
               {4, {2, 6, 7, 3}}, {2, {0, 2, 3, 1}}, {5, {4, 5, 7, 6}}};
     live_ = {0, 1, 2, 3, 4, 5, 6, 7};
     incidence();
-    pack();
+    filter_.rebuild(live_);
     // The rows not implied by another (mark_implied), in a fixed pseudo-random order (a
     // multiplicative permutation), then deepest first. The set is the same in any order; the order
     // only decides how many cuts it takes (in point-major order the first point alone gives a copy
@@ -144,7 +146,7 @@ class Clipper {
     const std::size_t n = filters_.size() - 6;
     std::size_t step = 2654435761u % (n ? n : 1);
     while (n && std::gcd(step, n) != 1) ++step;
-    for (std::size_t k = 0, j = 0; k < n; ++k, j = (j + step) % n)
+    for (std::size_t k = 0, j = 0; k < n; ++k, j = j + step < n ? j + step : j + step - n)  // step < n
       if (!implied[6 + j]) order_.push_back(6 + j);
     deepest_first(box);
   }
@@ -182,6 +184,8 @@ class Clipper {
     std::vector<std::size_t> sorted(order_.size());
     for (std::size_t k = 0; k < order_.size(); ++k) sorted[start[band[k]]++] = order_[k];
     order_ = std::move(sorted);
+    queue_.resize(order_.size());
+    for (std::size_t k = 0; k < order_.size(); ++k) queue_[k] = filters_[order_[k]];
   }
 
   // Marks the rows of group g implied by another row of the same facet on x >= 0, which every
@@ -243,14 +247,14 @@ class Clipper {
     return d;
   }
 
-  // Point p's exact form and signs, and its rows' filter copies, one per facet of the group.
+  // Point p's exact form and signs, and its rows' filter copies and constant_row codes, one per
+  // facet of the group.
   void add_point(Group& group, const Point3& p) {
     group.points.push_back(homogeneous_integers(p));
     {
       const std::array<mpz_class, 4>& h = group.points.back();
       group.wide.push_back(wide_plane({&h[0], &h[1], &h[2], &h[3]}));
     }
-    group.signs.push_back({sgn(p.x), sgn(p.y), sgn(p.z)});
     const ScaledPoint q = scaled_point(p);
     const ClipFacets& facets = *group.facets;
     // A facet copy's non-zero coefficients are in [2^-151, 1) (plane_filter): when q's non-zero
@@ -258,7 +262,11 @@ class Clipper {
     // in [2^-199, 2^48], in range without a test per row.
     bool in_range_always = q.usable && q.scale >= 0x1p-48 && q.scale <= 0x1p48;
     for (int k = 0; k < 3; ++k) in_range_always = in_range_always && (q.c[k] == 0 || std::fabs(q.c[k]) >= 0x1p-48);
+    const int s[3] = {sgn(p.x), sgn(p.y), sgn(p.z)};
     for (std::size_t f = 0; f < facets.planes.size(); ++f) {
+      const IntegerPlane3& h = facets.planes[f];
+      const bool zero = sgn(h.a[0]) * s[0] == 0 && sgn(h.a[1]) * s[1] == 0 && sgn(h.a[2]) * s[2] == 0;
+      constant_.push_back(static_cast<signed char>(!zero ? -1 : sgn(h.b) >= 0 ? 1 : 0));
       Filter r;
       const std::array<double, 4>& a = facets.filters[f];
       if (q.usable && facets.usable[f]) {
@@ -269,16 +277,10 @@ class Clipper {
     }
   }
 
-  // The live vertices' filter (clip_filter.h), after every cut.
-  void pack() {
-    live_doubles_.clear();
-    for (int v : live_) live_doubles_.push_back(&vertices_[static_cast<std::size_t>(v)]);
-    filter_.rebuild(live_doubles_);
-  }
-
-  // True when plane i holds on a box containing the polytope.
-  bool box_inside(int i) const {
-    const Filter& f = filters_[static_cast<std::size_t>(i)];
+  // True when the k-th row in clipping order holds on a box containing the polytope (its filter
+  // copy read from queue_, in order).
+  bool box_inside_queued(std::size_t k) const {
+    const Filter& f = queue_[k];
     return f.usable && filter_.box_inside(f.c);
   }
 
@@ -288,14 +290,8 @@ class Clipper {
     return f.usable && filter_.none_outside(f.c);
   }
 
-  // Row i when a ⊙ p = 0: it reads 0 <= b, true (1) or no map at all (0); otherwise -1.
-  int constant_row(std::size_t i) const {
-    const RowOf r = row_of(i);
-    const std::array<int, 3>& s = r.group->signs[r.point];
-    const IntegerPlane3& a = r.group->facets->planes[r.facet];
-    if (sgn(a.a[0]) * s[0] != 0 || sgn(a.a[1]) * s[1] != 0 || sgn(a.a[2]) * s[2] != 0) return -1;
-    return sgn(a.b) >= 0 ? 1 : 0;
-  }
+  // Row i when a ⊙ p = 0: it reads 0 <= b, true (1) or no map at all (0); otherwise -1 (add_point).
+  int constant_row(std::size_t i) const { return constant_[i]; }
 
   ClippedPolytope run() {
     for (std::size_t k = 0; k < order_.size(); ++k) {
@@ -304,6 +300,7 @@ class Clipper {
         if (c == 0) return {ClippedPolytope::Outcome::empty, {}};
         continue;
       }
+      if (box_inside_queued(k)) continue;
       const ClippedPolytope::Outcome o = clip(static_cast<int>(i));
       if (o == ClippedPolytope::Outcome::flat && flat_point_ >= 0) return point(k + 1);
       if (o != ClippedPolytope::Outcome::polytope) return {o, {}};
@@ -398,6 +395,7 @@ class Clipper {
       GMCC_CHECK(sgn((*v.exact)[3]) != 0, "clip_polytope: a vertex's three planes are independent");
     }
     v.settle();
+    filter_.add(v);
     vertices_.push_back(std::move(v));
     return static_cast<int>(vertices_.size()) - 1;
   }
@@ -421,6 +419,10 @@ class Clipper {
         return sign;
       }
     }
+    if (const int sign = same_point_side(i, v); sign != 2) {
+      if (counts_) ++counts_->incident;
+      return sign;
+    }
     count(false);
     if (!v.exact) v.exact = exact_homogeneous(v.planes);
     const auto& h = *v.exact;
@@ -432,24 +434,51 @@ class Clipper {
     return sgn(s) * sgn(h[3]);
   }
 
+  // Row i's side at v when v is the meet of three rows of i's own image point p whose facets share
+  // a point c of ClipFacets::on (docs/derivations.md §4.6, "Rows of one point"): then p has no zero
+  // channel (three rows of a point with p_k = 0 have normals with a zero k-th coordinate, dependent),
+  // D_p·v = c (three independent planes meet only there), and row (a ⊙ p)·x <= b reads
+  // a·(D_p x) <= b: its side at v is c's for the facet, 0 on it, else −1 (c satisfies every facet).
+  // 2 when this does not apply.
+  int same_point_side(int i, const Vertex& v) const {
+    if (i < 6 || v.planes[0] < 6 || v.planes[1] < 6 || v.planes[2] < 6) return 2;
+    const RowOf r = row_of(static_cast<std::size_t>(i));
+    const std::vector<std::vector<std::uint64_t>>& on = r.group->facets->on;
+    if (on.empty()) return 2;
+    std::size_t f[3];
+    for (int k = 0; k < 3; ++k) {
+      const RowOf q = row_of(static_cast<std::size_t>(v.planes[static_cast<std::size_t>(k)]));
+      if (q.group != r.group || q.point != r.point) return 2;
+      f[k] = q.facet;
+    }
+    const std::vector<std::uint64_t>&a = on[f[0]], &b = on[f[1]], &c = on[f[2]], &d = on[r.facet];
+    for (std::size_t w = 0; w < a.size(); ++w)
+      if (const std::uint64_t m = a[w] & b[w] & c[w]) {
+        GMCC_CHECK((m & (m - 1)) == 0, "clip_polytope: a vertex's three planes are independent");
+        return (m & d[w]) != 0 ? 0 : -1;
+      }
+    return 2;
+  }
+
   void count(bool filtered) {
     if (counts_) ++(filtered ? counts_->filtered : counts_->exact);
   }
 
+  // Row i cut from the polytope (run() has found that it may not hold on the bounding box).
   ClippedPolytope::Outcome clip(int i) {
-    if (box_inside(i)) {
-      return ClippedPolytope::Outcome::polytope;
-    }
     if (none_outside(i)) {
       if (counts_) counts_->filtered += static_cast<long>(live_.size());
       return ClippedPolytope::Outcome::polytope;
     }
     if (sign_.size() < vertices_.size()) sign_.resize(vertices_.size() + 64);
     int in = 0, out = 0;
+    removed_.clear(), on_.clear();
     for (int v : live_) {
       const int s = side(i, vertices_[v]);
       sign_[v] = s;
       in += s < 0, out += s > 0;
+      if (s > 0) removed_.push_back(v);  // the vertices strictly outside (removed by a cut)
+      if (s == 0) on_.push_back(v);
     }
     if (out == 0) return ClippedPolytope::Outcome::polytope;  // nothing to cut
     if (in == 0) {
@@ -490,8 +519,8 @@ class Clipper {
   void faces_to_visit(std::size_t on) {
     visit_.clear();
     bool known = on <= 1;
-    for (std::size_t k = 0; k < live_.size() && known; ++k)
-      known = sign_[live_[k]] <= 0 || vertices_[static_cast<std::size_t>(live_[k])].degree >= 0;
+    for (std::size_t k = 0; k < removed_.size() && known; ++k)  // the vertices strictly outside
+      known = vertices_[static_cast<std::size_t>(removed_[k])].degree >= 0;
     if (!known) {
       for (std::size_t f = 0; f < faces_.size(); ++f)
         if (!faces_[f].cycle.empty()) visit_.push_back(f);
@@ -499,8 +528,7 @@ class Clipper {
     }
     if (stamp_.size() < faces_.size()) stamp_.resize(faces_.size() + 64, 0);
     ++stamp_now_;
-    for (int v : live_) {
-      if (sign_[v] <= 0) continue;
+    for (int v : removed_) {
       const Vertex& x = vertices_[static_cast<std::size_t>(v)];
       for (int k = 0; k < x.degree; ++k) {
         const auto f = static_cast<std::size_t>(x.faces[static_cast<std::size_t>(k)]);
@@ -602,17 +630,16 @@ class Clipper {
     faces_.push_back(std::move(cap));
     // A vertex not strictly outside stays on a face: one strictly inside keeps every face through
     // it, one on the plane is a vertex of the cap.
+    added_.clear();
     live_.erase(std::remove_if(live_.begin(), live_.end(), [&](int v) { return sign_[v] > 0; }), live_.end());
-    if (on == 1)
-      for (int v : live_)
-        if (sign_[v] == 0) vertices_[static_cast<std::size_t>(v)].degree = -1;
+    if (on == 1) vertices_[static_cast<std::size_t>(on_[0])].degree = -1;
     for (const Cut& c : cuts_) {
-      live_.push_back(c.vertex);
+      live_.push_back(c.vertex), added_.push_back(c.vertex);
       Vertex& x = vertices_[static_cast<std::size_t>(c.vertex)];
       x.faces[0] = c.faces[0], x.faces[1] = c.faces[1], x.faces[2] = cap_index, x.degree = 3;
     }
     if (on > 1) incidence();
-    pack();
+    filter_.update(live_, removed_, added_);
   }
 
   // Plane i's double-word copy: a box side's, or a row's from its facet's and point's (a copy:
@@ -664,16 +691,19 @@ class Clipper {
     std::vector<int> index(vertices_.size(), -1);
     for (std::size_t j = 0; j < n; ++j) index[static_cast<std::size_t>(live_[j])] = static_cast<int>(j);
     std::vector<std::vector<std::size_t>> faces;
+    faces.reserve(faces_.size());
     for (const Face& f : faces_) {
       if (f.cycle.empty()) continue;  // a face cut away
       std::vector<std::size_t> c;
+      c.reserve(f.cycle.size());
       for (int v : f.cycle) c.push_back(static_cast<std::size_t>(index[static_cast<std::size_t>(v)]));
       faces.push_back(std::move(c));
     }
     wide_index_.assign(filters_.size(), -1);
     auto meets = std::make_shared<PlaneMeets>();
-    meets->meets.resize(n), meets->made.resize(n);
+    meets->meets.resize(n), meets->made.resize(n), meets->planes.reserve(3 * n);
     std::vector<LazyConvexSet3::TruncatedVertex> vertices;
+    vertices.reserve(n);
     std::vector<int> local(filters_.size(), -1);
     std::vector<char> lazy(n);
     for (std::size_t j = 0; j < n; ++j) {
@@ -738,6 +768,7 @@ class Clipper {
   std::vector<Group> groups_;
   std::vector<IntegerPlane3> box_;
   std::vector<Filter> filters_;                   // every plane's, box first
+  std::vector<signed char> constant_;             // every plane's constant_row
   std::vector<std::unique_ptr<IntegerPlane3>> rows_;  // exact rows, on demand
   std::vector<Vertex> vertices_;
   std::vector<Face> faces_;
@@ -754,9 +785,11 @@ class Clipper {
   unsigned stamp_now_ = 0;
   std::vector<int> scratch_;      // scratch for cut_faces: a cut face's new cycle
   std::vector<int> next_on_cap_;  // scratch for cut_faces (-1 between cuts)
-  LiveVertexFilter filter_;                         // the live vertices' (pack())
-  std::vector<const VertexDoubles*> live_doubles_;  // scratch for pack()
+  LiveVertexFilter filter_;             // the live vertices' (after every cut)
+  std::vector<int> removed_, on_, added_;  // scratch for clip: the live vertices strictly outside the
+                                           // row and on it; the vertices a cut made
   std::vector<std::size_t> order_;  // the rows, in clipping order
+  std::vector<Filter> queue_;       // their filter copies, in that order
   std::vector<int> sign_;
   std::array<std::array<mpz_class, 3>, 3> cross_;  // scratch for exact_homogeneous
   std::vector<std::optional<WidePlane>> box_wide_;    // the box sides' double-word copies
@@ -787,13 +820,23 @@ std::optional<std::array<double, 4>> plane_filter(const IntegerPlane3& p) {
   return c;
 }
 
-ClipFacets clip_facets(std::vector<IntegerPlane3> planes) {
+ClipFacets clip_facets(std::vector<IntegerPlane3> planes, const std::vector<Point3>& vertices) {
   ClipFacets out;
+  std::vector<std::array<mpz_class, 4>> h;  // the points as (X, Y, Z, L), L > 0
+  for (const Point3& v : vertices) h.push_back(homogeneous_integers(v));
+  mpz_class side;
   for (const IntegerPlane3& p : planes) {
     const Filter f = filter_of(p);
     out.filters.push_back({f.c[0], f.c[1], f.c[2], f.c[3]});
     out.usable.push_back(f.usable);
     out.wide.push_back(wide_plane(p));
+    if (h.empty()) continue;
+    std::vector<std::uint64_t>& on = out.on.emplace_back((h.size() + 63) / 64, 0);
+    for (std::size_t j = 0; j < h.size(); ++j) {  // sign(a·X − b·L), exactly
+      side = p.a[0] * h[j][0] + p.a[1] * h[j][1] + p.a[2] * h[j][2] - p.b * h[j][3];
+      if (sgn(side) > 0) throw std::invalid_argument("clip_facets: a point outside a half-space");
+      if (sgn(side) == 0) on[j / 64] |= std::uint64_t(1) << (j % 64);
+    }
   }
   out.planes = std::move(planes);
   return out;

@@ -71,6 +71,13 @@ std::array<Rational, 3> ray_of(const Point3& u) {
   divide_by_content_of(z[0], z[1], z[2]);
   return {Rational(z[0]), Rational(z[1]), Rational(z[2])};
 }
+// The same for the point (X/W, Y/W, Z/W), W > 0, from its homogeneous integers: (X, Y, Z) divided
+// by its content is that primitive vector, without the point's lowest terms.
+std::array<Rational, 3> ray_of(const std::array<mpz_class, 4>& h) {
+  mpz_class z[3] = {h[0], h[1], h[2]};
+  divide_by_content_of(z[0], z[1], z[2]);
+  return {Rational(z[0]), Rational(z[1]), Rational(z[2])};
+}
 }  // namespace
 
 double diagonal_map_angular_error_deg(const Point3& u, const Point3& v) {
@@ -90,7 +97,8 @@ double worst_case_map_deg_3d(const LazyConvexSet3& F, const Point3& m) {
   // among the filter's contenders (in vertex order, so that ties go to the first vertex as over
   // all of them); a lone contender is the worst vertex without a comparison.
   const std::vector<std::size_t> contenders = worst_case_contenders(F, m);
-  if (contenders.size() == 1 && !is_zero(m)) return diagonal_map_angular_error_deg(m, F.vertex(contenders[0]));
+  if (contenders.size() == 1 && !is_zero(m))  // diagonal_map_angular_error_deg's rays (a non-zero vertex)
+    return internal::angle_deg(ray_of(m), ray_of(F.homogeneous(contenders[0])));
   const Point3* worst = nullptr;
   Rational worst_cos2;
   for (std::size_t i : contenders) {

@@ -10,6 +10,7 @@
 #include <gmcc/geometry/convex_set_3.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
+#include <gmcc/geometry/integers_over_lcm.h>
 
 #include "internal/crule_exact.h"
 #include "internal/polytope_clip.h"
@@ -262,6 +263,53 @@ BOOST_AUTO_TEST_CASE(clip_decides_ties_exactly) {
 // double) against the general route on the same colours divided by 3 (rationals: the filtered
 // prefilter and CGAL's exact-constructions hull), on sets with many points on the hull's faces
 // and edges, flat and collinear sets, repeats, and the extremes 0 and 65535.
+BOOST_AUTO_TEST_CASE(rows_of_one_point_settled_by_the_gamut_incidences) {
+  // The clip with G's vertices (ClipFacets::on) against the clip without them, on scenes where
+  // G's vertices have more than three facets (small integer gamuts) and on Munsell-like ones: the
+  // same exact set, and sides the filter cannot settle read from the incidences instead of made
+  // exact (docs/derivations.md §4.6, "Rows of one point").
+  Rng rng(4606);
+  long incident = 0, exact_with = 0, exact_without = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    std::vector<Point3> g{{0, 0, 0}};
+    for (int i = 0; i < 5 + trial % 20; ++i) {
+      const Colour c = random_colour(rng, trial % 2 ? 3 : 1000, trial % 2 ? 1 : 64);
+      g.push_back({c.r, c.g, c.b});
+    }
+    g = internal::sorted_unique(std::move(g));
+    if (internal::affine_dimension(g) < 3) continue;
+    std::vector<internal::IntegerPlane3> planes;
+    for (const internal::HalfSpace3& h : internal::hull_half_spaces_3(g)) {
+      const mpz_class l = lcm_of_denominators_of(h.a.x, h.a.y, h.a.z, h.b);
+      planes.push_back({{times_lcm(h.a.x, l), times_lcm(h.a.y, l), times_lcm(h.a.z, l)}, times_lcm(h.b, l)});
+    }
+    const internal::ClipFacets with = internal::clip_facets(planes, internal::extreme_points_3(g));
+    const internal::ClipFacets without = internal::clip_facets(planes);
+    std::vector<Point3> points;
+    for (int i = 0; i < 1 + trial % 6; ++i) {
+      const Colour c = random_colour(rng, trial % 2 ? 3 : 1000, trial % 2 ? 1 : 16);
+      if (sgn(c.r) > 0 && sgn(c.g) > 0 && sgn(c.b) > 0) points.push_back({c.r, c.g, c.b});
+    }
+    if (points.empty()) continue;
+    points = internal::sorted_unique(std::move(points));
+    const Point3 box{R(100), R(100), R(100)};
+    internal::ClipCounts a, b;
+    const internal::ClippedPolytope x = internal::clip_polytope(box, with, points, &a);
+    const internal::ClippedPolytope y = internal::clip_polytope(box, without, points, &b);
+    BOOST_TEST((x.outcome == y.outcome));
+    if (x.outcome != y.outcome) continue;
+    if (x.outcome != internal::ClippedPolytope::Outcome::flat) BOOST_TEST((x.set.exact() == y.set.exact()));
+    BOOST_TEST(b.incident == 0);
+    incident += a.incident, exact_with += a.exact, exact_without += b.exact;
+  }
+  BOOST_TEST(incident > 0);
+  BOOST_TEST(exact_with + incident == exact_without);
+  // Points outside a half-space are refused.
+  std::vector<internal::IntegerPlane3> unit{{{mpz_class(1), mpz_class(0), mpz_class(0)}, mpz_class(1)}};
+  BOOST_CHECK_THROW(internal::clip_facets(unit, {Point3{2, 0, 0}}), std::invalid_argument);
+  BOOST_TEST(internal::clip_facets(unit, {Point3{1, 0, 0}, Point3{0, 0, 0}}).on[0][0] == 1u);
+}
+
 BOOST_AUTO_TEST_CASE(small_integer_colour_hulls_agree_with_the_general_route) {
   Rng rng(2611);
   for (int trial = 0; trial < 40; ++trial) {

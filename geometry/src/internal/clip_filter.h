@@ -2,10 +2,11 @@
 // The clip's cheap tests of a half-space against the live vertices of its polytope
 // (polytope_clip.cpp, docs/derivations.md §4.6): from the vertices' filtered homogeneous
 // coordinates, a bounding box of the polytope and, for the all-inside pass, the vertices grouped
-// by octant about the polytope's centre, each group with a certified box, so that a half-space
+// by octant about a centre of the polytope, each group with a certified box, so that a half-space
 // clear of a group's box skips its vertices. Every answer is certified (a true answer is true of
 // the exact vertices); a false one decides nothing. Internal to gmcc::geometry.
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -29,27 +30,51 @@ struct VertexDoubles {
 
 class LiveVertexFilter {
  public:
-  // The filter of the polytope whose vertices are `live` (rebuilt after every cut).
-  void rebuild(const std::vector<const VertexDoubles*>& live);
+  // Vertex number add()'s count so far (vertices are numbered in the order they are added).
+  void add(const VertexDoubles& v);
+  // The filter of the polytope whose vertices are `live` (numbers from add()), from scratch: the
+  // groups about the mean of the vertices' box centres, each group's box tight.
+  void rebuild(const std::vector<int>& live);
+  // The same after a cut that removed the vertices `removed` and added `added` (the others stay
+  // live): the removed ones' records made inert, the added ones put in their octant's group about
+  // the same centre, boxes widened; a rebuild once as many records changed as are live, or when a
+  // vertex lacks bounds. `live` is the new live set (for the bounding box, kept tight).
+  void update(const std::vector<int>& live, const std::vector<int>& removed, const std::vector<int>& added);
   // True when the half-space a·x <= b (a filter copy: a0, a1, a2, b, each within a relative 6u
   // of the exact plane's scaled by a power of 2) holds on a box containing the polytope.
-  bool box_inside(const double* a) const;
+  bool box_inside(const double* a) const;  // (inline below: it is called for most rows)
   // True when no live vertex is strictly outside the half-space (each strictly inside, exactly
   // on it, or in a group whose box holds in it).
   bool none_outside(const double* a) const;
 
  private:
   struct Group {
-    double lo[3], hi[3];  // certified bounds of its vertices' coordinates (lo >= 0)
-    std::size_t begin, end;  // its vertices in packed_, by 6
-    bool boxed;           // the bounds are usable
+    double lo[3], hi[3];         // certified bounds of its vertices' coordinates (lo >= 0)
+    std::vector<double> packed;  // per vertex: h[0..3], then α and β (see none_outside)
+    bool boxed;                  // the bounds are usable
   };
   bool group_inside(const Group& g, const double* a) const;
-  std::vector<double> packed_;  // per live vertex, grouped: h[0..3], then α and β (see none_outside)
-  std::vector<Group> groups_;
+  std::size_t octant(const VertexDoubles& v) const;
+  void place(int v);
+  std::vector<VertexDoubles> vertices_;  // every vertex added, by number
+  // Per vertex number: its group and its record's offset in the group's `packed` (live ones).
+  std::vector<std::array<std::size_t, 2>> where_;
+  std::array<Group, 8> groups_;  // by octant about centre_ (group 0 only, when !box_ok_)
+  double centre_[3] = {0, 0, 0};
+  std::size_t changed_ = 0;  // records changed since the last rebuild
   std::array<double, 3> top_{};  // the coordinates' upper bounds over the polytope
-  std::vector<int> octant_;                    // scratch for rebuild: each vertex's group
   bool all_filtered_ = false, box_ok_ = false;
 };
+
+// The half-space holds on the box [0, top_] ⊇ the polytope: Σ max(a_k, 0)·top_k <= b, with
+// the filter copy's coefficients within 6u of the exact ones (scaled) and the sum's roundings
+// covered by 1 + 16u on the left and 1 - 16u on the right.
+inline bool LiveVertexFilter::box_inside(const double* a) const {
+  constexpr double u = 0x1p-53;
+  if (!box_ok_) return false;
+  const double lhs =
+      (std::max(a[0], 0.0) * top_[0] + std::max(a[1], 0.0) * top_[1] + std::max(a[2], 0.0) * top_[2]) * (1 + 16 * u);
+  return lhs <= a[3] * (1 - 16 * u);
+}
 
 }  // namespace gmcc::internal

@@ -10,6 +10,7 @@
 #include <gmpxx.h>
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -30,6 +31,7 @@ using WidePlane = std::array<numerics::DWEnclosure, 4>;
 struct ClipCounts {
   long filtered = 0;  // settled by the double filter
   long exact = 0;     // needed the exact integer evaluation
+  long incident = 0;  // settled by the facets' incidences with their polytope's vertices (ClipFacets::on)
 };
 
 // What clip_polytope found: a 3-dimensional polytope or a point (in `set`, canonical form, its
@@ -55,8 +57,14 @@ struct ClipFacets {
   std::vector<std::array<double, 4>> filters;  // a0, a1, a2, b scaled; valid where usable
   std::vector<char> usable;
   std::vector<std::optional<WidePlane>> wide;  // double-word copies (plane_meets.h), where in range
+  // When the half-spaces' points `vertices` are given (clip_facets): on[f] marks those on plane f,
+  // a bitset in words of 64 (every such point is inside every half-space); empty otherwise. It
+  // settles a row's side at a vertex made of three rows of the same image point without
+  // arithmetic (docs/derivations.md §4.6, "Rows of one point").
+  std::vector<std::vector<std::uint64_t>> on;
 };
-ClipFacets clip_facets(std::vector<IntegerPlane3> planes);
+// \throws std::invalid_argument when a point of `vertices` is outside a half-space.
+ClipFacets clip_facets(std::vector<IntegerPlane3> planes, const std::vector<Point3>& vertices = {});
 
 // The intersection of the box 0 <= x_k <= box[k] (box[k] > 0) with the half-spaces
 // (a ⊙ p)·x <= b for every point p of `points` (point after point) and every facet a·x <= b.
