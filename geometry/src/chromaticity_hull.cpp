@@ -1,4 +1,5 @@
 #include <gmcc/geometry/chromaticity_hull.h>
+#include <gmcc/numerics/filtered_sign.h>
 
 #include "internal/monotone_chain.h"
 
@@ -16,23 +17,21 @@ using Colour3 = std::array<double, 3>;
 // a·b − c·d is within 3u·(|ab| + |cd|) of the exact value, and the 3×3 cofactor expansion below
 // within 8u·(its magnitude sum); the factors used here (4u, 16u) leave room, and a decision is
 // taken in double only when |value| exceeds the bound.
-constexpr double u = 0x1p-53;
+constexpr double u = numerics::unit_roundoff;
 
 Rational exact(double x) { return rational_from_double(x); }
 
 // sign(r1·b2 − r2·b1): the order of x = r/b.
 int compare_x(const Colour3& p, const Colour3& q) {
   const double a = p[0] * q[2], b = q[0] * p[2];
-  const double d = a - b, bound = 4 * u * (std::fabs(a) + std::fabs(b));
-  if (d > bound) return 1;
-  if (d < -bound) return -1;
+  const numerics::UncertainSign s = numerics::sign_within(a - b, 4 * u * (std::fabs(a) + std::fabs(b)));
+  if (s.is_certain()) return s.lo;
   return sgn(Rational(exact(p[0]) * exact(q[2]) - exact(q[0]) * exact(p[2])));
 }
 int compare_y(const Colour3& p, const Colour3& q) {
   const double a = p[1] * q[2], b = q[1] * p[2];
-  const double d = a - b, bound = 4 * u * (std::fabs(a) + std::fabs(b));
-  if (d > bound) return 1;
-  if (d < -bound) return -1;
+  const numerics::UncertainSign s = numerics::sign_within(a - b, 4 * u * (std::fabs(a) + std::fabs(b)));
+  if (s.is_certain()) return s.lo;
   return sgn(Rational(exact(p[1]) * exact(q[2]) - exact(q[1]) * exact(p[2])));
 }
 bool less_xy(const Colour3& p, const Colour3& q) {
@@ -48,9 +47,8 @@ int orientation3(const Colour3& p, const Colour3& q, const Colour3& s) {
   const double mag = std::fabs(p[0]) * (std::fabs(q[1] * s[2]) + std::fabs(s[1] * q[2])) +
                      std::fabs(p[1]) * (std::fabs(q[0] * s[2]) + std::fabs(s[0] * q[2])) +
                      std::fabs(p[2]) * (std::fabs(q[0] * s[1]) + std::fabs(s[0] * q[1]));
-  const double bound = 16 * u * mag;
-  if (det > bound) return 1;
-  if (det < -bound) return -1;
+  const numerics::UncertainSign filtered = numerics::sign_within(det, 16 * u * mag);
+  if (filtered.is_certain()) return filtered.lo;
   const Rational P[3] = {exact(p[0]), exact(p[1]), exact(p[2])},
                  Q[3] = {exact(q[0]), exact(q[1]), exact(q[2])},
                  S[3] = {exact(s[0]), exact(s[1]), exact(s[2])};

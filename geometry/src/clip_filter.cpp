@@ -1,5 +1,6 @@
 // The clip's certified box and all-inside tests over the live vertices (internal/clip_filter.h).
 #include "internal/clip_filter.h"
+#include <gmcc/numerics/filtered_sign.h>
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +9,7 @@
 namespace gmcc::internal {
 namespace {
 
-constexpr double u = 0x1p-53;
+constexpr double u = numerics::unit_roundoff;
 // Group boxes are used only with non-zero bounds in [2^-400, 2^400]: their products with filter
 // coefficients (0 or in [2^-200, 2^200]) are then normal, so each rounding is within u relative.
 constexpr double box_min = 0x1p-400, box_max = 0x1p400;
@@ -133,7 +134,8 @@ bool LiveVertexFilter::none_outside(const double* a) const {
     for (std::size_t k = 0; k < g.packed.size(); k += 6) {
       const double* h = &g.packed[k];
       const double v = a[0] * h[0] + a[1] * h[1] + a[2] * h[2] - a[3] * h[3], bound = m * h[4] + b * h[5];
-      if (!(v < -bound || (bound == 0 && v == 0))) return false;
+      // Inside: certainly negative, or exactly 0 (a zero bound: every term exactly zero).
+      if (!(numerics::certainly_negative(numerics::sign_within(v, bound)) || (bound == 0 && v == 0))) return false;
     }
   }
   return true;

@@ -10,6 +10,7 @@
 #include <gmcc/geometry/integers_over_lcm.h>
 #include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/numerics/rational_to_float.h>
+#include <gmcc/numerics/filtered_sign.h>
 
 #include "internal/crule_exact.h"
 #include "internal/polytope_clip.h"
@@ -75,7 +76,7 @@ IntegerPlane3 integer_plane(const HalfSpace3& h) {
 
 // Below this many colours the image hull is left to CGAL's exact hull directly.
 constexpr std::size_t prefilter_from = 64;
-constexpr double u = 0x1p-53;
+constexpr double u = numerics::unit_roundoff;
 
 // Whether every channel is an integer in [0, 2^16) (pixel values): then planes through three
 // such points have integer coefficients below 2^33 and offsets below 2^51 in magnitude, and a

@@ -2,6 +2,7 @@
 // simplex) on integer-scaled rows, with Bland's rule and constraint generation (docs/math.md §1b
 // "The exact LP"). A CGAL translation unit of its own, used by feasible_set_3d and min_violation.
 #include "internal/linear_program.h"
+#include <gmcc/numerics/filtered_sign.h>
 
 #include <gmcc/geometry/integers_over_lcm.h>
 
@@ -121,7 +122,7 @@ class RowFilter {
       const double p = r[j] * x[j];
       s += p, t += std::fabs(p);
     }
-    return s < -16 * 0x1p-53 * t;
+    return s < -16 * numerics::unit_roundoff * t;
   }
 
  private:

@@ -1,5 +1,6 @@
 // A box clipped by integer half-spaces with filtered exact predicates (docs/derivations.md §4.6).
 #include "internal/polytope_clip.h"
+#include <gmcc/numerics/filtered_sign.h>
 
 #include "internal/clip_filter.h"
 #include "internal/plane_meets.h"
@@ -24,7 +25,7 @@ namespace gmcc::internal {
 namespace {
 
 // u = 2^-53, the unit roundoff of double.
-constexpr double u = 0x1p-53;
+constexpr double u = numerics::unit_roundoff;
 
 // A plane's filter copy: a_k·2^-E and b·2^-E (E the largest binary exponent among them), each
 // truncated to 53 bits by mpz_get_d_2exp (relative error below 2u; the scaling by a power of 2 is
@@ -326,14 +327,12 @@ class Clipper {
             LazyConvexSet3::from_homogeneous(ConvexKind3::point, {*v.exact}, {})};
   }
 
-  // The sign of a 3×3 determinant-like value from the filter, or nothing when the bound is hit.
-  static int filtered_sign(double value, double bound) {
-    if (value > bound) return 1;
-    if (value < -bound) return -1;
+  // The sign of a 3×3 determinant-like value within its filter's bound (filtered_sign.h).
+  static numerics::UncertainSign filtered_sign(double value, double bound) {
     // A zero bound means every term was exactly zero (non-negative sums of products of normal
     // numbers vanish only then), so the value is exact: 0 here.
-    if (bound == 0) return 0;
-    return 2;  // undecided
+    if (bound == 0 && value == 0) return numerics::UncertainSign::certain(0);
+    return numerics::sign_within(value, bound);
   }
 
   // Plane i's exact coefficients, built on first use.
@@ -380,8 +379,9 @@ class Clipper {
       }
       v.h[3] = p.c[0] * c[0][0] + p.c[1] * c[0][1] + p.c[2] * c[0][2];
       v.err[3] = 32 * u * (std::fabs(p.c[0]) * ca[0][0] + std::fabs(p.c[1]) * ca[0][1] + std::fabs(p.c[2]) * ca[0][2]);
-      const int w = filtered_sign(v.h[3], v.err[3]);
-      if (w != 2) {
+      const numerics::UncertainSign ws = filtered_sign(v.h[3], v.err[3]);
+      if (ws.is_certain()) {
+        const int w = ws.lo;
         count(true);
         if (w < 0)
           for (double& x : v.h) x = -x;
@@ -413,13 +413,15 @@ class Clipper {
                        std::fabs(a[3] * v.h[3]);
       const double E = std::fabs(a[0]) * v.err[0] + std::fabs(a[1]) * v.err[1] +
                        std::fabs(a[2]) * v.err[2] + std::fabs(a[3]) * v.err[3];
-      const int sign = filtered_sign(s, (E + 16 * u * (T + E)) * (1 + 64 * u));
-      if (sign != 2) {
+      const numerics::UncertainSign filtered = filtered_sign(s, (E + 16 * u * (T + E)) * (1 + 64 * u));
+      if (filtered.is_certain()) {
+        const int sign = filtered.lo;
         count(true);
         return sign;
       }
     }
-    if (const int sign = same_point_side(i, v); sign != 2) {
+    if (const numerics::UncertainSign known = same_point_side(i, v); known.is_certain()) {
+      const int sign = known.lo;
       if (counts_) ++counts_->incident;
       return sign;
     }
@@ -439,25 +441,26 @@ class Clipper {
   // channel (three rows of a point with p_k = 0 have normals with a zero k-th coordinate, dependent),
   // D_p·v = c (three independent planes meet only there), and row (a ⊙ p)·x <= b reads
   // a·(D_p x) <= b: its side at v is c's for the facet, 0 on it, else −1 (c satisfies every facet).
-  // 2 when this does not apply.
-  int same_point_side(int i, const Vertex& v) const {
-    if (i < 6 || v.planes[0] < 6 || v.planes[1] < 6 || v.planes[2] < 6) return 2;
+  // Indeterminate when this does not apply.
+  numerics::UncertainSign same_point_side(int i, const Vertex& v) const {
+    const numerics::UncertainSign unknown = numerics::UncertainSign::indeterminate();
+    if (i < 6 || v.planes[0] < 6 || v.planes[1] < 6 || v.planes[2] < 6) return unknown;
     const RowOf r = row_of(static_cast<std::size_t>(i));
     const std::vector<std::vector<std::uint64_t>>& on = r.group->facets->on;
-    if (on.empty()) return 2;
+    if (on.empty()) return unknown;
     std::size_t f[3];
     for (int k = 0; k < 3; ++k) {
       const RowOf q = row_of(static_cast<std::size_t>(v.planes[static_cast<std::size_t>(k)]));
-      if (q.group != r.group || q.point != r.point) return 2;
+      if (q.group != r.group || q.point != r.point) return unknown;
       f[k] = q.facet;
     }
     const std::vector<std::uint64_t>&a = on[f[0]], &b = on[f[1]], &c = on[f[2]], &d = on[r.facet];
     for (std::size_t w = 0; w < a.size(); ++w)
       if (const std::uint64_t m = a[w] & b[w] & c[w]) {
         GMCC_CHECK((m & (m - 1)) == 0, "clip_polytope: a vertex's three planes are independent");
-        return (m & d[w]) != 0 ? 0 : -1;
+        return numerics::UncertainSign::certain((m & d[w]) != 0 ? 0 : -1);
       }
-    return 2;
+    return unknown;
   }
 
   void count(bool filtered) {

@@ -1,4 +1,5 @@
 #include <gmcc/selection/mean_3d_monte_carlo.h>
+#include <gmcc/numerics/filtered_sign.h>
 
 #include <gmcc/numerics/interrupt.h>
 
@@ -26,8 +27,8 @@ int side_sign(const Side& s, double x, double y, double z) {
   const double value = s.ad * x + s.bd * y + s.cd * z;
   const double bound =
       filter_bound * (std::fabs(s.ad) * x + std::fabs(s.bd) * y + std::fabs(s.cd) * z);
-  if (value > bound) return 1;
-  if (value < -bound) return -1;
+  const numerics::UncertainSign filtered = numerics::sign_within(value, bound);
+  if (filtered.is_certain()) return filtered.lo;
   const Rational exact = s.a * rational_from_double(x) + s.b * rational_from_double(y) +
                          s.c * rational_from_double(z);
   return sgn(exact);

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <vector>
+#include <gmcc/numerics/filtered_sign.h>
 
 namespace gmcc::internal {
 
@@ -70,7 +71,7 @@ class LiveVertexFilter {
 // the filter copy's coefficients within 6u of the exact ones (scaled) and the sum's roundings
 // covered by 1 + 16u on the left and 1 - 16u on the right.
 inline bool LiveVertexFilter::box_inside(const double* a) const {
-  constexpr double u = 0x1p-53;
+  constexpr double u = numerics::unit_roundoff;
   if (!box_ok_) return false;
   const double lhs =
       (std::max(a[0], 0.0) * top_[0] + std::max(a[1], 0.0) * top_[1] + std::max(a[2], 0.0) * top_[2]) * (1 + 16 * u);

@@ -4,6 +4,7 @@
 
 #include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/geometry/integers_over_lcm.h>
+#include <gmcc/numerics/filtered_sign.h>
 
 #include "internal/half_plane.h"
 
@@ -25,7 +26,7 @@ struct Line {
   mpz_class a, b, c;
 };
 // u = 2^-53, the unit roundoff of double.
-constexpr double u = 0x1p-53;
+constexpr double u = numerics::unit_roundoff;
 // Magnitudes allowed in filtered evaluation: every non-zero coefficient in [2^-300, 2^300], so
 // that products of up to three stay normal (no underflow or overflow) and the error bounds
 // below, which are relative, hold. Inputs outside this range take the exact path.

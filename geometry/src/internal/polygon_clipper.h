@@ -4,6 +4,7 @@
 // (docs/derivations.md §4.3, docs/math.md §1a′). Internal to gmcc::geometry.
 
 #include <gmcc/geometry/feasible_polygon.h>
+#include <gmcc/numerics/filtered_sign.h>
 
 #include "internal/canonical_lines.h"
 #include "internal/extended_value.h"
@@ -138,9 +139,8 @@ class PolygonClipper {
     if (filtered_) {
       const ApproximateLine &p = lines_[i].approx, &q = lines_[j].approx;
       const double l = p.a * q.b, r = q.a * p.b;
-      const double w = l - r, bound = 16 * u * (std::fabs(l) + std::fabs(r));
-      if (w > bound) return 1;
-      if (w < -bound) return -1;
+      const numerics::UncertainSign w = numerics::sign_within(l - r, 16 * u * (std::fabs(l) + std::fabs(r)));
+      if (w.is_certain()) return w.lo;
     }
     const Line &p = exact(i), &q = exact(j);
     return sgn(mpz_class(p.a * q.b - q.a * p.b));
@@ -230,9 +230,9 @@ class PolygonClipper {
     if (filtered_ && fm) {
       const ApproximateLine& l = lines_[h].approx;
       const double x = l.a * (*fm)[0], y = l.b * (*fm)[1];
-      const double s = x + y - l.c, bound = 16 * u * (std::fabs(x) + std::fabs(y) + std::fabs(l.c));
-      if (s > bound) return 1;
-      if (s < -bound) return -1;
+      const numerics::UncertainSign s =
+          numerics::sign_within(x + y - l.c, 16 * u * (std::fabs(x) + std::fabs(y) + std::fabs(l.c)));
+      if (s.is_certain()) return s.lo;
     }
     const Line& l = exact(h);
     return sgn(Rational(l.a * m.x + l.b * m.y - l.c));
@@ -304,9 +304,8 @@ class PolygonClipper {
       const double mag = std::fabs(h.a) * (std::fabs(x1) + std::fabs(x2)) +
                          std::fabs(h.b) * (std::fabs(y1) + std::fabs(y2)) +
                          std::fabs(h.c) * (std::fabs(w1) + std::fabs(w2));
-      const double bound = 32 * u * mag;
-      if (s > bound) return 1;
-      if (s < -bound) return -1;
+      const numerics::UncertainSign filtered = numerics::sign_within(s, 32 * u * mag);
+      if (filtered.is_certain()) return filtered.lo;
       if (mag == 0) return 0;  // every term has an exactly zero factor (no underflow in range)
     }
     const Line &p = exact(pi), &q = exact(qi), &h = exact(hi);

@@ -8,6 +8,7 @@
 #include <gmcc/geometry/feasible_polygon.h>
 #include <gmcc/selection/certified_rule_errors.h>
 #include <gmcc/selection/rule.h>
+#include <gmcc/numerics/filtered_sign.h>
 
 #include "angle.h"
 #include "closed_form.h"
@@ -44,7 +45,7 @@ inline LongEnclosure enclose<LongEnclosure>(const Rational& q) {
 
 // The edges' lines are double approximations (each coefficient within 6·2^-53 of the same
 // positive multiple of the exact line), whatever E is.
-inline constexpr double line_error = 6 * 0x1p-53;
+inline constexpr double line_error = 6 * numerics::unit_roundoff;
 
 // Max-area's candidates (max_area_candidates.h) from F's vertex enclosures v and edge lines: the
 // edge a·x + b·y = c has Δx·Δy < 0 iff a·b > 0, and there m1·m2 is concave along it with its
