@@ -56,21 +56,21 @@ std::optional<std::array<double, 3>> grey_edge_estimate(const RgbImage& image, s
   std::array<double, 3> top{0, 0, 0};
   each_kept([&](int c, double v) { top[c] = std::max(top[c], v); });
   if (top[0] == 0 || top[1] == 0 || top[2] == 0) return std::nullopt;
-  std::array<double, 3> e = top;
+  // Structure reached only through the Gaussian's tails (σ below about 0.1: weights near 1e-240,
+  // or subnormal) can be so small that the light top·‖v/top‖ and the squares of its length
+  // underflow, to an imprecise direction or a length of 0 (fuzz_edge_colours' findings): the light
+  // is a direction, so the largest values are then brought near 1 by a power of 2 (exactly) first.
+  std::array<double, 3> scaled = top;
+  const double largest = std::max({top[0], top[1], top[2]});
+  if (largest < 0x1p-500)
+    for (double& t : scaled) t = std::ldexp(t, -std::ilogb(largest));
+  std::array<double, 3> e = scaled;
   if (std::isfinite(o.p)) {
     std::array<double, 3> sum{0, 0, 0};
     each_kept([&](int c, double v) { sum[c] += o.p == 1 ? v / top[c] : std::pow(v / top[c], o.p); });
-    for (int c = 0; c < 3; ++c) e[c] = top[c] * std::pow(sum[c], 1 / o.p);
+    for (int c = 0; c < 3; ++c) e[c] = scaled[c] * std::pow(sum[c], 1 / o.p);
   }
-  // Structure reached only through the Gaussian's tails (σ below about 0.1: weights near
-  // 1e-240, or subnormal) can be so small that the squares underflow and the length is 0 or
-  // imprecise (fuzz_edge_colours' finding): then the channels are scaled by the largest first.
-  double n = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-  if (!(n >= 0x1p-500)) {
-    const double largest = std::max({e[0], e[1], e[2]});
-    for (double& v : e) v /= largest;
-    n = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-  }
+  const double n = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
   return std::array<double, 3>{e[0] / n, e[1] / n, e[2] / n};
 }
 

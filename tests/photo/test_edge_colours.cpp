@@ -243,7 +243,7 @@ BOOST_AUTO_TEST_CASE(grey_edge_from_the_samples) {
 }
 
 BOOST_AUTO_TEST_CASE(grey_edge_of_structure_in_the_tails) {
-  // fuzz_edge_colours' finding (corpus/edge_colours/finding_grey_edge_subnormal_structure): at
+  // fuzz_edge_colours' findings (corpus/edge_colours/finding_grey_edge_subnormal_structure): at
   // σ = 0.026 the Gaussian's tails are subnormal weights; the one kept pixel (black, below a
   // saturated one) has a smoothed colour of about 1e-318, whose squares underflowed, so the
   // light's length was 0 and the light infinite or NaN. Now it is the saturated pixel's direction.
@@ -260,6 +260,20 @@ BOOST_AUTO_TEST_CASE(grey_edge_of_structure_in_the_tails) {
   BOOST_TEST(std::abs((*e)[0] - 16321 / n) < 1e-12);
   BOOST_TEST(std::abs((*e)[1] - 248 / n) < 1e-12);
   BOOST_TEST(std::abs((*e)[2] - 92 / n) < 1e-12);
+  // The second finding (corpus/edge_colours/finding_grey_edge_subnormal_light_imprecise): with
+  // several such pixels and p = 2 the light top·‖v/top‖ itself was subnormal, so rounded to about
+  // 1e-7 of its size. Two saturated pixels, each above a black kept one: the light is the
+  // Euclidean norm of their colours channel by channel, to the last bits.
+  RgbImage two = im;
+  two.height = 4;
+  two.samples = {16321, 248, 92, 0, 0, 0, 0, 0, 0, 300, 12000, 4000};
+  const KeptPixels kept_two = kept_pixels(two, rules);
+  BOOST_TEST_REQUIRE(kept_two.counts.kept == 2u);
+  const auto e2 = grey_edge_estimate(two, 0, kept_two.kept, GreyEdgeParameters{DerivativeOrder::zero, 2, 0.026});
+  BOOST_TEST_REQUIRE(e2.has_value());
+  const std::array<double, 3> norm{std::hypot(16321.0, 300.0), std::hypot(248.0, 12000.0), std::hypot(92.0, 4000.0)};
+  const double n2 = std::sqrt(norm[0] * norm[0] + norm[1] * norm[1] + norm[2] * norm[2]);
+  for (int c = 0; c < 3; ++c) BOOST_TEST(std::abs((*e2)[c] - norm[c] / n2) < 1e-12);
   // The same in the 1st order at σ = 0.03 (tails about 1e-241, normal numbers whose squares
   // underflow): the centre of a 3 × 3 image whose middle row is flat and whose outer rows rise by
   // (400, 300, 100) from left to right has f_x of about 1e-238 times that, and f_y = 0.
