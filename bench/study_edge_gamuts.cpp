@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
     im.edge1 = edge_colours(im.pixels, rules, first);
     im.edge2 = edge_colours(im.pixels, rules, second);
     const KeptPixels kept = kept_pixels(im.pixels, rules);
-    const auto g = grey_edge_estimate(linear_image(im.pixels, 0), kept.kept, baseline_parameters(Baseline::grey_world));
+    const auto g = grey_edge_estimate(im.pixels, 0, kept.kept, baseline_parameters(Baseline::grey_world));
     if (g) im.grey_world = *g;
     im.scale = white_balanced_maximum(im.colours.colours, im.light);
     images.push_back(std::move(im));

@@ -36,12 +36,44 @@ long long ceil_of(const Rational& q) { return rounded(q, true); }
 // Colours a hull is taken of at once (image_colours' working copies: 24 MiB at most).
 constexpr std::size_t colour_chunk = std::size_t(1) << 20;
 
+// Keys a least-significant-digit pass sorts through a buffer (8 MiB at most).
+constexpr std::size_t lsd_keys = std::size_t(1) << 20;
+
+// Least-significant-digit radix sort of [first, last) on bits [0, bits) (the keys equal above),
+// through `buffer`, in passes of 8-bit digits below 2^16 keys and 16-bit digits from there.
+void sort_keys_lsd(std::uint64_t* first, std::uint64_t* last, int bits, std::vector<std::uint64_t>& buffer) {
+  const std::size_t n = static_cast<std::size_t>(last - first);
+  if (buffer.size() < n) buffer.resize(n);
+  const int digit = n < (std::size_t(1) << 16) ? 8 : 16;
+  std::vector<std::size_t> count(std::size_t(1) << digit);
+  const std::uint64_t mask = (std::uint64_t(1) << digit) - 1;
+  std::uint64_t *from = first, *to = buffer.data();
+  for (int shift = 0; shift < bits; shift += digit) {
+    std::fill(count.begin(), count.end(), 0);
+    for (const std::uint64_t* k = from; k != from + n; ++k) ++count[(*k >> shift) & mask];
+    std::size_t sum = 0;
+    for (std::size_t& c : count) {
+      const std::size_t m = c;
+      c = sum;
+      sum += m;
+    }
+    for (const std::uint64_t* k = from; k != from + n; ++k) to[count[(*k >> shift) & mask]++] = *k;
+    std::swap(from, to);
+  }
+  if (from != first) std::copy(from, from + n, first);
+}
+
 // Sort 48-bit keys ascending, in place: most-significant-digit radix sort on bytes (American
-// flag sort: McIlroy, Bostic & McIlroy 1993), buckets of fewer than 64 keys by std::sort.
-void sort_keys_from(std::uint64_t* first, std::uint64_t* last, int shift) {
+// flag sort: McIlroy, Bostic & McIlroy 1993), buckets of fewer than 64 keys by std::sort and of
+// at most lsd_keys by sort_keys_lsd through `buffer` (the keys' own memory and 8 MiB more).
+void sort_keys_from(std::uint64_t* first, std::uint64_t* last, int shift, std::vector<std::uint64_t>& buffer) {
   const std::size_t n = static_cast<std::size_t>(last - first);
   if (n < 64 || shift < 0) {
     std::sort(first, last);
+    return;
+  }
+  if (n <= lsd_keys) {
+    sort_keys_lsd(first, last, shift + 8, buffer);
     return;
   }
   std::size_t count[256] = {}, next[256], end[256];
@@ -65,41 +97,18 @@ void sort_keys_from(std::uint64_t* first, std::uint64_t* last, int shift) {
   if (shift == 0) return;
   std::size_t begin = 0;
   for (int d = 0; d < 256; ++d) {
-    if (count[d] > 1) sort_keys_from(first + begin, first + begin + count[d], shift - 8);
+    if (count[d] > 1) sort_keys_from(first + begin, first + begin + count[d], shift - 8, buffer);
     begin += count[d];
   }
 }
 
-// Least-significant-digit radix sort through a buffer as large as the keys, in 48/bits passes of
-// `bits`-bit digits (8 or 16): faster than the in-place sort (a megapixel image's keys in a few
-// milliseconds) and, with bytes, than std::sort's mispredicted comparisons on a thumbnail's keys.
-void sort_keys_with_buffer(std::vector<std::uint64_t>& keys, int bits) {
-  std::vector<std::uint64_t> buffer(keys.size());
-  std::vector<std::size_t> count(std::size_t(1) << bits);
-  const std::uint64_t mask = (std::uint64_t(1) << bits) - 1;
-  for (int shift = 0; shift < 48; shift += bits) {
-    std::fill(count.begin(), count.end(), 0);
-    for (std::uint64_t k : keys) ++count[(k >> shift) & mask];
-    std::size_t sum = 0;
-    for (std::size_t& c : count) {
-      const std::size_t n = c;
-      c = sum;
-      sum += n;
-    }
-    for (std::uint64_t k : keys) buffer[count[(k >> shift) & mask]++] = k;
-    keys.swap(buffer);
-  }
-}
-
-// Sort 48-bit keys ascending: std::sort for a few, through a buffer up to 2^24 keys (128 MiB more),
-// in place beyond (2^28 keys take their own 2 GiB and no more). The same sequence either way.
+// Sort 48-bit keys ascending: std::sort for a few, else by their top byte in place and each
+// bucket's rest through a buffer of at most 2^20 keys (issue 42: a whole buffer as large as the
+// keys was 8 bytes a kept pixel more; this is about as fast: docs/performance.md). The same
+// sequence either way.
 void sort_keys(std::vector<std::uint64_t>& keys) {
   if (keys.size() < 64)
     std::sort(keys.begin(), keys.end());
-  else if (keys.size() < (std::size_t(1) << 16))
-    sort_keys_with_buffer(keys, 8);
-  else if (keys.size() <= (std::size_t(1) << 24))
-    sort_keys_with_buffer(keys, 16);
   else
     internal::sort_keys_in_place(keys);
 }
@@ -237,6 +246,7 @@ ImageColours colours_of_pixels(std::vector<std::uint64_t>& keys, ColourSet colou
     out.set = ColourSet::hull;
     std::vector<Point2> vertices;
     std::vector<std::array<std::uint16_t, 3>> colours;
+    colours.reserve(std::min(keys.size(), colour_chunk));
     for (std::size_t begin = 0; begin < keys.size(); begin += colour_chunk) {
       const std::size_t end = std::min(keys.size(), begin + colour_chunk);
       colours.clear();
@@ -258,6 +268,7 @@ ImageColours colours_of_pixels(std::vector<std::uint64_t>& keys, ColourSet colou
     out.set = ColourSet::hull_3d;
     std::vector<std::uint64_t> vertex_keys;  // increasing, as the keys
     std::vector<std::array<double, 3>> colours;
+    colours.reserve(std::min(keys.size(), colour_chunk));
     auto hull_of = [&](const std::uint64_t* first, const std::uint64_t* last) {
       colours.clear();
       for (const std::uint64_t* k = first; k != last; ++k) {
@@ -297,7 +308,8 @@ ImageColours colours_of_pixels(std::vector<std::uint64_t>& keys, ColourSet colou
 }  // namespace
 
 void internal::sort_keys_in_place(std::vector<std::uint64_t>& keys) {
-  sort_keys_from(keys.data(), keys.data() + keys.size(), 40);
+  std::vector<std::uint64_t> buffer;
+  sort_keys_from(keys.data(), keys.data() + keys.size(), 40, buffer);
 }
 
 std::string to_string(ColourSet set) {
@@ -379,11 +391,15 @@ namespace {
 
 // The pre-filtered route: the smoothed image's values at the kept pixels, as exact colours.
 ImageColours prefiltered_colours(const RgbImage& image, const PixelRules& rules, const KeptPixels& kept) {
-  const DoubleImage smooth = gaussian_derivative(linear_image(image, rules.black_level), rules.prefilter_sigma,
-                                                 DerivativeOrder::zero);
+  // Row by row: no image of doubles (docs/cli.md "Resource limits").
   std::vector<std::array<double, 3>> colours;
-  for (std::size_t i = 0; i < kept.kept.size(); ++i)
-    if (kept.kept[i]) colours.push_back({smooth.at(i, 0), smooth.at(i, 1), smooth.at(i, 2)});
+  colours.reserve(static_cast<std::size_t>(kept.counts.kept));
+  const std::size_t w = image.width;
+  gaussian_derivative_rows(image, rules.black_level, rules.prefilter_sigma, DerivativeOrder::zero,
+                           [&](std::size_t y, const double* smooth) {
+                             for (std::size_t x = 0; x < w; ++x)
+                               if (kept.kept[y * w + x]) colours.push_back({smooth[3 * x], smooth[3 * x + 1], smooth[3 * x + 2]});
+                           });
   return colour_set_of_doubles(std::move(colours), rules.colour_set, kept.counts);
 }
 
@@ -406,8 +422,22 @@ ImageColours colour_set_of_doubles(std::vector<std::array<double, 3>> colours, C
     return out;
   }
   if (colour_set == ColourSet::hull_3d) {
-    for (std::size_t i : colour_hull_vertex_indices(colours))
-      out.colours.push_back({Rational(colours[i][0]), Rational(colours[i][1]), Rational(colours[i][2])});
+    // Chunk by chunk of the sorted colours, as colours_of_pixels: the hull of the chunks' vertices
+    // is the whole set's, its vertices the same, and the working copies a chunk's size.
+    std::vector<std::array<double, 3>> vertices, chunk;
+    for (std::size_t begin = 0; begin < colours.size(); begin += colour_chunk) {
+      const std::size_t end = std::min(colours.size(), begin + colour_chunk);
+      chunk.assign(colours.begin() + static_cast<long>(begin), colours.begin() + static_cast<long>(end));
+      for (std::size_t i : colour_hull_vertex_indices(chunk)) vertices.push_back(chunk[i]);
+    }
+    std::vector<std::array<double, 3>>().swap(colours);
+    std::vector<std::array<double, 3>>().swap(chunk);
+    if (out.counts.colours > colour_chunk) {
+      std::vector<std::array<double, 3>> all;
+      for (std::size_t i : colour_hull_vertex_indices(vertices)) all.push_back(vertices[i]);
+      vertices.swap(all);
+    }
+    for (const auto& c : vertices) out.colours.push_back({Rational(c[0]), Rational(c[1]), Rational(c[2])});
     out.counts.hull_vertices = out.colours.size();
     return out;
   }

@@ -2,6 +2,7 @@
 #include <gmcc/photo/edge_colours.h>
 
 #include <array>
+#include <cstddef>
 #include <stdexcept>
 #include <vector>
 
@@ -17,29 +18,49 @@ ImageColours edge_colours(const RgbImage& image, const PixelRules& pixels, const
   if (!(edges.sigma > 0 && edges.sigma <= 64))
     throw std::invalid_argument("edge colours: sigma must be in (0, 64]");
   const KeptPixels kept = kept_pixels(image, pixels);
-  const DoubleImage g = gaussian_derivative(linear_image(image, pixels.black_level), edges.sigma, edges.order);
   const std::size_t w = image.width, h = image.height, r = edges.neighbourhood;
-  // Pixels whose (2r + 1)² neighbourhood lies in the image and is kept, by a row pass (every
-  // pixel within r in the row kept) and then a column pass over its result.
-  std::vector<char> run(w * h, 0);
-  for (std::size_t y = 0; y < h; ++y)
-    for (std::size_t x = 0; x < w; ++x) {
-      bool ok = x >= r && x + r < w;
-      for (std::size_t k = x >= r ? x - r : 0; ok && k <= x + r; ++k) ok = kept.kept[y * w + k];
-      run[y * w + x] = ok;
-    }
   PixelCounts counts = kept.counts;
   counts.kept = 0;
   std::vector<std::array<double, 3>> colours;
-  for (std::size_t y = r; y + r < h; ++y)
+  // No (2r + 1)² neighbourhood fits in the image (r compared first: 2r + 1 may overflow).
+  if (r >= w || r >= h || 2 * r + 1 > w || 2 * r + 1 > h) return colour_set_of_doubles({}, pixels.colour_set, counts);
+  const std::size_t span = 2 * r + 1;
+  // A pixel's neighbourhood is kept when the 2r + 1 pixels of the row around it are kept in each
+  // of the 2r + 1 rows around it: per column, the number of rows in a row ending here whose row
+  // window is kept (the rows counted as they come, in O(pixels) whatever r).
+  std::vector<std::size_t> rows_kept(w, 0);
+  std::size_t counted = 0;  // rows counted so far
+  const auto count_row = [&](std::size_t y) {
+    std::size_t in_row = 0;  // kept pixels in a row ending at x
     for (std::size_t x = 0; x < w; ++x) {
-      bool ok = true;
-      for (std::size_t k = y - r; ok && k <= y + r; ++k) ok = run[k * w + x];
-      if (!ok) continue;
-      ++counts.kept;
-      const std::size_t i = y * w + x;
-      colours.push_back({g.at(i, 0), g.at(i, 1), g.at(i, 2)});
+      in_row = kept.kept[y * w + x] ? in_row + 1 : 0;
+      if (x >= r) {
+        const std::size_t centre = x - r;  // its row window [centre − r, x] is kept: in_row >= span
+        rows_kept[centre] = centre >= r && in_row >= span ? rows_kept[centre] + 1 : 0;
+      }
     }
+    for (std::size_t x = w - r; x < w; ++x) rows_kept[x] = 0;  // no row window
+  };
+  // The edge pixels counted first, so that their colours take 24 bytes each and no more.
+  std::size_t edge_pixels = 0;
+  for (; counted < h; ++counted) {
+    count_row(counted);
+    if (counted + 1 >= span)
+      for (std::size_t x = 0; x < w; ++x) edge_pixels += rows_kept[x] >= span;
+  }
+  colours.reserve(edge_pixels);
+  std::fill(rows_kept.begin(), rows_kept.end(), 0);
+  counted = 0;
+  // The derivatives row by row: no image of doubles (docs/cli.md "Resource limits").
+  gaussian_derivative_rows(image, pixels.black_level, edges.sigma, edges.order, [&](std::size_t y, const double* g) {
+    for (; counted < h && counted <= y + r; ++counted) count_row(counted);
+    if (y < r || y + r >= h) return;
+    for (std::size_t x = 0; x < w; ++x) {
+      if (rows_kept[x] < span) continue;
+      ++counts.kept;
+      colours.push_back({g[3 * x], g[3 * x + 1], g[3 * x + 2]});
+    }
+  });
   return colour_set_of_doubles(std::move(colours), pixels.colour_set, counts);
 }
 

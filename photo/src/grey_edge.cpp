@@ -2,6 +2,7 @@
 
 #include "internal/names.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -36,26 +37,38 @@ GreyEdgeParameters baseline_parameters(Baseline b) {
   return {};
 }
 
-std::optional<std::array<double, 3>> grey_edge_estimate(const DoubleImage& image, const std::vector<bool>& kept,
-                                                        const GreyEdgeParameters& o) {
+std::optional<std::array<double, 3>> grey_edge_estimate(const RgbImage& image, std::uint32_t black_level,
+                                                        const std::vector<bool>& kept, const GreyEdgeParameters& o) {
   if (kept.size() != image.width * image.height)
     throw std::invalid_argument("the kept-pixel mask does not match the image");
   if (!(o.p >= 1)) throw std::invalid_argument("the Minkowski norm p must be >= 1");
-  const DoubleImage s = gaussian_derivative(image, o.sigma, o.order);
-  // Σ v^p with each channel scaled by its largest kept value first (no overflow for large p).
+  const std::size_t w = image.width;
+  // The derivative structure row by row, twice (no image of doubles: docs/cli.md "Resource
+  // limits"): its largest kept value per channel, then Σ v^p with each channel scaled by that
+  // value first (no overflow for large p), each channel's sum in pixel order.
+  const auto each_kept = [&](const auto& f) {
+    gaussian_derivative_rows(image, black_level, o.sigma, o.order, [&](std::size_t y, const double* s) {
+      for (std::size_t x = 0; x < w; ++x)
+        if (kept[y * w + x])
+          for (int c = 0; c < 3; ++c) f(c, std::fabs(s[3 * x + static_cast<std::size_t>(c)]));
+    });
+  };
   std::array<double, 3> top{0, 0, 0};
-  for (std::size_t i = 0; i < kept.size(); ++i)
-    if (kept[i])
-      for (int c = 0; c < 3; ++c) top[c] = std::max(top[c], std::fabs(s.at(i, c)));
+  each_kept([&](int c, double v) { top[c] = std::max(top[c], v); });
   if (top[0] == 0 || top[1] == 0 || top[2] == 0) return std::nullopt;
-  std::array<double, 3> e = top;
+  // Structure reached only through the Gaussian's tails (σ below about 0.1: weights near 1e-240,
+  // or subnormal) can be so small that the light top·‖v/top‖ and the squares of its length
+  // underflow, to an imprecise direction or a length of 0 (fuzz_edge_colours' findings): the light
+  // is a direction, so the largest values are then brought near 1 by a power of 2 (exactly) first.
+  std::array<double, 3> scaled = top;
+  const double largest = std::max({top[0], top[1], top[2]});
+  if (largest < 0x1p-500)
+    for (double& t : scaled) t = std::ldexp(t, -std::ilogb(largest));
+  std::array<double, 3> e = scaled;
   if (std::isfinite(o.p)) {
-    for (int c = 0; c < 3; ++c) {
-      double sum = 0;
-      for (std::size_t i = 0; i < kept.size(); ++i)
-        if (kept[i]) sum += o.p == 1 ? std::fabs(s.at(i, c)) / top[c] : std::pow(std::fabs(s.at(i, c)) / top[c], o.p);
-      e[c] = top[c] * std::pow(sum, 1 / o.p);
-    }
+    std::array<double, 3> sum{0, 0, 0};
+    each_kept([&](int c, double v) { sum[c] += o.p == 1 ? v / top[c] : std::pow(v / top[c], o.p); });
+    for (int c = 0; c < 3; ++c) e[c] = scaled[c] * std::pow(sum[c], 1 / o.p);
   }
   const double n = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
   return std::array<double, 3>{e[0] / n, e[1] / n, e[2] / n};

@@ -3,8 +3,10 @@
 // neighbourhood rule drops the edges next to a dropped pixel, the refusals, and the joint
 // estimate: one type is the single-type estimate, and a scene's true map lies in the joint F3 of
 // its pixel and edge gamuts.
+#include <gmcc/geometry/colour_hull_3.h>
 #include <gmcc/photo/edge_colours.h>
 #include <gmcc/photo/estimate_3d.h>
+#include <gmcc/photo/grey_edge.h>
 #include <gmcc/photo/learn_canonical.h>
 #include <gmcc/input/image_derivatives.h>
 #include <gmcc/numerics/interrupt.h>
@@ -12,6 +14,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <random>
 
 using namespace gmcc;
@@ -148,6 +152,145 @@ BOOST_AUTO_TEST_CASE(derivatives_stop_at_an_interrupt) {
   }
   interrupt_requested.store(false);
   BOOST_TEST(stopped);
+}
+
+BOOST_AUTO_TEST_CASE(derivative_rows_are_the_whole_images_rows) {
+  // Issue 42 (memory): the benchmark takes the derivatives row by row, from the 16-bit samples,
+  // with rings of the passes along x; the values are the whole image's bit for bit, for images
+  // shorter and taller than a kernel, at every order, with a black level.
+  std::mt19937 rng(42);
+  for (std::size_t h : {1u, 5u, 40u}) {
+    const RgbImage im = mondrian(rng, 23, h, 0, 60000);
+    for (double sigma : {0.0, 0.02, 1.0, 2.5, 64.0})
+      for (DerivativeOrder order : {DerivativeOrder::zero, DerivativeOrder::first, DerivativeOrder::second}) {
+        if (sigma == 0 && order != DerivativeOrder::zero) continue;
+        const DoubleImage whole = gaussian_derivative(linear_image(im, 700), sigma, order);
+        std::size_t next = 0;
+        bool same = true;
+        gaussian_derivative_rows(im, 700, sigma, order, [&](std::size_t y, const double* row) {
+          same = same && y == next++ && std::memcmp(row, &whole.samples[3 * 23 * y], 3 * 23 * sizeof(double)) == 0;
+        });
+        BOOST_TEST((same && next == h), "sigma " << sigma << " order " << static_cast<int>(order) << " height " << h);
+      }
+  }
+  BOOST_CHECK_THROW(gaussian_derivative_rows(RgbImage{}, 0, 0, DerivativeOrder::first, [](std::size_t, const double*) {}),
+                    std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(neighbourhoods_beyond_the_image_take_no_edge) {
+  // A neighbourhood as wide as the image or wider takes no edge colour, also where 2r + 1
+  // overflows; the widest that fits takes the centre.
+  std::mt19937 rng(7);
+  const RgbImage im = mondrian(rng, 9, 7, 100, 8000);
+  PixelRules rules;
+  for (std::size_t r : {std::size_t(4), std::size_t(7), std::numeric_limits<std::size_t>::max(),
+                        std::numeric_limits<std::size_t>::max() / 2, std::numeric_limits<std::size_t>::max() / 2 + 1}) {
+    const ImageColours e = edge_colours(im, rules, EdgeRules{DerivativeOrder::first, 1, r});
+    BOOST_TEST(e.counts.kept == 0u);
+    BOOST_TEST(e.colours.empty());
+  }
+  BOOST_TEST(edge_colours(im, rules, EdgeRules{DerivativeOrder::first, 1, 3}).counts.kept == 3u);  // x 3..5, y 3
+}
+
+BOOST_AUTO_TEST_CASE(hull_3d_of_many_doubles_taken_in_chunks) {
+  // Issue 42 (memory): more than 2^20 colours of doubles (edge colours, a pre-filtered image) have
+  // their 3-D hull taken chunk by chunk; the vertices are those of the whole set's hull.
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(1, 2);
+  std::vector<std::array<double, 3>> colours((std::size_t(1) << 20) + 5000);
+  for (auto& c : colours) c = {u(rng), u(rng), u(rng)};
+  colours.push_back({0.5, 1.5, 1.5});  // a few colours beyond the cube, to be vertices
+  colours.push_back({2.5, 1.5, 1.5});
+  colours.push_back({1.5, 1.5, 3});
+  std::vector<std::array<double, 3>> sorted = colours;
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<Colour> want;
+  for (std::size_t i : colour_hull_vertex_indices(sorted)) want.push_back({Rational(sorted[i][0]), Rational(sorted[i][1]), Rational(sorted[i][2])});
+  const ImageColours got = colour_set_of_doubles(colours, ColourSet::hull_3d, PixelCounts{});
+  BOOST_TEST(got.counts.colours == colours.size());
+  BOOST_TEST_REQUIRE(got.colours.size() == want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) BOOST_TEST((got.colours[i] == want[i]));
+  BOOST_TEST(got.counts.hull_vertices == want.size());
+}
+
+BOOST_AUTO_TEST_CASE(grey_edge_from_the_samples) {
+  // The baselines from the 16-bit samples row by row (no image of doubles): each light is the
+  // Minkowski norm of the derivative structure over the kept pixels, as written out here.
+  std::mt19937 rng(11);
+  const RgbImage im = mondrian(rng, 30, 20, 50, 9000);
+  PixelRules rules;
+  rules.black_level = 40;
+  rules.dark_below = 200;
+  const KeptPixels kept = kept_pixels(im, rules);
+  for (Baseline b : all_baselines) {
+    const GreyEdgeParameters p = baseline_parameters(b);
+    const DoubleImage s = gaussian_derivative(linear_image(im, 40), p.sigma, p.order);
+    std::array<double, 3> top{0, 0, 0}, e{0, 0, 0};
+    for (std::size_t i = 0; i < kept.kept.size(); ++i)
+      for (int c = 0; c < 3 && kept.kept[i]; ++c) top[c] = std::max(top[c], s.at(i, c));
+    for (int c = 0; c < 3; ++c) {
+      double sum = 0;
+      for (std::size_t i = 0; i < kept.kept.size(); ++i)
+        if (kept.kept[i]) sum += std::isfinite(p.p) ? std::pow(s.at(i, c) / top[c], p.p) : 0;
+      e[c] = std::isfinite(p.p) ? top[c] * std::pow(sum, 1 / p.p) : top[c];
+    }
+    const double n = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+    const auto got = grey_edge_estimate(im, 40, kept.kept, p);
+    BOOST_TEST_REQUIRE(got.has_value());
+    for (int c = 0; c < 3; ++c) BOOST_TEST(std::abs((*got)[c] - e[c] / n) < 1e-14);
+  }
+  BOOST_CHECK_THROW(grey_edge_estimate(im, 0, std::vector<bool>(3), GreyEdgeParameters{}), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(grey_edge_of_structure_in_the_tails) {
+  // fuzz_edge_colours' findings (corpus/edge_colours/finding_grey_edge_subnormal_structure): at
+  // σ = 0.026 the Gaussian's tails are subnormal weights; the one kept pixel (black, below a
+  // saturated one) has a smoothed colour of about 1e-318, whose squares underflowed, so the
+  // light's length was 0 and the light infinite or NaN. Now it is the saturated pixel's direction.
+  RgbImage im;
+  im.width = 1, im.height = 2;
+  im.samples = {16321, 248, 92, 0, 0, 0};
+  PixelRules rules;
+  rules.saturation = 11776;
+  const KeptPixels kept = kept_pixels(im, rules);
+  BOOST_TEST_REQUIRE(kept.counts.kept == 1u);
+  const auto e = grey_edge_estimate(im, 0, kept.kept, GreyEdgeParameters{DerivativeOrder::zero, 1, 0.026});
+  BOOST_TEST_REQUIRE(e.has_value());
+  const double n = std::sqrt(16321.0 * 16321 + 248 * 248 + 92 * 92);
+  BOOST_TEST(std::abs((*e)[0] - 16321 / n) < 1e-12);
+  BOOST_TEST(std::abs((*e)[1] - 248 / n) < 1e-12);
+  BOOST_TEST(std::abs((*e)[2] - 92 / n) < 1e-12);
+  // The second finding (corpus/edge_colours/finding_grey_edge_subnormal_light_imprecise): with
+  // several such pixels and p = 2 the light top·‖v/top‖ itself was subnormal, so rounded to about
+  // 1e-7 of its size. Two saturated pixels, each above a black kept one: the light is the
+  // Euclidean norm of their colours channel by channel, to the last bits.
+  RgbImage two = im;
+  two.height = 4;
+  two.samples = {16321, 248, 92, 0, 0, 0, 0, 0, 0, 300, 12000, 4000};
+  const KeptPixels kept_two = kept_pixels(two, rules);
+  BOOST_TEST_REQUIRE(kept_two.counts.kept == 2u);
+  const auto e2 = grey_edge_estimate(two, 0, kept_two.kept, GreyEdgeParameters{DerivativeOrder::zero, 2, 0.026});
+  BOOST_TEST_REQUIRE(e2.has_value());
+  const std::array<double, 3> norm{std::hypot(16321.0, 300.0), std::hypot(248.0, 12000.0), std::hypot(92.0, 4000.0)};
+  const double n2 = std::sqrt(norm[0] * norm[0] + norm[1] * norm[1] + norm[2] * norm[2]);
+  for (int c = 0; c < 3; ++c) BOOST_TEST(std::abs((*e2)[c] - norm[c] / n2) < 1e-12);
+  // The same in the 1st order at σ = 0.03 (tails about 1e-241, normal numbers whose squares
+  // underflow): the centre of a 3 × 3 image whose middle row is flat and whose outer rows rise by
+  // (400, 300, 100) from left to right has f_x of about 1e-238 times that, and f_y = 0.
+  RgbImage rows;
+  rows.width = 3, rows.height = 3;
+  for (std::size_t y = 0; y < 3; ++y)
+    for (std::size_t x = 0; x < 3; ++x)
+      for (int c = 0; c < 3; ++c)
+        rows.samples.push_back(static_cast<std::uint16_t>(y == 1 ? 1000 : 1000 + x * (c == 0 ? 200 : c == 1 ? 150 : 50)));
+  std::vector<bool> centre(9, false);
+  centre[4] = true;
+  const auto g = grey_edge_estimate(rows, 0, centre, GreyEdgeParameters{DerivativeOrder::first, 1, 0.03});
+  BOOST_TEST_REQUIRE(g.has_value());
+  const double m = std::sqrt(400.0 * 400 + 300 * 300 + 100 * 100);
+  BOOST_TEST(std::abs((*g)[0] - 400 / m) < 1e-12);
+  BOOST_TEST(std::abs((*g)[1] - 300 / m) < 1e-12);
+  BOOST_TEST(std::abs((*g)[2] - 100 / m) < 1e-12);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

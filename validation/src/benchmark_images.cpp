@@ -112,13 +112,12 @@ Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs&
     rules.colour_set = ColourSet::hull;
     r.lifts = image_colours(image, rules).colours;
   }
-  const DoubleImage linear = linear_image(image, rules.black_level);
   for (std::size_t b = 0; b < all_baselines.size(); ++b)
     if (n.baseline[b]) {
       // Grey edge at the run's derivative scale (the edge-based methods' σ).
       GreyEdgeParameters p = baseline_parameters(all_baselines[b]);
       if (p.order != DerivativeOrder::zero) p.sigma = o.edge_sigma;
-      r.baselines[b] = grey_edge_estimate(linear, kept.kept, p);
+      r.baselines[b] = grey_edge_estimate(image, rules.black_level, kept.kept, p);
     }
   return r;
 }

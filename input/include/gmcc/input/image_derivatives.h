@@ -12,6 +12,8 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace gmcc {
@@ -41,8 +43,23 @@ enum class DerivativeOrder { zero = 0, first = 1, second = 2 };
 /// removed and normalised so that Σ x²/2·k(x) = 1; separable, the image's edge replicated.
 /// σ = 0 with order 0 returns the image itself; order 1 or 2 needs σ > 0. A channel constant over
 /// the whole image has 1st- and 2nd-order magnitudes exactly 0 (its true value), never round-off.
+/// A magnitude whose squares would leave the doubles' normal range (tiny derivatives, reached through
+/// the Gaussian's tails at σ below about 0.1) is taken from its components scaled by the largest,
+/// so that it is 0 only where they all are.
 /// \returns per pixel and channel: f_σ (order 0), or the magnitudes above (orders 1, 2), >= 0.
 /// \throws std::invalid_argument for σ < 0, σ > 64, not finite, or 0 with order 1 or 2.
 DoubleImage gaussian_derivative(const DoubleImage& image, double sigma, DerivativeOrder order);
+
+/// The same derivatives row by row, without an image of doubles (docs/cli.md "Resource limits":
+/// an image in flight): the values of gaussian_derivative(linear_image(image, black_level), σ,
+/// order), bit for bit, handed to `row(y, values)` for y = 0, 1, …, height − 1 in order, with the
+/// row's width · 3 values (r, g, b per pixel) valid during the call. The separable passes along x
+/// are kept for the rows the passes along y need: min(height, 2⌈3σ⌉ + 1) rows of 24 bytes a
+/// pixel for each of the order's one (0), two (1) or three (2) kernels, plus one row of each
+/// kind of result; σ = 0 with order 0 gives the linear image's rows. Ctrl-C is answered within a
+/// row (numerics/interrupt.h).
+/// \throws std::invalid_argument as gaussian_derivative; Interrupted; whatever `row` throws.
+void gaussian_derivative_rows(const RgbImage& image, std::uint32_t black_level, double sigma,
+                              DerivativeOrder order, const std::function<void(std::size_t, const double*)>& row);
 
 }  // namespace gmcc

@@ -36,8 +36,10 @@ struct EdgeRules {
 /// is the number of pixels whose edge colour was taken.
 /// \throws std::invalid_argument for a colour set of chromaticity lifts, binning or a
 ///         pre-filter, σ outside (0, 64], order zero, or as image_colours.
-/// Complexity: O(pixels · σ) for the derivatives, O(pixels · neighbourhood) for the rule, and
-/// the colour set's hull.
+/// Complexity: O(pixels · σ) for the derivatives, taken row by row (gaussian_derivative_rows),
+/// O(pixels) for the neighbourhood rule whatever its size, and the colour set's hull (2^20
+/// colours at a time). Memory: the pixel rules' bits, 24 bytes an edge pixel (its colour, kept for
+/// the exact distinct set) and the derivatives' rows (docs/cli.md "Resource limits").
 ImageColours edge_colours(const RgbImage& image, const PixelRules& pixels, const EdgeRules& edges = {});
 
 }  // namespace gmcc

@@ -13,6 +13,7 @@
 #include <gmcc/input/image_derivatives.h>
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,10 +44,16 @@ Baseline baseline_from_string(const std::string& text);
 GreyEdgeParameters baseline_parameters(Baseline baseline);
 
 /// The framework's estimate: unit-length light (r, g, b) from the derivative structure of
-/// `image` (linear, black level removed) at the pixels `kept` marks; absent when every kept
-/// pixel's structure is 0 in some channel (no direction). \throws std::invalid_argument for bad
-/// parameters or a `kept` of the wrong size.
-std::optional<std::array<double, 3>> grey_edge_estimate(const DoubleImage& image, const std::vector<bool>& kept,
+/// `image` minus `black_level` (clamped at 0: the linear image, image_derivatives.h) at the pixels
+/// `kept` marks; absent when every kept pixel's structure is 0 in some channel (no direction).
+/// The structure is taken row by row (gaussian_derivative_rows), twice for a finite p (its
+/// largest value per channel, then the sums), never as an image of doubles. Structure of any
+/// size gives its direction: values below 2^-500 (reached through the Gaussian's tails at small
+/// σ) are scaled by a power of 2 before the light is formed.
+/// \throws std::invalid_argument for bad parameters or a `kept` of the wrong size.
+/// Complexity: O(pixels · σ) per pass of the derivatives, O(pixels) without them (σ = 0).
+std::optional<std::array<double, 3>> grey_edge_estimate(const RgbImage& image, std::uint32_t black_level,
+                                                        const std::vector<bool>& kept,
                                                         const GreyEdgeParameters& parameters);
 
 }  // namespace gmcc
