@@ -114,6 +114,7 @@ struct FoldCanonicals {
 FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, const std::vector<Reduced>& reduced,
                           const BenchmarkOptions& o, const Needs& n) {
   CanonicalLearner3 learner3(o.intensity);
+  // GCIE learns its perspective gamut from the 3-D hulls' vertices, the colours it scores.
   CanonicalLearner2 learner2, learner_gcie;
   // Edge colours scaled by their image's pixel factor (learn_canonical.h).
   CanonicalLearner3 edges[2];
@@ -289,14 +290,6 @@ std::vector<BenchmarkRecord> records_2d(const FoldCanonicals& c, const Reduced& 
   return out;
 }
 
-// A light as doubles of unit length (each channel the nearest double, then normalised).
-std::array<double, 3> unit_light(const Colour& l) {
-  std::array<double, 3> v{to_double_nearest(l.r), to_double_nearest(l.g), to_double_nearest(l.b)};
-  const double norm = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  for (double& x : v) x /= norm;
-  return v;
-}
-
 // GCIE's record of one image: the fold's training light whose gamut is most consistent with the
 // image's colours (gcie.h); no light when the image kept no colour.
 BenchmarkRecord record_gcie(const FoldCanonicals& c, const Reduced& r) {
@@ -307,7 +300,9 @@ BenchmarkRecord record_gcie(const FoldCanonicals& c, const Reduced& r) {
     return rec;
   }
   const Colour& l = c.lights[c.gcie->select(r.hull3).light];
-  rec.light = unit_light(l);
+  // The light as the unit doubles of the map c ⊘ l it implies (light_of_map_3: scale-safe).
+  rec.light = light_of_map_3({Rational(1 / l.r), Rational(1 / l.g), Rational(1 / l.b)},
+                             Colour{Rational(1), Rational(1), Rational(1)});
   rec.answered = true;
   return rec;
 }
