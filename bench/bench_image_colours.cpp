@@ -5,7 +5,7 @@
 // triple may be decided wrongly). Reported as ratios in docs/performance.md "Images".
 #include <gmcc/input/colour_csv.h>
 #include <gmcc/input/image_file.h>
-#include <gmcc/input/image_pixels.h>
+#include <gmcc/photo/image_pixels.h>
 #include <gmcc/validation/mondrian.h>
 
 #include <benchmark/benchmark.h>

@@ -15,7 +15,7 @@
 // per method: mean and median recovery angular error (degrees) and the empty count.
 #include <gmcc/geometry/rational.h>
 #include <gmcc/input/image_file.h>
-#include <gmcc/input/image_pixels.h>
+#include <gmcc/photo/image_pixels.h>
 #include <gmcc/photo/edge_colours.h>
 #include <gmcc/photo/estimate_3d.h>
 #include <gmcc/photo/grey_edge.h>

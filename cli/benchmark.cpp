@@ -327,9 +327,7 @@ int run_benchmark_command(const BenchmarkCliOptions& o) {
         o.methods.begin() + static_cast<std::ptrdiff_t>(i))
       throw InputError("--methods", 0, quoted_text(o.methods[i]) + " is given twice");
   if (!o.methods.empty()) options.methods = o.methods;
-  options.pixels = settings.rules;
-  options.saturation_max = settings.saturation_max;
-  options.black_level_given = settings.black_level_given;
+  options.pixels = settings.run;
   options.intensity = canonical_intensity_from_string(o.intensity);
   options.black = canonical_black_from_string(o.black);
   options.threads = static_cast<unsigned>(integer_option("--threads", o.threads, 0, 1024));
@@ -342,7 +340,7 @@ int run_benchmark_command(const BenchmarkCliOptions& o) {
   }
   if (sgn(sigma) <= 0 || sigma > 64) throw InputError("--edge-sigma", 0, "expected a sigma above 0 and at most 64 pixels");
   options.edge_sigma = to_double_nearest(sigma);
-  if (edges && options.pixels.prefilter_sigma != 0)
+  if (edges && options.pixels.rules.prefilter_sigma != 0)
     throw InputError("--prefilter", 0, "not with the edge-based methods: their derivatives are Gaussian already");
   std::string shard = "1/1";
   if (!o.shard.empty()) {

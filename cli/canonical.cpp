@@ -64,7 +64,7 @@ int run_canonical(const CanonicalOptions& o) {
   const std::map<std::string, TruthRow> truths = truth_rows_by_image(read_truth_table(o.truths_path));
   std::optional<PendingFile> out;
   if (!o.out_path.empty()) out.emplace(o.out_path);
-  const bool lifts = !space_3d && settings.rules.colour_set == ColourSet::hull && settings.rules.bin == 1;
+  const bool lifts = !space_3d && settings.run.rules.colour_set == ColourSet::hull && settings.run.rules.bin == 1;
   CanonicalLearner2 learner2;
   CanonicalLearner3 learner3(canonical_intensity_from_string(o.intensity));
   std::set<std::array<Rational, 3>> colours;  // 2-D with distinct colours: every one

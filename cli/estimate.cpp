@@ -6,6 +6,7 @@
 #include <gmcc/selection/select_scene.h>
 #include <gmcc/input/colour_csv.h>
 #include <gmcc/input/image_file.h>
+#include <gmcc/photo/corrected_image.h>
 #include <gmcc/photo/estimate_3d.h>
 
 #include <cmath>
@@ -53,32 +54,6 @@ Settings settings_of(const EstimateOptions& o) {
   s.scene.illuminant_worst_case = o.illuminant_worst_case != "off";
   if (!o.illuminants_path.empty()) s.scene.illuminants = plausible_lights(o.illuminants_path);
   return s;
-}
-
-// The white-balanced image under the diagonal map m (2-D: (m1, m2, 1)): every kept channel
-// (black level removed) times d_k, d = m scaled so that its largest component is 1 (no channel
-// grows past its code range); pixels dropped as saturated stay at the largest code.
-RgbImage corrected(const RgbImage& image, const PixelRules& rules, std::uint32_t saturation,
-                   const std::array<double, 3>& m) {
-  const double big = std::max({m[0], m[1], m[2]});
-  const double d[3] = {m[0] / big, m[1] / big, m[2] / big};
-  RgbImage out = image;
-  out.bits = 16;
-  const double scale = image.bits == 8 ? 257.0 : 1.0;  // 8-bit codes to 16-bit
-  for (std::size_t p = 0; p < image.width * image.height; ++p) {
-    bool clipped = false;
-    for (int c = 0; c < 3; ++c) clipped = clipped || image.samples[3 * p + c] >= saturation;
-    for (int c = 0; c < 3; ++c) {
-      const std::uint32_t v = image.samples[3 * p + c];
-      if (clipped) {
-        out.samples[3 * p + c] = 65535;
-        continue;
-      }
-      const double x = (v > rules.black_level ? v - rules.black_level : 0) * d[c] * scale;
-      out.samples[3 * p + c] = static_cast<std::uint16_t>(std::min(65535.0, std::floor(x + 0.5)));
-    }
-  }
-  return out;
 }
 
 std::string fixed(double x, int digits) {
@@ -391,7 +366,8 @@ int run_estimate_3d(const EstimateOptions& o) {
       if (outputs && sel->light) {
         const std::string stem = std::filesystem::path(path).stem().string();
         outputs->add(stem + "_" + to_string(rule) + ".png",
-                     encode_png16(corrected(image, rules, rules.saturation.value_or(65536), sel->selection.estimate.map)));
+                     encode_png16(corrected_image(image, rules.black_level, rules.saturation.value_or(65536),
+                                                  sel->selection.estimate.map)));
       }
     }
     if (r.lazy_feasible.kind() == ConvexKind3::empty)
@@ -463,8 +439,8 @@ int run_estimate(const EstimateOptions& o) {
       if (outputs) {
         const std::string stem = std::filesystem::path(path).stem().string();
         outputs->add(stem + "_" + key + ".png",
-                     encode_png16(corrected(image, rules, rules.saturation.value_or(65536),
-                                            {sel->estimate.map[0], sel->estimate.map[1], 1.0})));
+                     encode_png16(corrected_image(image, rules.black_level, rules.saturation.value_or(65536),
+                                                  {sel->estimate.map[0], sel->estimate.map[1], 1.0})));
       }
     }
     if (result.feasible.kind == ConvexKind::empty) text << "  no estimate: " << result.empty_reason << "\n";

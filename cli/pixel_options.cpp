@@ -107,11 +107,11 @@ void add_pixel_options(CLI::App& cmd, PixelOptions& o) {
 
 PixelSettings pixel_settings(const PixelOptions& o) {
   PixelSettings s;
-  PixelRules& r = s.rules;
+  PixelRules& r = s.run.rules;
   r.black_level = static_cast<std::uint32_t>(integer_option("--black-level", o.black_level, 0, 65535));
-  s.black_level_given = o.command && o.command->count("--black-level");
+  s.run.black_level_given = o.command && o.command->count("--black-level");
   if (o.saturation == "max") {
-    s.saturation_max = true;
+    s.run.saturation_max = true;
   } else if (o.saturation != "none") {
     r.saturation = static_cast<std::uint32_t>(integer_option("--saturation", o.saturation, 1, 65536));
   }
@@ -145,38 +145,27 @@ PixelSettings pixel_settings(const PixelOptions& o) {
     throw InputError("--colour-set", 0,
                      "with --bin the binned colours are passed as they are (their hull is taken "
                      "by the geometry); give one of --bin or --colour-set");
-  if (!o.mask_path.empty()) s.mask = read_mask_image(o.mask_path);
+  if (!o.mask_path.empty()) {
+    s.mask = read_mask_image(o.mask_path);
+    s.mask_path = o.mask_path;
+  }
   return s;
 }
 
 ImageColours image_colours_of(const std::string& path, const PixelSettings& s, RgbImage* image_out,
                               PixelRules* rules_out, const TruthRow* row, const std::string& truths_path,
                               RawImage* raw_out) {
-  PixelRules rules = s.rules;
-  ImageLevels levels;
-  if (s.black_level_given) levels.black = rules.black_level;
-  levels.saturation = rules.saturation;
-  if (row && row->black_level) levels.black = row->black_level;
-  if (row && row->saturation) levels.saturation = row->saturation;
-  RgbImage image = read_camera_image(path, levels, rules, raw_out);
-  if (s.saturation_max && !levels.saturation) rules.saturation = (1u << image.bits) - 1;
+  const ImagePixelRules own = row ? image_pixel_rules(*row) : ImagePixelRules{};
+  CameraImage read = read_camera_image(path, levels_to_read(s.run, own));
   std::optional<RgbImage> own_mask;
-  if (row) {
-    if (!row->chart.empty()) rules.exclude_polygons.push_back(row->chart);
-    if (!row->mask.empty())
-      own_mask = read_mask_image((std::filesystem::path(truths_path).parent_path() / row->mask).string());
+  std::string own_mask_path;
+  if (row && !row->mask.empty()) {
+    own_mask_path = (std::filesystem::path(truths_path).parent_path() / row->mask).string();
+    own_mask = read_mask_image(own_mask_path);
   }
-  if (own_mask || s.mask) {
-    const RgbImage& mask = own_mask ? *own_mask : *s.mask;
-    if (mask.width != image.width || mask.height != image.height)
-      throw InputError(path, 0,
-                       "the mask is " + std::to_string(mask.width) + "x" +
-                           std::to_string(mask.height) + ", this image " +
-                           std::to_string(image.width) + "x" + std::to_string(image.height));
-    rules.keep.resize(image.width * image.height);
-    for (std::size_t p = 0; p < rules.keep.size(); ++p)
-      rules.keep[p] = mask.samples[3 * p] || mask.samples[3 * p + 1] || mask.samples[3 * p + 2];
-  }
+  const RgbImage* mask = own_mask ? &*own_mask : s.mask ? &*s.mask : nullptr;
+  PixelRules rules = rules_for_image(s.run, own, read, path, mask, own_mask ? own_mask_path : s.mask_path);
+  RgbImage& image = read.image;
   ImageColours colours;
   try {
     colours = image_colours(image, rules);
@@ -199,6 +188,7 @@ ImageColours image_colours_of(const std::string& path, const PixelSettings& s, R
                          ")");
   if (image_out) *image_out = std::move(image);
   if (rules_out) *rules_out = std::move(rules);
+  if (raw_out) *raw_out = std::move(read.raw);
   return colours;
 }
 

@@ -3,9 +3,10 @@
 // (docs/conventions.md §8; docs/cli.md "gmcc estimate").
 
 #include <gmcc/input/image_file.h>
-#include <gmcc/input/image_pixels.h>
+#include <gmcc/photo/image_pixels.h>
 #include <gmcc/input/raw_file.h>
 #include <gmcc/input/truth_table.h>
+#include <gmcc/photo/image_rules.h>
 
 #include <CLI/CLI.hpp>
 
@@ -43,10 +44,9 @@ void add_pixel_options(CLI::App& command, PixelOptions& options);
 /// The rules those options give, checked (the mask image is read by image_colours_of).
 /// \throws InputError naming the option.
 struct PixelSettings {
-  PixelRules rules;
-  bool saturation_max = false;  // the image's own largest code, 2^bits - 1
-  bool black_level_given = false;  // --black-level given: it replaces a raw file's own
+  RunPixelRules run;  // the rules, --saturation max and whether --black-level was given
   std::optional<RgbImage> mask;
+  std::string mask_path;
 };
 PixelSettings pixel_settings(const PixelOptions& options);
 

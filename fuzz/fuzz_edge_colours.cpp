@@ -32,8 +32,8 @@
 #include "fuzz_support.h"
 
 #include <gmcc/geometry/colour_hull_3.h>
-#include <gmcc/input/image_derivatives.h>
-#include <gmcc/input/image_pixels.h>
+#include <gmcc/photo/image_derivatives.h>
+#include <gmcc/photo/image_pixels.h>
 #include <gmcc/photo/edge_colours.h>
 #include <gmcc/photo/grey_edge.h>
 

@@ -21,7 +21,7 @@
 #include "fuzz_support.h"
 
 #include <gmcc/input/image_file.h>
-#include <gmcc/input/image_pixels.h>
+#include <gmcc/photo/image_pixels.h>
 
 #include <algorithm>
 #include <set>

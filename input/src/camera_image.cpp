@@ -30,25 +30,25 @@ std::vector<ImageLevelsUsed> image_levels_used() {
   return levels_log();
 }
 
-RgbImage read_camera_image(const std::string& path, const ImageLevels& levels, PixelRules& rules,
-                           RawImage* raw_metadata) {
+CameraImage read_camera_image(const std::string& path, const ImageLevels& levels) {
   const std::string bytes = read_binary_file(path, max_image_file_bytes, "image file");
+  CameraImage out;
   if (is_raw_file_name(path) || is_raw_file_content(bytes)) {
-    RawImage raw = decode_raw_image(bytes, path, RawLevels{levels.black, levels.saturation});
-    rules.black_level = 0;
-    rules.saturation = raw_saturated_value;
-    record_levels({path, {raw.black.begin(), raw.black.end()}, raw.white, raw.black_given ? "given" : "file",
-                   raw.white_given ? "given" : "file"});
-    RgbImage image = std::move(raw.image);
-    if (raw_metadata) *raw_metadata = std::move(raw);
-    return image;
+    out.raw = decode_raw_image(bytes, path, RawLevels{levels.black, levels.saturation});
+    out.black_level = 0;
+    out.saturation = raw_saturated_value;
+    record_levels({path, {out.raw.black.begin(), out.raw.black.end()}, out.raw.white,
+                   out.raw.black_given ? "given" : "file", out.raw.white_given ? "given" : "file"});
+    out.image = std::move(out.raw.image);
+    out.raw.image = RgbImage{};
+    return out;
   }
-  RgbImage image = decode_image(bytes, path);
-  if (levels.black) rules.black_level = *levels.black;
-  if (levels.saturation) rules.saturation = *levels.saturation;
-  record_levels({path, {rules.black_level}, levels.saturation, levels.black ? "given" : "run",
+  out.image = decode_image(bytes, path);
+  out.black_level = levels.black.value_or(levels.run_black);
+  out.saturation = levels.saturation;
+  record_levels({path, {out.black_level}, levels.saturation, levels.black ? "given" : "run",
                  levels.saturation ? "given" : "run"});
-  return image;
+  return out;
 }
 
 }  // namespace gmcc

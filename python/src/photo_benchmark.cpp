@@ -98,15 +98,15 @@ void bind_benchmark(py::module_& m) {
         // The run's pixel rules, through the same checks as images (a 1×1 image is not needed:
         // the integer route's checks are the arguments').
         // Absent: 0 for PNG and TIFF, a raw file's own black levels (camera_image.h).
-        o.black_level_given = !black_level.is_none();
-        if (o.black_level_given) o.pixels.black_level = integer_in<std::uint32_t>(black_level, "black_level", 0, 65535);
-        if (!saturation.is_none()) o.pixels.saturation = integer_in<std::uint32_t>(saturation, "saturation", 1, 65536);
-        if (const auto d = integer_in<std::uint32_t>(dark, "dark", 0, 65535)) o.pixels.dark_below = d;
+        o.pixels.black_level_given = !black_level.is_none();
+        if (o.pixels.black_level_given) o.pixels.rules.black_level = integer_in<std::uint32_t>(black_level, "black_level", 0, 65535);
+        if (!saturation.is_none()) o.pixels.rules.saturation = integer_in<std::uint32_t>(saturation, "saturation", 1, 65536);
+        if (const auto d = integer_in<std::uint32_t>(dark, "dark", 0, 65535)) o.pixels.rules.dark_below = d;
         PixelArgs args;
         args.dark_fraction = dark_fraction;
         args.bright_fraction = bright_fraction;
         args.pixel_rule = pixel_rule;
-        pixel_fractions(args, o.pixels.dark_below_fraction, o.pixels.bright_above_fraction);
+        pixel_fractions(args, o.pixels.rules.dark_below_fraction, o.pixels.rules.bright_above_fraction);
         BenchmarkResult r;
         try {
           InterruptibleRelease nogil;

@@ -5,7 +5,7 @@
 
 #include "convert.h"
 
-#include <gmcc/input/image_pixels.h>
+#include <gmcc/photo/image_pixels.h>
 
 #include <cstring>
 #include <optional>

@@ -1,7 +1,7 @@
 #pragma once
 /// \file pixels.h
 /// Images from Python: an H×W×3 numpy array (unsigned integers, or floats whose values are exact
-/// rationals) through the library's pixel rules (gmcc/input/image_pixels.h; docs/conventions.md
+/// rationals) through the library's pixel rules (gmcc/photo/image_pixels.h; docs/conventions.md
 /// §8), with the Python argument names in every message.
 
 #include <pybind11/numpy.h>

@@ -8,7 +8,7 @@
 
 #include <gmcc/selection/crule_3d.h>
 #include <gmcc/selection/select_scene.h>
-#include <gmcc/input/image_pixels.h>
+#include <gmcc/photo/image_pixels.h>
 
 #include <memory>
 

@@ -146,15 +146,15 @@ void bind_images(py::module_& m) {
         ImageLevels levels;
         if (!black_level.is_none()) levels.black = integer_in<std::uint32_t>(black_level, "black_level", 0, 65535);
         if (!saturation.is_none()) levels.saturation = integer_in<std::uint32_t>(saturation, "saturation", 1, 65536);
-        PixelRules rules;
-        RgbImage image;
-        RawImage meta;  // a raw file's metadata (its image is `image`)
+        CameraImage read;
         try {
-          image = read_camera_image(path, levels, rules, &meta);
+          read = read_camera_image(path, levels);
         } catch (const std::runtime_error& e) {  // InputError: the file and its problem
           throw py::value_error(e.what());
         }
         py::object raw = py::none();
+        const RawImage& meta = read.raw;  // a raw file's metadata
+        const RgbImage& image = read.image;
         if (!meta.pattern.empty()) {  // a raw file, by its name or its content
           py::dict info;
           info["pattern"] = meta.pattern;
@@ -173,8 +173,8 @@ void bind_images(py::module_& m) {
         py::dict out;
         out["image"] = a;
         out["bits"] = image.bits;
-        out["black_level"] = rules.black_level;
-        out["saturation"] = rules.saturation ? py::object(py::int_(*rules.saturation)) : py::object(py::none());
+        out["black_level"] = read.black_level;
+        out["saturation"] = read.saturation ? py::object(py::int_(*read.saturation)) : py::object(py::none());
         out["raw"] = raw;
         return out;
       },

@@ -8,7 +8,7 @@
 #include <gmcc/photo/estimate_3d.h>
 #include <gmcc/photo/grey_edge.h>
 #include <gmcc/photo/learn_canonical.h>
-#include <gmcc/input/image_derivatives.h>
+#include <gmcc/photo/image_derivatives.h>
 #include <gmcc/numerics/interrupt.h>
 
 #include <boost/test/unit_test.hpp>

@@ -357,7 +357,7 @@ BenchmarkResult run_benchmark(const std::vector<BenchmarkImage>& images, const B
   if ((n.order[0] || n.order[1] || grey_edge) && !(o.edge_sigma > 0 && o.edge_sigma <= 64))
     throw std::invalid_argument("the edge-based methods' and grey edge's sigma must be in (0, 64] pixels");
   if (n.order[0] || n.order[1]) {
-    if (o.pixels.prefilter_sigma != 0)
+    if (o.pixels.rules.prefilter_sigma != 0)
       throw std::invalid_argument("the edge-based methods take no pre-filter (their derivatives are Gaussian already)");
   }
   const unsigned threads = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());

@@ -6,6 +6,7 @@
 
 #include <gmcc/geometry/perspective_image.h>
 #include <gmcc/input/camera_image.h>
+#include <gmcc/photo/image_rules.h>
 #include <gmcc/numerics/interrupt.h>
 #include <gmcc/input/image_file.h>
 #include <gmcc/input/input_error.h>
@@ -60,33 +61,13 @@ Needs needs_of(const std::vector<std::string>& methods) {
   return n;
 }
 
-// The run's pixel rules with the image's own.
-PixelRules rules_of(const BenchmarkImage& im, const PixelRules& run) {
-  PixelRules r = run;
-  r.exclude_polygons.insert(r.exclude_polygons.end(), im.exclude_polygons.begin(), im.exclude_polygons.end());
-  r.bin = 1;
-  return r;
-}
-
 Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs& n) {
-  PixelRules rules = rules_of(im, o.pixels);
-  ImageLevels levels;
-  if (o.black_level_given) levels.black = o.pixels.black_level;
-  levels.saturation = o.pixels.saturation;
-  if (im.black_level) levels.black = im.black_level;
-  if (im.saturation) levels.saturation = im.saturation;
-  const RgbImage image = read_camera_image(im.path, levels, rules);
-  if (!im.mask_path.empty()) {
-    const RgbImage mask = read_mask_image(im.mask_path);
-    if (mask.width != image.width || mask.height != image.height)
-      throw InputError(im.mask_path, 0, "the mask is " + std::to_string(mask.width) + "x" +
-                                            std::to_string(mask.height) + ", its image " + im.path + " is " +
-                                            std::to_string(image.width) + "x" + std::to_string(image.height));
-    rules.keep.resize(image.width * image.height);
-    for (std::size_t p = 0; p < rules.keep.size(); ++p)
-      rules.keep[p] = mask.samples[3 * p] || mask.samples[3 * p + 1] || mask.samples[3 * p + 2];
-  }
-  if (o.saturation_max && !levels.saturation) rules.saturation = (1u << image.bits) - 1;
+  CameraImage read = read_camera_image(im.path, levels_to_read(o.pixels, im.own));
+  std::optional<RgbImage> mask;
+  if (!im.mask_path.empty()) mask = read_mask_image(im.mask_path);
+  PixelRules rules = rules_for_image(o.pixels, im.own, read, im.path, mask ? &*mask : nullptr, im.mask_path);
+  rules.bin = 1;
+  const RgbImage& image = read.image;
   Reduced r;
   KeptPixels kept;
   try {
@@ -143,9 +124,7 @@ std::vector<BenchmarkImage> benchmark_dataset(const std::string& images_dir, con
     } else {
       im.fold = static_cast<int>(i % static_cast<std::size_t>(k));
     }
-    im.black_level = r.black_level;
-    im.saturation = r.saturation;
-    if (!r.chart.empty()) im.exclude_polygons.push_back(r.chart);
+    im.own = image_pixel_rules(r);
     if (!r.mask.empty()) im.mask_path = (std::filesystem::path(images_dir) / r.mask).string();
     images.push_back(std::move(im));
   }

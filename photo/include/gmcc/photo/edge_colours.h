@@ -12,8 +12,8 @@
 /// are non-negative: the signed derivatives f_x, f_y, f_xx, … are not taken (their gamuts are
 /// centrally symmetric and need signed colours, which gmcc's 3-D geometry does not take).
 
-#include <gmcc/input/image_derivatives.h>
-#include <gmcc/input/image_pixels.h>
+#include <gmcc/photo/image_derivatives.h>
+#include <gmcc/photo/image_pixels.h>
 
 #include <cstddef>
 

@@ -12,7 +12,7 @@
 
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/feasible_set_3d.h>
-#include <gmcc/input/image_pixels.h>
+#include <gmcc/photo/image_pixels.h>
 #include <gmcc/selection/crule_3d.h>
 #include <gmcc/selection/rule_3.h>
 

@@ -10,7 +10,7 @@
 /// exact gamut methods are measured against), computed on exactly the pixels the gamut methods
 /// keep (docs/photographs.md §4).
 
-#include <gmcc/input/image_derivatives.h>
+#include <gmcc/photo/image_derivatives.h>
 
 #include <array>
 #include <cstdint>

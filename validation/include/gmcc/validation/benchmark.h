@@ -13,8 +13,9 @@
 
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/feasible_set_3d.h>
-#include <gmcc/input/image_pixels.h>
 #include <gmcc/input/truth_table.h>
+#include <gmcc/photo/image_pixels.h>
+#include <gmcc/photo/image_rules.h>
 #include <gmcc/photo/learn_canonical.h>
 #include <gmcc/validation/error_statistics.h>
 
@@ -35,13 +36,10 @@ struct BenchmarkImage {
   std::string path;  ///< the PNG, TIFF or camera raw file to read (camera_image.h)
   Colour light;      ///< the measured light, every channel > 0
   int fold = 0;      ///< its cross-validation fold, >= 0
-  /// Per-image pixel rules replacing the run's (a dataset's black level or saturation per camera
-  /// or image; a chart polygon; a mask image of the same size, 0 excluded).
-  ///@{
-  std::optional<std::uint32_t> black_level, saturation;
-  std::vector<std::vector<Point2>> exclude_polygons;
-  std::string mask_path;
-  ///@}
+  /// Per-image pixel rules replacing or adding to the run's (a dataset's black level or
+  /// saturation per camera or image; a chart polygon; image_rules.h).
+  ImagePixelRules own;
+  std::string mask_path;  ///< a mask image of the same size, 0 excluded; empty for none
 };
 
 /// A dataset's images from its truth table (truth_table.h): each image's path under
@@ -82,13 +80,10 @@ bool is_edge_gamut_method(const std::string& method);
 /// How the benchmark runs.
 struct BenchmarkOptions {
   std::vector<std::string> methods = default_benchmark_methods();  ///< a subset, in any order
-  PixelRules pixels;  ///< the run's pixel rules (colour_set and bin are set per method)
-  /// Without a saturation in `pixels` or the image's own: drop pixels with a channel at the
-  /// file's largest code, 2^bits − 1 (what `gmcc estimate --saturation max` does).
-  bool saturation_max = false;
-  /// `pixels.black_level` was given: it replaces a camera raw file's own (raw_file.h), which is
-  /// used otherwise.
-  bool black_level_given = false;
+  /// The run's pixel rules (colour_set and bin are set per method), with `saturation_max` (what
+  /// `gmcc estimate --saturation max` does) and whether the black level was given
+  /// (image_rules.h).
+  RunPixelRules pixels;
   CanonicalIntensity intensity = CanonicalIntensity::max;  ///< 3-D learning (learn_canonical.h)
   CanonicalBlack black = CanonicalBlack::include;          ///< 3-D canonical gamut with black
   /// The derivative scale σ, in pixels, in (0, 64], of the edge-based methods (edge_colours.h; the

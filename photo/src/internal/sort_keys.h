@@ -1,6 +1,6 @@
 #pragma once
-// The in-place key sort of image_colours, reachable by its test (tests/input/test_image_file.cpp,
-// against std::sort). Internal to gmcc::input.
+// The in-place key sort of image_colours, reachable by its test (tests/photo/test_image_pixels.cpp,
+// against std::sort). Internal to gmcc::photo.
 
 #include <cstdint>
 #include <vector>

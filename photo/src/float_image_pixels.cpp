@@ -1,6 +1,6 @@
 // The pixel rules on a floating-point image (image_pixels.h, image_colours(FloatRgbImage)): steps
 // 1 to 4 compared exactly, the black level subtracted only where that is exact, then step 6.
-#include <gmcc/input/image_pixels.h>
+#include <gmcc/photo/image_pixels.h>
 
 #include <gmcc/geometry/chromaticity_hull.h>
 #include <gmcc/geometry/colour_hull_3.h>

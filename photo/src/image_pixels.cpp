@@ -1,12 +1,12 @@
-#include <gmcc/input/image_pixels.h>
+#include <gmcc/photo/image_pixels.h>
 
 #include <gmcc/geometry/chromaticity_hull.h>
 #include <gmcc/geometry/colour_hull_3.h>
 #include <gmcc/geometry/convex_hull.h>
-#include <gmcc/input/image_derivatives.h>
+#include <gmcc/photo/image_derivatives.h>
 #include <gmcc/input/colour_csv.h>
 
-#include "sort_keys.h"
+#include "internal/sort_keys.h"
 
 #include <gmcc/numerics/interrupt.h>
 

@@ -1,4 +1,4 @@
-#include <gmcc/input/image_derivatives.h>
+#include <gmcc/photo/image_derivatives.h>
 
 #include <gmcc/numerics/interrupt.h>
 
