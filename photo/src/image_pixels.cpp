@@ -228,11 +228,9 @@ std::vector<bool> excluded_pixels(const PixelRules& rules, std::size_t w, std::s
   return excluded;
 }
 
-// Without binning: the distinct kept pixels (keys r·2^32 + g·2^16 + b), or their chromaticity
-// hull's vertices, into out.
-ImageColours colours_of_pixels(std::vector<std::uint64_t>& keys, ColourSet colour_set, ImageColours out) {
-  sort_keys(keys);
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+// Without binning: the distinct kept pixels (keys r·2^32 + g·2^16 + b, increasing, each once),
+// or their hull's vertices, into out.
+ImageColours colours_of_keys(const std::vector<std::uint64_t>& keys, ColourSet colour_set, ImageColours out) {
   out.counts.colours = keys.size();
   auto channels = [](std::uint64_t key) {
     return std::array<std::uint32_t, 3>{static_cast<std::uint32_t>(key >> 32),
@@ -422,7 +420,7 @@ ImageColours colour_set_of_doubles(std::vector<std::array<double, 3>> colours, C
     return out;
   }
   if (colour_set == ColourSet::hull_3d) {
-    // Chunk by chunk of the sorted colours, as colours_of_pixels: the hull of the chunks' vertices
+    // Chunk by chunk of the sorted colours, as colours_of_keys: the hull of the chunks' vertices
     // is the whole set's, its vertices the same, and the working copies a chunk's size.
     std::vector<std::array<double, 3>> vertices, chunk;
     for (std::size_t begin = 0; begin < colours.size(); begin += colour_chunk) {
@@ -448,15 +446,68 @@ ImageColours colour_set_of_doubles(std::vector<std::array<double, 3>> colours, C
   return out;
 }
 
-ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
+namespace {
+
+void check_binning_and_prefilter(const PixelRules& rules) {
   if (rules.bin == 0) throw std::invalid_argument("the binning block size must be at least 1");
   if (!(rules.prefilter_sigma >= 0 && rules.prefilter_sigma <= 64))
     throw std::invalid_argument("the pre-filter's sigma must be from 0 to 64");
   if (rules.prefilter_sigma > 0 && rules.bin > 1)
     throw std::invalid_argument("a pre-filter and binning do not go together: give one");
+}
+
+// The kept pixels' colours after the black level as keys r·2^32 + g·2^16 + b, increasing, each
+// once (step 6's distinct colours, before any hull).
+std::vector<std::uint64_t> distinct_keys(const RgbImage& image, std::uint32_t black_level, const KeptPixels& kept) {
+  std::vector<std::uint64_t> keys;
+  keys.reserve(static_cast<std::size_t>(kept.counts.kept));
+  const std::size_t n = image.width * image.height;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!kept.kept[i]) continue;
+    std::uint32_t v[3];
+    for (int c = 0; c < 3; ++c) {
+      v[c] = image.samples[3 * i + static_cast<std::size_t>(c)];
+      v[c] = v[c] > black_level ? v[c] - black_level : 0;
+    }
+    keys.push_back((std::uint64_t(v[0]) << 32) | (std::uint64_t(v[1]) << 16) | v[2]);
+  }
+  sort_keys(keys);
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  return keys;
+}
+
+}  // namespace
+
+std::vector<ImageColours> image_colour_sets(const RgbImage& image, const PixelRules& rules, const KeptPixels& kept,
+                                            const std::vector<ColourSet>& sets) {
+  check_binning_and_prefilter(rules);
+  if (kept.kept.size() != image.width * image.height)
+    throw std::invalid_argument("the kept pixels are not this image's");
+  std::vector<ImageColours> out;
+  if (rules.bin > 1 || rules.prefilter_sigma > 0) {
+    for (ColourSet set : sets) {
+      PixelRules r = rules;
+      r.colour_set = set;
+      out.push_back(image_colours(image, r));
+    }
+    return out;
+  }
+  std::vector<std::uint64_t> keys;
+  if (!sets.empty()) keys = distinct_keys(image, rules.black_level, kept);
+  for (ColourSet set : sets) {
+    ImageColours colours;
+    colours.counts = kept.counts;
+    out.push_back(colours_of_keys(keys, set, std::move(colours)));
+  }
+  return out;
+}
+
+ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
+  check_binning_and_prefilter(rules);
   const std::size_t w = image.width, h = image.height;
   KeptPixels kept = kept_pixels(image, rules);
   if (rules.prefilter_sigma > 0) return prefiltered_colours(image, rules, kept);
+  if (rules.bin == 1) return std::move(image_colour_sets(image, rules, kept, {rules.colour_set}).front());
 
   ImageColours out;
   out.counts = kept.counts;
@@ -468,9 +519,7 @@ ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
     std::uint64_t sum[3] = {0, 0, 0};
     std::uint64_t n = 0;
   };
-  std::vector<Block> blocks(b == 1 ? 0 : bw * bh);
-  std::vector<std::uint64_t> keys;  // b = 1: every kept pixel as r·2^32 + g·2^16 + b
-  if (b == 1) keys.reserve(static_cast<std::size_t>(out.counts.kept));
+  std::vector<Block> blocks(bw * bh);
   for (std::size_t y = 0; y < h; ++y)
     for (std::size_t x = 0; x < w; ++x) {
       const std::size_t i = y * w + x;
@@ -480,15 +529,10 @@ ImageColours image_colours(const RgbImage& image, const PixelRules& rules) {
         v[c] = image.samples[3 * i + static_cast<std::size_t>(c)];
         v[c] = v[c] > rules.black_level ? v[c] - rules.black_level : 0;
       }
-      if (b == 1) {
-        keys.push_back((std::uint64_t(v[0]) << 32) | (std::uint64_t(v[1]) << 16) | v[2]);
-      } else {
-        Block& block = blocks[(y / b) * bw + x / b];
-        for (int c = 0; c < 3; ++c) block.sum[c] += v[c];
-        ++block.n;
-      }
+      Block& block = blocks[(y / b) * bw + x / b];
+      for (int c = 0; c < 3; ++c) block.sum[c] += v[c];
+      ++block.n;
     }
-  if (b == 1) return colours_of_pixels(keys, rules.colour_set, std::move(out));
   {
     std::set<std::array<Rational, 3>> distinct;  // ordered: increasing (r, g, b)
     for (const Block& block : blocks) {

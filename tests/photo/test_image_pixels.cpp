@@ -420,6 +420,43 @@ BOOST_AUTO_TEST_CASE(hull_3d_colour_set) {
   BOOST_TEST(!pixel_colours(image_colours(im, rules).set));
 }
 
+// Several colour sets from one sort (image_colour_sets, what the benchmark calls) are each what
+// image_colours gives for that set alone, with the counts of its steps: with and without a mask
+// and dark rule, with binning (where each set takes its own route) and in any order of the sets.
+BOOST_AUTO_TEST_CASE(colour_sets_from_one_sort) {
+  std::mt19937 rng(44);
+  std::uniform_int_distribution<int> v(0, 3000);
+  RgbImage im = ramp(37, 23, 16);
+  for (auto& s : im.samples) s = static_cast<std::uint16_t>(v(rng));
+  for (int variant = 0; variant < 3; ++variant) {
+    PixelRules rules;
+    if (variant >= 1) {
+      rules.black_level = 100;
+      rules.dark_below = 50;
+      rules.exclude_polygons = {square(0, 0, 9, 9)};
+    }
+    if (variant == 2) rules.bin = 3;
+    const std::vector<ColourSet> sets = variant == 2 ? std::vector<ColourSet>{ColourSet::hull_3d, ColourSet::distinct}
+                                                     : std::vector<ColourSet>{ColourSet::hull, ColourSet::distinct,
+                                                                              ColourSet::hull_3d, ColourSet::hull};
+    const KeptPixels kept = kept_pixels(im, rules);
+    const std::vector<ImageColours> together = image_colour_sets(im, rules, kept, sets);
+    BOOST_REQUIRE(together.size() == sets.size());
+    for (std::size_t k = 0; k < sets.size(); ++k) {
+      PixelRules alone = rules;
+      alone.colour_set = sets[k];
+      const ImageColours one = image_colours(im, alone);
+      BOOST_TEST((together[k].set == one.set));
+      BOOST_TEST((together[k].colours == one.colours));
+      BOOST_TEST(together[k].counts.kept == one.counts.kept);
+      BOOST_TEST(together[k].counts.colours == one.counts.colours);
+      BOOST_TEST(together[k].counts.hull_vertices == one.counts.hull_vertices);
+      BOOST_TEST(together[k].counts.no_chromaticity == one.counts.no_chromaticity);
+    }
+  }
+  BOOST_CHECK_THROW(image_colour_sets(im, PixelRules{}, KeptPixels{}, {ColourSet::hull}), std::invalid_argument);
+}
+
 // More distinct colours than image_colours takes a hull of at once (2^20): the hulls are taken
 // chunk by chunk and then of the chunks' vertices (image_pixels.cpp). The same chromaticity hull,
 // 3-D hull and counts as the floating-point route, which takes each hull of every colour at once.

@@ -77,10 +77,13 @@ Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs&
   }
   if (kept.counts.kept == 0)
     throw InputError(im.path, 0, "no usable pixel after the mask, saturation and dark or bright rules");
-  if (n.gm3d || n.gcie) {
-    rules.colour_set = ColourSet::hull_3d;
-    r.hull3 = image_colours(image, rules).colours;
-  }
+  // The 3-D hull's colours and the 2-D lifts from one sort of the kept pixels' distinct colours.
+  std::vector<ColourSet> sets;
+  if (n.gm3d || n.gcie) sets.push_back(ColourSet::hull_3d);
+  if (n.gm2d) sets.push_back(ColourSet::hull);
+  std::vector<ImageColours> colours = image_colour_sets(image, rules, kept, sets);
+  if (n.gm3d || n.gcie) r.hull3 = std::move(colours.front().colours);
+  if (n.gm2d) r.lifts = std::move(colours.back().colours);
   for (int k = 0; k < 2; ++k)
     if (n.order[k]) {
       rules.colour_set = ColourSet::hull_3d;
@@ -89,10 +92,6 @@ Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs&
       edges.sigma = o.edge_sigma;
       r.edges[k] = edge_colours(image, rules, edges).colours;
     }
-  if (n.gm2d) {
-    rules.colour_set = ColourSet::hull;
-    r.lifts = image_colours(image, rules).colours;
-  }
   for (std::size_t b = 0; b < all_baselines.size(); ++b)
     if (n.baseline[b]) {
       // Grey edge at the run's derivative scale (the edge-based methods' σ).

@@ -137,6 +137,15 @@ ImageColours colour_set_of_doubles(std::vector<std::array<double, 3>> colours, C
 ///         outside [0, 1], or a pre-filter σ outside [0, 64] or given with binning.
 ImageColours image_colours(const RgbImage& image, const PixelRules& rules);
 
+/// What image_colours returns for each of `sets`, from the kept pixels `kept` that
+/// kept_pixels(image, rules) gave: the image's distinct colours are found and sorted once for
+/// every set (with binning or a pre-filter, image_colours is called per set). For a caller that
+/// needs several sets and the kept pixels too (the benchmark: the 3-D hull's colours, the 2-D
+/// lifts and the baselines' pixels).
+/// \throws as image_colours; std::invalid_argument if `kept` is not of the image's size.
+std::vector<ImageColours> image_colour_sets(const RgbImage& image, const PixelRules& rules, const KeptPixels& kept,
+                                            const std::vector<ColourSet>& sets);
+
 /// A linear camera image of floating-point samples (as a Python or MATLAB reader returns it):
 /// width · height pixels, row-major, three channels each. Every double is an exact rational.
 struct FloatRgbImage {
