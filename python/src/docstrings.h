@@ -251,63 +251,50 @@ TypeError
     ``feasible_set`` is not a ConvexSet, or an option of the wrong type.
 )doc";
 
+/// An example's feasible set: G_c of four colours, an image of two (a polygon of area 1/3).
+inline const std::string example_feasible_set = R"doc(>>> F = gmcc.feasible_set([[1, 1, 1], [2, 1, 1], [1, 2, 1], [2, 2, 1]], [[1, 1, 1], [3, 2, 2]])
+)doc";
+
+/// The parameters, returns and raises of the exact rules on F (max_area, mean_2d), then their
+/// example's F.
+inline const std::string exact_rule_on_F = R"doc(Parameters
+----------
+feasible_set : ConvexSet
+    F, not empty.
+
+Returns
+-------
+MapEstimate
+    The rule's map, exact (``.exact``, Fractions).
+
+Raises
+------
+ValueError
+    F is empty.
+TypeError
+    ``feasible_set`` is not a ConvexSet.
+
+Examples
+--------
+)doc" + example_feasible_set;
+
 /// max_area's docstring.
-inline const std::string max_area = R"doc(The max-area map of a feasible set, exactly.
+inline const std::string max_area = std::string(R"doc(The max-area map of a feasible set, exactly.
 
 argmax m1·m2 over F, the map that makes the corrected image as colourful as possible
 (Finlayson & Hordley 1999 §3.1; Forsyth 1990's maximum-volume map in perspective;
 max_area.h, docs/derivations.md §2).
 
-Parameters
-----------
-feasible_set : ConvexSet
-    F, not empty.
-
-Returns
--------
-MapEstimate
-    The rule's map, exact (``.exact``, Fractions).
-
-Raises
-------
-ValueError
-    F is empty.
-TypeError
-    ``feasible_set`` is not a ConvexSet.
-
-Examples
---------
->>> F = gmcc.feasible_set([[1, 1, 1], [2, 1, 1], [1, 2, 1], [2, 2, 1]], [[1, 1, 1], [3, 2, 2]])
->>> gmcc.max_area(F).exact
+)doc") + exact_rule_on_F + R"doc(>>> gmcc.max_area(F).exact
 (Fraction(4, 3), Fraction(2, 1))
 )doc";
 
 /// mean_2d's docstring.
-inline const std::string mean_2d = R"doc(The 2-D mean of a feasible set, its centroid, exactly.
+inline const std::string mean_2d = std::string(R"doc(The 2-D mean of a feasible set, its centroid, exactly.
 
 The centroid of F in the perspective plane (Finlayson & Hordley 1999 §3.2; mean_2d.h).
 
-Parameters
-----------
-feasible_set : ConvexSet
-    F, not empty.
-
-Returns
--------
-MapEstimate
-    The rule's map, exact (``.exact``, Fractions).
-
-Raises
-------
-ValueError
-    F is empty.
-TypeError
-    ``feasible_set`` is not a ConvexSet.
-
-Examples
---------
->>> F = gmcc.feasible_set([[1, 1, 1], [2, 1, 1], [1, 2, 1], [2, 2, 1]], [[1, 1, 1], [3, 2, 2]])
->>> gmcc.mean_2d(F).exact
+)doc") + exact_rule_on_F + R"doc(>>> gmcc.mean_2d(F).exact
 (Fraction(7, 6), Fraction(3, 2))
 )doc";
 
@@ -348,7 +335,7 @@ TypeError
 )doc";
 
 /// worst_case_map_deg's docstring.
-inline const std::string worst_case_map_deg = R"doc(The largest map-space angle between a map and any map of a feasible set, degrees.
+inline const std::string worst_case_map_deg = std::string(R"doc(The largest map-space angle between a map and any map of a feasible set, degrees.
 
 The worst case of Finlayson & Hordley (1999) §4, attained at a vertex of F
 (docs/derivations.md §3.1; worst_case.h).
@@ -374,8 +361,7 @@ TypeError
 
 Examples
 --------
->>> F = gmcc.feasible_set([[1, 1, 1], [2, 1, 1], [1, 2, 1], [2, 2, 1]], [[1, 1, 1], [3, 2, 2]])
->>> round(gmcc.worst_case_map_deg(F, (1, 1)), 6)
+)doc") + example_feasible_set + R"doc(>>> round(gmcc.worst_case_map_deg(F, (1, 1)), 6)
 19.471221
 )doc";
 
@@ -578,18 +564,9 @@ TypeError
     An argument of the wrong type.
 )doc";
 
-/// prepare_canonical_3d's docstring.
-inline const std::string prepare_canonical_3d = R"doc(A 3-D canonical gamut G_c3 prepared once for many images.
-
-The exact half-spaces of the hull of the canonical colours (Forsyth 1990 §3;
-feasible_set_3d.h), for estimate_3d.
-
-Parameters
-----------
-canonical : array_like of shape (n, 3), or ImageColours
-    Pixel colours under the canonical light (e.g. ``CanonicalLearner3.gamut()``). An
-    ImageColours of chromaticity lifts is refused.
-black : {'include', 'exclude'}, default 'include'
+/// The 3-D canonical side's black option and result (prepare_canonical_3d, a learner's prepare),
+/// up to its ValueError's reasons.
+inline const std::string black_3d_returns = R"doc(black : {'include', 'exclude'}, default 'include'
     Whether black (0, 0, 0) joins the hull (with it F3 is never empty).
 
 Returns
@@ -600,7 +577,20 @@ Canonical3
 Raises
 ------
 ValueError
-    Bad colours, chromaticity lifts, or an unknown ``black``.
+)doc";
+
+/// prepare_canonical_3d's docstring.
+inline const std::string prepare_canonical_3d = std::string(R"doc(A 3-D canonical gamut G_c3 prepared once for many images.
+
+The exact half-spaces of the hull of the canonical colours (Forsyth 1990 §3;
+feasible_set_3d.h), for estimate_3d.
+
+Parameters
+----------
+canonical : array_like of shape (n, 3), or ImageColours
+    Pixel colours under the canonical light (e.g. ``CanonicalLearner3.gamut()``). An
+    ImageColours of chromaticity lifts is refused.
+)doc") + black_3d_returns + R"doc(    Bad colours, chromaticity lifts, or an unknown ``black``.
 TypeError
     An argument of the wrong type.
 )doc";
