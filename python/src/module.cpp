@@ -5,6 +5,7 @@
 /// (results.h). No geometry or selection is done here.
 
 #include "bindings.h"
+#include "docstrings.h"
 #include "python_interrupt.h"
 #include "photo.h"
 #include "results.h"
@@ -22,6 +23,11 @@ PYBIND11_MODULE(_core, m) {
   m.attr("__commit__") = std::string(gmcc_commit());
   m.attr("__commit_date__") = std::string(gmcc_commit_date());
   m.attr("__data_dir__") = std::string(GMCC_DATA_DIR);  // the source tree's data/, at build time
+  // The parameter docs the pure-Python wrappers share with the extension's functions (docstrings.h).
+  py::dict doc_parts;
+  doc_parts["pixel_rules"] = doc::pixel_rules;
+  doc_parts["canonical_options"] = doc::canonical_options;
+  m.attr("_doc_parts") = doc_parts;
   bind_results(m);
   bind_scene_functions(m);
   bind_rules(m);

@@ -5,6 +5,7 @@
 
 #include "photo.h"
 
+#include "docstrings.h"
 #include "photo_bindings.h"
 
 #include <gmcc/photo/estimate_3d.h>
@@ -20,20 +21,7 @@ const std::string& learner_add_doc(const char* before, const char* after) {
   static std::deque<std::string> docs;
   docs.push_back(std::string(before) + R"doc(light : sequence of 3 numbers
     The image's measured light e, every channel > 0.
-mask : numpy.ndarray of bool, shape (H, W), optional
-    True for the pixels to use (default None: every pixel).
-black_level : int or float, default 0
-    Subtracted from every raw sample; negative results become 0.
-saturation : int or float, optional
-    A pixel with any raw channel >= it is dropped (default None: none is).
-dark : int or float, default 0
-    A pixel with a channel below it (after the black level) is dropped.
-dark_fraction, bright_fraction : int, float, Fraction or str, optional
-    A pixel with a channel below dark_fraction·M, or above bright_fraction·M, is dropped; M is
-    the image's largest value after the black level. Default None: no such rule.
-pixel_rule : {'none', 'gijsenij'}, default 'none'
-    'gijsenij': Gijsenij et al. (2010)'s rule, the fractions 5/255 and 245/255.
-)doc" + after);
+)doc" + doc::pixel_rules + after);
   return docs.back();
 }
 
@@ -246,7 +234,7 @@ void bind_functions(py::module_& m) {
         return out;
       },
       py::arg("canonical"), py::kw_only(), py::arg("black") = "include",
-      "CanonicalConstraints3 (feasible_set_3d.h). Public: gmcc.prepare_canonical_3d.");
+      doc::prepare_canonical_3d.c_str());
 
   m.def(
       "estimate_3d",
@@ -302,7 +290,7 @@ void bind_functions(py::module_& m) {
       py::arg("canonical"), py::arg("image"), py::arg("truth") = py::none(), py::kw_only(), py::arg("rules") = py::none(),
       py::arg("centroid") = "certified", py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1),
       py::arg("illuminants") = py::none(), GMCC_PIXEL_ARGS,
-      "estimate_3d (estimate_3d.h). Public: gmcc.estimate_3d.");
+      doc::estimate_3d.c_str());
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 /// gmcc._core's benchmark of the gamut-mapping methods on photographs with known lights
 /// (benchmark.h): run_benchmark's summaries and records as dicts.
 
+#include "docstrings.h"
 #include "photo_bindings.h"
 
 #include <gmcc/input/input_error.h>
@@ -66,15 +67,29 @@ std::vector<BenchmarkImage> benchmark_images(const std::string& images, const st
   return dataset;
 }
 
+// The summary and records as pandas DataFrames when `frame` and pandas imports, else the lists.
+py::tuple as_frames(const py::list& summaries, const py::list& records, bool frame) {
+  if (frame) {
+    try {
+      const py::module_ pandas = py::module_::import("pandas");
+      return py::make_tuple(pandas.attr("DataFrame")(summaries), pandas.attr("DataFrame")(records));
+    } catch (py::error_already_set& e) {
+      if (!e.matches(PyExc_ImportError)) throw;
+    }
+  }
+  return py::make_tuple(summaries, records);
+}
+
 }  // namespace
 
 void bind_benchmark(py::module_& m) {
   m.def(
       "benchmark",
-      [](const std::string& images, const std::string& truths, py::object folds, py::object folds_file,
+      [](py::handle images_folder, py::handle truths_file, py::object folds, py::object folds_file,
          py::object methods, const std::string& intensity, const std::string& black, unsigned threads,
          py::object black_level, py::object saturation, py::object dark, py::object dark_fraction,
-         py::object bright_fraction, const std::string& pixel_rule, double edge_sigma) {
+         py::object bright_fraction, const std::string& pixel_rule, double edge_sigma, bool frame) {
+        const std::string images = py::str(images_folder), truths = py::str(truths_file);  // or os.PathLike
         BenchmarkOptions o;
         o.edge_sigma = edge_sigma;
         const std::vector<BenchmarkImage> dataset = benchmark_images(images, truths, folds, folds_file);
@@ -138,14 +153,14 @@ void bind_benchmark(py::module_& m) {
           d["unanswered"] = rec.unanswered.empty() ? py::object(py::none()) : py::object(py::str(rec.unanswered));
           records.append(d);
         }
-        return py::make_tuple(summaries, records);
+        return as_frames(summaries, records, frame);
       },
       py::arg("images"), py::arg("truths"), py::kw_only(), py::arg("folds") = py::none(),
       py::arg("folds_file") = py::none(), py::arg("methods") = py::none(), py::arg("intensity") = "max",
       py::arg("black") = "include", py::arg("threads") = 0, py::arg("black_level") = py::none(),
       py::arg("saturation") = py::none(), py::arg("dark") = 0, py::arg("dark_fraction") = py::none(),
       py::arg("bright_fraction") = py::none(), py::arg("pixel_rule") = "none", py::arg("edge_sigma") = 1.0,
-      "run_benchmark (benchmark.h). Public: gmcc.benchmark.");
+      py::arg("frame") = true, doc::benchmark.c_str());
 }
 
 }  // namespace gmcc::python

@@ -2,6 +2,7 @@
 /// gmcc._core's canonical gamuts learned image by image from photographs with known lights
 /// (learn_canonical.h; docs/photographs.md §2): CanonicalLearner3 and CanonicalLearner2.
 
+#include "docstrings.h"
 #include "photo_bindings.h"
 
 #include <gmcc/photo/learn_canonical.h>
@@ -12,6 +13,19 @@
 #include <mutex>
 
 namespace gmcc::python {
+namespace {
+
+// CanonicalLearner3.prepare's docstring: its summary, then prepare_canonical_3d's black and result.
+const std::string learner_prepare_doc = std::string(R"doc(The learned gamut prepared for estimate_3d.
+
+Its exact half-spaces (Forsyth 1990 §3; feasible_set_3d.h), as prepare_canonical_3d.
+
+Parameters
+----------
+)doc") + doc::black_3d_returns + R"doc(    No colour has been added, or an unknown ``black``.
+)doc";
+
+}  // namespace
 namespace {
 
 // A learner with its own mutex: add() and gamut() run with the GIL released, so Python threads
@@ -150,25 +164,7 @@ numpy.ndarray of float64, shape (n, 3)
              out.colours = g.size();
              out.constraints = without_gil([&] { return std::make_shared<const CanonicalConstraints3>(g, out.black); });
              return out;
-           }, py::kw_only(), py::arg("black") = "include", R"doc(The learned gamut prepared for estimate_3d.
-
-Its exact half-spaces (Forsyth 1990 §3; feasible_set_3d.h), as prepare_canonical_3d.
-
-Parameters
-----------
-black : {'include', 'exclude'}, default 'include'
-    Whether black (0, 0, 0) joins the hull (with it F3 is never empty).
-
-Returns
--------
-Canonical3
-    G_c3, immutable and thread-safe.
-
-Raises
-------
-ValueError
-    No colour has been added, or an unknown ``black``.
-)doc")
+           }, py::kw_only(), py::arg("black") = "include", learner_prepare_doc.c_str())
       .def_property_readonly("images", [](const Learner3& l) { return l.with([](const CanonicalLearner3& x) { return x.images(); }); })
       .def_property_readonly("contributing", [](const Learner3& l) { return l.with([](const CanonicalLearner3& x) { return x.contributing(); }); });
 }

@@ -3,6 +3,7 @@
 /// maps, the illumination constraint, CRULE in 3-D and the error statistics.
 
 #include "bindings.h"
+#include "docstrings.h"
 #include "options.h"
 #include "photo_bindings.h"
 #include "results.h"
@@ -41,24 +42,17 @@ void bind_rules(py::module_& m) {
     py::list keys;
     for (Rule rule : all_rules) keys.append(to_string(rule));
     return keys;
-  }, R"doc(The selection rules on the 2-D feasible set, in report order (rule.h).
-
-Returns
--------
-list of str
-    Their names, 'max_area', 'mean_2d', 'mean_3d': the keys of select_maps' and
-    SceneResult.selections' dicts and the names of SceneResult's and Truth's per-rule attributes.
-)doc");
+  }, doc::rules.c_str());
   m.def("max_area", [](const ConvexSet2& F) {
     nonempty(F, "max_area");
     return released([&] { return max_area(F); });
   }, py::arg("feasible_set"),
-        "max_area (max_area.h; Finlayson & Hordley 1999 §3.1).");
+        doc::max_area.c_str());
   m.def("mean_2d", [](const ConvexSet2& F) {
     nonempty(F, "mean_2d");
     return released([&] { return mean_2d(F); });
   }, py::arg("feasible_set"),
-        "mean_2d (mean_2d.h; Finlayson & Hordley 1999 §3.2).");
+        doc::mean_2d.c_str());
   m.def(
       "mean_3d",
       [](const ConvexSet2& F, const std::string& method, py::handle precision, py::handle order, py::handle samples,
@@ -69,14 +63,14 @@ list of str
       },
       py::arg("feasible_set"), py::kw_only(), py::arg("method") = to_string(Mean3dOptions{}.method),
       GMCC_MEAN3D_PARAMETER_ARGS,
-        "mean_3d by a route (mean_3d.h; Finlayson & Hordley 1999 §3.2, docs/math.md §2).");
+      doc::mean_3d.c_str());
 
   m.def("worst_case_map_deg", [](const ConvexSet2& F, py::handle map) {
     nonempty(F, "worst_case_map_deg");
     const Point2 p = map_from(map, "map");
     return released([&] { return worst_case_map_deg(F, p); });
   }, py::arg("feasible_set"), py::arg("map"),
-        "worst_case_map_deg (worst_case.h; Finlayson & Hordley 1999 §4).");
+        doc::worst_case_map_deg.c_str());
   m.def("worst_case_illuminant_deg", [](const ConvexSet2& F, py::handle map, py::handle c) {
     nonempty(F, "worst_case_illuminant_deg");
     const Point2 p = map_from(map, "map");
@@ -87,13 +81,13 @@ list of str
     if (sgn(p.x) <= 0 || sgn(p.y) <= 0) throw py::value_error("map: both components must be > 0");
     return released([&] { return worst_case_illuminant_deg(F, p, light); });
   }, py::arg("feasible_set"), py::arg("map"), py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1),
-        "worst_case_illuminant_deg (worst_case_illuminant.h; docs/derivations.md §3.2).");
+        doc::worst_case_illuminant_deg.c_str());
 
   m.def("map_angular_error_deg", [](py::handle estimate, py::handle truth) {
     const Point2 e = map_from(estimate, "estimate"), t = map_from(truth, "truth");
     return map_angular_error_deg(e, t);
   }, py::arg("estimate"), py::arg("truth"),
-        "map_angular_error_deg (angular_error.h; Finlayson & Hordley 1999 §4).");
+        doc::map_angular_error_deg.c_str());
   m.def("illuminant_angular_error_deg", [](py::handle estimate, py::handle truth, py::handle c) {
     const Point2 e = map_from(estimate, "estimate"), t = map_from(truth, "truth");
     const Colour light = light_from(c, "canonical_illuminant");
@@ -101,14 +95,14 @@ list of str
       if (sgn(p->x) <= 0 || sgn(p->y) <= 0) throw py::value_error("estimate and truth: components must be > 0");
     return illuminant_angular_error_deg(e, t, light);
   }, py::arg("estimate"), py::arg("truth"), py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1),
-        "illuminant_angular_error_deg (angular_error.h).");
+        doc::illuminant_angular_error_deg.c_str());
   m.def("reproduction_angular_error_deg", [](py::handle estimate, py::handle truth) {
     const Point2 e = map_from(estimate, "estimate"), t = map_from(truth, "truth");
     for (const Point2* p : {&e, &t})
       if (sgn(p->x) <= 0 || sgn(p->y) <= 0) throw py::value_error("estimate and truth: components must be > 0");
     return reproduction_angular_error_deg(e, t);
   }, py::arg("estimate"), py::arg("truth"),
-        "reproduction_angular_error_deg (angular_error.h).");
+        doc::reproduction_angular_error_deg.c_str());
 
 }
 
@@ -117,7 +111,7 @@ void bind_lights_and_crule(py::module_& m) {
   m.def("illuminant_map", [](py::handle light, py::handle c) {
     return to_fraction_pair(illuminant_map(light_from(light, "light"), light_from(c, "canonical_illuminant")));
   }, py::arg("light"), py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1),
-        "illuminant_map (illumination_constraint.h): c ⊘ e in perspective, exact.");
+        doc::illuminant_map.c_str());
   m.def("illumination_constraint", [](py::handle illuminants, py::handle c) {
     const std::vector<Colour> lights = colours_from(illuminants, "illuminants");
     const Colour light = light_from(c, "canonical_illuminant");
@@ -127,7 +121,7 @@ void bind_lights_and_crule(py::module_& m) {
       throw py::value_error("illuminants: row " + std::to_string(e.index) + ": " + e.what());
     }
   }, py::arg("illuminants"), py::arg("canonical_illuminant") = py::make_tuple(1, 1, 1),
-        "illumination_constraint (illumination_constraint.h; Finlayson 1996 §5).");
+        doc::illumination_constraint.c_str());
 
   m.def("crule_3d", [](py::handle canonical, py::handle image, const std::string& black) {
     const std::vector<Colour> c = colours_or_pixel_colours(canonical, "canonical"),
@@ -139,7 +133,7 @@ void bind_lights_and_crule(py::module_& m) {
       throw py::value_error(std::string("crule_3d: ") + e.what());
     }
   }, py::arg("canonical"), py::arg("image"), py::kw_only(), py::arg("black") = "include",
-        "crule_3d (crule_3d.h): Forsyth's CRULE in 3-D.");
+        doc::crule_3d.c_str());
 }
 
 // Error statistics.
@@ -154,7 +148,7 @@ void bind_error_statistics(py::module_& m) {
                               "scenes without an error first");
     return error_statistics(std::move(v));
   }, py::arg("values"),
-        "error_statistics (error_statistics.h; docs/reproduction.md \"Statistics\").");
+        doc::error_statistics.c_str());
 
 }
 

@@ -3,6 +3,7 @@
 /// feasible set, an image's pixel colours and a camera file read.
 
 #include "bindings.h"
+#include "docstrings.h"
 #include "options.h"
 #include "pixels.h"
 #include "results.h"
@@ -94,7 +95,19 @@ Scene run_scene(const std::shared_ptr<PreparedCanonical>& canonical, py::handle 
 // The canonical side, one scene's selections and its feasible set.
 void bind_select(py::module_& m) {
   m.def("prepare_canonical", &prepare, py::arg("canonical"), py::kw_only(), GMCC_OPTION_ARGS,
-        "The canonical side prepared once (prepare_canonical.h; Finlayson & Hordley 1999 eq. 10). Public: gmcc.prepare_canonical.");
+        doc::prepare_canonical.c_str());
+  m.def(
+      "canonical_gamut",
+      [](py::handle canonical, py::handle expand, const std::string& expand_policy,
+         const std::string& nonpositive_blue) {
+        const Mean3dOptions d{};  // no selection is made: the 3-D mean's options are unused
+        return prepare(canonical, expand, expand_policy, py::none(), py::make_tuple(1, 1, 1), "none",
+                       to_string(d.method), py::int_(d.precision_bits), py::int_(d.order), py::int_(d.samples),
+                       py::int_(d.seed), true, nonpositive_blue)
+            ->gamut;
+      },
+      py::arg("canonical"), py::kw_only(), py::arg("expand") = 0, py::arg("expand_policy") = "none",
+      py::arg("nonpositive_blue") = "drop", doc::canonical_gamut.c_str());
 
   m.def(
       "select_prepared",
@@ -135,14 +148,15 @@ void bind_images(py::module_& m) {
         return image_colours_of(image, {mask, black_level, saturation, dark, dark_fraction, bright_fraction,
                                         pixel_rule, colour_set, prefilter});
       },
-      py::arg("image"), py::arg("mask") = py::none(), py::arg("black_level") = 0, py::arg("saturation") = py::none(),
-      py::arg("dark") = 0, py::arg("dark_fraction") = py::none(), py::arg("bright_fraction") = py::none(),
-      py::arg("pixel_rule") = "none", py::arg("colour_set") = "hull", py::arg("prefilter") = 0,
-        "The pixel rules (image_pixels.h; docs/conventions.md §8). Public: gmcc.image_colours.");
+      py::arg("image"), py::kw_only(), py::arg("mask") = py::none(), py::arg("black_level") = 0,
+      py::arg("saturation") = py::none(), py::arg("dark") = 0, py::arg("dark_fraction") = py::none(),
+      py::arg("bright_fraction") = py::none(), py::arg("pixel_rule") = "none", py::arg("colour_set") = "hull",
+      py::arg("prefilter") = 0, doc::image_colours.c_str());
 
   m.def(
       "read_image",
-      [](const std::string& path, py::object black_level, py::object saturation) {
+      [](py::handle path_like, py::object black_level, py::object saturation) {
+        const std::string path = py::str(py::module_::import("os").attr("fspath")(path_like));
         ImageLevels levels;
         if (!black_level.is_none()) levels.black = integer_in<std::uint32_t>(black_level, "black_level", 0, 65535);
         if (!saturation.is_none()) levels.saturation = integer_in<std::uint32_t>(saturation, "saturation", 1, 65536);
@@ -170,16 +184,17 @@ void bind_images(py::module_& m) {
         }
         py::array_t<std::uint16_t> a({image.height, image.width, std::size_t(3)});
         if (!image.samples.empty()) std::memcpy(a.mutable_data(), image.samples.data(), image.samples.size() * 2);
-        py::dict out;
-        out["image"] = a;
-        out["bits"] = image.bits;
-        out["black_level"] = read.black_level;
-        out["saturation"] = read.saturation ? py::object(py::int_(*read.saturation)) : py::object(py::none());
-        out["raw"] = raw;
-        return out;
+        py::dict levels_found;  // the pixel rules to pass on as **rules
+        levels_found["black_level"] = read.black_level;
+        levels_found["saturation"] =
+            read.saturation ? py::object(py::int_(*read.saturation)) : py::object(py::none());
+        py::dict info;
+        info["bits"] = image.bits;
+        info["raw"] = raw;
+        return py::make_tuple(a, levels_found, info);
       },
-      py::arg("path"), py::arg("black_level") = py::none(), py::arg("saturation") = py::none(),
-      "read_camera_image (camera_image.h, raw_file.h; docs/conventions.md §8). Public: gmcc.read_image.");
+      py::arg("path"), py::kw_only(), py::arg("black_level") = py::none(), py::arg("saturation") = py::none(),
+      doc::read_image.c_str());
 }
 
 // The rules applied together on a feasible set.
@@ -196,8 +211,7 @@ void bind_select_maps(py::module_& m) {
         return selections_dict(s);
       },
       py::arg("feasible_set"), py::kw_only(), py::arg("mean3d") = to_string(Mean3dOptions{}.method),
-      GMCC_MEAN3D_PARAMETER_ARGS, py::arg("canonical_illuminant") = py::none(),
-        "The three selection rules with worst cases (select_maps.h; §3, §4). Public: gmcc.select_maps.");
+      GMCC_MEAN3D_PARAMETER_ARGS, py::arg("canonical_illuminant") = py::none(), doc::select_maps.c_str());
 }
 
 }  // namespace
