@@ -2,7 +2,7 @@
 // (1 + i/N, 1 + (i/N)²), i = 0 … N − 1 (every point a vertex), against the image colours
 // (1, 1, 1), (1.001, 1, 1), (1, 1.001, 1), by the convex pass feasible_polygon runs and by the
 // Sutherland–Hodgman route it replaced, in the same process. The last lines printed are the
-// ratios line_by_line / convex_pass per N (docs/performance.md, "Many-vertex canonical gamuts
+// ratios line_by_line / convex_pass per N (docs/performance-history.md, "Many-vertex canonical gamuts
 // (issue 13)"). The old route takes about a minute and a half at N = 10^5 and is not run beyond.
 #include <gmcc/geometry/feasible_polygon.h>
 

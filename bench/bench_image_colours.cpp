@@ -2,7 +2,7 @@
 // 1, 4 and 10 megapixels (mondrian.h: the shipped sample's 8 chips, noise ±100 codes): decoding
 // the PNG, the pixel rules with the exact hull colour set, and, as a baseline in the same run,
 // the same distinct colours' chromaticity hull in plain doubles (no exactness: a near-collinear
-// triple may be decided wrongly). Reported as ratios in docs/performance.md "Images".
+// triple may be decided wrongly). Reported as ratios in docs/performance.md "Images to colours".
 #include <gmcc/input/colour_csv.h>
 #include <gmcc/input/image_file.h>
 #include <gmcc/photo/image_pixels.h>

@@ -24,6 +24,7 @@ maximiser is unique (a second LP fixes the optimal trace and maximises, then min
 coordinate: a unique maximiser has the two equal to 1e-7 relative).
 
     PYTHONPATH=build/python /usr/bin/python3 bench/photo_speed.py --camera-dir DIR [--gmcc build/cli/gmcc]
+        [--rounds 5] [--json FILE]
 """
 
 import argparse
@@ -132,6 +133,7 @@ def main():
     ap.add_argument("--camera-dir", required=True, help="a folder of 16-bit PNGs and gt.csv")
     ap.add_argument("--gmcc", default=str(ROOT / "build" / "cli" / "gmcc"))
     ap.add_argument("--rounds", type=int, default=5)
+    ap.add_argument("--json", help="also write the medians (seconds per image) to this file")
     args = ap.parse_args()
     d = Path(args.camera_dir)
     rows = list(csv.DictReader(open(d / "gt.csv")))
@@ -216,6 +218,13 @@ def main():
     print(f"  CPU ratio float / Python {cfl / cpy:.1f}x, float / command line {cfl / ccl:.1f}x")
     print(f"max-trace vs the float LP: {agree} of {unique_n} images with a unique LP maximiser agree to 0.1 deg "
           f"(largest difference {worst:.2e} deg)")
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump({"images": len(test), "rounds": args.rounds,
+                       "wall": {"python": py, "command_line": cl, "float": fl},
+                       "cpu": {"python": cpy, "command_line": ccl, "float": cfl},
+                       "max_trace_unique": unique_n, "max_trace_agree": agree, "max_trace_worst_deg": worst},
+                      f, indent=1)
     return 0 if agree == unique_n else 1
 
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The Python module's cost against the library's, in one run (issue 17; docs/performance.md
+"""The Python module's cost against the library's, in one run (issue 17; docs/performance-history.md
 "Python module"):
 
   1. per call, 11-colour scenes: gmcc.select(prepared, float array) from Python against

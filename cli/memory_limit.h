@@ -20,7 +20,7 @@ void install_gmp_allocation_failure_exit();
 /// Keep freed memory for reuse instead of returning it to the system after every image: glibc's
 /// default trims the heap above 128 KiB of free memory and maps blocks over 128 KiB afresh, so a
 /// run over many images faults the same pages in again for each (about 3% of `gmcc estimate
-/// --space 3d` on 64 × 64 photographs, docs/performance.md). Memory held is at most what the run
+/// --space 3d` on 64 × 64 photographs, docs/performance-history.md). Memory held is at most what the run
 /// already needed at its peak, plus 64 MiB. Call first in main.
 void keep_freed_memory();
 

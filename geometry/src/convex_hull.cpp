@@ -39,7 +39,7 @@ int turn(const Point2& a, const Point2& b, const Point2& c, const Approx& ea, co
 
 // Andrew's monotone chain on indices, with filtered predicates. CGAL's lazy exact kernel spent
 // about 17 µs a point on its lazy numbers' allocations (19 s for the 10^6-point parabola of
-// issue 13); this spends well under 1 µs where the filters decide (docs/performance.md,
+// issue 13); this spends well under 1 µs where the filters decide (docs/performance-history.md,
 // "Many-vertex canonical gamuts (issue 13)").
 ConvexSet2 convex_hull(const std::vector<Point2>& points) {
   const std::size_t n = points.size();

@@ -156,7 +156,7 @@ class Clipper {
   // signed distance (a·c − b)/|a|), largest first, ties in the order they had: rows that cut deep
   // come first, and most later rows then hold on the whole polytope, settled by box_inside or
   // none_outside without a cut. A heuristic in doubles that decides nothing (on the NUS
-  // thumbnails, 22% fewer cuts than the pseudo-random order alone; docs/performance.md).
+  // thumbnails, 22% fewer cuts than the pseudo-random order alone; docs/performance-history.md).
   void deepest_first(const Point3& box) {
     double c[3];
     for (int k = 0; k < 3; ++k) c[k] = coord(box, k).get_d() / 2;

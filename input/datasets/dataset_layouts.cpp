@@ -40,7 +40,7 @@ std::string find_image(const fs::path& dir, const std::string& stem, const std::
 
 // libmatio, loaded on the first MATLAB 7.3 (HDF5) file rather than linked: linking it loads
 // HDF5, libcurl and GnuTLS into every gmcc process, about 8 ms of start-up that every other
-// command paid (docs/performance.md "Start-up"). MATLAB 5 files (what the datasets ship) are read
+// command paid (docs/performance-history.md "Start-up"). MATLAB 5 files (what the datasets ship) are read
 // by mat_file.h from the bytes gmcc read itself. GMCC_MATIO_SONAME is the soname of the libmatio
 // the build found (input/datasets/CMakeLists.txt); its header gives the types and signatures.
 struct Matio {

@@ -104,7 +104,7 @@ void sort_keys_from(std::uint64_t* first, std::uint64_t* last, int shift, std::v
 
 // Sort 48-bit keys ascending: std::sort for a few, else by their top byte in place and each
 // bucket's rest through a buffer of at most 2^20 keys (issue 42: a whole buffer as large as the
-// keys was 8 bytes a kept pixel more; this is about as fast: docs/performance.md). The same
+// keys was 8 bytes a kept pixel more; this is about as fast: docs/performance-history.md). The same
 // sequence either way.
 void sort_keys(std::vector<std::uint64_t>& keys) {
   if (keys.size() < 64)

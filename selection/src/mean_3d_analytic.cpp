@@ -234,7 +234,7 @@ constexpr unsigned rounding_cap_bits = 8192;
 // log2(n) bits to cancellation (its edges are about 1/n of F's size), so the enclosure's width
 // grows like n·2^-bits: about 2^-62 of the map at n = 10^4 and 80 bits. 73 + log2(n) bits keep it
 // near 2^-63 (a rounding boundary inside about once in 2^10 calls) instead of letting a
-// 10^5–10^6-vertex F (a many-vertex canonical gamut, docs/performance.md "Many-vertex canonical
+// 10^5–10^6-vertex F (a many-vertex canonical gamut, docs/performance-history.md "Many-vertex canonical
 // gamuts (issue 13)") fall through to the exact products, 5–10× slower; below 128 vertices it is
 // 80 as before. MPFR's cost is the same up to 128 bits (two limbs).
 unsigned middle_stage_bits(std::size_t n) {

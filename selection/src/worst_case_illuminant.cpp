@@ -36,7 +36,7 @@ using internal::no_stationary_point;
 
 // The filters below only skip work whose exact result is known not to matter, so the answer is
 // the exact route's, bit for bit; they make a feasible set of 10^5–10^6 vertices (a many-vertex
-// canonical gamut, docs/performance.md "Many-vertex canonical gamuts (issue 13)") cost
+// canonical gamut, docs/performance-history.md "Many-vertex canonical gamuts (issue 13)") cost
 // floating-point operations per vertex and edge instead of exact polynomial algebra.
 
 // The second filter, on what the first leaves (issue 13: a feasible set of 1942 vertices within

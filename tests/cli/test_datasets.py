@@ -193,7 +193,7 @@ def main():
 
         def matio_loaded_on_demand():
             # libmatio (and HDF5, libcurl, GnuTLS behind it) is opened on the first MATLAB file, not
-            # linked: every other command starts without loading it (docs/performance.md "Start-up").
+            # linked: every other command starts without loading it (docs/performance-history.md "Start-up").
             # MATLAB 7.3 files (nus73 above) are read through it; MATLAB 5 files by gmcc itself.
             dynamic = subprocess.run(["readelf", "-d", binary], capture_output=True, text=True, check=True).stdout
             needed = [line for line in dynamic.splitlines() if "(NEEDED)" in line]

@@ -1,5 +1,5 @@
 // The convex pass of feasible_polygon (issue 13: near-linear clipping of a strictly convex cycle
-// by a convex polygon's edges, docs/performance.md) against the Sutherland–Hodgman route it
+// by a convex polygon's edges, docs/performance-history.md) against the Sutherland–Hodgman route it
 // replaced, on seeded scenes: many-vertex canonical gamuts on convex curves, random small ones,
 // degenerate ones (segments, points, image colours with a zero channel, coincident colours,
 // F a segment, a point or empty), with and without a map constraint. Both routes must give the

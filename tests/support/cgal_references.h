@@ -3,7 +3,7 @@
 // the library with them (never installed: gmcc_test_support, tests/support/CMakeLists.txt).
 //
 // - CGAL's 2-D hull (CGAL::convex_hull_2 over the lazy exact kernel Epeck), what convex_hull was
-//   before issue 13's filtered monotone chain (docs/performance.md, "Many-vertex canonical gamuts
+//   before issue 13's filtered monotone chain (docs/performance-history.md, "Many-vertex canonical gamuts
 //   (issue 13)"): tests/geometry/test_convex_hull_filtered.cpp and bench/bench_hull.cpp.
 // - Forsyth's CRULE feasible set F3 (Forsyth 1990, §3) by the route it took before the prepared
 //   form of issue 16 (docs/math.md §1b "The exact LP"): the canonical gamut's hull per call, the

@@ -4,7 +4,7 @@
 // and 20 draws of saturated pixels, as OUT/mondrian.png and OUT/mondrian.tif; OUT/shown.csv
 // holds the exact colours of the chips the cells show (lines of the sample file, each once).
 //   make_mondrian_images DATA_DIR OUT_DIR [WIDTH HEIGHT [NOISE]]   (default 120 90 0; a larger,
-//   noisy image for timing, as in docs/performance.md "Images")
+//   noisy image for timing, as in docs/performance-history.md "Images")
 #include <gmcc/input/colour_csv.h>
 #include <gmcc/input/image_file.h>
 #include <gmcc/validation/mondrian.h>

@@ -1,7 +1,7 @@
 #pragma once
 // Clipping a cycle of symbolic vertices by lines: Sutherland–Hodgman line by line, the convex
 // pass that takes a whole family of lines in one turn around a strictly convex cycle, and the
-// final reduction (docs/performance.md, "Many-vertex canonical gamuts (issue 13)"). Internal to
+// final reduction (docs/performance-history.md, "Many-vertex canonical gamuts (issue 13)"). Internal to
 // gmcc::geometry.
 
 #include "internal/polygon_clipper.h"
@@ -28,7 +28,7 @@ struct ConvexClip {
 // from another start. It stops early, leaving the rest to clip(), once the cycle degenerates
 // (fewer than 3 vertices: a segment or a point) or empties, or when it finds the cycle not convex.
 //
-// Why it is fast (docs/performance.md, "Many-vertex canonical gamuts (issue 13)"): the vertices
+// Why it is fast (docs/performance-history.md, "Many-vertex canonical gamuts (issue 13)"): the vertices
 // strictly outside a line form one arc around the vertex extreme in the direction of the line's
 // outward normal n, and there are none when that vertex is not outside. Vertex v is extreme iff
 // n lies between the normals of the edges into and out of v: weight_sign(in, h) >= 0 >=

@@ -2,7 +2,7 @@
 // feasible_polygon by either clipping route: the convex pass (clip_convex in feasible_set.cpp,
 // what feasible_polygon runs) or Sutherland–Hodgman line after line, what it ran before issue 13
 // and still runs once the cycle degenerates. The second is kept reachable for the differential
-// test and the benchmark that compare the two (docs/performance.md, "Many-vertex canonical
+// test and the benchmark that compare the two (docs/performance-history.md, "Many-vertex canonical
 // gamuts (issue 13)"). Internal to gmcc::geometry.
 
 #include <gmcc/geometry/feasible_polygon.h>

@@ -13,7 +13,7 @@ namespace gmcc {
 /// Andrew's monotone chain (Andrew 1979): the lexicographic order and every orientation are
 /// decided from certified double enclosures of the coordinates when those suffice, else in exact
 /// rationals; the same hull as CGAL::convex_hull_2 over an exact kernel, which it replaced for
-/// speed on many-vertex inputs (docs/performance.md, "Many-vertex canonical gamuts (issue 13)").
+/// speed on many-vertex inputs (docs/performance-history.md, "Many-vertex canonical gamuts (issue 13)").
 /// Complexity O(n log n).
 ConvexSet2 convex_hull(const std::vector<Point2>& points);
 

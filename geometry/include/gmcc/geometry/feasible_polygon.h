@@ -5,7 +5,7 @@
 /// input lines. Its exact vertices are built only when asked for; certified floating-point
 /// enclosures of them cost a few flops each. This is what lets an experiment evaluate thousands
 /// of feasible sets at nearly the speed of doubles without giving up exactness
-/// (docs/performance.md): decisions are exact, values are enclosed, and the exact set is one
+/// (docs/performance-history.md): decisions are exact, values are enclosed, and the exact set is one
 /// call away.
 
 #include <gmcc/geometry/convex_set.h>

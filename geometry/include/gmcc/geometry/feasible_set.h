@@ -60,10 +60,10 @@ class CanonicalConstraints {
 /// Every decision (which side of a line a vertex lies on, whether two vertices coincide) is the
 /// sign of a determinant of input-line coefficients, decided in double with a rigorous error
 /// bound and in exact integers only when the bound does not settle it; vertices are kept as pairs
-/// of input lines and constructed exactly only at the end (docs/performance.md). The result is
+/// of input lines and constructed exactly only at the end (docs/performance-history.md). The result is
 /// the same exact set either way.
 /// Complexity O(k·(m + n)) for k image-hull vertices, m canonical edges and n ≤ k·m the largest
-/// intermediate cycle (docs/performance.md, "Many-vertex canonical gamuts (issue 13)"), after
+/// intermediate cycle (docs/performance-history.md, "Many-vertex canonical gamuts (issue 13)"), after
 /// the image hull.
 ConvexSet2 feasible_set(const ConvexSet2& canonical, const std::vector<Point2>& image);
 

@@ -62,7 +62,7 @@ class CanonicalConstraints3 {
 
 /// F3 from a prepared canonical gamut: the same exact set, kind and canonical form as
 /// feasible_set_3d(canonical colours, image, black) below, faster (docs/math.md §1b "The
-/// prepared route", docs/performance.md "CRULE in 3-D (issue 16)").
+/// prepared route", docs/performance-history.md "CRULE in 3-D (issue 16)").
 ///
 /// The image hull's vertices are found first (from 64 colours, those certified strictly inside a
 /// small hull of extreme image colours by a double filter with a proven bound are dropped; from

@@ -4,7 +4,7 @@
 /// angular error of the selected map and its worst case over F; plus the illuminant and
 /// reproduction errors of angular_error.h), computed from certified enclosures of F's vertices
 /// instead of exact rational vertices. An experiment needs only these angles; this computes them
-/// at nearly the cost of doubles, certified, and says when it cannot (docs/performance.md).
+/// at nearly the cost of doubles, certified, and says when it cannot (docs/performance-history.md).
 
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/feasible_polygon.h>

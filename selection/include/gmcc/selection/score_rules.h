@@ -5,7 +5,7 @@
 /// its worst case over F, and its illuminant and reproduction errors. The one place that chooses
 /// the route: the certified route (certified_rule_errors.h: enclosures of F's vertices, at nearly
 /// the cost of doubles) where it applies and certifies its angles, else the exact route
-/// (select_maps.h and exact_rule_errors in rule_errors.h). The two agree within rule_errors_accuracy (docs/performance.md).
+/// (select_maps.h and exact_rule_errors in rule_errors.h). The two agree within rule_errors_accuracy (docs/performance-history.md).
 
 #include <gmcc/geometry/colour.h>
 #include <gmcc/geometry/feasible_polygon.h>
