@@ -1,6 +1,6 @@
-// One full-size photograph, step by step (issue 46 items 1 and 4; docs/performance.md "One
-// full-size photograph"): decoding the PNG, the pixel rules (Gijsenij et al. 2010's), the exact
-// 3-D hull colour set, the 2-D chromaticity lifts, the 3-D estimate with every rule, the five
+// One full-size photograph, step by step (issue 46 items 1 and 4; docs/performance.md "A
+// full-size image against decoding it"): decoding the PNG, the pixel rules (Gijsenij et al.
+// 2010's), the exact 3-D hull colour set, the 2-D chromaticity lifts, the 3-D estimate with every rule, the five
 // baselines, and all of it together as `gmcc benchmark` does for one image with its default
 // methods. The ratios to decoding alone are what docs/performance.md reports.
 //

@@ -1,6 +1,6 @@
-// Full-size 16-bit stand-ins for a dataset (issue 46 item 1; docs/performance.md "Full-size
-// photographs"): real photographs upscaled to the size a dataset ships at, widened to 16 bits
-// with seeded noise so that most pixels are distinct colours, as in a real raw image.
+// Full-size 16-bit stand-ins for a dataset (issue 46 item 1; docs/performance.md "A full-size
+// image against decoding it"): real photographs upscaled to the size a dataset ships at, widened
+// to 16 bits with seeded noise so that most pixels are distinct colours, as in a real raw image.
 //
 //   make_fullsize_dataset SOURCE_DIR OUT_DIR COUNT WIDTH HEIGHT [SEED]
 //

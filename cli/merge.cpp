@@ -67,7 +67,7 @@ ExperimentResult result_of(const json& h, const Place& at) {
   c.scenes = get<std::uint64_t>(h, "scenes", at);
   c.seed = get<std::uint64_t>(h, "seed", at);
   // reproduce's own limits (docs/cli.md "Resource limits").
-  const std::size_t max_rules = rule_count + experiment_rules_3d.size();
+  const std::size_t max_rules = rule_count + max_experiment_rules_3d;
   if (c.min_surfaces < 1 || c.max_surfaces < c.min_surfaces || c.max_surfaces > 24 || c.scenes < 1 ||
       c.scenes > 1000000 || r.lights.empty() || r.lights.size() > 64 || r.rules.empty() || r.rules.size() > max_rules)
     bad(at, "the setup's counts are out of range (reproduce's limits: 1 to 24 surfaces, 1 to 10^6 scenes, "
@@ -92,7 +92,7 @@ ExperimentResult result_of(const json& h, const Place& at) {
   if (h.contains("crule_extended")) c.crule_extended = get<bool>(h, "crule_extended", at);
   if (h.contains("specular")) c.specular = get<double>(h, "specular", at);
   if (h.contains("intensity")) c.intensity = get<double>(h, "intensity", at);
-  if (r.rules.size() != rule_count + experiment_rules_3d_count(c)) bad(at, "\"rules\" do not match \"crule\"");
+  if (r.rules.size() != rule_count + experiment_rule_names_3d(c).size()) bad(at, "\"rules\" do not match \"crule\"");
   r.canonical_gamut = convex_set(member(h, "canonical_gamut", at), at);
   if (!member(h, "constraint", at).is_null()) c.constraint = convex_set(h.at("constraint"), at);
   c.keep_scenes = true;

@@ -64,6 +64,36 @@ BOOST_AUTO_TEST_CASE(error_free_transformations_are_exact) {
   }
 }
 
+// The family's ends and sign (enclosure.h) on DWEnclosure: [lower, upper] holds both exact ends
+// of [mid − rad, mid + rad], and sign never excludes the sign of a point inside, on enclosures of
+// every magnitude, straddling 0 or not, exact, and unbounded.
+BOOST_AUTO_TEST_CASE(ends_and_sign_hold_the_exact_enclosure) {
+  std::mt19937_64 rng(44);
+  int certain = 0;
+  for (int i = 0; i < 20000; ++i) {
+    DWEnclosure x = random_dw(rng, static_cast<int>(rng() % 1800) - 900, i % 3 != 0);
+    if (i % 7 == 0) x.rad = std::fabs(x.mid.hi) * (0.5 + static_cast<double>(rng() % 4) / 4);  // near or across 0
+    if (i % 97 == 0) x = DWEnclosure::exact(0.0);
+    const UncertainSign s = sign(x);
+    if (!x.finite()) {
+      BOOST_TEST(!s.is_certain());
+      continue;
+    }
+    for (int which = 0; which < 3; ++which) {
+      const mpq_class q = point_of(x, which);
+      BOOST_TEST(exact(lower(x)) <= q);
+      BOOST_TEST(q <= exact(upper(x)));
+      BOOST_TEST((s.lo <= sgn(q) && sgn(q) <= s.hi));
+    }
+    BOOST_TEST(abs(exact(x.mid)) + exact(x.rad) <= exact(x.abs_upper()));
+    certain += s.is_certain();
+  }
+  BOOST_TEST(certain > 10000);  // the ends are tight enough to decide most signs
+  BOOST_TEST(!sign(DWEnclosure::unbounded()).is_certain());
+  BOOST_TEST(sign(DWEnclosure::exact(0.0)).is_certain());
+  BOOST_TEST(!sign(DWEnclosure{{std::nan(""), 0}, 0}).is_certain());
+}
+
 BOOST_AUTO_TEST_CASE(operations_enclose_the_exact_result) {
   std::mt19937_64 rng(3121432);
   for (int i = 0; i < 20000; ++i) {

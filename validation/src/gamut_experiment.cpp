@@ -143,6 +143,23 @@ void check_experiment(const ExperimentSetup& setup, const ExperimentConfig& conf
     throw std::invalid_argument("a shard K/N needs 1 <= K <= N");
 }
 
+}  // namespace
+
+std::vector<Rule3> experiment_rules_3(const ExperimentConfig& config) {
+  if (!config.crule) return {};
+  if (config.crule_extended) return {all_rules_3.begin(), all_rules_3.end()};
+  return {Rule3::max_volume, Rule3::centroid};
+}
+
+std::vector<std::string> experiment_rule_names_3d(const ExperimentConfig& config) {
+  std::vector<std::string> names;
+  for (Rule3 rule : experiment_rules_3(config)) names.push_back("crule_" + to_string(rule));
+  if (config.crule && config.crule_extended) names.push_back("crule_cone_mean");
+  return names;
+}
+
+namespace {
+
 // The result's description before any scene: names, rules, baselines and the canonical gamut(s).
 ExperimentResult result_header(const ExperimentSetup& setup, const ExperimentConfig& config) {
   ExperimentResult result;
@@ -152,8 +169,7 @@ ExperimentResult result_header(const ExperimentSetup& setup, const ExperimentCon
   result.config = config;
   result.config.progress = nullptr;
   for (Rule r : all_rules) result.rules.push_back(to_string(r));
-  result.rules.insert(result.rules.end(), experiment_rules_3d.begin(),
-                      experiment_rules_3d.begin() + static_cast<std::ptrdiff_t>(experiment_rules_3d_count(config)));
+  for (const std::string& name : experiment_rule_names_3d(config)) result.rules.push_back(name);
   result.surface_indices = setup.surface_indices;
   if (setup.baselines) result.baselines.assign(experiment_baselines.begin(), experiment_baselines.end());
   if (setup.canonical_chromaticity_sets.empty()) {

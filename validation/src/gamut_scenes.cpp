@@ -113,7 +113,6 @@ std::vector<RuleRecord> baseline_records(const ExperimentSetup& setup, const Tes
 void score_crule(const ExperimentSetup& setup, const ExperimentConfig& config, const CanonicalConstraints3& crule_gamut,
                  const TestLight& light, const std::vector<Colour>& image_colours, SceneRecord& rec) {
   const LazyConvexSet3 F = feasible_set_3d_lazy({{&crule_gamut, &image_colours}});
-  const Crule3dSelections c3 = crule_3d_selections(F, Crule3dRoute::certified);
   const bool truth3_inside = contains(F, light.true_diagonal_map);
   // The 3-D map d of a selection, its worst case over F3 given: scored when d3 > 0.
   auto score = [&](std::size_t slot, const Point3& d, double worst_case_deg) {
@@ -122,18 +121,18 @@ void score_crule(const ExperimentSetup& setup, const ExperimentConfig& config, c
     x.worst_case_deg = worst_case_deg;
     rec.rules[slot] = record(x, truth3_inside);
   };
-  const std::array<const std::optional<Selection3>*, 2> rules3{&c3.max_volume, &c3.centroid};
-  for (std::size_t r = 0; r < 2; ++r)
-    if (*rules3[r] && (*rules3[r])->worst_case_deg)
-      score(rule_count + r, measured_map((*rules3[r])->estimate), *(*rules3[r])->worst_case_deg);
-  if (!config.crule_extended || F.kind() == ConvexKind3::empty) return;
-  const Point3 trace = measured_map(max_trace(F));
-  if (sgn(trace.z) > 0) score(rule_count + 2, trace, worst_case_map_deg_3d(F, trace));
+  if (F.kind() == ConvexKind3::empty) return;
+  const std::vector<Rule3> rules3 = experiment_rules_3(config);
+  for (std::size_t r = 0; r < rules3.size(); ++r) {
+    const Selection3 s = with_worst_case(F, select_rule_3(rules3[r], F, Crule3dRoute::certified));
+    if (s.worst_case_deg) score(rule_count + r, measured_map(s.estimate), *s.worst_case_deg);
+  }
+  if (!config.crule_extended) return;
   const std::optional<MapEstimate> cone = perspective_cone_mean(F.exact(), config.mean3d);
   if (cone && cone->valid) {
     const Point2 m = measured_map(*cone);
     const Point3 lift{m.x, m.y, Rational(1)};
-    score(rule_count + 3, lift, worst_case_map_deg_3d(F, lift));
+    score(rule_count + rules3.size(), lift, worst_case_map_deg_3d(F, lift));
   }
 }
 
@@ -176,7 +175,7 @@ std::vector<SceneRecord> run_cell(const ExperimentSetup& setup, const Experiment
                                   std::size_t light_index, int n, std::uint64_t s_begin, std::uint64_t s_end,
                                   std::atomic<std::uint64_t>& done) {
   const TestLight& light = setup.lights[light_index];
-  const std::size_t R = rule_count + experiment_rules_3d_count(config);
+  const std::size_t R = rule_count + experiment_rule_names_3d(config).size();
   std::vector<SceneRecord> records;
   if (static_cast<std::size_t>(n) > light.surfaces.size()) {  // setup.skip_short_lights: no scenes
     done += s_end - s_begin;

@@ -23,6 +23,7 @@
 /// (inf or NaN), so that a caller asks once, at the end.
 
 #include <gmcc/numerics/double_word.h>
+#include <gmcc/numerics/enclosure.h>
 
 #include <cmath>
 #include <limits>
@@ -76,7 +77,40 @@ struct DWEnclosure {
   double abs_lower() const {
     return (std::fabs(mid.hi) * (1 - 0x1p-50) - round_up(rad)) * (1 - 0x1p-50) - 0x1p-1000;
   }
+
+  /// A certain upper bound of |x| over the enclosure (+inf when it bounds nothing): |mid| <=
+  /// |hi| + |lo|, and each rounded step is pushed up as abs_lower's is pushed down.
+  double abs_upper() const {
+    if (!finite()) return std::numeric_limits<double>::infinity();
+    return (magnitude() * (1 + 0x1p-50) + round_up(rad)) * (1 + 0x1p-50) + 0x1p-1000;
+  }
 };
+
+/// \name The enclosure family's ends (enclosure.h), in double
+/// With them the family's generic questions (sign, certainly_negative) take a DWEnclosure.
+///@{
+/// A certain lower end: abs_lower when the enclosure lies above 0, else −abs_upper (−inf when it
+/// bounds nothing; 0 for the exact zero).
+inline double lower(const DWEnclosure& x) {
+  if (!x.finite()) return -std::numeric_limits<double>::infinity();
+  if (x.rad == 0 && x.mid.hi == 0) return 0;
+  if (x.mid.hi > 0) {
+    const double a = x.abs_lower();
+    if (a > 0) return a;
+  }
+  return -x.abs_upper();
+}
+/// A certain upper end, as lower.
+inline double upper(const DWEnclosure& x) {
+  if (!x.finite()) return std::numeric_limits<double>::infinity();
+  if (x.rad == 0 && x.mid.hi == 0) return 0;
+  if (x.mid.hi < 0) {
+    const double a = x.abs_lower();
+    if (a > 0) return -a;
+  }
+  return x.abs_upper();
+}
+///@}
 
 /// The enclosure z = result with the charge for its own error and the propagated radius `prop`.
 inline DWEnclosure dw_result(const DoubleWord& z, double prop) {

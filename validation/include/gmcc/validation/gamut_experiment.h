@@ -11,6 +11,7 @@
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/selection/mean_3d.h>
 #include <gmcc/selection/rule.h>
+#include <gmcc/selection/rule_3.h>
 #include <gmcc/validation/error_statistics.h>
 
 #include <array>
@@ -123,15 +124,17 @@ struct ExperimentConfig {
   std::function<void(std::uint64_t, std::uint64_t)> progress;
 };
 
-/// CRULE's 3-D rules, after the 2-D rules (all_rules, rule.h) when ExperimentConfig::crule is
-/// set: the first two (crule_3d.h), and all four with ExperimentConfig::crule_extended
-/// (max_trace.h, perspective_cone_mean.h).
-inline const std::array<const char*, 4> experiment_rules_3d{"crule_max_volume", "crule_centroid",
-                                                            "crule_max_trace", "crule_cone_mean"};
-/// How many of experiment_rules_3d a run with `config` scores (0 without CRULE).
-inline std::size_t experiment_rules_3d_count(const ExperimentConfig& config) {
-  return config.crule ? (config.crule_extended ? 4 : 2) : 0;
-}
+/// The 3-D rules an experiment scores after the 2-D rules (all_rules, rule.h) when
+/// ExperimentConfig::crule is set: CRULE's own, max-volume and the centroid (Forsyth 1990;
+/// crule_3d.h), or with ExperimentConfig::crule_extended every 3-D rule (rule_3.h), in report
+/// order; none without CRULE.
+std::vector<Rule3> experiment_rules_3(const ExperimentConfig& config);
+/// The names of the 3-D columns of a report: `crule_` and each rule's key (to_string, rule_3.h),
+/// then with crule_extended the cone mean of F3's perspective image, `crule_cone_mean`
+/// (perspective_cone_mean.h).
+std::vector<std::string> experiment_rule_names_3d(const ExperimentConfig& config);
+/// The most 3-D columns a report may have: every 3-D rule and the cone mean.
+inline constexpr std::size_t max_experiment_rules_3d = rule_3_count + 1;
 /// The reference baselines (ExperimentSetup::baselines), in report order.
 inline const std::array<const char*, 2> experiment_baselines{"grey_world", "max_rgb"};
 
@@ -197,7 +200,7 @@ struct ExperimentResult {
   std::vector<std::string> lights;    ///< the test lights' names, in setup order
   ExperimentConfig config;  ///< the configuration it ran with (seed, counts, shard, …)
   ConvexSet2 canonical_gamut;  ///< G_c, exactly (after any expansion)
-  std::vector<std::string> rules;     ///< to_string of all_rules, then experiment_rules_3d_count(config) of experiment_rules_3d
+  std::vector<std::string> rules;     ///< to_string of all_rules, then experiment_rule_names_3d(config)
   std::vector<std::string> baselines; ///< experiment_baselines when the setup asks for them
   std::string surface_indices = "0-based";  ///< ExperimentSetup::surface_indices
   /// With canonical_chromaticity_sets: every set's gamut (canonical_gamut is then the first).
