@@ -223,14 +223,15 @@ BOOST_AUTO_TEST_CASE(fft_convolution_within_its_stated_bound) {
 }
 
 BOOST_AUTO_TEST_CASE(fft_derivatives_within_their_stated_bound) {
-  // The whole derivatives at σ above 5 (the FFT route along x and along y, in blocks) against
-  // separable long double sums of the same kernels: f_σ within 2^-39·Σ|g|²·max|in| and the
+  // The whole derivatives at σ above 11 (the FFT route along x and along y, in blocks) against
+  // separable long double sums of the same kernels: f_σ within 2^-39·(Σ|g|)²·max|in| and the
   // magnitudes within 2^-37·max_pass(Σ|k_x|·Σ|k_y|)·max|in| (two passes of 2^-40 each, the
-  // magnitude 1-Lipschitz with the weight 2 on f_xy; docs/math.md). Sizes that are not powers
+  // magnitude 1-Lipschitz with the weight 2 on f_xy;
+  // docs/photographs.md "Gaussian derivatives by FFT"). Sizes that are not powers
   // of 2, blocks that end inside the image, and an image shorter than one block.
   std::mt19937 rng(4646);
   for (const auto& [w, h] : {std::pair<std::size_t, std::size_t>{37, 29}, {13, 300}, {70, 1}})
-    for (double sigma : {5.5, 20.0}) {
+    for (double sigma : {11.5, 20.0}) {
       const RgbImage im = mondrian(rng, w, h, 0, 60000);
       const DoubleImage lin = linear_image(im, 0);
       for (DerivativeOrder order : {DerivativeOrder::zero, DerivativeOrder::first, DerivativeOrder::second}) {
