@@ -2,9 +2,13 @@
 
 #include <gmcc/numerics/interrupt.h>
 
+#include "internal/clamped_convolution.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
+#include <optional>
 #include <stdexcept>
 
 namespace gmcc {
@@ -75,30 +79,41 @@ struct DoubleRows {
 };
 
 // The separable passes along x of several kernels (all of radius r), each kept for the rows the
-// passes along y need: a ring of min(h, 2r + 1) rows, row y in slot y mod slots. Rows are made
-// in increasing order, each source row converted once; the edge is replicated.
+// passes along y need: a ring of `slots` rows (at least min(h, 2r + 1)), row y in slot y mod
+// slots. Rows are made in increasing order, each source row converted once; the edge is
+// replicated. Directly (the sums term by term) up to radius kFftMinRadius, by FFT above it.
 template <class Source>
 class XPasses {
  public:
-  XPasses(const Source& source, std::size_t w, std::size_t h, std::vector<const std::vector<double>*> kernels)
+  XPasses(const Source& source, std::size_t w, std::vector<const std::vector<double>*> kernels, long slots)
       : source_(source), kernels_(std::move(kernels)), w_(static_cast<long>(w)),
-        r_(static_cast<long>(kernels_.front()->size() / 2)), slots_(std::min<long>(static_cast<long>(h), 2 * r_ + 1)),
-        in_(3 * w), rings_(kernels_.size(), std::vector<double>(static_cast<std::size_t>(slots_) * 3 * w)) {}
+        r_(static_cast<long>(kernels_.front()->size() / 2)), slots_(slots),
+        in_(3 * w), rings_(kernels_.size(), std::vector<double>(static_cast<std::size_t>(slots_) * 3 * w)) {
+    if (r_ >= internal::kFftMinRadius) {
+      fft_.emplace(kernels_, w);
+      z_.resize(fft_->size()), t_.resize(fft_->size());
+    }
+  }
   // Rows 0 to `last` made.
   void make_to(long last) {
     for (; next_ <= last; ++next_) {
-      // A row costs 3·w·(2r + 1) products per kernel, at most a few milliseconds (σ = 64 on a
-      // 16,000-pixel row): Ctrl-C in the Python module is answered within that at any σ.
+      // A row costs 3·w·(2r + 1) products per kernel directly, at most a few milliseconds (σ = 64
+      // on a 16,000-pixel row): Ctrl-C in the Python module is answered within that at any σ.
       check_interrupt();
       source_(static_cast<std::size_t>(next_), in_.data());
-      for (std::size_t k = 0; k < kernels_.size(); ++k) along_x(*kernels_[k], rings_[k].data() + (next_ % slots_) * 3 * w_);
+      if (fft_) {
+        along_x_fft();
+        continue;
+      }
+      for (std::size_t k = 0; k < kernels_.size(); ++k) along_x(*kernels_[k], slot(k, next_));
     }
   }
-  // Kernel k's pass along x at row y (made, and within the last 2r + 1 made).
+  // Kernel k's pass along x at row y (made, and within the last `slots` made).
   const double* row(std::size_t k, long y) const { return rings_[k].data() + (y % slots_) * 3 * w_; }
   long radius() const { return r_; }
 
  private:
+  double* slot(std::size_t k, long y) { return rings_[k].data() + (y % slots_) * 3 * w_; }
   // One kernel along the source row in_ into out: per value, Σ_t k(t)·in(x − t) with t from −r
   // to r in that order (the sums made term by term for every x at once), x − t clamped.
   void along_x(const std::vector<double>& kernel, double* out) const {
@@ -113,12 +128,36 @@ class XPasses {
         for (long c = 0; c < 3; ++c) out[3 * x + c] += k * in_[static_cast<std::size_t>(3 * (w_ - 1) + c)];
     }
   }
+  // Every kernel along in_ by FFT (clamped_convolution.h): channels r and g as one complex
+  // sequence, then b alone.
+  void along_x_fft() {
+    for (long pair = 0; pair < 2; ++pair) {
+      std::fill(z_.begin(), z_.end(), std::complex<double>());
+      for (long m = 0; m < w_ + 2 * r_; ++m) {
+        const long x = std::min(std::max(m - r_, 0L), w_ - 1);
+        z_[static_cast<std::size_t>(m)] = {in_[static_cast<std::size_t>(3 * x + 2 * pair)],
+                                           pair == 0 ? in_[static_cast<std::size_t>(3 * x + 1)] : 0.0};
+      }
+      fft_->transform(z_.data());
+      for (std::size_t k = 0; k < kernels_.size(); ++k) {
+        fft_->apply(k, z_.data(), t_.data());
+        double* out = slot(k, next_);
+        for (long x = 0; x < w_; ++x) {
+          const std::complex<double>& v = t_[static_cast<std::size_t>(x + 2 * r_)];
+          out[3 * x + 2 * pair] = v.real();
+          if (pair == 0) out[3 * x + 1] = v.imag();
+        }
+      }
+    }
+  }
 
   const Source& source_;
   std::vector<const std::vector<double>*> kernels_;
   long w_, r_, slots_, next_ = 0;
   std::vector<double> in_;
   std::vector<std::vector<double>> rings_;
+  std::optional<internal::ClampedFftConvolution> fft_;  // above kFftMinRadius
+  std::vector<std::complex<double>> z_, t_;
 };
 
 // The pass along y of kernel `k` over pass `along_x` of `x` at row y, into out (3·w values): per
@@ -154,15 +193,96 @@ double magnitude(double a, double b, double c, double squares) {
   return m * std::sqrt(a * a + 4 * c * c + b * b);
 }
 
+// The passes along y of one order: per result, the pass along x it reads and its kernel.
+struct YPass {
+  std::size_t along_x;
+  const std::vector<double>* kernel;
+};
+
+// One row of results (each 3·w values: f_σ; f_x, f_y; or f_xx, f_yy, f_xy) into out: f_σ, or the
+// magnitudes, 0 in the flat channels.
+void combine(DerivativeOrder order, const double* const* v, const std::array<bool, 3>& flat, std::vector<double>& out) {
+  const double *a = v[0], *b = v[1], *c = v[2];
+  for (std::size_t i = 0; i < out.size(); ++i)
+    out[i] = order == DerivativeOrder::zero ? a[i]
+             : flat[i % 3]                  ? 0.0
+             : order == DerivativeOrder::first ? magnitude(a[i], b[i], 0, a[i] * a[i] + b[i] * b[i])
+                                               : magnitude(a[i], b[i], c[i], a[i] * a[i] + 4 * c[i] * c[i] + b[i] * b[i]);
+}
+
+// The direct route: each row's passes along y as sums over the ring of 2r + 1 rows along x.
+template <class Source>
+void direct_rows(const Source& source, long w, long h, const std::vector<const std::vector<double>*>& along_x,
+                 const std::vector<YPass>& passes, DerivativeOrder order, const std::array<bool, 3>& flat,
+                 const std::function<void(std::size_t, const double*)>& row) {
+  XPasses<Source> x(source, static_cast<std::size_t>(w), along_x,
+                    std::min<long>(h, 2 * static_cast<long>(along_x.front()->size() / 2) + 1));
+  std::vector<std::vector<double>> results(passes.size(), std::vector<double>(static_cast<std::size_t>(3 * w)));
+  const double* v[3] = {results[0].data(), results[0].data(), results[0].data()};
+  for (std::size_t p = 0; p < passes.size(); ++p) v[p] = results[p].data();
+  std::vector<double> out(static_cast<std::size_t>(3 * w));
+  for (long y = 0; y < h; ++y) {
+    x.make_to(std::min(h - 1, y + x.radius()));
+    check_interrupt();
+    for (std::size_t p = 0; p < passes.size(); ++p)
+      y_pass(x, passes[p].along_x, *passes[p].kernel, y, w, h, results[p].data());
+    combine(order, v, flat, out);
+    row(static_cast<std::size_t>(y), out.data());
+  }
+}
+
+// The FFT route (clamped_convolution.h): rows in blocks of B = N − 2r (N the length of the FFT
+// along y, the smallest power of 2 of at least min(h, 2r + 2) + 2r), each block's passes along y
+// made column pair by column pair from a ring of min(h, N) rows along x.
+template <class Source>
+void fft_rows(const Source& source, long w, long h, const std::vector<const std::vector<double>*>& along_x,
+              const std::vector<YPass>& passes, DerivativeOrder order, const std::array<bool, 3>& flat,
+              const std::function<void(std::size_t, const double*)>& row) {
+  const long r = static_cast<long>(along_x.front()->size() / 2);
+  std::vector<const std::vector<double>*> kernels;
+  for (const YPass& p : passes) kernels.push_back(p.kernel);
+  const internal::ClampedFftConvolution fy(kernels, static_cast<std::size_t>(std::min(h, 2 * r + 2)));
+  const long n = static_cast<long>(fy.size()), block = n - 2 * r, width = 3 * w;
+  XPasses<Source> x(source, static_cast<std::size_t>(w), along_x, std::min(h, n));
+  std::vector<std::vector<double>> results(passes.size(), std::vector<double>(static_cast<std::size_t>(block * width)));
+  std::vector<std::complex<double>> z(static_cast<std::size_t>(n)), t(static_cast<std::size_t>(n));
+  std::vector<double> out(static_cast<std::size_t>(width));
+  for (long y0 = 0; y0 < h; y0 += block) {
+    const long rows = std::min(block, h - y0);
+    x.make_to(std::min(h - 1, y0 + rows - 1 + r));
+    for (std::size_t p = 0; p < passes.size(); ++p)
+      for (long i = 0; i < width; i += 2) {
+        check_interrupt();
+        std::fill(z.begin(), z.end(), std::complex<double>());
+        for (long m = 0; m < rows + 2 * r; ++m) {
+          const double* in = x.row(passes[p].along_x, std::min(std::max(y0 - r + m, 0L), h - 1));
+          z[static_cast<std::size_t>(m)] = {in[i], i + 1 < width ? in[i + 1] : 0.0};
+        }
+        fy.transform(z.data());
+        fy.apply(p, z.data(), t.data());
+        double* res = results[p].data();
+        for (long j = 0; j < rows; ++j) {
+          res[j * width + i] = t[static_cast<std::size_t>(j + 2 * r)].real();
+          if (i + 1 < width) res[j * width + i + 1] = t[static_cast<std::size_t>(j + 2 * r)].imag();
+        }
+      }
+    for (long j = 0; j < rows; ++j) {
+      const double* v[3] = {results[0].data() + j * width, results[0].data() + j * width, results[0].data() + j * width};
+      for (std::size_t p = 0; p < passes.size(); ++p) v[p] = results[p].data() + j * width;
+      combine(order, v, flat, out);
+      row(static_cast<std::size_t>(y0 + j), out.data());
+    }
+  }
+}
+
 // gaussian_derivative's values row by row, from `source` (a w × h image).
 template <class Source>
 void derivative_rows(const Source& source, std::size_t w, std::size_t h, double sigma, DerivativeOrder order,
                      const std::function<void(std::size_t, const double*)>& row) {
   if (!std::isfinite(sigma) || sigma < 0 || sigma > 64) throw std::invalid_argument("sigma must be from 0 to 64");
   if (sigma == 0 && order != DerivativeOrder::zero) throw std::invalid_argument("a derivative needs sigma > 0");
-  std::vector<double> out(3 * w);
-  const long W = static_cast<long>(w), H = static_cast<long>(h);
   if (sigma == 0) {
+    std::vector<double> out(3 * w);
     for (std::size_t y = 0; y < h; ++y) {
       check_interrupt();
       source(y, out.data());
@@ -176,35 +296,22 @@ void derivative_rows(const Source& source, std::size_t w, std::size_t h, double 
   // Order 0: g along x, then g along y. Order 1: f_x = d1 then g, f_y = g then d1. Order 2:
   // f_xx = d2 then g, f_yy = g then d2, f_xy = d1 then d1.
   std::vector<const std::vector<double>*> along_x = {&g};
-  if (order == DerivativeOrder::first) along_x = {&d1, &g};
-  if (order == DerivativeOrder::second) along_x = {&d2, &g, &d1};
-  XPasses<Source> x(source, w, h, along_x);
+  std::vector<YPass> passes = {{0, &g}};
+  if (order == DerivativeOrder::first) along_x = {&d1, &g}, passes = {{0, &g}, {1, &d1}};
+  if (order == DerivativeOrder::second) along_x = {&d2, &g, &d1}, passes = {{0, &g}, {1, &d2}, {2, &d1}};
   // A channel constant over the image has derivatives exactly 0 (the edge is replicated): they
   // are set so, where the convolutions would leave round-off that reads as a direction.
   const std::array<bool, 3> flat = order == DerivativeOrder::zero ? std::array<bool, 3>{} : flat_channels(source, 3 * w * h);
-  std::vector<double> a(3 * w), b(3 * w), c(3 * w);
-  for (long y = 0; y < H; ++y) {
-    x.make_to(std::min(H - 1, y + x.radius()));
-    check_interrupt();
-    if (order == DerivativeOrder::zero) {
-      y_pass(x, 0, g, y, W, H, out.data());
-    } else if (order == DerivativeOrder::first) {
-      y_pass(x, 0, g, y, W, H, a.data());  // f_x
-      y_pass(x, 1, d1, y, W, H, b.data());  // f_y
-      for (std::size_t i = 0; i < out.size(); ++i)
-        out[i] = flat[i % 3] ? 0.0 : magnitude(a[i], b[i], 0, a[i] * a[i] + b[i] * b[i]);
-    } else {
-      y_pass(x, 0, g, y, W, H, a.data());   // f_xx
-      y_pass(x, 1, d2, y, W, H, b.data());  // f_yy
-      y_pass(x, 2, d1, y, W, H, c.data());  // f_xy
-      for (std::size_t i = 0; i < out.size(); ++i)
-        out[i] = flat[i % 3] ? 0.0 : magnitude(a[i], b[i], c[i], a[i] * a[i] + 4 * c[i] * c[i] + b[i] * b[i]);
-    }
-    row(static_cast<std::size_t>(y), out.data());
-  }
+  const long W = static_cast<long>(w), H = static_cast<long>(h);
+  if (static_cast<long>(g.size() / 2) >= internal::kFftMinRadius)
+    fft_rows(source, W, H, along_x, passes, order, flat, row);
+  else
+    direct_rows(source, W, H, along_x, passes, order, flat, row);
 }
 
 }  // namespace
+
+std::vector<double> internal::derivative_kernel(double sigma, int order) { return kernel(sigma, order); }
 
 DoubleImage linear_image(const RgbImage& image, std::uint32_t black_level) {
   DoubleImage out{image.width, image.height, std::vector<double>(image.samples.size())};

@@ -40,7 +40,10 @@ enum class DerivativeOrder { zero = 0, first = 1, second = 2 };
 /// Gaussian derivatives of every channel at scale σ: the kernel G_σ sampled at the integers of
 /// [−⌈3σ⌉, ⌈3σ⌉] and normalised to sum 1; the 1st-order kernel −x/σ²·G_σ(x) normalised so that
 /// Σ x·k(x) = −1 (a ramp's slope exactly), the 2nd-order (x²/σ⁴ − 1/σ²)·G_σ(x) with its mean
-/// removed and normalised so that Σ x²/2·k(x) = 1; separable, the image's edge replicated.
+/// removed and normalised so that Σ x²/2·k(x) = 1; separable, the image's edge replicated. Up to
+/// σ = 11 each pass is the direct sum; above, an FFT convolution with the same kernels (Cooley &
+/// Tukey 1965), at a cost per pixel nearly independent of σ and within 2^-40·Σ|k|·max|in| of the
+/// exact sums per pass (docs/photographs.md "Gaussian derivatives by FFT").
 /// σ = 0 with order 0 returns the image itself; order 1 or 2 needs σ > 0. A channel constant over
 /// the whole image has 1st- and 2nd-order magnitudes exactly 0 (its true value), never round-off.
 /// A magnitude whose squares would leave the doubles' normal range (tiny derivatives, reached through
@@ -56,7 +59,9 @@ DoubleImage gaussian_derivative(const DoubleImage& image, double sigma, Derivati
 /// row's width · 3 values (r, g, b per pixel) valid during the call. The separable passes along x
 /// are kept for the rows the passes along y need: min(height, 2⌈3σ⌉ + 1) rows of 24 bytes a
 /// pixel for each of the order's one (0), two (1) or three (2) kernels, plus one row of each
-/// kind of result; σ = 0 with order 0 gives the linear image's rows. Ctrl-C is answered within a
+/// kind of result (σ ≤ 11); above σ = 11, min(height, N) rows per kernel and N − 2⌈3σ⌉ rows of
+/// each kind of result (N the smallest power of 2 of at least 4⌈3σ⌉ + 2: at most about 4 times
+/// the direct route's rows); σ = 0 with order 0 gives the linear image's rows. Ctrl-C is answered within a
 /// row (numerics/interrupt.h).
 /// \throws std::invalid_argument as gaussian_derivative; Interrupted; whatever `row` throws.
 void gaussian_derivative_rows(const RgbImage& image, std::uint32_t black_level, double sigma,

@@ -1,0 +1,93 @@
+// Clamped convolutions by FFT (clamped_convolution.h; Cooley & Tukey 1965).
+#include "internal/clamped_convolution.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace gmcc::internal {
+namespace {
+
+// a·b written out (std::complex's operator* checks for infinities through a library call).
+std::complex<double> times(const std::complex<double>& a, const std::complex<double>& b) {
+  return {a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real()};
+}
+
+std::size_t power_of_two_at_least(std::size_t n) {
+  std::size_t p = 2;
+  while (p < n) p *= 2;
+  return p;
+}
+
+}  // namespace
+
+Fft::Fft(std::size_t n) : n_(n), w_(n / 2), rev_(n) {
+  if (n < 2 || (n & (n - 1)) != 0) throw std::invalid_argument("Fft: the length is a power of 2, at least 2");
+  // The twiddles in long double, rounded once to double.
+  const long double pi = 3.141592653589793238462643383279502884L;
+  for (std::size_t k = 0; k < n / 2; ++k) {
+    const long double a = -2 * pi * static_cast<long double>(k) / static_cast<long double>(n);
+    w_[k] = {static_cast<double>(std::cos(a)), static_cast<double>(std::sin(a))};
+  }
+  std::size_t bits = 0;
+  while ((std::size_t(1) << bits) < n) ++bits;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t r = 0;
+    for (std::size_t b = 0; b < bits; ++b) r |= ((i >> b) & 1) << (bits - 1 - b);
+    rev_[i] = r;
+  }
+}
+
+void Fft::forward(std::complex<double>* a) const {
+  for (std::size_t i = 0; i < n_; ++i)
+    if (i < rev_[i]) std::swap(a[i], a[rev_[i]]);
+  for (std::size_t half = 1; half < n_; half *= 2) {
+    const std::size_t step = n_ / (2 * half);
+    for (std::size_t i = 0; i < n_; i += 2 * half)
+      for (std::size_t j = 0; j < half; ++j) {
+        const std::complex<double> u = a[i + j], v = times(a[i + j + half], w_[j * step]);
+        a[i + j] = u + v;
+        a[i + j + half] = u - v;
+      }
+  }
+}
+
+void Fft::inverse(std::complex<double>* a) const {
+  for (std::size_t i = 0; i < n_; ++i) a[i] = std::conj(a[i]);
+  forward(a);
+  for (std::size_t i = 0; i < n_; ++i) a[i] = std::conj(a[i]);
+}
+
+ClampedFftConvolution::ClampedFftConvolution(const std::vector<const std::vector<double>*>& kernels,
+                                             std::size_t outputs)
+    : r_(static_cast<long>(kernels.front()->size() / 2)),
+      fft_(power_of_two_at_least(outputs + kernels.front()->size() - 1)) {  // n + 2r
+  // The kernel at 0 … 2r, zero-padded; 1/N is a power of 2 (exact).
+  const double scale = 1.0 / static_cast<double>(fft_.size());
+  for (const std::vector<double>* k : kernels) {
+    std::vector<std::complex<double>> s(fft_.size());
+    for (std::size_t j = 0; j < k->size(); ++j) s[j] = (*k)[j] * scale;
+    fft_.forward(s.data());
+    spectra_.push_back(std::move(s));
+  }
+}
+
+void ClampedFftConvolution::apply(std::size_t k, const std::complex<double>* z, std::complex<double>* out) const {
+  const std::vector<std::complex<double>>& s = spectra_[k];
+  for (std::size_t i = 0; i < s.size(); ++i) out[i] = times(z[i], s[i]);
+  fft_.inverse(out);
+}
+
+std::vector<double> clamped_convolution_fft(const std::vector<double>& in, const std::vector<double>& kernel) {
+  const ClampedFftConvolution c({&kernel}, in.size());
+  const long r = c.radius(), n = static_cast<long>(in.size());
+  std::vector<std::complex<double>> z(c.size()), out(c.size());
+  for (long m = 0; m < n + 2 * r; ++m) z[static_cast<std::size_t>(m)] = in[static_cast<std::size_t>(std::clamp(m - r, 0L, n - 1))];
+  c.transform(z.data());
+  c.apply(0, z.data(), out.data());
+  std::vector<double> result(in.size());
+  for (long x = 0; x < n; ++x) result[static_cast<std::size_t>(x)] = out[static_cast<std::size_t>(x + 2 * r)].real();
+  return result;
+}
+
+}  // namespace gmcc::internal
