@@ -14,7 +14,7 @@
 // table of the benchmark's `table` layout (image,r,g,b; paths under DIR), such as the NUS or
 // Gehler–Shi thumbnails.
 #include <gmcc/input/colour_csv.h>
-#include <gmcc/input/image_derivatives.h>
+#include <gmcc/photo/image_derivatives.h>
 #include <gmcc/input/image_file.h>
 #include <gmcc/input/truth_table.h>
 #include <gmcc/validation/benchmark.h>
