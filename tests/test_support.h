@@ -6,6 +6,7 @@
 #include <gmcc/geometry/convex_hull.h>
 #include <gmcc/geometry/convex_set.h>
 #include <gmcc/geometry/convex_set_3.h>
+#include <gmcc/input/image_file.h>
 
 #include <ostream>
 #include <random>
@@ -95,6 +96,18 @@ inline bool feasible_by_definition(const ConvexSet2& gamut, const std::vector<Po
   for (const Point2& q : image)
     if (!contains(gamut, times(m, q))) return false;
   return true;
+}
+
+/// A w × h image of `bits`-bit samples (8 or 16) that differ from pixel to pixel and channel to
+/// channel: sample i is (7919·i + 13) mod 2^bits, deterministic.
+inline RgbImage ramp(std::size_t w, std::size_t h, int bits) {
+  RgbImage im;
+  im.width = w;
+  im.height = h;
+  im.bits = bits;
+  for (std::size_t i = 0; i < w * h * 3; ++i)
+    im.samples.push_back(static_cast<std::uint16_t>((i * 7919 + 13) % (bits == 8 ? 256 : 65536)));
+  return im;
 }
 
 }  // namespace gmcc::test

@@ -8,6 +8,8 @@
 
 #include "internal/sort_keys.h"
 
+#include "../test_support.h"
+
 #include <boost/test/unit_test.hpp>
 #include <algorithm>
 #include <cmath>
@@ -22,15 +24,7 @@ using namespace gmcc;
 
 namespace {
 
-RgbImage ramp(std::size_t w, std::size_t h, int bits) {
-  RgbImage im;
-  im.width = w;
-  im.height = h;
-  im.bits = bits;
-  for (std::size_t i = 0; i < w * h * 3; ++i)
-    im.samples.push_back(static_cast<std::uint16_t>((i * 7919 + 13) % (bits == 8 ? 256 : 65536)));
-  return im;
-}
+using gmcc::test::ramp;
 
 // Independent of polygon_cover: is p inside the polygon or on its boundary?
 // (exact; even–odd by a ray to +x, with points on an edge decided first)
