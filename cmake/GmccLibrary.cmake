@@ -12,6 +12,10 @@ function(gmcc_library)
     $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   target_compile_features(${target} PUBLIC cxx_std_17)
+  # gmcc::numerics' internals (numerics/internal: double-word arithmetic, the filters' constants,
+  # checks): the libraries' sources, tests, benchmarks and fuzz targets read them in the build
+  # tree; they are not installed, and an installed gmcc's targets do not name them.
+  target_link_libraries(${target} PUBLIC $<BUILD_INTERFACE:gmcc_numerics_internal>)
   if(GMCC_SANITIZE)
     # An instrumented static library needs the sanitizer runtimes wherever it is linked,
     # including in projects that find_package(gmcc) from an instrumented install.
