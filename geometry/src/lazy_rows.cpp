@@ -147,7 +147,8 @@ class VertexTree {
     int first, count, left, right;  // left < 0: a leaf, order_[first, first + count)
   };
   // The node for order_[b, e) (its index returned): split at the median of the boxes' mids along
-  // its widest side, down to leaves of at most 4 (depth below 40 for any count that fits in int).
+  // its widest side, down to leaves of at most 16 (depth below 40 for any count that fits in int;
+  // leaves of 16 measured faster than 2, 4 or 8 on Gehler–Shi thumbnails at σ = 16).
   int split(std::size_t b, std::size_t e) {
     Node x{{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {0, 0, 0}, static_cast<int>(b), static_cast<int>(e - b), -1, -1};
     for (std::size_t j = b; j < e; ++j)
@@ -157,7 +158,7 @@ class VertexTree {
       }
     const int self = static_cast<int>(nodes_.size());
     nodes_.push_back(x);
-    if (e - b <= 4) return self;
+    if (e - b <= 16) return self;
     std::size_t axis = 0;
     for (std::size_t k = 1; k < 3; ++k)
       if (x.hi[k] - x.lo[k] > x.hi[axis] - x.lo[axis]) axis = k;
