@@ -58,11 +58,14 @@ bool row_filter(const ClipFacets& facets, std::size_t f, const ScaledPoint& q, d
 }
 
 // The half-space a·x <= b (a filter copy as row_filter's) holds on the box lo <= x <= hi
-// (0 <= lo): the test of LiveVertexFilter::group_inside (clip_filter.cpp), whose proof holds
-// word for word: max over the box of a·x is P − N, P = Σ_{a_k > 0} a_k hi_k and
-// N = Σ_{a_k < 0} |a_k| lo_k, and P~ − (N~ + b~) <= −16u(P~ + N~ + |b~|) shows it at most b.
-// `excess` is P~ − (N~ + b~), about the largest a·x − b over the box (a heuristic's guide only).
-bool box_holds(const double* a, const double* lo, const double* hi, double& excess) {
+// (0 <= lo), strictly unless every term is 0 (docs/derivations.md §4.6, "Rows generated lazily":
+// with P = Σ_{a_k > 0} a_k hi_k and N = Σ_{a_k < 0} |a_k| lo_k computed, max over the box of the
+// exact a·x − b is at most P~ − (N~ + b~) + 11.5u·T~, T~ = P~ + N~ + |b~|, so the test
+// P~ − (N~ + b~) <= −16u·T~ shows it below 0 when T~ > 0 and equal to 0 when T~ = 0; the same
+// test as LiveVertexFilter::group_inside, clip_filter.cpp). With `strict`, a box where T~ = 0
+// (the half-space's plane through it, a point of it) does not pass. `excess` is P~ − (N~ + b~),
+// about the largest a·x − b over the box (a heuristic's guide only).
+bool box_holds(const double* a, const double* lo, const double* hi, double& excess, bool strict) {
   double p = 0, n = 0;
   for (int k = 0; k < 3; ++k) {
     if (a[k] > 0) p += a[k] * hi[k];
@@ -70,7 +73,7 @@ bool box_holds(const double* a, const double* lo, const double* hi, double& exce
   }
   const double t = p + n + std::fabs(a[3]);
   excess = p - (n + a[3]);
-  return excess <= -16 * u * t;
+  return excess <= -16 * u * t && (!strict || t > 0);
 }
 
 // The vertices of a polytope as certified boxes (their enclosures; 0 <= lo, as every vertex of
@@ -103,13 +106,14 @@ class VertexTree {
   // vertex not cleared where the row's approximate value a·x − b is largest.
   // Branch and bound: a node whose box holds is skipped; once a vertex is not cleared, so is a
   // node whose box's excess is below that vertex's value (the choice of `worst` is a heuristic).
-  bool holds(const double* a, int& worst) const {
+  // With `strict`, true only when the row holds strictly at every vertex (box_holds).
+  bool holds(const double* a, int& worst, bool strict = false) const {
     worst = -1;
     if (nodes_.empty()) return true;
     double value = -HUGE_VAL, excess;
     std::pair<int, double> stack[64];  // nodes whose box does not hold, with their excess
     int top = 0;
-    if (box_holds(a, nodes_[0].lo, nodes_[0].hi, excess)) return true;
+    if (box_holds(a, nodes_[0].lo, nodes_[0].hi, excess, strict)) return true;
     stack[top++] = {0, excess};
     while (top > 0) {
       const auto [index, bound] = stack[--top];
@@ -119,7 +123,7 @@ class VertexTree {
         for (int j = x.first; j < x.first + x.count; ++j) {
           const int v = order_[static_cast<std::size_t>(j)];
           const std::array<double, 9>& b = boxes_[static_cast<std::size_t>(v)];
-          if (box_holds(a, &b[0], &b[3], excess)) continue;
+          if (box_holds(a, &b[0], &b[3], excess, strict)) continue;
           const double s = a[0] * b[6] + a[1] * b[7] + a[2] * b[8] - a[3];
           if (worst < 0 || s > value) worst = v, value = s;
         }
@@ -127,8 +131,8 @@ class VertexTree {
         continue;
       }
       double el, er;
-      const bool hl = box_holds(a, nodes_[static_cast<std::size_t>(x.left)].lo, nodes_[static_cast<std::size_t>(x.left)].hi, el);
-      const bool hr = box_holds(a, nodes_[static_cast<std::size_t>(x.right)].lo, nodes_[static_cast<std::size_t>(x.right)].hi, er);
+      const bool hl = box_holds(a, nodes_[static_cast<std::size_t>(x.left)].lo, nodes_[static_cast<std::size_t>(x.left)].hi, el, strict);
+      const bool hr = box_holds(a, nodes_[static_cast<std::size_t>(x.right)].lo, nodes_[static_cast<std::size_t>(x.right)].hi, er, strict);
       // The child with the larger excess popped first.
       if (el >= er) {
         if (!hr) stack[top++] = {x.right, er};
@@ -198,12 +202,12 @@ ClipFacets facet_alone(const ClipFacets& facets, std::size_t f) {
   return out;
 }
 
-// One round's check of part's rows against the polytope's vertex tree. A row of the subset that
-// holds at every vertex leaves it: it holds on this polytope, which contains every later round's
-// (their rows include this one's facets' rows), so it is cleared for good; so do the pending rows
-// cleared. Of the pending rows not cleared, for each vertex the one most violated there
-// (approximately) joins the subset, as does every row without a usable filter copy. Returns how
-// many joined.
+// One round's check of part's rows against the polytope P's vertex tree. A row of the subset that
+// holds strictly at every vertex leaves it: its plane misses P, so the rows left still cut P
+// exactly, and every later round's polytope lies in P; it holds on them all, cleared for good, as
+// are the pending rows that hold at every vertex. Of the pending rows not cleared, for each vertex
+// the one most violated there (approximately) joins the subset, as does every row without a
+// usable filter copy. Returns how many joined.
 std::size_t check_part(Part& part, const std::vector<ScaledPoint>& scaled, const VertexTree& tree,
                        std::vector<std::pair<double, std::uint32_t>>& best, std::vector<int>& touched) {
   const ClipFacets& facets = *part.group->facets;
@@ -215,7 +219,7 @@ std::size_t check_part(Part& part, const std::vector<ScaledPoint>& scaled, const
                                    [&](std::uint32_t p) {
                                      double r[4];
                                      int worst;
-                                     return row_filter(facets, part.facet, scaled[p], r) && tree.holds(r, worst);
+                                     return row_filter(facets, part.facet, scaled[p], r) && tree.holds(r, worst, true);
                                    }),
                     part.chosen.end());
   for (const std::uint32_t p : part.pending) {
