@@ -13,6 +13,7 @@
 #include <gmcc/numerics/filtered_sign.h>
 
 #include "internal/crule_exact.h"
+#include "internal/lazy_rows.h"
 #include "internal/polytope_clip.h"
 
 #include <algorithm>
@@ -337,7 +338,11 @@ LazyConvexSet3 feasible_set_3d_lazy(const std::vector<GamutConstraint3>& constra
     std::vector<internal::ClipGroup> groups;
     for (std::size_t i = 0; i < constraints.size(); ++i)
       groups.push_back({&internal::FeasibleSet3Access::planes(*constraints[i].canonical).integer, &points[i]});
-    internal::ClippedPolytope r = internal::clip_polytope(*box, groups);
+    std::size_t rows = 0;
+    for (const internal::ClipGroup& g : groups) rows += g.facets->planes.size() * g.points->size();
+    // Many rows (edge colours at large σ: ~1000 hull points): generated lazily, the same set.
+    internal::ClippedPolytope r = rows >= internal::lazy_rows_from ? internal::clip_polytope_lazy_rows(*box, groups)
+                                                                   : internal::clip_polytope(*box, groups);
     if (r.outcome == internal::ClippedPolytope::Outcome::polytope) return std::move(r.set);
     if (r.outcome == internal::ClippedPolytope::Outcome::empty) return LazyConvexSet3();
   }
