@@ -58,10 +58,8 @@ std::vector<BenchmarkImage> dataset(const BenchmarkCliOptions& o) {
   if (o.layout != "table" && !o.truths_path.empty())
     throw InputError("--truths", 0, "not with --layout " + o.layout + ": the layout's own files give the lights");
   std::map<std::string, int> shipped_folds;
-  const std::vector<TruthRow> rows = o.layout == "nus"          ? read_nus_camera(o.images_dir)
-                                     : o.layout == "cube+"      ? read_cube_plus(o.images_dir)
-                                     : o.layout == "gehler-shi" ? read_gehler_shi(o.images_dir, shipped_folds)
-                                                                : read_truth_table(o.truths_path);
+  const std::vector<TruthRow> rows = o.layout == "table" ? read_truth_table(o.truths_path)
+                                                         : read_dataset(o.layout, o.images_dir, shipped_folds);
   if (o.layout == "table") require_paths_under_folder(rows, o.truths_path);
   if (o.folds_path.empty() && o.folds.empty() && !shipped_folds.empty())
     return benchmark_dataset(o.images_dir, rows, &shipped_folds,
@@ -272,7 +270,11 @@ CLI::App* add_benchmark_command(CLI::App& app, BenchmarkCliOptions& o) {
                   "table (--truths), nus (a NUS 8-camera folder: <camera>_gt.mat and its PNGs), cube+ "
                   "(cube+_gt.txt and its PNGs) or gehler-shi (png/, real_illum_568.mat, coordinates/, and "
                   "threefoldCVsplit.mat: its folds unless --folds or --folds-file is given)")
-      ->check(CLI::IsMember({"table", "nus", "cube+", "gehler-shi"}))
+      ->check(CLI::IsMember([] {
+        std::vector<std::string> layouts = dataset_layout_names();
+        layouts.insert(layouts.begin(), "table");
+        return layouts;
+      }()))
       ->capture_default_str();
   cmd->add_option("--folds", o.folds, "K folds: the image on data line i (from 0) is in fold i mod K");
   cmd->add_option("--folds-file", o.folds_path, "CSV image,fold: the dataset's own split");
@@ -292,10 +294,10 @@ CLI::App* add_benchmark_command(CLI::App& app, BenchmarkCliOptions& o) {
       ->delimiter(',')
       ->check(CLI::IsMember(benchmark_methods()));
   cmd->add_option("--intensity", o.intensity, "3-D canonical learning: max or none (as gmcc canonical)")
-      ->check(CLI::IsMember({"max", "none"}))
+      ->check(CLI::IsMember(canonical_intensity_names()))
       ->capture_default_str();
   cmd->add_option("--black", o.black, "include or exclude black in the 3-D canonical gamut")
-      ->check(CLI::IsMember({"include", "exclude"}))
+      ->check(CLI::IsMember(canonical_black_names()))
       ->capture_default_str();
   cmd->add_option("--edge-sigma", o.edge_sigma,
                   "the Gaussian derivative scale of the edge-based methods and the grey-edge baselines, in "

@@ -44,7 +44,7 @@ CLI::App* add_canonical_command(CLI::App& app, CanonicalOptions& o) {
   cmd->add_option("--intensity", o.intensity,
                   "3d: max (each image scaled so that its largest white-balanced channel is 1) "
                   "or none")
-      ->check(CLI::IsMember({"max", "none"}))
+      ->check(CLI::IsMember(canonical_intensity_names()))
       ->capture_default_str();
   add_pixel_options(*cmd, o.pixels);
   return cmd;

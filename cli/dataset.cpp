@@ -20,7 +20,7 @@ CLI::App* add_dataset_command(CLI::App& app, DatasetOptions& o) {
       "Write what gmcc reads from a dataset as it ships (NUS, Cube+, Gehler-Shi) as the truth table "
       "`gmcc benchmark --truths` reads: image, light, black level, saturation, chart polygon, exact");
   cmd->add_option("--layout", o.layout, "nus, cube+ or gehler-shi (as gmcc benchmark --layout)")
-      ->check(CLI::IsMember({"nus", "cube+", "gehler-shi"}))
+      ->check(CLI::IsMember(dataset_layout_names()))
       ->required();
   cmd->add_option("--images", o.images_dir, "the dataset's folder (as gmcc benchmark --images)")->required();
   cmd->add_option("--folds-out", o.folds_out,
@@ -31,9 +31,7 @@ CLI::App* add_dataset_command(CLI::App& app, DatasetOptions& o) {
 
 int run_dataset(const DatasetOptions& o) {
   std::map<std::string, int> folds;
-  const std::vector<TruthRow> rows = o.layout == "nus"     ? read_nus_camera(o.images_dir)
-                                     : o.layout == "cube+" ? read_cube_plus(o.images_dir)
-                                                           : read_gehler_shi(o.images_dir, folds);
+  const std::vector<TruthRow> rows = read_dataset(o.layout, o.images_dir, folds);
   std::unique_ptr<PendingFile> folds_file;
   if (!o.folds_out.empty()) {
     if (folds.empty())

@@ -181,10 +181,10 @@ CLI::App* add_estimate_command(CLI::App& app, EstimateOptions& o) {
   cmd->add_option("--expand", o.expand_factor, "expand the canonical gamut by this factor")
       ->capture_default_str();
   cmd->add_option("--expand-policy", o.expand_policy, "none | centroid-clip | multiplicative")
-      ->check(CLI::IsMember({"none", "centroid-clip", "multiplicative"}))
+      ->check(CLI::IsMember(expansion_policy_names()))
       ->capture_default_str();
   cmd->add_option("--on-empty", o.on_empty, "none | grow-canonical | min-violation")
-      ->check(CLI::IsMember({"none", "grow-canonical", "min-violation"}))
+      ->check(CLI::IsMember(recovery_policy_names()))
       ->capture_default_str();
   cmd->add_option("--illuminants", o.illuminants_path,
                   "plausible lights, one r,g,b per line: only maps of plausible lights are kept (2d: "
@@ -209,11 +209,11 @@ CLI::App* add_estimate_command(CLI::App& app, EstimateOptions& o) {
       ->delimiter(',')
       ->check(CLI::IsMember(rule_3_labels()));
   cmd->add_option("--black", o.black, "3d: include or exclude black (0,0,0) in the canonical gamut")
-      ->check(CLI::IsMember({"include", "exclude"}))
+      ->check(CLI::IsMember(canonical_black_names()))
       ->capture_default_str();
   cmd->add_option("--centroid", o.centroid,
                   "3d: the centroid certified (a double with a rigorous bound) or exact (in Q)")
-      ->check(CLI::IsMember({"certified", "exact"}))
+      ->check(CLI::IsMember(crule_3d_route_names()))
       ->capture_default_str();
   return cmd;
 }
@@ -248,7 +248,7 @@ Settings settings_3d(const EstimateOptions& o) {
 Estimate3Options estimate3_options(const EstimateOptions& o, const Settings& s) {
   Estimate3Options options;
   options.canonical_light = s.scene.canonical_illuminant;
-  options.route = o.centroid == "exact" ? Crule3dRoute::exact : Crule3dRoute::certified;
+  options.route = crule_3d_route_from_string(o.centroid);
   options.exact_feasible_set = false;  // only its kind and vertex count are printed
   if (s.scene.illuminants) options.illuminants = *s.scene.illuminants;
   if (!o.rules_3d.empty()) {

@@ -101,7 +101,7 @@ void add_pixel_options(CLI::App& cmd, PixelOptions& o) {
                  "the exact chromaticity hull: all the 2-D feasible set depends on, passed as "
                  "chromaticity lifts), distinct (every distinct colour, at most 10^6) or hull-3d "
                  "(the colours on their exact 3-D hull: all the 3-D feasible set depends on)")
-      ->check(CLI::IsMember({"hull", "distinct", "hull-3d"}))
+      ->check(CLI::IsMember(colour_set_names()))
       ->capture_default_str();
 }
 
@@ -117,9 +117,7 @@ PixelSettings pixel_settings(const PixelOptions& o) {
   }
   for (const std::string& text : o.exclude_polygons) r.exclude_polygons.push_back(polygon(text));
   r.bin = static_cast<std::uint32_t>(integer_option("--bin", o.bin, 1, 4096));
-  r.colour_set = o.colour_set == "distinct" ? ColourSet::distinct
-                 : o.colour_set == "hull-3d" ? ColourSet::hull_3d
-                                             : ColourSet::hull;
+  r.colour_set = colour_set_from_string(o.colour_set);
   if (const auto dark = integer_option("--dark", o.dark, 0, 65535)) r.dark_below = static_cast<std::uint32_t>(dark);
   if (o.pixel_rule == "gijsenij") {
     for (const char* name : {"--dark-fraction", "--bright-fraction"})

@@ -47,7 +47,7 @@ void add_common_options(CLI::App* cmd, ReproduceOptions& o) {
       ->capture_default_str();
   cmd->add_option("--data", o.data_dir, "folder of the spectral data (default: the shipped data/)");
   cmd->add_option("--mean3d", o.mean3d_method, "route to the 3-D mean")
-      ->check(CLI::IsMember({"analytic", "quadrature", "monte-carlo"}))
+      ->check(CLI::IsMember(mean3d_method_names()))
       ->capture_default_str();
 }
 
@@ -73,7 +73,7 @@ void add_output_options(CLI::App* cmd, ReproduceOptions& o) {
   cmd->add_option("--crule-black", o.crule_black,
                   "with --crule: black in CRULE's canonical gamut (include) or Forsyth's hull of the "
                   "canonical colours alone (exclude)")
-      ->check(CLI::IsMember({"include", "exclude"}))
+      ->check(CLI::IsMember(canonical_black_names()))
       ->capture_default_str();
   cmd->add_flag("--crule-extended", o.crule_extended,
                 "with --crule: also CRULE max-trace (max d1+d2+d3) and the 3-D cone mean of the "
@@ -93,7 +93,7 @@ void add_output_options(CLI::App* cmd, ReproduceOptions& o) {
   cmd->add_option("--expand", o.expand_factor, "expand the canonical gamut by this factor (0.1 = 10%)")
       ->capture_default_str();
   cmd->add_option("--expand-policy", o.expand_policy, "none | centroid-clip | multiplicative")
-      ->check(CLI::IsMember({"none", "centroid-clip", "multiplicative"}))
+      ->check(CLI::IsMember(expansion_policy_names()))
       ->capture_default_str();
 }
 
@@ -450,12 +450,12 @@ CLI::App* add_reproduce_command(CLI::App& app, ReproduceOptions& o) {
       ->capture_default_str();
   gs->add_option("--data", o.data_dir, "folder of the data files (default: the shipped data/)");
   gs->add_option("--mean3d", o.mean3d_method, "route to the 3-D mean")
-      ->check(CLI::IsMember({"analytic", "quadrature", "monte-carlo"}))
+      ->check(CLI::IsMember(mean3d_method_names()))
       ->capture_default_str();
   gs->add_option("--protocol", o.protocol,
                  "leave-one-out (each image's canonical gamut: every other same-camera image) or paper "
                  "(one whitish daylight chart; yellowish and bluish test groups)")
-      ->check(CLI::IsMember({"leave-one-out", "paper"}))
+      ->check(CLI::IsMember(gehler_shi_protocol_names()))
       ->capture_default_str();
   gs->add_option("--cameras", o.cameras, "the cameras, each its own rows: Canon1D, Canon5D")
       ->delimiter(',')
@@ -468,7 +468,7 @@ CLI::App* add_reproduce_command(CLI::App& app, ReproduceOptions& o) {
   gs->add_option("--expand", o.expand_factor, "expand the canonical gamut by this factor (0.1 = 10%)")
       ->capture_default_str();
   gs->add_option("--expand-policy", o.expand_policy, "none | centroid-clip | multiplicative")
-      ->check(CLI::IsMember({"none", "centroid-clip", "multiplicative"}))
+      ->check(CLI::IsMember(expansion_policy_names()))
       ->capture_default_str();
   gs->add_option("--csv", o.csv_path, "write one row per (group, patches, rule or baseline) to this CSV file");
   gs->add_option("--json", o.json_path, "write every cell's statistics as one JSON document to this file");

@@ -6,6 +6,7 @@
 #include "select_batch.h"
 #include "write_stdout.h"
 
+#include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/input/colour_csv.h>
 
 #include <iostream>
@@ -149,13 +150,13 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
                   "expand the canonical gamut by this factor (0.1 = 10%; exact)")
       ->capture_default_str();
   cmd->add_option("--expand-policy", o.expand_policy, "none | centroid-clip | multiplicative")
-      ->check(CLI::IsMember({"none", "centroid-clip", "multiplicative"}))
+      ->check(CLI::IsMember(expansion_policy_names()))
       ->capture_default_str();
   cmd->add_option("--mean3d", o.mean3d_method,
                   "route to the 3-D mean: analytic (closed form, certified bound), quadrature "
                   "(Duffy–Gauss–Legendre, estimated error) or monte-carlo (the paper's method, "
                   "standard error)")
-      ->check(CLI::IsMember({"analytic", "quadrature", "monte-carlo"}))
+      ->check(CLI::IsMember(mean3d_method_names()))
       ->capture_default_str();
   cmd->add_option("--precision", o.precision_bits,
                   "analytic: force one MPFI evaluation at this many bits, 53 to 2^20 "
@@ -173,7 +174,7 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
       ->capture_default_str();
   cmd->add_option("--nonpositive-blue", o.nonpositive_blue,
                   "colours with b <= 0 have no chromaticity: drop (count them) or reject")
-      ->check(CLI::IsMember({"drop", "reject"}))
+      ->check(CLI::IsMember(nonpositive_blue_policy_names()))
       ->capture_default_str();
   cmd->add_option("--illuminants", o.illuminants_path,
                   "plausible lights, one r,g,b per line: keep only the maps in the hull of their maps "
@@ -192,7 +193,7 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
                   "when F is empty: none (report it), grow-canonical (least multiplicative "
                   "expansion of the canonical gamut, by bisection) or min-violation (maps of least "
                   "Chebyshev violation, exact LP)")
-      ->check(CLI::IsMember({"none", "grow-canonical", "min-violation"}))
+      ->check(CLI::IsMember(recovery_policy_names()))
       ->capture_default_str();
   cmd->add_option("--space", o.space,
                   "2d: perspective maps (d1/d3, d2/d3), the paper's rules; 3d: Forsyth's CRULE, "
@@ -200,7 +201,7 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
       ->check(CLI::IsMember({"2d", "3d"}))
       ->capture_default_str();
   cmd->add_option("--black", o.black, "3d: include or exclude black (0,0,0) in the canonical gamut")
-      ->check(CLI::IsMember({"include", "exclude"}))
+      ->check(CLI::IsMember(canonical_black_names()))
       ->capture_default_str();
   return cmd;
 }
@@ -212,8 +213,7 @@ SelectSettings select_settings(const SelectOptions& o) {
   s.threads = static_cast<unsigned>(integer_option("--threads", o.threads, 0, 256));
   SelectSceneOptions& scene = s.scene;
   scene.on_empty = recovery_policy_from_string(o.on_empty);
-  scene.nonpositive_blue =
-      o.nonpositive_blue == "reject" ? NonPositiveBluePolicy::reject : NonPositiveBluePolicy::drop;
+  scene.nonpositive_blue = nonpositive_blue_policy_from_string(o.nonpositive_blue);
   scene.expansion = expansion_option(o.expand_factor, o.expand_policy);
   if (scene.on_empty == RecoveryPolicy::grow_canonical &&
       scene.expansion.policy == ExpansionPolicy::centroid_clip)

@@ -26,6 +26,11 @@ ExpansionPolicy expansion_policy_from_string(const std::string& name) {
                               "' (expected none, centroid-clip or multiplicative)");
 }
 
+std::vector<std::string> expansion_policy_names() {
+  return {to_string(ExpansionPolicy::none), to_string(ExpansionPolicy::centroid_clip),
+          to_string(ExpansionPolicy::multiplicative)};
+}
+
 void check_options(const Expansion& expansion) {
   if (sgn(expansion.factor) < 0) throw OptionError("expand", "must be >= 0");
   if (expansion.policy == ExpansionPolicy::none && sgn(expansion.factor) != 0)

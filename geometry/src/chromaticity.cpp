@@ -22,4 +22,18 @@ Chromaticities perspective_chromaticities(const std::vector<Colour>& colours,
   return out;
 }
 
+std::string to_string(NonPositiveBluePolicy policy) {
+  return policy == NonPositiveBluePolicy::reject ? "reject" : "drop";
+}
+
+NonPositiveBluePolicy nonpositive_blue_policy_from_string(const std::string& text) {
+  for (NonPositiveBluePolicy p : {NonPositiveBluePolicy::drop, NonPositiveBluePolicy::reject})
+    if (text == to_string(p)) return p;
+  throw std::invalid_argument(quoted_text(text) + " is not one of drop, reject");
+}
+
+std::vector<std::string> nonpositive_blue_policy_names() {
+  return {to_string(NonPositiveBluePolicy::drop), to_string(NonPositiveBluePolicy::reject)};
+}
+
 }  // namespace gmcc

@@ -485,4 +485,13 @@ std::vector<TruthRow> read_gehler_shi(const std::string& dir_text, std::map<std:
   return rows;
 }
 
+std::vector<std::string> dataset_layout_names() { return {"nus", "cube+", "gehler-shi"}; }
+
+std::vector<TruthRow> read_dataset(const std::string& layout, const std::string& dir, std::map<std::string, int>& folds) {
+  if (layout == "nus") return read_nus_camera(dir);
+  if (layout == "cube+") return read_cube_plus(dir);
+  if (layout == "gehler-shi") return read_gehler_shi(dir, folds);
+  throw std::invalid_argument(quoted_text(layout) + " is not one of nus, cube+, gehler-shi");
+}
+
 }  // namespace gmcc

@@ -52,4 +52,12 @@ std::vector<TruthRow> read_cube_plus(const std::string& dir);
 ///         cropped), a MATLAB variable of the wrong shape, a light channel <= 0.
 std::vector<TruthRow> read_gehler_shi(const std::string& dir, std::map<std::string, int>& folds);
 
+/// The layouts read_dataset reads, as the command line names them: `nus`, `cube+`, `gehler-shi`.
+std::vector<std::string> dataset_layout_names();
+
+/// The dataset in `dir` as it ships in `layout` (one of dataset_layout_names): read_nus_camera,
+/// read_cube_plus or read_gehler_shi, the split it ships (Gehler–Shi's) in `folds`.
+/// \throws std::invalid_argument for another layout; InputError as the readers.
+std::vector<TruthRow> read_dataset(const std::string& layout, const std::string& dir, std::map<std::string, int>& folds);
+
 }  // namespace gmcc

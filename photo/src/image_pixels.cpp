@@ -319,6 +319,17 @@ std::string to_string(ColourSet set) {
   return "?";
 }
 
+ColourSet colour_set_from_string(const std::string& text) {
+  for (ColourSet set : {ColourSet::hull, ColourSet::distinct, ColourSet::hull_3d})
+    if (text == to_string(set)) return set;
+  if (text == "hull_3d") return ColourSet::hull_3d;
+  throw std::invalid_argument(quoted_text(text) + " is not one of hull, distinct, hull-3d");
+}
+
+std::vector<std::string> colour_set_names() {
+  return {to_string(ColourSet::hull), to_string(ColourSet::distinct), to_string(ColourSet::hull_3d)};
+}
+
 PixelRules gijsenij_pixel_rules(PixelRules base) {
   base.dark_below_fraction = Rational(5, 255);
   base.bright_above_fraction = Rational(245, 255);

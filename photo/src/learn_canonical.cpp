@@ -30,6 +30,10 @@ CanonicalIntensity canonical_intensity_from_string(const std::string& text) {
   throw std::invalid_argument("\"" + text + "\" is not one of max, none");
 }
 
+std::vector<std::string> canonical_intensity_names() {
+  return {to_string(CanonicalIntensity::max), to_string(CanonicalIntensity::none)};
+}
+
 Rational white_balanced_maximum(const std::vector<Colour>& colours, const Colour& light) {
   Rational top = 0;
   for (const Colour& c : colours)

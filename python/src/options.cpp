@@ -61,9 +61,11 @@ SelectSceneOptions scene_options(py::handle expand, const std::string& expand_po
   } catch (const std::invalid_argument& e) {
     throw py::value_error(std::string("on_empty: ") + e.what());
   }
-  if (nonpositive_blue != "drop" && nonpositive_blue != "reject")
-    throw py::value_error("nonpositive_blue: " + quoted_text(nonpositive_blue) + " is not one of drop, reject");
-  o.nonpositive_blue = nonpositive_blue == "reject" ? NonPositiveBluePolicy::reject : NonPositiveBluePolicy::drop;
+  try {
+    o.nonpositive_blue = nonpositive_blue_policy_from_string(nonpositive_blue);
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(std::string("nonpositive_blue: ") + e.what());
+  }
   o.expansion = expansion_from(expand, expand_policy);
   if (o.on_empty == RecoveryPolicy::grow_canonical && o.expansion.policy == ExpansionPolicy::centroid_clip)
     throw py::value_error("on_empty: grow-canonical grows the gamut by the multiplicative policy; it cannot "

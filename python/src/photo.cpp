@@ -250,9 +250,11 @@ void bind_functions(py::module_& m) {
         out.colours = colours.size();
         Estimate3Options o;
         o.canonical_light = positive_light(canonical_illuminant, "canonical_illuminant");
-        if (centroid != "certified" && centroid != "exact")
-          throw py::value_error("centroid: " + quoted_text(centroid) + " is not one of certified, exact");
-        o.route = centroid == "exact" ? Crule3dRoute::exact : Crule3dRoute::certified;
+        try {
+          o.route = crule_3d_route_from_string(centroid);
+        } catch (const std::invalid_argument& e) {
+          throw py::value_error(std::string("centroid: ") + e.what());
+        }
         o.exact_feasible_set = false;  // made on the first read of feasible_set
         if (!rules.is_none()) {
           o.rules.clear();

@@ -81,10 +81,11 @@ bool PixelArgs::plain() const {
 }
 
 ColourSet colour_set_from(const std::string& name) {
-  if (name == "hull") return ColourSet::hull;
-  if (name == "distinct") return ColourSet::distinct;
-  if (name == "hull-3d" || name == "hull_3d") return ColourSet::hull_3d;
-  throw py::value_error("colour_set: " + quoted_text(name) + " is not one of hull, distinct, hull-3d");
+  try {
+    return colour_set_from_string(name);
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(std::string("colour_set: ") + e.what());
+  }
 }
 
 bool is_image(py::handle x) { return py::isinstance<py::array>(x) && py::reinterpret_borrow<py::array>(x).ndim() == 3; }

@@ -59,4 +59,16 @@ MapEstimate3 centroid_3(const LazyConvexSet3& F, Crule3dRoute route) {
   return internal::staged(internal::counts(), [&] { return internal::certified_centroid_filtered(F); }, exact);
 }
 
+std::string to_string(Crule3dRoute route) { return route == Crule3dRoute::exact ? "exact" : "certified"; }
+
+Crule3dRoute crule_3d_route_from_string(const std::string& text) {
+  for (Crule3dRoute r : {Crule3dRoute::exact, Crule3dRoute::certified})
+    if (text == to_string(r)) return r;
+  throw std::invalid_argument(quoted_text(text) + " is not one of exact, certified");
+}
+
+std::vector<std::string> crule_3d_route_names() {
+  return {to_string(Crule3dRoute::exact), to_string(Crule3dRoute::certified)};
+}
+
 }  // namespace gmcc

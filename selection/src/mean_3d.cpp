@@ -20,6 +20,10 @@ Mean3dMethod mean3d_method_from_string(const std::string& name) {
                               "' (expected analytic, quadrature or monte-carlo)");
 }
 
+std::vector<std::string> mean3d_method_names() {
+  return {to_string(Mean3dMethod::analytic), to_string(Mean3dMethod::quadrature), to_string(Mean3dMethod::monte_carlo)};
+}
+
 namespace {
 void check_range(const char* option, unsigned long long value, IntegerRange range) {
   if (value < range.lo || value > range.hi)

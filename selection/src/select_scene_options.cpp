@@ -18,6 +18,11 @@ RecoveryPolicy recovery_policy_from_string(const std::string& name) {
                               "' (expected none, grow-canonical or min-violation)");
 }
 
+std::vector<std::string> recovery_policy_names() {
+  return {to_string(RecoveryPolicy::none), to_string(RecoveryPolicy::grow_canonical),
+          to_string(RecoveryPolicy::min_violation)};
+}
+
 const Rational& max_scene_coordinate() {
   static const Rational limit = parse_rational("1e150");
   return limit;

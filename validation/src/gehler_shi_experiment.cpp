@@ -46,6 +46,10 @@ GehlerShiProtocol gehler_shi_protocol_from_string(const std::string& name) {
   throw std::invalid_argument("unknown protocol \"" + name + "\" (leave-one-out, paper)");
 }
 
+std::vector<std::string> gehler_shi_protocol_names() {
+  return {to_string(GehlerShiProtocol::leave_one_out), to_string(GehlerShiProtocol::paper)};
+}
+
 namespace {
 
 // One camera's chart images with their usable patches (inside (dark, clip), not excluded), and

@@ -26,6 +26,8 @@ enum class ExpansionPolicy {
 std::string to_string(ExpansionPolicy policy);
 /// Inverse of to_string. \throws std::invalid_argument listing the valid names.
 ExpansionPolicy expansion_policy_from_string(const std::string& name);
+/// Every name to_string gives, in declaration order: the choices a front end offers.
+std::vector<std::string> expansion_policy_names();
 
 /// The expansion to apply: policy and factor F (0.1 means 10%).
 struct Expansion {

@@ -18,6 +18,12 @@ enum class NonPositiveBluePolicy {
   drop,    ///< skip them and count them (the default of `gmcc select`)
   reject,  ///< throw NonPositiveBlue naming the first offending colour
 };
+/// `drop` or `reject`: the name every front end reads and writes (--nonpositive-blue, Python).
+std::string to_string(NonPositiveBluePolicy policy);
+/// The inverse of to_string. \throws std::invalid_argument (quoting the text) for any other.
+NonPositiveBluePolicy nonpositive_blue_policy_from_string(const std::string& text);
+/// Every name to_string gives, in declaration order: the choices a front end offers.
+std::vector<std::string> nonpositive_blue_policy_names();
 
 /// Thrown by perspective_chromaticities under NonPositiveBluePolicy::reject: input the function
 /// cannot use (docs/conventions.md §9), so a std::invalid_argument.

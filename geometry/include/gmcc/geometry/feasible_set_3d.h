@@ -37,6 +37,10 @@ inline CanonicalBlack canonical_black_from_string(const std::string& text) {
     if (text == to_string(b)) return b;
   throw std::invalid_argument(quoted_text(text) + " is not one of include, exclude");
 }
+/// Every name to_string gives, in declaration order: the choices a front end offers.
+inline std::vector<std::string> canonical_black_names() {
+  return {to_string(CanonicalBlack::include), to_string(CanonicalBlack::exclude)};
+}
 
 /// G_c3 prepared once for many images (docs/math.md §1b "The prepared route"): its exact
 /// half-spaces a·x <= b (CGAL::convex_hull_3 over Epeck when it is 3-dimensional; for a planar,

@@ -49,6 +49,11 @@ enum class ColourSet {
 
 /// `distinct`, `hull` or `hull-3d` (the command line's names).
 std::string to_string(ColourSet set);
+/// The inverse of to_string, also from the key `hull_3d` (Python's spelling).
+/// \throws std::invalid_argument (quoting the text) for any other.
+ColourSet colour_set_from_string(const std::string& text);
+/// Every name to_string gives, in declaration order: the choices a front end offers.
+std::vector<std::string> colour_set_names();
 
 /// True when the set's colours are pixel colours (distinct or hull_3d), false for the
 /// chromaticity lifts of ColourSet::hull.

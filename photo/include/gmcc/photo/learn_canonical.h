@@ -37,6 +37,8 @@ enum class CanonicalIntensity {
 std::string to_string(CanonicalIntensity intensity);
 /// The inverse of to_string. \throws std::invalid_argument naming the accepted values.
 CanonicalIntensity canonical_intensity_from_string(const std::string& text);
+/// Every name to_string gives, in declaration order: the choices a front end offers.
+std::vector<std::string> canonical_intensity_names();
 
 /// The largest channel of the white-balanced colours p ⊘ e: the factor CanonicalIntensity::max
 /// divides an image's colours by (0 for no colour or only black). Edge colours of the same image

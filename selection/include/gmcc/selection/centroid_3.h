@@ -7,12 +7,21 @@
 #include <gmcc/geometry/lazy_convex_set_3.h>
 #include <gmcc/selection/map_estimate_3.h>
 
+#include <string>
+#include <vector>
+
 namespace gmcc {
 
 /// How a 3-D rule measures F3: `exact` (the answer in ℚ: what `gmcc select --space 3d` prints) or
 /// `certified` (a double map with a rigorous bound, falling back to the exact route wherever the
 /// bound cannot be certified: what the experiments score, at a small part of the cost).
 enum class Crule3dRoute { exact, certified };
+/// `exact` or `certified`: the name every front end reads and writes (--centroid, Python).
+std::string to_string(Crule3dRoute route);
+/// The inverse of to_string. \throws std::invalid_argument (quoting the text) for any other.
+Crule3dRoute crule_3d_route_from_string(const std::string& text);
+/// Every name to_string gives, in declaration order: the choices a front end offers.
+std::vector<std::string> crule_3d_route_names();
 
 /// F3's centroid (its uniform measure in its own dimension, convex_set_3.h centroid()) as rule
 /// `centroid`.

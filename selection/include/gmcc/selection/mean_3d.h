@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace gmcc {
 
@@ -25,6 +26,8 @@ enum class Mean3dMethod {
 std::string to_string(Mean3dMethod method);
 /// Inverse of to_string. \throws std::invalid_argument listing the valid names.
 Mean3dMethod mean3d_method_from_string(const std::string& name);
+/// Every name to_string gives, in declaration order: the choices a front end offers.
+std::vector<std::string> mean3d_method_names();
 
 /// Which route, and its parameters (each used only by its route). The defaults here are every
 /// front end's defaults; the ranges below are every front end's limits (docs/cli.md "gmcc select").

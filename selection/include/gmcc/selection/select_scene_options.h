@@ -28,6 +28,8 @@ enum class RecoveryPolicy {
 std::string to_string(RecoveryPolicy policy);
 /// Inverse of to_string. \throws std::invalid_argument listing the valid names.
 RecoveryPolicy recovery_policy_from_string(const std::string& name);
+/// Every name to_string gives, in declaration order: the choices a front end offers.
+std::vector<std::string> recovery_policy_names();
 
 /// What select_scene computes on a feasible set: the per-scene choices. A PreparedCanonical holds
 /// defaults for them (SelectSceneOptions); select_scene takes others per call, so comparing the

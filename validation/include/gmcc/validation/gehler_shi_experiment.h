@@ -32,6 +32,8 @@ enum class GehlerShiProtocol {
 std::string to_string(GehlerShiProtocol protocol);
 /// Inverse of to_string(GehlerShiProtocol). \throws std::invalid_argument naming the valid ones.
 GehlerShiProtocol gehler_shi_protocol_from_string(const std::string& name);
+/// Every name to_string gives, in declaration order: the choices a front end offers.
+std::vector<std::string> gehler_shi_protocol_names();
 
 /// The options of the Gehler–Shi experiment (`gmcc reproduce gehler-shi`).
 struct GehlerShiOptions {
