@@ -31,6 +31,8 @@ void VertexDoubles::settle() {
     hi[c] = std::max(0.0, (h[c] + err[c]) / w_lo * (1 + 8 * u));
     lo[c] = std::max(0.0, (h[c] - err[c]) / w_hi * (1 - 8 * u));
   }
+  in_range = box_range(lo[0]) && box_range(lo[1]) && box_range(lo[2]) && box_range(hi[0]) && box_range(hi[1]) &&
+             box_range(hi[2]);
 }
 
 void LiveVertexFilter::add(const VertexDoubles& v) {
@@ -52,15 +54,16 @@ void LiveVertexFilter::place(int v) {
   const VertexDoubles& x = vertices_[static_cast<std::size_t>(v)];
   const std::size_t o = octant(x);
   Group& g = groups_[o];
-  where_[static_cast<std::size_t>(v)] = {o, g.packed.size()};
-  g.packed.insert(g.packed.end(), {x.h[0], x.h[1], x.h[2], x.h[3], x.alpha, x.beta});
+  const std::size_t at = g.packed.size();
+  where_[static_cast<std::size_t>(v)] = {o, at};
+  g.packed.resize(at + 6);
+  double* r = &g.packed[at];
+  r[0] = x.h[0], r[1] = x.h[1], r[2] = x.h[2], r[3] = x.h[3], r[4] = x.alpha, r[5] = x.beta;
   if (!box_ok_) return;
   // group_inside reads only the group's bounds: those must be in range, as they are when every
   // vertex's are (each bound is one of them).
-  for (std::size_t c = 0; c < 3; ++c) {
-    g.lo[c] = std::min(g.lo[c], x.lo[c]), g.hi[c] = std::max(g.hi[c], x.hi[c]);
-    g.boxed = g.boxed && box_range(x.lo[c]) && box_range(x.hi[c]);
-  }
+  for (std::size_t c = 0; c < 3; ++c) g.lo[c] = std::min(g.lo[c], x.lo[c]), g.hi[c] = std::max(g.hi[c], x.hi[c]);
+  g.boxed = g.boxed && x.in_range;
 }
 
 void LiveVertexFilter::rebuild(const std::vector<int>& live) {

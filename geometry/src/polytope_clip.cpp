@@ -169,21 +169,28 @@ class Clipper {
       d[k] = !f.usable ? -HUGE_VAL : norm > 0 ? (f.c[0] * c[0] + f.c[1] * c[1] + f.c[2] * c[2] - f.c[3]) / norm : HUGE_VAL;
       if (std::isfinite(d[k])) lo = std::min(lo, d[k]), hi = std::max(hi, d[k]);
     }
-    // A counting sort into `levels` equal bands of distance, deepest band first, each band in
-    // the order it had (a comparison sort's mispredicted branches cost more than it gained).
+    // A stable sort into `levels` equal bands of distance, deepest band first, each band in the
+    // order it had (a comparison sort's mispredicted branches cost more than it gained): band
+    // numbers below 2^14, sorted by their low 7 bits, then stably by the high 7 (an LSD radix
+    // sort, the same order as one counting pass over every band at a fraction of the counts).
     constexpr std::size_t levels = 4096;
     const double scale = hi > lo ? double(levels - 1) / (hi - lo) : 0;
     std::vector<std::uint16_t> band(order_.size());
-    std::array<std::size_t, levels + 3> start{};
     for (std::size_t k = 0; k < order_.size(); ++k) {
       const double x = d[k];
       band[k] = x == HUGE_VAL ? 0 : x == -HUGE_VAL || std::isnan(x) ? levels + 1
                 : static_cast<std::uint16_t>(1 + std::min(double(levels - 1), std::floor((hi - x) * scale)));
-      ++start[band[k] + 1u];
     }
-    for (std::size_t b = 0; b + 1 < start.size(); ++b) start[b + 1] += start[b];
-    std::vector<std::size_t> sorted(order_.size());
-    for (std::size_t k = 0; k < order_.size(); ++k) sorted[start[band[k]]++] = order_[k];
+    std::vector<std::size_t> index(order_.size()), sorted(order_.size());
+    for (std::size_t k = 0; k < index.size(); ++k) index[k] = k;
+    for (const int shift : {0, 7}) {
+      std::array<std::size_t, 129> start{};
+      for (std::size_t k = 0; k < order_.size(); ++k) ++start[((band[k] >> shift) & 127u) + 1u];
+      for (std::size_t b = 0; b + 1 < start.size(); ++b) start[b + 1] += start[b];
+      for (const std::size_t k : index) sorted[start[(band[k] >> shift) & 127u]++] = k;
+      index.swap(sorted);
+    }
+    for (std::size_t k = 0; k < index.size(); ++k) sorted[k] = order_[index[k]];
     order_ = std::move(sorted);
     queue_.resize(order_.size());
     for (std::size_t k = 0; k < order_.size(); ++k) queue_[k] = filters_[order_[k]];
@@ -622,6 +629,7 @@ class Clipper {
       }
     }
     Face cap{i, {}};
+    cap.cycle.reserve(static_cast<std::size_t>(cap_edges));
     for (int v = cap_start; v != -1 && static_cast<int>(cap.cycle.size()) <= cap_edges &&
                             (cap.cycle.empty() || v != cap_start);
          v = next_on_cap_[v])

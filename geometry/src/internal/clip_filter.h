@@ -26,6 +26,7 @@ struct VertexDoubles {
   double alpha = 0, beta = 0;
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   bool bounded = false;
+  bool in_range = false;  // bounded, and every bound 0 or in [2^-400, 2^400] (a group box may use it)
   void settle();
 };
 
