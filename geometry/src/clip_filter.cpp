@@ -54,9 +54,10 @@ void LiveVertexFilter::place(int v) {
   const VertexDoubles& x = vertices_[static_cast<std::size_t>(v)];
   const std::size_t o = octant(x);
   Group& g = groups_[o];
-  const std::size_t at = g.packed.size();
+  const std::size_t at = g.used;
   where_[static_cast<std::size_t>(v)] = {o, at};
-  g.packed.resize(at + 6);
+  if (at + 6 > g.packed.size()) g.packed.resize(2 * (at + 6));
+  g.used = at + 6;
   double* r = &g.packed[at];
   r[0] = x.h[0], r[1] = x.h[1], r[2] = x.h[2], r[3] = x.h[3], r[4] = x.alpha, r[5] = x.beta;
   if (!box_ok_) return;
@@ -83,7 +84,7 @@ void LiveVertexFilter::rebuild(const std::vector<int>& live) {
   // when the bounds are not known).
   for (std::size_t c = 0; c < 3; ++c) centre_[c] = n > 0 ? centre[c] / double(n) : 0;
   for (Group& g : groups_) {
-    g.packed.clear();
+    g.used = 0;
     g.boxed = box_ok_;
     for (std::size_t c = 0; c < 3; ++c) g.lo[c] = HUGE_VAL, g.hi[c] = 0;
   }
@@ -133,8 +134,8 @@ bool LiveVertexFilter::none_outside(const double* a) const {
   const double m = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])}) * (1 + 128 * u);
   const double b = std::fabs(a[3]) * (1 + 128 * u);
   for (const Group& g : groups_) {
-    if (g.packed.empty() || group_inside(g, a)) continue;
-    for (std::size_t k = 0; k < g.packed.size(); k += 6) {
+    if (g.used == 0 || group_inside(g, a)) continue;
+    for (std::size_t k = 0; k < g.used; k += 6) {
       const double* h = &g.packed[k];
       const double v = a[0] * h[0] + a[1] * h[1] + a[2] * h[2] - a[3] * h[3], bound = m * h[4] + b * h[5];
       // Inside: certainly negative, or exactly 0 (a zero bound: every term exactly zero).

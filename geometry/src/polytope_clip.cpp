@@ -362,7 +362,7 @@ class Clipper {
   }
 
   int add_vertex(const std::array<int, 3>& t) {
-    Vertex v;
+    Vertex& v = vertices_.emplace_back();  // built in place (moving one moves its exact integers)
     v.planes = t;
     const Filter &p = filters_[t[0]], &q = filters_[t[1]], &r = filters_[t[2]];
     if (p.usable && q.usable && r.usable) {
@@ -403,7 +403,6 @@ class Clipper {
     }
     v.settle();
     filter_.add(v);
-    vertices_.push_back(std::move(v));
     return static_cast<int>(vertices_.size()) - 1;
   }
 

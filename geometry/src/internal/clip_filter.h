@@ -52,7 +52,8 @@ class LiveVertexFilter {
  private:
   struct Group {
     double lo[3], hi[3];         // certified bounds of its vertices' coordinates (lo >= 0)
-    std::vector<double> packed;  // per vertex: h[0..3], then α and β (see none_outside)
+    std::vector<double> packed;  // per vertex: h[0..3], then α and β (see none_outside); `used` of them
+    std::size_t used = 0;        // doubles in use at the front of `packed` (it only grows)
     bool boxed;                  // the bounds are usable
   };
   bool group_inside(const Group& g, const double* a) const;
