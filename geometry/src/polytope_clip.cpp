@@ -516,6 +516,7 @@ class Clipper {
   // found; their indices in faces_), and `vertex` is where their planes meet the plane.
   struct Cut {
     int u, w, faces[2], n, vertex;
+    int next;  // the previous cut of the same outside vertex (find_cut's list), or -1
   };
 
   // Every live vertex's faces, from the faces' cycles.
@@ -554,11 +555,13 @@ class Clipper {
       }
     }
   }
-  // The index in `cuts` of the edge {a, b}, or -1.
-  static int find(const std::vector<Cut>& cuts, int a, int b) {
+  // The index in cuts_ of the crossing edge {a, b} (one end strictly outside the plane, by sign_),
+  // or -1: a walk of the outside end's own cuts (cut_head_, Cut::next), a few.
+  int find_cut(int a, int b) const {
+    const int o = sign_[a] > 0 ? a : b;
     if (a > b) std::swap(a, b);
-    for (std::size_t k = 0; k < cuts.size(); ++k)
-      if (cuts[k].u == a && cuts[k].w == b) return static_cast<int>(k);
+    for (int k = cut_head_[static_cast<std::size_t>(o)]; k >= 0; k = cuts_[static_cast<std::size_t>(k)].next)
+      if (cuts_[static_cast<std::size_t>(k)].u == a && cuts_[static_cast<std::size_t>(k)].w == b) return k;
     return -1;
   }
 
@@ -570,6 +573,7 @@ class Clipper {
   void crossing_edges(int i, std::size_t on) {
     std::vector<Cut>& cuts = cuts_;
     cuts.clear();
+    if (cut_head_.size() < vertices_.size()) cut_head_.resize(vertices_.size() + 64, -1);
     touched_.clear();
     faces_to_visit(on);
     for (const std::size_t f : visit_) {
@@ -581,9 +585,12 @@ class Clipper {
         outside = outside || sb > 0;
         on = on || (sa == 0 && sb == 0);
         if (sa * sb < 0) {
-          const int k = find(cuts, a, b);
-          if (k < 0) cuts.push_back({std::min(a, b), std::max(a, b), {static_cast<int>(f), -1}, 1, -1});
-          else {
+          const int k = find_cut(a, b);
+          if (k < 0) {
+            int& head = cut_head_[static_cast<std::size_t>(sa > 0 ? a : b)];
+            cuts.push_back({std::min(a, b), std::max(a, b), {static_cast<int>(f), -1}, 1, -1, head});
+            head = static_cast<int>(cuts.size()) - 1;
+          } else {
             GMCC_CHECK(cuts[k].n == 1, "clip_polytope: an edge lies on two faces");
             cuts[k].faces[1] = static_cast<int>(f), cuts[k].n = 2;
           }
@@ -619,7 +626,7 @@ class Clipper {
         for (std::size_t k = 0; k < c.size(); ++k) {
           const int a = c[k], b = c[k + 1 == c.size() ? 0 : k + 1];
           if (sign_[a] <= 0) scratch_.push_back(a);
-          if (sign_[a] * sign_[b] < 0) scratch_.push_back(cuts_[static_cast<std::size_t>(find(cuts_, a, b))].vertex);
+          if (sign_[a] * sign_[b] < 0) scratch_.push_back(cuts_[static_cast<std::size_t>(find_cut(a, b))].vertex);
         }
         c.swap(scratch_);
         if (c.size() < 3) {
@@ -636,6 +643,7 @@ class Clipper {
         a = b;
       }
     }
+    for (const Cut& c : cuts_) cut_head_[static_cast<std::size_t>(sign_[c.u] > 0 ? c.u : c.w)] = -1;  // lists emptied
     Face cap{i, {}};
     cap.cycle.reserve(static_cast<std::size_t>(cap_edges));
     for (int v = cap_start; v != -1 && static_cast<int>(cap.cycle.size()) <= cap_edges &&
@@ -793,6 +801,7 @@ class Clipper {
   std::vector<Face> faces_;
   std::vector<int> live_;
   std::vector<Cut> cuts_;        // scratch for clip(): the crossing edges
+  std::vector<int> cut_head_;    // per vertex: its last cut in cuts_ while it is outside (-1 otherwise)
   int flat_point_ = -1;          // the one vertex a flat row left (clip()), if it left one
   struct Touched {
     std::size_t face;
