@@ -110,22 +110,6 @@ void LiveVertexFilter::update(const std::vector<int>& live, const std::vector<in
     for (std::size_t c = 0; c < 3; ++c) top_[c] = std::max(top_[c], vertices_[static_cast<std::size_t>(v)].hi[c]);
 }
 
-// max over the box of a·x is P − N, P = Σ_{a_k > 0} a_k hi_k and N = Σ_{a_k < 0} |a_k| lo_k (both
-// >= 0). With each coefficient within 6u of the exact one and the sums' roundings, the exact
-// maximum is at most P~(1 + 11u) − N~(1 − 11u) and the exact b at least b~ − 6u|b~|; so
-// P~ − (N~ + b~) <= −16u(P~ + N~ + |b~|), evaluated with two roundings of at most u·T each
-// (T = P~ + N~ + |b~|) and an exact product by 16u, shows the maximum <= b.
-bool LiveVertexFilter::group_inside(const Group& g, const double* a) const {
-  if (!g.boxed) return false;
-  double p = 0, n = 0;
-  for (int k = 0; k < 3; ++k) {
-    if (a[k] > 0) p += a[k] * g.hi[k];
-    else n -= a[k] * g.lo[k];
-  }
-  const double t = p + n + std::fabs(a[3]);
-  return p - (n + a[3]) <= -16 * u * t;
-}
-
 // A vertex: s = a·(X, Y, Z) − b·W < −bound with the side test's bound enlarged (1 + 64u for its
 // evaluation, 1 + 16u more for α, β); a zero bound means every term is exactly zero (the vertex
 // exactly on the plane).
