@@ -79,8 +79,9 @@ ScaledPoint scaled_point(const Point3& p) {
 // W > 0, each within err[k] of the exact value, docs/derivations.md §4.6), and:
 struct Vertex : VertexDoubles {
   std::array<int, 3> planes;  // three independent planes through it
-  // Exact homogeneous coordinates of the integer planes' solution (W of either sign), on demand.
-  std::optional<std::array<mpz_class, 4>> exact;
+  // Exact homogeneous coordinates of the integer planes' solution (W of either sign), on demand
+  // (behind a pointer: few vertices have them, and a small vertex keeps the clip's vector small).
+  std::unique_ptr<std::array<mpz_class, 4>> exact;
   // The faces through it (indices into the clip's faces), `degree` of them; -1 when unknown
   // (more than fit here).
   std::array<int, 8> faces{};
@@ -132,7 +133,7 @@ class Clipper {
     std::vector<char> implied(filters_.size(), 0);
     for (const Group& g : groups_) mark_implied(g, implied);
     // Corner (bx, by, bz) is vertex bx + 2by + 4bz; faces counter-clockwise seen from outside.
-    vertices_.reserve(384);  // a typical clip's (growing moves every vertex's exact coordinates)
+    vertices_.reserve(384);  // a typical clip's (growing moves every vertex)
     for (int c = 0; c < 8; ++c)
       add_vertex({c & 1 ? 3 : 0, c & 2 ? 4 : 1, c & 4 ? 5 : 2});
     faces_ = {{0, {0, 4, 6, 2}}, {3, {1, 3, 7, 5}}, {1, {0, 1, 5, 4}},
@@ -329,7 +330,7 @@ class Clipper {
       }
       if (side(static_cast<int>(i), v) > 0) return {ClippedPolytope::Outcome::empty, {}};
     }
-    if (!v.exact) v.exact = exact_homogeneous(v.planes);
+    if (!v.exact) v.exact = std::make_unique<std::array<mpz_class, 4>>(exact_homogeneous(v.planes));
     return {ClippedPolytope::Outcome::polytope,
             LazyConvexSet3::from_homogeneous(ConvexKind3::point, {*v.exact}, {})};
   }
@@ -398,7 +399,7 @@ class Clipper {
     }
     if (!v.filtered) {
       count(false);
-      v.exact = exact_homogeneous(t);
+      v.exact = std::make_unique<std::array<mpz_class, 4>>(exact_homogeneous(t));
       GMCC_CHECK(sgn((*v.exact)[3]) != 0, "clip_polytope: a vertex's three planes are independent");
     }
     v.settle();
@@ -441,7 +442,7 @@ class Clipper {
       return sign;
     }
     count(false);
-    if (!v.exact) v.exact = exact_homogeneous(v.planes);
+    if (!v.exact) v.exact = std::make_unique<std::array<mpz_class, 4>>(exact_homogeneous(v.planes));
     const auto& h = *v.exact;
     const IntegerPlane3& p = plane(i);
     mpz_class& s = side_;  // a·(X, Y, Z) − b·W, in scratch kept across calls
@@ -738,7 +739,7 @@ class Clipper {
       std::optional<LazyConvexSet3::TruncatedVertex> t = x.filtered ? truncated(x) : std::nullopt;
       lazy[j] = t.has_value();
       if (!t) {
-        if (!x.exact) x.exact = exact_homogeneous(x.planes);
+        if (!x.exact) x.exact = std::make_unique<std::array<mpz_class, 4>>(exact_homogeneous(x.planes));
         if (!(t = truncated(*x.exact))) return exact_result(std::move(faces));
         // A copy: a later vertex out of range sends every vertex to exact_result, which reads
         // this one's x.exact again (a moved-from one would read W = 0).
@@ -770,7 +771,7 @@ class Clipper {
     std::vector<std::array<mpz_class, 4>> points;
     for (int v : live_) {
       Vertex& x = vertices_[static_cast<std::size_t>(v)];
-      if (!x.exact) x.exact = exact_homogeneous(x.planes);
+      if (!x.exact) x.exact = std::make_unique<std::array<mpz_class, 4>>(exact_homogeneous(x.planes));
       points.push_back(*x.exact);
     }
     return LazyConvexSet3::from_homogeneous(ConvexKind3::polytope, std::move(points), std::move(faces));
