@@ -418,7 +418,8 @@ class Clipper {
       const double s = a[0] * v.h[0] + a[1] * v.h[1] + a[2] * v.h[2] - a[3] * v.h[3];
       // First the vertex's own bound (VertexDoubles::alpha, beta: E + 16u(T + E) <= max_k |a_k|·α +
       // |b|·β, made once per vertex), as LiveVertexFilter::none_outside reads it, 1 + 128u covering
-      // its evaluation: a few operations, and it settles a vertex clear of the plane (most of them).
+      // its evaluation (docs/derivations.md §4.6, "The vertex's own bound"): a few operations, and
+      // it settles a vertex clear of the plane (most of them).
       const double quick = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])}) * (1 + 128 * u) * v.alpha +
                            std::fabs(a[3]) * (1 + 128 * u) * v.beta;
       if (s > quick || s < -quick) {
