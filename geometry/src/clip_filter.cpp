@@ -31,6 +31,8 @@ void VertexDoubles::settle() {
     hi[c] = std::max(0.0, (h[c] + err[c]) / w_lo * (1 + 8 * u));
     lo[c] = std::max(0.0, (h[c] - err[c]) / w_hi * (1 - 8 * u));
   }
+  in_range = box_range(lo[0]) && box_range(lo[1]) && box_range(lo[2]) && box_range(hi[0]) && box_range(hi[1]) &&
+             box_range(hi[2]);
 }
 
 void LiveVertexFilter::add(const VertexDoubles& v) {
@@ -52,15 +54,17 @@ void LiveVertexFilter::place(int v) {
   const VertexDoubles& x = vertices_[static_cast<std::size_t>(v)];
   const std::size_t o = octant(x);
   Group& g = groups_[o];
-  where_[static_cast<std::size_t>(v)] = {o, g.packed.size()};
-  g.packed.insert(g.packed.end(), {x.h[0], x.h[1], x.h[2], x.h[3], x.alpha, x.beta});
+  const std::size_t at = g.used;
+  where_[static_cast<std::size_t>(v)] = {o, at};
+  if (at + 6 > g.packed.size()) g.packed.resize(2 * (at + 6));
+  g.used = at + 6;
+  double* r = &g.packed[at];
+  r[0] = x.h[0], r[1] = x.h[1], r[2] = x.h[2], r[3] = x.h[3], r[4] = x.alpha, r[5] = x.beta;
   if (!box_ok_) return;
   // group_inside reads only the group's bounds: those must be in range, as they are when every
   // vertex's are (each bound is one of them).
-  for (std::size_t c = 0; c < 3; ++c) {
-    g.lo[c] = std::min(g.lo[c], x.lo[c]), g.hi[c] = std::max(g.hi[c], x.hi[c]);
-    g.boxed = g.boxed && box_range(x.lo[c]) && box_range(x.hi[c]);
-  }
+  for (std::size_t c = 0; c < 3; ++c) g.lo[c] = std::min(g.lo[c], x.lo[c]), g.hi[c] = std::max(g.hi[c], x.hi[c]);
+  g.boxed = g.boxed && x.in_range;
 }
 
 void LiveVertexFilter::rebuild(const std::vector<int>& live) {
@@ -80,7 +84,7 @@ void LiveVertexFilter::rebuild(const std::vector<int>& live) {
   // when the bounds are not known).
   for (std::size_t c = 0; c < 3; ++c) centre_[c] = n > 0 ? centre[c] / double(n) : 0;
   for (Group& g : groups_) {
-    g.packed.clear();
+    g.used = 0;
     g.boxed = box_ok_;
     for (std::size_t c = 0; c < 3; ++c) g.lo[c] = HUGE_VAL, g.hi[c] = 0;
   }
@@ -106,22 +110,6 @@ void LiveVertexFilter::update(const std::vector<int>& live, const std::vector<in
     for (std::size_t c = 0; c < 3; ++c) top_[c] = std::max(top_[c], vertices_[static_cast<std::size_t>(v)].hi[c]);
 }
 
-// max over the box of a·x is P − N, P = Σ_{a_k > 0} a_k hi_k and N = Σ_{a_k < 0} |a_k| lo_k (both
-// >= 0). With each coefficient within 6u of the exact one and the sums' roundings, the exact
-// maximum is at most P~(1 + 11u) − N~(1 − 11u) and the exact b at least b~ − 6u|b~|; so
-// P~ − (N~ + b~) <= −16u(P~ + N~ + |b~|), evaluated with two roundings of at most u·T each
-// (T = P~ + N~ + |b~|) and an exact product by 16u, shows the maximum <= b.
-bool LiveVertexFilter::group_inside(const Group& g, const double* a) const {
-  if (!g.boxed) return false;
-  double p = 0, n = 0;
-  for (int k = 0; k < 3; ++k) {
-    if (a[k] > 0) p += a[k] * g.hi[k];
-    else n -= a[k] * g.lo[k];
-  }
-  const double t = p + n + std::fabs(a[3]);
-  return p - (n + a[3]) <= -16 * u * t;
-}
-
 // A vertex: s = a·(X, Y, Z) − b·W < −bound with the side test's bound enlarged (1 + 64u for its
 // evaluation, 1 + 16u more for α, β); a zero bound means every term is exactly zero (the vertex
 // exactly on the plane).
@@ -130,8 +118,8 @@ bool LiveVertexFilter::none_outside(const double* a) const {
   const double m = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])}) * (1 + 128 * u);
   const double b = std::fabs(a[3]) * (1 + 128 * u);
   for (const Group& g : groups_) {
-    if (g.packed.empty() || group_inside(g, a)) continue;
-    for (std::size_t k = 0; k < g.packed.size(); k += 6) {
+    if (g.used == 0 || group_inside(g, a)) continue;
+    for (std::size_t k = 0; k < g.used; k += 6) {
       const double* h = &g.packed[k];
       const double v = a[0] * h[0] + a[1] * h[1] + a[2] * h[2] - a[3] * h[3], bound = m * h[4] + b * h[5];
       // Inside: certainly negative, or exactly 0 (a zero bound: every term exactly zero).

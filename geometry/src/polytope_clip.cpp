@@ -79,8 +79,9 @@ ScaledPoint scaled_point(const Point3& p) {
 // W > 0, each within err[k] of the exact value, docs/derivations.md §4.6), and:
 struct Vertex : VertexDoubles {
   std::array<int, 3> planes;  // three independent planes through it
-  // Exact homogeneous coordinates of the integer planes' solution (W of either sign), on demand.
-  std::optional<std::array<mpz_class, 4>> exact;
+  // Exact homogeneous coordinates of the integer planes' solution (W of either sign), on demand
+  // (behind a pointer: few vertices have them, and a small vertex keeps the clip's vector small).
+  std::unique_ptr<std::array<mpz_class, 4>> exact;
   // The faces through it (indices into the clip's faces), `degree` of them; -1 when unknown
   // (more than fit here).
   std::array<int, 8> faces{};
@@ -132,7 +133,7 @@ class Clipper {
     std::vector<char> implied(filters_.size(), 0);
     for (const Group& g : groups_) mark_implied(g, implied);
     // Corner (bx, by, bz) is vertex bx + 2by + 4bz; faces counter-clockwise seen from outside.
-    vertices_.reserve(256);  // a typical clip's (growing moves every vertex's exact coordinates)
+    vertices_.reserve(384);  // a typical clip's (growing moves every vertex)
     for (int c = 0; c < 8; ++c)
       add_vertex({c & 1 ? 3 : 0, c & 2 ? 4 : 1, c & 4 ? 5 : 2});
     faces_ = {{0, {0, 4, 6, 2}}, {3, {1, 3, 7, 5}}, {1, {0, 1, 5, 4}},
@@ -169,21 +170,28 @@ class Clipper {
       d[k] = !f.usable ? -HUGE_VAL : norm > 0 ? (f.c[0] * c[0] + f.c[1] * c[1] + f.c[2] * c[2] - f.c[3]) / norm : HUGE_VAL;
       if (std::isfinite(d[k])) lo = std::min(lo, d[k]), hi = std::max(hi, d[k]);
     }
-    // A counting sort into `levels` equal bands of distance, deepest band first, each band in
-    // the order it had (a comparison sort's mispredicted branches cost more than it gained).
+    // A stable sort into `levels` equal bands of distance, deepest band first, each band in the
+    // order it had (a comparison sort's mispredicted branches cost more than it gained): band
+    // numbers below 2^14, sorted by their low 7 bits, then stably by the high 7 (an LSD radix
+    // sort, the same order as one counting pass over every band at a fraction of the counts).
     constexpr std::size_t levels = 4096;
     const double scale = hi > lo ? double(levels - 1) / (hi - lo) : 0;
     std::vector<std::uint16_t> band(order_.size());
-    std::array<std::size_t, levels + 3> start{};
     for (std::size_t k = 0; k < order_.size(); ++k) {
       const double x = d[k];
       band[k] = x == HUGE_VAL ? 0 : x == -HUGE_VAL || std::isnan(x) ? levels + 1
                 : static_cast<std::uint16_t>(1 + std::min(double(levels - 1), std::floor((hi - x) * scale)));
-      ++start[band[k] + 1u];
     }
-    for (std::size_t b = 0; b + 1 < start.size(); ++b) start[b + 1] += start[b];
-    std::vector<std::size_t> sorted(order_.size());
-    for (std::size_t k = 0; k < order_.size(); ++k) sorted[start[band[k]]++] = order_[k];
+    std::vector<std::size_t> index(order_.size()), sorted(order_.size());
+    for (std::size_t k = 0; k < index.size(); ++k) index[k] = k;
+    for (const int shift : {0, 7}) {
+      std::array<std::size_t, 129> start{};
+      for (std::size_t k = 0; k < order_.size(); ++k) ++start[((band[k] >> shift) & 127u) + 1u];
+      for (std::size_t b = 0; b + 1 < start.size(); ++b) start[b + 1] += start[b];
+      for (const std::size_t k : index) sorted[start[(band[k] >> shift) & 127u]++] = k;
+      index.swap(sorted);
+    }
+    for (std::size_t k = 0; k < index.size(); ++k) sorted[k] = order_[index[k]];
     order_ = std::move(sorted);
     queue_.resize(order_.size());
     for (std::size_t k = 0; k < order_.size(); ++k) queue_[k] = filters_[order_[k]];
@@ -322,7 +330,7 @@ class Clipper {
       }
       if (side(static_cast<int>(i), v) > 0) return {ClippedPolytope::Outcome::empty, {}};
     }
-    if (!v.exact) v.exact = exact_homogeneous(v.planes);
+    if (!v.exact) v.exact = std::make_unique<std::array<mpz_class, 4>>(exact_homogeneous(v.planes));
     return {ClippedPolytope::Outcome::polytope,
             LazyConvexSet3::from_homogeneous(ConvexKind3::point, {*v.exact}, {})};
   }
@@ -355,7 +363,7 @@ class Clipper {
   }
 
   int add_vertex(const std::array<int, 3>& t) {
-    Vertex v;
+    Vertex& v = vertices_.emplace_back();  // built in place (moving one moves its exact integers)
     v.planes = t;
     const Filter &p = filters_[t[0]], &q = filters_[t[1]], &r = filters_[t[2]];
     if (p.usable && q.usable && r.usable) {
@@ -391,12 +399,11 @@ class Clipper {
     }
     if (!v.filtered) {
       count(false);
-      v.exact = exact_homogeneous(t);
+      v.exact = std::make_unique<std::array<mpz_class, 4>>(exact_homogeneous(t));
       GMCC_CHECK(sgn((*v.exact)[3]) != 0, "clip_polytope: a vertex's three planes are independent");
     }
     v.settle();
     filter_.add(v);
-    vertices_.push_back(std::move(v));
     return static_cast<int>(vertices_.size()) - 1;
   }
 
@@ -409,6 +416,16 @@ class Clipper {
       // and products of non-negative numbers) is covered by the factor 1 + 64u.
       const double* a = f.c;
       const double s = a[0] * v.h[0] + a[1] * v.h[1] + a[2] * v.h[2] - a[3] * v.h[3];
+      // First the vertex's own bound (VertexDoubles::alpha, beta: E + 16u(T + E) <= max_k |a_k|·α +
+      // |b|·β, made once per vertex), as LiveVertexFilter::none_outside reads it, 1 + 128u covering
+      // its evaluation (docs/derivations.md §4.6, "The vertex's own bound"): a few operations, and
+      // it settles a vertex clear of the plane (most of them).
+      const double quick = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])}) * (1 + 128 * u) * v.alpha +
+                           std::fabs(a[3]) * (1 + 128 * u) * v.beta;
+      if (s > quick || s < -quick) {
+        count(true);
+        return s > 0 ? 1 : -1;
+      }
       const double T = std::fabs(a[0] * v.h[0]) + std::fabs(a[1] * v.h[1]) + std::fabs(a[2] * v.h[2]) +
                        std::fabs(a[3] * v.h[3]);
       const double E = std::fabs(a[0]) * v.err[0] + std::fabs(a[1]) * v.err[1] +
@@ -426,7 +443,7 @@ class Clipper {
       return sign;
     }
     count(false);
-    if (!v.exact) v.exact = exact_homogeneous(v.planes);
+    if (!v.exact) v.exact = std::make_unique<std::array<mpz_class, 4>>(exact_homogeneous(v.planes));
     const auto& h = *v.exact;
     const IntegerPlane3& p = plane(i);
     mpz_class& s = side_;  // a·(X, Y, Z) − b·W, in scratch kept across calls
@@ -501,6 +518,7 @@ class Clipper {
   // found; their indices in faces_), and `vertex` is where their planes meet the plane.
   struct Cut {
     int u, w, faces[2], n, vertex;
+    int next;  // the previous cut of the same outside vertex (find_cut's list), or -1
   };
 
   // Every live vertex's faces, from the faces' cycles.
@@ -539,11 +557,13 @@ class Clipper {
       }
     }
   }
-  // The index in `cuts` of the edge {a, b}, or -1.
-  static int find(const std::vector<Cut>& cuts, int a, int b) {
+  // The index in cuts_ of the crossing edge {a, b} (one end strictly outside the plane, by sign_),
+  // or -1: a walk of the outside end's own cuts (cut_head_, Cut::next), a few.
+  int find_cut(int a, int b) const {
+    const int o = sign_[a] > 0 ? a : b;
     if (a > b) std::swap(a, b);
-    for (std::size_t k = 0; k < cuts.size(); ++k)
-      if (cuts[k].u == a && cuts[k].w == b) return static_cast<int>(k);
+    for (int k = cut_head_[static_cast<std::size_t>(o)]; k >= 0; k = cuts_[static_cast<std::size_t>(k)].next)
+      if (cuts_[static_cast<std::size_t>(k)].u == a && cuts_[static_cast<std::size_t>(k)].w == b) return k;
     return -1;
   }
 
@@ -555,6 +575,7 @@ class Clipper {
   void crossing_edges(int i, std::size_t on) {
     std::vector<Cut>& cuts = cuts_;
     cuts.clear();
+    if (cut_head_.size() < vertices_.size()) cut_head_.resize(vertices_.size() + 64, -1);
     touched_.clear();
     faces_to_visit(on);
     for (const std::size_t f : visit_) {
@@ -566,9 +587,12 @@ class Clipper {
         outside = outside || sb > 0;
         on = on || (sa == 0 && sb == 0);
         if (sa * sb < 0) {
-          const int k = find(cuts, a, b);
-          if (k < 0) cuts.push_back({std::min(a, b), std::max(a, b), {static_cast<int>(f), -1}, 1, -1});
-          else {
+          const int k = find_cut(a, b);
+          if (k < 0) {
+            int& head = cut_head_[static_cast<std::size_t>(sa > 0 ? a : b)];
+            cuts.push_back({std::min(a, b), std::max(a, b), {static_cast<int>(f), -1}, 1, -1, head});
+            head = static_cast<int>(cuts.size()) - 1;
+          } else {
             GMCC_CHECK(cuts[k].n == 1, "clip_polytope: an edge lies on two faces");
             cuts[k].faces[1] = static_cast<int>(f), cuts[k].n = 2;
           }
@@ -604,7 +628,7 @@ class Clipper {
         for (std::size_t k = 0; k < c.size(); ++k) {
           const int a = c[k], b = c[k + 1 == c.size() ? 0 : k + 1];
           if (sign_[a] <= 0) scratch_.push_back(a);
-          if (sign_[a] * sign_[b] < 0) scratch_.push_back(cuts_[static_cast<std::size_t>(find(cuts_, a, b))].vertex);
+          if (sign_[a] * sign_[b] < 0) scratch_.push_back(cuts_[static_cast<std::size_t>(find_cut(a, b))].vertex);
         }
         c.swap(scratch_);
         if (c.size() < 3) {
@@ -621,7 +645,9 @@ class Clipper {
         a = b;
       }
     }
+    for (const Cut& c : cuts_) cut_head_[static_cast<std::size_t>(sign_[c.u] > 0 ? c.u : c.w)] = -1;  // lists emptied
     Face cap{i, {}};
+    cap.cycle.reserve(static_cast<std::size_t>(cap_edges));
     for (int v = cap_start; v != -1 && static_cast<int>(cap.cycle.size()) <= cap_edges &&
                             (cap.cycle.empty() || v != cap_start);
          v = next_on_cap_[v])
@@ -714,7 +740,7 @@ class Clipper {
       std::optional<LazyConvexSet3::TruncatedVertex> t = x.filtered ? truncated(x) : std::nullopt;
       lazy[j] = t.has_value();
       if (!t) {
-        if (!x.exact) x.exact = exact_homogeneous(x.planes);
+        if (!x.exact) x.exact = std::make_unique<std::array<mpz_class, 4>>(exact_homogeneous(x.planes));
         if (!(t = truncated(*x.exact))) return exact_result(std::move(faces));
         // A copy: a later vertex out of range sends every vertex to exact_result, which reads
         // this one's x.exact again (a moved-from one would read W = 0).
@@ -746,7 +772,7 @@ class Clipper {
     std::vector<std::array<mpz_class, 4>> points;
     for (int v : live_) {
       Vertex& x = vertices_[static_cast<std::size_t>(v)];
-      if (!x.exact) x.exact = exact_homogeneous(x.planes);
+      if (!x.exact) x.exact = std::make_unique<std::array<mpz_class, 4>>(exact_homogeneous(x.planes));
       points.push_back(*x.exact);
     }
     return LazyConvexSet3::from_homogeneous(ConvexKind3::polytope, std::move(points), std::move(faces));
@@ -777,6 +803,7 @@ class Clipper {
   std::vector<Face> faces_;
   std::vector<int> live_;
   std::vector<Cut> cuts_;        // scratch for clip(): the crossing edges
+  std::vector<int> cut_head_;    // per vertex: its last cut in cuts_ while it is outside (-1 otherwise)
   int flat_point_ = -1;          // the one vertex a flat row left (clip()), if it left one
   struct Touched {
     std::size_t face;

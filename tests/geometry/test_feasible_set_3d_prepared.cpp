@@ -259,6 +259,131 @@ BOOST_AUTO_TEST_CASE(clip_decides_ties_exactly) {
 }
 
 
+namespace {
+// The vertices and facets of {x : 0 <= x <= box, a·x <= b for each plane} by brute force: each
+// triple of the planes (box sides included) meeting in one point that satisfies them all, exactly
+// (sorted); each facet as the sorted indices of the vertices on a plane that holds a 2-dimensional
+// set of them (facets sorted, no repeats).
+struct BruteForce {
+  std::vector<Point3> vertices;
+  std::vector<std::vector<std::size_t>> facets;
+};
+BruteForce brute_force(const Point3& box, const std::vector<internal::IntegerPlane3>& planes) {
+  struct P { R a[3]; R b; };
+  std::vector<P> all;
+  for (int k = 0; k < 3; ++k) {
+    P lo{{0, 0, 0}, 0}, hi{{0, 0, 0}, k == 0 ? box.x : k == 1 ? box.y : box.z};
+    lo.a[k] = -1, hi.a[k] = 1;
+    all.push_back(lo), all.push_back(hi);
+  }
+  for (const internal::IntegerPlane3& p : planes) all.push_back({{R(p.a[0]), R(p.a[1]), R(p.a[2])}, R(p.b)});
+  std::vector<Point3> out;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    for (std::size_t j = i + 1; j < all.size(); ++j)
+      for (std::size_t k = j + 1; k < all.size(); ++k) {
+        const R(&x)[3] = all[i].a, (&y)[3] = all[j].a, (&z)[3] = all[k].a;
+        const R c0 = y[1] * z[2] - y[2] * z[1], c1 = y[2] * z[0] - y[0] * z[2], c2 = y[0] * z[1] - y[1] * z[0];
+        const R det = x[0] * c0 + x[1] * c1 + x[2] * c2;
+        if (sgn(det) == 0) continue;
+        // Cramer's rule: x_m = det_m / det, column m replaced by the offsets.
+        R v[3];
+        for (int m = 0; m < 3; ++m) {
+          R r[3][3];
+          for (int c = 0; c < 3; ++c) r[0][c] = x[c], r[1][c] = y[c], r[2][c] = z[c];
+          r[0][m] = all[i].b, r[1][m] = all[j].b, r[2][m] = all[k].b;
+          v[m] = (r[0][0] * (r[1][1] * r[2][2] - r[1][2] * r[2][1]) - r[0][1] * (r[1][0] * r[2][2] - r[1][2] * r[2][0]) +
+                  r[0][2] * (r[1][0] * r[2][1] - r[1][1] * r[2][0])) / det;
+        }
+        bool inside = true;
+        for (const P& q : all) inside = inside && q.a[0] * v[0] + q.a[1] * v[1] + q.a[2] * v[2] <= q.b;
+        if (inside) out.push_back({v[0], v[1], v[2]});
+      }
+  BruteForce r{internal::sorted_unique(std::move(out)), {}};
+  for (const P& q : all) {
+    std::vector<std::size_t> on;
+    std::vector<Point3> points;
+    for (std::size_t i = 0; i < r.vertices.size(); ++i) {
+      const Point3& v = r.vertices[i];
+      if (q.a[0] * v.x + q.a[1] * v.y + q.a[2] * v.z == q.b) on.push_back(i), points.push_back(v);
+    }
+    if (!points.empty() && internal::affine_dimension(points) == 2) r.facets.push_back(on);
+  }
+  std::sort(r.facets.begin(), r.facets.end());
+  r.facets.erase(std::unique(r.facets.begin(), r.facets.end()), r.facets.end());
+  return r;
+}
+}  // namespace
+
+// Every side decision of the clip (the vertex's own bound first, then the plane's, then exact)
+// against brute force, on planes through the box's corners and points in thirds of it (vertices
+// exactly on a plane, as in half the cuts of CRULE's scenes), at scales 2^-200, 1 and 2^200 of
+// the box and offsets (the filters' range limits), with a small offset that leaves a vertex just
+// outside or inside.
+BOOST_AUTO_TEST_CASE(clip_sides_agree_with_brute_force_at_extreme_scales) {
+  Rng rng(4603);
+  std::uniform_int_distribution<long> coefficient(-4, 4), big(-(1L << 30), 1L << 30), pick(0, 15), nudge(-1, 1);
+  int polytopes = 0, flats = 0, empties = 0;
+  long filtered = 0;
+  for (int trial = 0; trial < 90; ++trial) {
+    const int s = trial % 3 == 0 ? -200 : trial % 3 == 1 ? 0 : 200;
+    mpz_class num = 1, den = 1;  // 2^s = num / den
+    if (s > 0) mpz_mul_2exp(num.get_mpz_t(), num.get_mpz_t(), static_cast<mp_bitcnt_t>(s));
+    if (s < 0) mpz_mul_2exp(den.get_mpz_t(), den.get_mpz_t(), static_cast<mp_bitcnt_t>(-s));
+    const R scale(num, den);
+    const Point3 box{R(4 * scale), R(4 * scale), R(4 * scale)};
+    std::vector<internal::IntegerPlane3> planes;
+    for (int n = 0; n < 3 + trial % 5; ++n) {
+      // Small normals half the time, else of up to 31 bits (the vertices' doubles then round).
+      long a[3];
+      do {
+        for (long& x : a) x = trial % 6 < 3 ? coefficient(rng) : big(rng);
+      } while (a[0] == 0 && a[1] == 0 && a[2] == 0);
+      // Through a point q with coordinates in {0, 4/3, 8/3, 4}·2^s (corners and points in thirds,
+      // so that most vertices are not dyadic and their doubles round), nudged by 2^(s-4)/3 now
+      // and then: a·x <= (a·q + t/48)·2^s, times 48·den.
+      // In two trials of four every plane passes through one inner point (1 or 2 thirds of the box
+      // in each coordinate): a vertex on many planes, each cut through it deciding a side of 0.
+      const bool apex = trial % 4 < 2;
+      const long q = pick(rng), t = trial % 2 && !(apex && n < 3) ? nudge(rng) : 0;
+      const long c[3] = {apex ? 1 + trial / 4 % 2 : q % 4, apex ? 1 + trial / 8 % 2 : (q / 4) % 4,
+                         apex ? 1 + trial / 16 % 2 : (q + trial) % 4};
+      const long off = 64 * (a[0] * c[0] + a[1] * c[1] + a[2] * c[2]) + t;
+      planes.push_back({{mpz_class(48 * a[0] * den), mpz_class(48 * a[1] * den), mpz_class(48 * a[2] * den)},
+                        mpz_class(off * num)});
+    }
+    internal::ClipCounts counts;
+    const internal::ClippedPolytope r = internal::clip_polytope(box, planes, &counts);
+    const BruteForce brute = brute_force(box, planes);
+    const std::vector<Point3>& want = brute.vertices;
+    filtered += counts.filtered;
+    switch (r.outcome) {
+      case internal::ClippedPolytope::Outcome::polytope:
+        ++polytopes;
+      {
+        const ConvexSet3 F = r.set.exact();
+        BOOST_TEST((F.vertices == want), "trial " << trial);
+        std::vector<std::vector<std::size_t>> faces = F.faces;  // as index sets, sorted
+        for (std::vector<std::size_t>& f : faces) std::sort(f.begin(), f.end());
+        std::sort(faces.begin(), faces.end());
+        BOOST_TEST((faces == brute.facets), "trial " << trial);
+        break;
+      }
+      case internal::ClippedPolytope::Outcome::flat:
+        ++flats;
+        // Lower-dimensional or empty (later rows are for the LP route to read).
+        if (!want.empty()) BOOST_TEST(internal::affine_dimension(want) < 3, "trial " << trial);
+        break;
+      case internal::ClippedPolytope::Outcome::empty:
+        ++empties;
+        BOOST_TEST(want.empty(), "trial " << trial);
+        break;
+    }
+  }
+  BOOST_TEST(polytopes > 30);
+  BOOST_TEST(flats + empties > 5);
+  BOOST_TEST(filtered > 1000);
+}
+
 // The hull of small integer colours (pixel values below 2^16: the prefilter's planes exact in
 // double) against the general route on the same colours divided by 3 (rationals: the filtered
 // prefilter and CGAL's exact-constructions hull), on sets with many points on the hull's faces

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 #include <gmcc/numerics/filtered_sign.h>
@@ -26,6 +27,7 @@ struct VertexDoubles {
   double alpha = 0, beta = 0;
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   bool bounded = false;
+  bool in_range = false;  // bounded, and every bound 0 or in [2^-400, 2^400] (a group box may use it)
   void settle();
 };
 
@@ -51,7 +53,8 @@ class LiveVertexFilter {
  private:
   struct Group {
     double lo[3], hi[3];         // certified bounds of its vertices' coordinates (lo >= 0)
-    std::vector<double> packed;  // per vertex: h[0..3], then α and β (see none_outside)
+    std::vector<double> packed;  // per vertex: h[0..3], then α and β (see none_outside); `used` of them
+    std::size_t used = 0;        // doubles in use at the front of `packed` (it only grows)
     bool boxed;                  // the bounds are usable
   };
   bool group_inside(const Group& g, const double* a) const;
@@ -76,6 +79,24 @@ inline bool LiveVertexFilter::box_inside(const double* a) const {
   const double lhs =
       (std::max(a[0], 0.0) * top_[0] + std::max(a[1], 0.0) * top_[1] + std::max(a[2], 0.0) * top_[2]) * (1 + 16 * u);
   return lhs <= a[3] * (1 - 16 * u);
+}
+
+// max over a group's box of a·x is P − N, P = Σ_{a_k > 0} a_k hi_k and N = Σ_{a_k < 0} |a_k| lo_k
+// (both >= 0; summed without branches, max(±a_k, 0) adding exact zeros, the same sums). With each
+// coefficient within 6u of the exact one and the sums' roundings, the exact maximum is at most
+// P~(1 + 11u) − N~(1 − 11u) and the exact b at least b~ − 6u|b~|; so
+// P~ − (N~ + b~) <= −16u(P~ + N~ + |b~|), evaluated with two roundings of at most u·T each
+// (T = P~ + N~ + |b~|) and an exact product by 16u, shows the maximum <= b.
+inline bool LiveVertexFilter::group_inside(const Group& g, const double* a) const {
+  constexpr double u = numerics::unit_roundoff;
+  if (!g.boxed) return false;
+  double p = 0, n = 0;
+  for (int k = 0; k < 3; ++k) {
+    p += std::max(a[k], 0.0) * g.hi[k];
+    n += std::max(-a[k], 0.0) * g.lo[k];
+  }
+  const double t = p + n + std::fabs(a[3]);
+  return p - (n + a[3]) <= -16 * u * t;
 }
 
 }  // namespace gmcc::internal
