@@ -1,5 +1,6 @@
 // F3's clip with its rows generated lazily (internal/lazy_rows.h, docs/derivations.md §4.6).
 #include "internal/lazy_rows.h"
+#include "internal/scaled_point.h"
 
 #include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/geometry/rational_enclosure.h>
@@ -24,29 +25,6 @@ constexpr double u = numerics::unit_roundoff;
 bool coefficient_range(double x) { return x == 0 || (std::fabs(x) >= 0x1p-200 && std::fabs(x) <= 0x1p200); }
 bool bound_range(double x) { return x == 0 || (x >= 0x1p-400 && x <= 0x1p400); }
 
-// p·2^-e (e the largest binary exponent of p's channels) truncated to doubles (relative error
-// below 2u) and 2^-e, as the clip makes a row's filter copy (polytope_clip.cpp, add_point).
-struct ScaledPoint {
-  double c[3] = {0, 0, 0};
-  double scale = 0;
-  bool usable = false;
-};
-ScaledPoint scaled_point(const Point3& p) {
-  ScaledPoint s;
-  double d[3], top = 0;
-  for (int k = 0; k < 3; ++k) {
-    const std::optional<double> x = numerics::certified_double(coord(p, k).get_mpq_t());
-    if (!x) return s;
-    d[k] = *x, top = std::max(top, std::fabs(*x));
-  }
-  if (top == 0) return s;
-  int e;
-  std::frexp(top, &e);
-  for (int k = 0; k < 3; ++k) s.c[k] = std::ldexp(d[k], -e);
-  s.scale = std::ldexp(1.0, -e);
-  s.usable = true;
-  return s;
-}
 
 // Row (a ⊙ p)·x <= b's filter copy into r (a~ ⊙ p~, b~·2^-e: each coefficient within 6u relative
 // of the exact row's times a power of 2, its signs the exact ones); false when not usable.

@@ -1,5 +1,6 @@
 // A box clipped by integer half-spaces with filtered exact predicates (docs/derivations.md §4.6).
 #include "internal/polytope_clip.h"
+#include "internal/scaled_point.h"
 #include <gmcc/numerics/filtered_sign.h>
 
 #include "internal/clip_filter.h"
@@ -50,30 +51,6 @@ Filter filter_of(const IntegerPlane3& p) {
   return f;
 }
 
-// p·2^-e (e the largest binary exponent of p's channels) truncated to doubles (mpq_get_d:
-// relative error below 2u), and 2^-e; not usable outside the double range policy
-// (numerics/rational_to_float.h).
-struct ScaledPoint {
-  double c[3];
-  double scale = 0;
-  bool usable = false;
-};
-ScaledPoint scaled_point(const Point3& p) {
-  ScaledPoint s;
-  double d[3], top = 0;
-  for (int k = 0; k < 3; ++k) {
-    const std::optional<double> x = numerics::certified_double(coord(p, k).get_mpq_t());
-    if (!x) return s;
-    d[k] = *x, top = std::max(top, std::fabs(*x));
-  }
-  if (top == 0) return s;
-  int e;
-  std::frexp(top, &e);
-  for (int k = 0; k < 3; ++k) s.c[k] = std::ldexp(d[k], -e);
-  s.scale = std::ldexp(1.0, -e);
-  s.usable = true;
-  return s;
-}
 
 // The filter's doubles (VertexDoubles: homogeneous coordinates of the filter planes' solution,
 // W > 0, each within err[k] of the exact value, docs/derivations.md §4.6), and:
