@@ -10,7 +10,9 @@
 // v + u, u uniform in [−256, 256] from the generator mt19937_64 seeded with SEED + i (default
 // SEED 46), clamped to [1, 65534]; a pixel that is 0 in every channel (a mask) stays 0 and a
 // channel at the source's largest code stays 65535 (saturated stays saturated). OUT_DIR gets the
-// images and truths.csv (image,r,g,b: each source's light). The same arguments give the same bytes.
+// images, truths.csv (image,r,g,b: each source's light; `gmcc benchmark --truths`) and gt.csv
+// (image,camera,r,g,b with the image's stem and camera `standin`: the camera folder
+// bench/photo_speed.py reads). The same arguments give the same bytes.
 #include <gmcc/input/image_file.h>
 
 #include <algorithm>
@@ -89,8 +91,9 @@ int main(int argc, char** argv) {
     const std::size_t count = std::stoul(argv[3]), w = std::stoul(argv[4]), h = std::stoul(argv[5]);
     const std::uint64_t seed = argc == 7 ? std::stoull(argv[6]) : 46;
     std::filesystem::create_directories(out_dir);
-    std::ofstream truths(out_dir + "/truths.csv");
+    std::ofstream truths(out_dir + "/truths.csv"), gt(out_dir + "/gt.csv");
     truths << "image,r,g,b\n";
+    gt << "image,camera,r,g,b\n";
     for (std::size_t i = 0; i < count; ++i) {
       char name[32];
       std::snprintf(name, sizeof name, "img_%04zu.png", i);
@@ -98,6 +101,7 @@ int main(int argc, char** argv) {
       const std::string png = encode_png16(stand_in(s.image, w, h, seed + i));
       std::ofstream(out_dir + "/" + name, std::ios::binary).write(png.data(), std::streamsize(png.size()));
       truths << name << "," << s.light << "\n";
+      gt << std::string(name, 8) << ",standin," << s.light << "\n";
     }
   } catch (const std::exception& e) {
     std::cerr << "make_fullsize_dataset: " << e.what() << "\n";
