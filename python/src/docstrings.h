@@ -424,59 +424,47 @@ Examples
 19.471221
 )doc";
 
+/// The two maps of illuminant_angular_error_deg and reproduction_angular_error_deg.
+inline const std::string error_maps = R"doc(Parameters
+----------
+estimate : sequence of 2 numbers
+    The estimated map, both components > 0.
+truth : sequence of 2 numbers
+    The true map, both components > 0.
+)doc";
+
+/// Their returns and errors.
+inline const std::string error_degrees = R"doc(
+Returns
+-------
+float
+    Degrees.
+
+Raises
+------
+ValueError
+    A component <= 0, or a bad number.
+TypeError
+    An argument of the wrong type.
+)doc";
+
 /// illuminant_angular_error_deg's docstring.
-inline const std::string illuminant_angular_error_deg = R"doc(The recovery (illuminant-space) angular error of a map against the true map, degrees.
+inline const std::string illuminant_angular_error_deg = std::string(R"doc(The recovery (illuminant-space) angular error of a map against the true map, degrees.
 
 The angle between the illuminants c ⊘ (m, 1) the two maps imply (Hordley & Finlayson 2006;
 docs/math.md §3; angular_error.h).
 
-Parameters
-----------
-estimate : sequence of 2 numbers
-    The estimated map, both components > 0.
-truth : sequence of 2 numbers
-    The true map, both components > 0.
-canonical_illuminant : sequence of 3 numbers, default (1, 1, 1)
+)doc") + error_maps + R"doc(canonical_illuminant : sequence of 3 numbers, default (1, 1, 1)
     The canonical light c.
-
-Returns
--------
-float
-    Degrees.
-
-Raises
-------
-ValueError
-    A component <= 0, or a bad number.
-TypeError
-    An argument of the wrong type.
-)doc";
+)doc" + error_degrees;
 
 /// reproduction_angular_error_deg's docstring.
-inline const std::string reproduction_angular_error_deg = R"doc(The reproduction angular error of a map against the true map, degrees.
+inline const std::string reproduction_angular_error_deg = std::string(R"doc(The reproduction angular error of a map against the true map, degrees.
 
 The angle between the white corrected by the estimate and white (Finlayson & Zakizadeh
 2014; docs/math.md §3; angular_error.h); it does not depend on the canonical light.
 
-Parameters
-----------
-estimate : sequence of 2 numbers
-    The estimated map, both components > 0.
-truth : sequence of 2 numbers
-    The true map, both components > 0.
-
-Returns
--------
-float
-    Degrees.
-
-Raises
-------
-ValueError
-    A component <= 0, or a bad number.
-TypeError
-    An argument of the wrong type.
-)doc";
+)doc") + error_maps + error_degrees;
 
 /// illuminant_map's docstring.
 inline const std::string illuminant_map = R"doc(The perspective map of a light: c ⊘ e as (d1/d3, d2/d3), exactly.
