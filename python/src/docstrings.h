@@ -11,6 +11,17 @@
 
 namespace gmcc::python::doc {
 
+/// The 3-D mean routes' parameters (canonical_options, mean_3d).
+inline const std::string mean3d_parameters = R"doc(precision : int, default 0
+    analytic: the working precision in bits (0: automatic, else 53 to 1048576).
+order : int, default 12
+    quadrature: Gauss–Legendre points per direction (1 to 256).
+samples : int, default 1000000
+    monte-carlo: the number of sample points.
+seed : int, default 1
+    monte-carlo: the seed of its mt19937_64 generator.
+)doc";
+
 /// The options of the canonical side (prepare_canonical; select and feasible_set forward them).
 inline const std::string canonical_options = R"doc(expand : int, float, Fraction or str, default 0
     Enlarge G_c by this factor under ``expand_policy`` (the paper's "expanded by 10%", §4,
@@ -26,15 +37,7 @@ on_empty : {'none', 'grow-canonical', 'min-violation'}, default 'none'
     The recovery policy when F is empty (docs/cli.md "gmcc select").
 mean3d : {'analytic', 'quadrature', 'monte-carlo'}, default 'analytic'
     The route to the 3-D mean (mean_3d).
-precision : int, default 0
-    analytic: the working precision in bits (0: automatic, else 53 to 1048576).
-order : int, default 12
-    quadrature: Gauss–Legendre points per direction (1 to 256).
-samples : int, default 1000000
-    monte-carlo: the number of sample points.
-seed : int, default 1
-    monte-carlo: the seed of its mt19937_64 generator.
-illuminant_worst_case : bool, default True
+)doc" + mean3d_parameters + R"doc(illuminant_worst_case : bool, default True
     Also compute each rule's worst case in illuminant space (docs/derivations.md §3.2).
 nonpositive_blue : {'drop', 'reject'}, default 'drop'
     A colour with b <= 0 has no chromaticity: dropped and counted, or refused (ValueError).
@@ -312,15 +315,7 @@ feasible_set : ConvexSet
 method : {'analytic', 'quadrature', 'monte-carlo'}, default 'analytic'
     ``'analytic'``: the closed form, certified enclosure; ``'quadrature'``: Duffy–Gauss–
     Legendre; ``'monte-carlo'``: the paper's sampling.
-precision : int, default 0
-    analytic: the working precision in bits (0: automatic, else 53 to 1048576).
-order : int, default 12
-    quadrature: Gauss–Legendre points per direction (1 to 256).
-samples : int, default 1000000
-    monte-carlo: the number of sample points.
-seed : int, default 1
-    monte-carlo: the seed of its mt19937_64 generator.
-
+)doc" + mean3d_parameters + R"doc(
 Returns
 -------
 MapEstimate
