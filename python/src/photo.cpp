@@ -164,9 +164,16 @@ map_error_deg : float or None
       });
 }
 
-// 3-D gamut mapping on one image.
-void bind_estimate3(py::module_& m) {
-  auto estimate3 = py::class_<PyEstimate3>(m, "Estimate3", R"doc(3-D gamut mapping on one image: F3 and the rules' answers.
+// Estimate3's docstring: its attributes with one per 3-D rule, named by the rules' keys
+// (rule_3.h), so that a new rule is documented where it is bound.
+const char* estimate3_doc() {
+  static const std::string doc = [] {
+    std::string keys, quoted;
+    for (Rule3 rule : all_rules_3) {
+      keys += (keys.empty() ? "" : ", ") + to_string(rule);
+      quoted += (quoted.empty() ? "'" : ", '") + to_string(rule) + "'";
+    }
+    return std::string(R"doc(3-D gamut mapping on one image: F3 and the rules' answers.
 
 The exact feasible set F3 of diagonal maps taking the image's pixel colours into the canonical
 gamut (Forsyth 1990 §3; Gijsenij, Gevers & van de Weijer 2010 §3) and the selections asked for
@@ -179,10 +186,11 @@ feasible_set : ConvexSet3
     them).
 kind : str
     F3's kind: 'polytope', 'polygon', 'segment', 'point' or 'empty'.
-max_volume, centroid, max_trace : ImageSelection3 or None
+)doc") + keys +
+           R"doc( : ImageSelection3 or None
     Each rule's answer; None when not asked for or when F3 holds no map.
 selections : dict of str to ImageSelection3 or None
-    The three, keyed 'max_volume', 'centroid', 'max_trace'.
+    Every rule's answer, keyed )doc" + quoted + R"doc(.
 truth_in_feasible : bool or None
     With a truth: whether some positive multiple of the true map c ⊘ e lies in F3, decided
     exactly (feasible_ray_3d.h); None without a truth.
@@ -190,7 +198,14 @@ colours : int
     How many image colours went in (after the pixel rules).
 pixels : dict of str to int, or None
     For an image: what the pixel rules did (counts as ImageColours.counts); else None.
-)doc")
+)doc";
+  }();
+  return doc.c_str();
+}
+
+// 3-D gamut mapping on one image.
+void bind_estimate3(py::module_& m) {
+  auto estimate3 = py::class_<PyEstimate3>(m, "Estimate3", estimate3_doc())
       .def_property_readonly("feasible_set", &PyEstimate3::feasible_set, py::return_value_policy::reference_internal)
       .def_property_readonly("kind", [](const PyEstimate3& e) { return to_string(e.feasible.kind()); })
       .def_property_readonly("selections", [](const PyEstimate3& e) {
