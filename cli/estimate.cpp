@@ -62,12 +62,20 @@ std::string fixed(double x, int digits) {
   return buf;
 }
 
-// An image read and made colours by the run's pixel rules and its own (its truth-table row).
-// A raw file's reading is kept in `raw` (its pattern empty for any other image).
-ImageColours colours_of(const std::string& path, const Settings& s, const EstimateOptions& o, RgbImage& image,
-                        PixelRules& rules, RawImage& raw) {
+// An image read and made colours by the run's pixel rules and its own (its truth-table row): the
+// image, the rules that held for it, a raw file's reading (its pattern empty for any other
+// image) and the colours.
+struct ReadImage {
+  RgbImage image;
+  PixelRules rules;
+  RawImage raw;
+  ImageColours colours;
+};
+ReadImage read_image_for(const std::string& path, const Settings& s, const EstimateOptions& o) {
   const TruthRow* row = s.truths.empty() ? nullptr : &truth_of_image(s.truths, path, o.truths_path);
-  return image_colours_of(path, s.pixels, &image, &rules, row, o.truths_path, &raw);
+  ReadImage r;
+  r.colours = image_colours_of(path, s.pixels, &r.image, &r.rules, row, o.truths_path, &r.raw);
+  return r;
 }
 
 // The run's output on stdout: the JSON document (its images last) or the summary.
@@ -325,10 +333,7 @@ int run_estimate_3d(const EstimateOptions& o) {
   Json images = Json::array();
   std::ostringstream text;
   for (const std::string& path : o.images) {
-    RgbImage image;
-    PixelRules rules;
-    RawImage raw;
-    const ImageColours colours = colours_of(path, s, o, image, rules, raw);
+    const auto [image, rules, raw, colours] = read_image_for(path, s, o);
     const std::optional<Colour> truth =
         s.truths.empty() ? s.truth : std::optional<Colour>(truth_of_image(s.truths, path, o.truths_path).light);
     ImageEstimate3 r;
@@ -412,10 +417,7 @@ int run_estimate(const EstimateOptions& o) {
   Json images = Json::array();
   std::ostringstream text;
   for (const std::string& path : o.images) {
-    RgbImage image;
-    PixelRules rules;
-    RawImage raw;
-    const ImageColours colours = colours_of(path, s, o, image, rules, raw);
+    const auto [image, rules, raw, colours] = read_image_for(path, s, o);
     const SceneResult result = select_image(prepared, canonical, s, o.truths_path, path, colours);
     Json record = image_record(path, image, colours);
     Json estimates = Json::object();
