@@ -169,7 +169,7 @@ ImageColours image_colours_of(const std::string& path, const PixelSettings& s, R
     colours = image_colours(image, rules);
   } catch (const std::length_error& e) {
     throw InputError(path, 0, std::string(e.what()) + " (--colour-set hull, --bin)");
-  } catch (const std::invalid_argument& e) {  // the rules against this image (polygon work, mask size)
+  } catch (const std::invalid_argument& e) {  // the rules against this image (polygon work)
     throw InputError(path, 0, e.what());
   }
   if (colours.colours.empty())

@@ -18,17 +18,22 @@ std::string to_string(ExpansionPolicy policy) {
   return "none";
 }
 
+namespace {
+constexpr ExpansionPolicy all_expansion_policies[] = {ExpansionPolicy::none, ExpansionPolicy::centroid_clip,
+                                                      ExpansionPolicy::multiplicative};
+}  // namespace
+
 ExpansionPolicy expansion_policy_from_string(const std::string& name) {
-  for (ExpansionPolicy p :
-       {ExpansionPolicy::none, ExpansionPolicy::centroid_clip, ExpansionPolicy::multiplicative})
+  for (ExpansionPolicy p : all_expansion_policies)
     if (to_string(p) == name) return p;
   throw std::invalid_argument("unknown expansion policy '" + name +
                               "' (expected none, centroid-clip or multiplicative)");
 }
 
 std::vector<std::string> expansion_policy_names() {
-  return {to_string(ExpansionPolicy::none), to_string(ExpansionPolicy::centroid_clip),
-          to_string(ExpansionPolicy::multiplicative)};
+  std::vector<std::string> names;
+  for (ExpansionPolicy p : all_expansion_policies) names.push_back(to_string(p));
+  return names;
 }
 
 void check_options(const Expansion& expansion) {

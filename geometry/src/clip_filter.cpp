@@ -10,10 +10,6 @@ namespace gmcc::internal {
 namespace {
 
 constexpr double u = numerics::unit_roundoff;
-// Group boxes are used only with non-zero bounds in [2^-400, 2^400]: their products with filter
-// coefficients (0 or in [2^-200, 2^200]) are then normal, so each rounding is within u relative.
-constexpr double box_min = 0x1p-400, box_max = 0x1p400;
-bool box_range(double x) { return x == 0 || (x >= box_min && x <= box_max); }
 
 }  // namespace
 

@@ -1,11 +1,10 @@
 // F3's clip with its rows generated lazily (internal/lazy_rows.h, docs/derivations.md §4.6).
 #include "internal/lazy_rows.h"
+#include "internal/clip_filter.h"
 #include "internal/scaled_point.h"
 
 #include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/geometry/rational_enclosure.h>
-#include <gmcc/numerics/filtered_sign.h>
-#include <gmcc/numerics/rational_to_float.h>
 
 #include <algorithm>
 #include <array>
@@ -17,22 +16,13 @@
 namespace gmcc::internal {
 namespace {
 
-constexpr double u = numerics::unit_roundoff;
-
-// A row's filter copy is used only when every non-zero coefficient is in [2^-200, 2^200], a
-// vertex's bounds only when every non-zero one is in [2^-400, 2^400]: their products are then
-// normal, so each rounding is within u relative (as the clip's own filters, clip_filter.cpp).
-bool coefficient_range(double x) { return x == 0 || (std::fabs(x) >= 0x1p-200 && std::fabs(x) <= 0x1p200); }
-bool bound_range(double x) { return x == 0 || (x >= 0x1p-400 && x <= 0x1p400); }
-
-
 // Row (a ⊙ p)·x <= b's filter copy into r (a~ ⊙ p~, b~·2^-e: each coefficient within 6u relative
 // of the exact row's times a power of 2, its signs the exact ones); false when not usable.
 bool row_filter(const ClipFacets& facets, std::size_t f, const ScaledPoint& q, double* r) {
   if (!q.usable || !facets.usable[f]) return false;
   const std::array<double, 4>& a = facets.filters[f];
   r[0] = a[0] * q.c[0], r[1] = a[1] * q.c[1], r[2] = a[2] * q.c[2], r[3] = a[3] * q.scale;
-  return coefficient_range(r[0]) && coefficient_range(r[1]) && coefficient_range(r[2]) && coefficient_range(r[3]);
+  return filter_range(r[0]) && filter_range(r[1]) && filter_range(r[2]) && filter_range(r[3]);
 }
 
 // The half-space a·x <= b (a filter copy as row_filter's) holds on the box lo <= x <= hi
@@ -40,18 +30,12 @@ bool row_filter(const ClipFacets& facets, std::size_t f, const ScaledPoint& q, d
 // with P = Σ_{a_k > 0} a_k hi_k and N = Σ_{a_k < 0} |a_k| lo_k computed, max over the box of the
 // exact a·x − b is at most P~ − (N~ + b~) + 11.5u·T~, T~ = P~ + N~ + |b~|, so the test
 // P~ − (N~ + b~) <= −16u·T~ shows it below 0 when T~ > 0 and equal to 0 when T~ = 0; the same
-// test as LiveVertexFilter::group_inside, clip_filter.cpp). With `strict`, a box where T~ = 0
-// (the half-space's plane through it, a point of it) does not pass. `excess` is P~ − (N~ + b~),
-// about the largest a·x − b over the box (a heuristic's guide only).
+// test as the clip's group boxes: box_below_plane, clip_filter.h). With `strict`, a box where
+// T~ = 0 (the half-space's plane through it, a point of it) does not pass. `excess` is
+// P~ − (N~ + b~), about the largest a·x − b over the box (a heuristic's guide only).
 bool box_holds(const double* a, const double* lo, const double* hi, double& excess, bool strict) {
-  double p = 0, n = 0;
-  for (int k = 0; k < 3; ++k) {
-    if (a[k] > 0) p += a[k] * hi[k];
-    else n -= a[k] * lo[k];
-  }
-  const double t = p + n + std::fabs(a[3]);
-  excess = p - (n + a[3]);
-  return excess <= -16 * u * t && (!strict || t > 0);
+  double total;
+  return box_below_plane(a, lo, hi, excess, total) && (!strict || total > 0);
 }
 
 // The vertices of a polytope as certified boxes (their enclosures; 0 <= lo, as every vertex of
@@ -59,7 +43,7 @@ bool box_holds(const double* a, const double* lo, const double* hi, double& exce
 // its vertices.
 class VertexTree {
  public:
-  // False when a vertex's bound is not finite or out of bound_range (nothing is then certified).
+  // False when a vertex's bound is not finite or out of box_range (nothing is then certified).
   bool build(const std::vector<Enclosure3>& enclosures) {
     const std::size_t n = enclosures.size();
     boxes_.resize(n);
@@ -68,7 +52,7 @@ class VertexTree {
         const Enclosure& x = enclosures[i][k];
         const bool zero = x.mid == 0 && x.rad == 0;  // exactly 0 (lo() and hi() would pad it)
         const double lo = zero ? 0 : std::max(0.0, x.lo()), hi = zero ? 0 : x.hi();
-        if (!(lo <= hi) || !bound_range(lo) || !bound_range(hi)) return false;
+        if (!(lo <= hi) || !box_range(lo) || !box_range(hi)) return false;
         boxes_[i][k] = lo, boxes_[i][k + 3] = hi, boxes_[i][k + 6] = x.mid;
       }
     order_.resize(n);

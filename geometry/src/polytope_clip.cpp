@@ -39,8 +39,6 @@ struct Filter {
   double c[4];  // a0, a1, a2, b
   bool usable = false;
 };
-constexpr double filter_min = 0x1p-200, filter_max = 0x1p200;
-bool in_range(double x) { return x == 0 || (std::fabs(x) >= filter_min && std::fabs(x) <= filter_max); }
 
 Filter filter_of(const IntegerPlane3& p) {
   Filter f;
@@ -257,7 +255,7 @@ class Clipper {
       const std::array<double, 4>& a = facets.filters[f];
       if (q.usable && facets.usable[f]) {
         r.c[0] = a[0] * q.c[0], r.c[1] = a[1] * q.c[1], r.c[2] = a[2] * q.c[2], r.c[3] = a[3] * q.scale;
-        r.usable = in_range_always || (in_range(r.c[0]) && in_range(r.c[1]) && in_range(r.c[2]) && in_range(r.c[3]));
+        r.usable = in_range_always || (filter_range(r.c[0]) && filter_range(r.c[1]) && filter_range(r.c[2]) && filter_range(r.c[3]));
       }
       filters_.push_back(r);
     }

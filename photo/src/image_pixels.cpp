@@ -319,15 +319,21 @@ std::string to_string(ColourSet set) {
   return "?";
 }
 
+namespace {
+constexpr ColourSet all_colour_sets[] = {ColourSet::hull, ColourSet::distinct, ColourSet::hull_3d};
+}  // namespace
+
 ColourSet colour_set_from_string(const std::string& text) {
-  for (ColourSet set : {ColourSet::hull, ColourSet::distinct, ColourSet::hull_3d})
+  for (ColourSet set : all_colour_sets)
     if (text == to_string(set)) return set;
   if (text == "hull_3d") return ColourSet::hull_3d;
   throw std::invalid_argument(quoted_text(text) + " is not one of hull, distinct, hull-3d");
 }
 
 std::vector<std::string> colour_set_names() {
-  return {to_string(ColourSet::hull), to_string(ColourSet::distinct), to_string(ColourSet::hull_3d)};
+  std::vector<std::string> names;
+  for (ColourSet set : all_colour_sets) names.push_back(to_string(set));
+  return names;
 }
 
 PixelRules gijsenij_pixel_rules(PixelRules base) {

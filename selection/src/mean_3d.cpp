@@ -13,15 +13,22 @@ std::string to_string(Mean3dMethod method) {
   return "analytic";
 }
 
+namespace {
+constexpr Mean3dMethod all_mean3d_methods[] = {Mean3dMethod::analytic, Mean3dMethod::quadrature,
+                                               Mean3dMethod::monte_carlo};
+}  // namespace
+
 Mean3dMethod mean3d_method_from_string(const std::string& name) {
-  for (Mean3dMethod m : {Mean3dMethod::analytic, Mean3dMethod::quadrature, Mean3dMethod::monte_carlo})
+  for (Mean3dMethod m : all_mean3d_methods)
     if (to_string(m) == name) return m;
   throw std::invalid_argument("unknown 3-D mean method '" + name +
                               "' (expected analytic, quadrature or monte-carlo)");
 }
 
 std::vector<std::string> mean3d_method_names() {
-  return {to_string(Mean3dMethod::analytic), to_string(Mean3dMethod::quadrature), to_string(Mean3dMethod::monte_carlo)};
+  std::vector<std::string> names;
+  for (Mean3dMethod m : all_mean3d_methods) names.push_back(to_string(m));
+  return names;
 }
 
 namespace {

@@ -11,16 +11,22 @@ std::string to_string(RecoveryPolicy policy) {
   return "none";
 }
 
+namespace {
+constexpr RecoveryPolicy all_recovery_policies[] = {RecoveryPolicy::none, RecoveryPolicy::grow_canonical,
+                                                    RecoveryPolicy::min_violation};
+}  // namespace
+
 RecoveryPolicy recovery_policy_from_string(const std::string& name) {
-  for (RecoveryPolicy p : {RecoveryPolicy::none, RecoveryPolicy::grow_canonical, RecoveryPolicy::min_violation})
+  for (RecoveryPolicy p : all_recovery_policies)
     if (to_string(p) == name) return p;
   throw std::invalid_argument("unknown recovery policy '" + name +
                               "' (expected none, grow-canonical or min-violation)");
 }
 
 std::vector<std::string> recovery_policy_names() {
-  return {to_string(RecoveryPolicy::none), to_string(RecoveryPolicy::grow_canonical),
-          to_string(RecoveryPolicy::min_violation)};
+  std::vector<std::string> names;
+  for (RecoveryPolicy p : all_recovery_policies) names.push_back(to_string(p));
+  return names;
 }
 
 const Rational& max_scene_coordinate() {

@@ -81,22 +81,36 @@ inline bool LiveVertexFilter::box_inside(const double* a) const {
   return lhs <= a[3] * (1 - 16 * u);
 }
 
-// max over a group's box of a·x is P − N, P = Σ_{a_k > 0} a_k hi_k and N = Σ_{a_k < 0} |a_k| lo_k
+// Vertex boxes are used only with non-zero bounds in [2^-400, 2^400]: their products with filter
+// coefficients (0 or in [2^-200, 2^200], filter_range in scaled_point.h) are then normal, so each
+// rounding is within u relative.
+inline bool box_range(double x) { return x == 0 || (x >= 0x1p-400 && x <= 0x1p400); }
+
+// Whether the half-space a·x <= b (a filter copy: each coefficient within 6u of the exact row's,
+// scaled) certainly holds on the box lo <= x <= hi (0 <= lo, bounds in box_range): the group
+// boxes' test here and the vertex boxes' of the lazy rows (lazy_rows.cpp).
+// max over the box of a·x is P − N, P = Σ_{a_k > 0} a_k hi_k and N = Σ_{a_k < 0} |a_k| lo_k
 // (both >= 0; summed without branches, max(±a_k, 0) adding exact zeros, the same sums). With each
 // coefficient within 6u of the exact one and the sums' roundings, the exact maximum is at most
 // P~(1 + 11u) − N~(1 − 11u) and the exact b at least b~ − 6u|b~|; so
 // P~ − (N~ + b~) <= −16u(P~ + N~ + |b~|), evaluated with two roundings of at most u·T each
-// (T = P~ + N~ + |b~|) and an exact product by 16u, shows the maximum <= b.
-inline bool LiveVertexFilter::group_inside(const Group& g, const double* a) const {
+// (T = P~ + N~ + |b~|) and an exact product by 16u, shows the maximum <= b. `excess` is
+// P~ − (N~ + b~) and `total` T~ (T~ = 0: every term is 0, and the test shows only a·x − b = 0).
+inline bool box_below_plane(const double* a, const double* lo, const double* hi, double& excess, double& total) {
   constexpr double u = numerics::unit_roundoff;
-  if (!g.boxed) return false;
   double p = 0, n = 0;
   for (int k = 0; k < 3; ++k) {
-    p += std::max(a[k], 0.0) * g.hi[k];
-    n += std::max(-a[k], 0.0) * g.lo[k];
+    p += std::max(a[k], 0.0) * hi[k];
+    n += std::max(-a[k], 0.0) * lo[k];
   }
-  const double t = p + n + std::fabs(a[3]);
-  return p - (n + a[3]) <= -16 * u * t;
+  total = p + n + std::fabs(a[3]);
+  excess = p - (n + a[3]);
+  return excess <= -16 * u * total;
+}
+
+inline bool LiveVertexFilter::group_inside(const Group& g, const double* a) const {
+  double excess, total;
+  return g.boxed && box_below_plane(a, g.lo, g.hi, excess, total);
 }
 
 }  // namespace gmcc::internal

@@ -37,4 +37,9 @@ inline ScaledPoint scaled_point(const Point3& p) {
   return s;
 }
 
+// A row's filter copy (a facet's copy times a ScaledPoint) is used only when every non-zero
+// coefficient is in [2^-200, 2^200]: its products with vertex bounds (box_range, clip_filter.h)
+// are then normal, so each rounding is within u relative.
+inline bool filter_range(double x) { return x == 0 || (std::fabs(x) >= 0x1p-200 && std::fabs(x) <= 0x1p200); }
+
 }  // namespace gmcc::internal
