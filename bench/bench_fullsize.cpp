@@ -74,8 +74,10 @@ gmcc::Estimate3Options estimate_options() {
 }
 
 void baselines(const gmcc::RgbImage& image, const std::vector<bool>& kept) {
+  std::vector<gmcc::GreyEdgeParameters> parameters;
   for (gmcc::Baseline b : gmcc::all_baselines)
-    benchmark::DoNotOptimize(gmcc::grey_edge_estimate(image, 0, kept, gmcc::baseline_parameters(b)));
+    parameters.push_back(gmcc::baseline_parameters(b));
+  benchmark::DoNotOptimize(gmcc::grey_edge_estimates(image, 0, kept, parameters));
 }
 
 void decode(benchmark::State& state) {

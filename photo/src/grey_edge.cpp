@@ -37,41 +37,91 @@ GreyEdgeParameters baseline_parameters(Baseline b) {
   return {};
 }
 
-std::optional<std::array<double, 3>> grey_edge_estimate(const RgbImage& image, std::uint32_t black_level,
-                                                        const std::vector<bool>& kept, const GreyEdgeParameters& o) {
-  if (kept.size() != image.width * image.height)
-    throw std::invalid_argument("the kept-pixel mask does not match the image");
-  if (!(o.p >= 1)) throw std::invalid_argument("the Minkowski norm p must be >= 1");
+namespace {
+
+// One baseline's sums over the kept pixels: its largest structure value per channel, then Σ v^p
+// with each channel scaled by that value first (no overflow for large p), in pixel order.
+struct Norm {
+  GreyEdgeParameters parameters;
+  std::array<double, 3> top{0, 0, 0}, sum{0, 0, 0};
+  bool zero() const { return top[0] == 0 || top[1] == 0 || top[2] == 0; }
+  bool sums() const { return std::isfinite(parameters.p) && !zero(); }  // a second sweep
+};
+
+// One sweep of the structure at one σ for the baselines `norms` names (indices into all): each
+// gets f(norm, channel, |value|) at every kept pixel, row by row in pixel order.
+template <class F>
+void sweep(const RgbImage& image, std::uint32_t black_level, const std::vector<bool>& kept, std::vector<Norm>& all,
+           const std::vector<std::size_t>& norms, const F& f) {
+  if (norms.empty()) return;
+  std::array<bool, 3> orders{};
+  for (std::size_t k : norms) orders[static_cast<std::size_t>(all[k].parameters.order)] = true;
   const std::size_t w = image.width;
-  // The derivative structure row by row, twice (no image of doubles: docs/cli.md "Resource
-  // limits"): its largest kept value per channel, then Σ v^p with each channel scaled by that
-  // value first (no overflow for large p), each channel's sum in pixel order.
-  const auto each_kept = [&](const auto& f) {
-    gaussian_derivative_rows(image, black_level, o.sigma, o.order, [&](std::size_t y, const double* s) {
-      for (std::size_t x = 0; x < w; ++x)
-        if (kept[y * w + x])
-          for (int c = 0; c < 3; ++c) f(c, std::fabs(s[3 * x + static_cast<std::size_t>(c)]));
-    });
-  };
-  std::array<double, 3> top{0, 0, 0};
-  each_kept([&](int c, double v) { top[c] = std::max(top[c], v); });
-  if (top[0] == 0 || top[1] == 0 || top[2] == 0) return std::nullopt;
+  gaussian_derivative_rows(image, black_level, all[norms.front()].parameters.sigma, orders,
+                           [&](std::size_t y, const std::array<const double*, 3>& rows) {
+                             for (std::size_t k : norms) {
+                               const double* s = rows[static_cast<std::size_t>(all[k].parameters.order)];
+                               for (std::size_t x = 0; x < w; ++x)
+                                 if (kept[y * w + x])
+                                   for (int c = 0; c < 3; ++c)
+                                     f(all[k], c, std::fabs(s[3 * x + static_cast<std::size_t>(c)]));
+                             }
+                           });
+}
+
+// The light from a baseline's sums: unit length, absent when some channel's structure is 0.
+std::optional<std::array<double, 3>> light_of(const Norm& n) {
+  if (n.zero()) return std::nullopt;
   // Structure reached only through the Gaussian's tails (σ below about 0.1: weights near 1e-240,
   // or subnormal) can be so small that the light top·‖v/top‖ and the squares of its length
   // underflow, to an imprecise direction or a length of 0 (fuzz_edge_colours' findings): the light
   // is a direction, so the largest values are then brought near 1 by a power of 2 (exactly) first.
-  std::array<double, 3> scaled = top;
-  const double largest = std::max({top[0], top[1], top[2]});
+  std::array<double, 3> scaled = n.top;
+  const double largest = std::max({n.top[0], n.top[1], n.top[2]});
   if (largest < 0x1p-500)
     for (double& t : scaled) t = std::ldexp(t, -std::ilogb(largest));
   std::array<double, 3> e = scaled;
-  if (std::isfinite(o.p)) {
-    std::array<double, 3> sum{0, 0, 0};
-    each_kept([&](int c, double v) { sum[c] += o.p == 1 ? v / top[c] : std::pow(v / top[c], o.p); });
-    for (int c = 0; c < 3; ++c) e[c] = scaled[c] * std::pow(sum[c], 1 / o.p);
+  if (std::isfinite(n.parameters.p))
+    for (int c = 0; c < 3; ++c) e[c] = scaled[c] * std::pow(n.sum[c], 1 / n.parameters.p);
+  const double length = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+  return std::array<double, 3>{e[0] / length, e[1] / length, e[2] / length};
+}
+
+}  // namespace
+
+std::vector<std::optional<std::array<double, 3>>> grey_edge_estimates(const RgbImage& image, std::uint32_t black_level,
+                                                                     const std::vector<bool>& kept,
+                                                                     const std::vector<GreyEdgeParameters>& parameters) {
+  if (kept.size() != image.width * image.height)
+    throw std::invalid_argument("the kept-pixel mask does not match the image");
+  std::vector<Norm> all;
+  for (const GreyEdgeParameters& p : parameters) {
+    if (!(p.p >= 1)) throw std::invalid_argument("the Minkowski norm p must be >= 1");
+    all.push_back({p});
   }
-  const double n = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-  return std::array<double, 3>{e[0] / n, e[1] / n, e[2] / n};
+  // The baselines of one σ share their sweeps (no image of doubles: docs/cli.md "Resource
+  // limits"): the largest values, then the sums of those with a finite p.
+  std::vector<bool> done(all.size());
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (done[i]) continue;
+    std::vector<std::size_t> group = {i}, summed;  // a NaN σ alone: the sweep refuses it
+    for (std::size_t j = i + 1; j < all.size(); ++j)
+      if (!done[j] && all[j].parameters.sigma == all[i].parameters.sigma) group.push_back(j), done[j] = true;
+    sweep(image, black_level, kept, all, group, [](Norm& n, int c, double v) { n.top[c] = std::max(n.top[c], v); });
+    for (std::size_t k : group)
+      if (all[k].sums()) summed.push_back(k);
+    sweep(image, black_level, kept, all, summed, [](Norm& n, int c, double v) {
+      n.sum[c] += n.parameters.p == 1 ? v / n.top[c] : std::pow(v / n.top[c], n.parameters.p);
+    });
+  }
+  std::vector<std::optional<std::array<double, 3>>> out;
+  for (const Norm& n : all) out.push_back(light_of(n));
+  return out;
+}
+
+std::optional<std::array<double, 3>> grey_edge_estimate(const RgbImage& image, std::uint32_t black_level,
+                                                        const std::vector<bool>& kept, const GreyEdgeParameters& o) {
+  return grey_edge_estimates(image, black_level, kept, {o}).front();
 }
 
 }  // namespace gmcc

@@ -193,11 +193,21 @@ double magnitude(double a, double b, double c, double squares) {
   return m * std::sqrt(a * a + 4 * c * c + b * b);
 }
 
-// The passes along y of one order: per result, the pass along x it reads and its kernel.
+// The passes along y: per result, the pass along x it reads and its kernel.
 struct YPass {
   std::size_t along_x;
   const std::vector<double>* kernel;
 };
+
+// The orders a sweep makes, each from the passes along y it combines (indices into the sweep's
+// YPass list: f_σ; f_x, f_y; or f_xx, f_yy, f_xy).
+struct OrderPasses {
+  DerivativeOrder order;
+  std::vector<std::size_t> passes;
+};
+
+// What one sweep hands on per row: each order's values (3·w), null for an order not asked.
+using OrderRows = std::array<const double*, 3>;
 
 // One row of results (each 3·w values: f_σ; f_x, f_y; or f_xx, f_yy, f_xy) into out: f_σ, or the
 // magnitudes, 0 in the flat channels.
@@ -210,24 +220,41 @@ void combine(DerivativeOrder order, const double* const* v, const std::array<boo
                                                : magnitude(a[i], b[i], c[i], a[i] * a[i] + 4 * c[i] * c[i] + b[i] * b[i]);
 }
 
+// Each order's row from the passes' rows `results` (each 3·w values at `offset`), handed to `row`.
+struct Combiner {
+  const std::vector<OrderPasses>& orders;
+  const std::array<bool, 3>& flat;
+  std::vector<std::vector<double>> out;  // per order, 3·w
+  Combiner(const std::vector<OrderPasses>& o, const std::array<bool, 3>& f, long w)
+      : orders(o), flat(f), out(o.size(), std::vector<double>(static_cast<std::size_t>(3 * w))) {}
+  void operator()(const std::vector<std::vector<double>>& results, long offset, std::size_t y,
+                  const std::function<void(std::size_t, const OrderRows&)>& row) {
+    OrderRows rows{nullptr, nullptr, nullptr};
+    for (std::size_t k = 0; k < orders.size(); ++k) {
+      const double* v[3] = {nullptr, nullptr, nullptr};
+      for (std::size_t p = 0; p < orders[k].passes.size(); ++p) v[p] = results[orders[k].passes[p]].data() + offset;
+      for (std::size_t p = orders[k].passes.size(); p < 3; ++p) v[p] = v[0];
+      combine(orders[k].order, v, flat, out[k]);
+      rows[static_cast<std::size_t>(orders[k].order)] = out[k].data();
+    }
+    row(y, rows);
+  }
+};
+
 // The direct route: each row's passes along y as sums over the ring of 2r + 1 rows along x.
 template <class Source>
 void direct_rows(const Source& source, long w, long h, const std::vector<const std::vector<double>*>& along_x,
-                 const std::vector<YPass>& passes, DerivativeOrder order, const std::array<bool, 3>& flat,
-                 const std::function<void(std::size_t, const double*)>& row) {
+                 const std::vector<YPass>& passes, Combiner& combiner,
+                 const std::function<void(std::size_t, const OrderRows&)>& row) {
   XPasses<Source> x(source, static_cast<std::size_t>(w), along_x,
                     std::min<long>(h, 2 * static_cast<long>(along_x.front()->size() / 2) + 1));
   std::vector<std::vector<double>> results(passes.size(), std::vector<double>(static_cast<std::size_t>(3 * w)));
-  const double* v[3] = {results[0].data(), results[0].data(), results[0].data()};
-  for (std::size_t p = 0; p < passes.size(); ++p) v[p] = results[p].data();
-  std::vector<double> out(static_cast<std::size_t>(3 * w));
   for (long y = 0; y < h; ++y) {
     x.make_to(std::min(h - 1, y + x.radius()));
     check_interrupt();
     for (std::size_t p = 0; p < passes.size(); ++p)
       y_pass(x, passes[p].along_x, *passes[p].kernel, y, w, h, results[p].data());
-    combine(order, v, flat, out);
-    row(static_cast<std::size_t>(y), out.data());
+    combiner(results, 0, static_cast<std::size_t>(y), row);
   }
 }
 
@@ -236,8 +263,8 @@ void direct_rows(const Source& source, long w, long h, const std::vector<const s
 // made column pair by column pair from a ring of min(h, N) rows along x.
 template <class Source>
 void fft_rows(const Source& source, long w, long h, const std::vector<const std::vector<double>*>& along_x,
-              const std::vector<YPass>& passes, DerivativeOrder order, const std::array<bool, 3>& flat,
-              const std::function<void(std::size_t, const double*)>& row) {
+              const std::vector<YPass>& passes, Combiner& combiner,
+              const std::function<void(std::size_t, const OrderRows&)>& row) {
   const long r = static_cast<long>(along_x.front()->size() / 2);
   std::vector<const std::vector<double>*> kernels;
   for (const YPass& p : passes) kernels.push_back(p.kernel);
@@ -246,7 +273,6 @@ void fft_rows(const Source& source, long w, long h, const std::vector<const std:
   XPasses<Source> x(source, static_cast<std::size_t>(w), along_x, std::min(h, n));
   std::vector<std::vector<double>> results(passes.size(), std::vector<double>(static_cast<std::size_t>(block * width)));
   std::vector<std::complex<double>> z(static_cast<std::size_t>(n)), t(static_cast<std::size_t>(n));
-  std::vector<double> out(static_cast<std::size_t>(width));
   for (long y0 = 0; y0 < h; y0 += block) {
     const long rows = std::min(block, h - y0);
     x.make_to(std::min(h - 1, y0 + rows - 1 + r));
@@ -266,47 +292,78 @@ void fft_rows(const Source& source, long w, long h, const std::vector<const std:
           if (i + 1 < width) res[j * width + i + 1] = t[static_cast<std::size_t>(j + 2 * r)].imag();
         }
       }
-    for (long j = 0; j < rows; ++j) {
-      const double* v[3] = {results[0].data() + j * width, results[0].data() + j * width, results[0].data() + j * width};
-      for (std::size_t p = 0; p < passes.size(); ++p) v[p] = results[p].data() + j * width;
-      combine(order, v, flat, out);
-      row(static_cast<std::size_t>(y0 + j), out.data());
-    }
+    for (long j = 0; j < rows; ++j) combiner(results, j * width, static_cast<std::size_t>(y0 + j), row);
   }
 }
 
-// gaussian_derivative's values row by row, from `source` (a w × h image).
+// The passes of every order asked (each pass once), and each order's indices into them. Order 0:
+// g along x, then g along y. Order 1: f_x = d1 then g, f_y = g then d1. Order 2: f_xx = d2 then
+// g, f_yy = g then d2, f_xy = d1 then d1. Kernel 0 is g, 1 d1, 2 d2.
+struct SweepPlan {
+  std::vector<std::size_t> along_x;                    // kernels, each once
+  std::vector<std::pair<std::size_t, std::size_t>> y;  // (index into along_x, kernel)
+  std::vector<OrderPasses> orders;
+};
+SweepPlan sweep_plan(const std::array<bool, 3>& asked) {
+  static const std::vector<std::pair<std::size_t, std::size_t>> kernels_of[3] = {
+      {{0, 0}}, {{1, 0}, {0, 1}}, {{2, 0}, {0, 2}, {1, 1}}};
+  SweepPlan plan;
+  const auto index_of = [](auto& list, const auto& value) {
+    const auto at = std::find(list.begin(), list.end(), value);
+    if (at != list.end()) return static_cast<std::size_t>(at - list.begin());
+    list.push_back(value);
+    return list.size() - 1;
+  };
+  for (int o = 0; o < 3; ++o) {
+    if (!asked[static_cast<std::size_t>(o)]) continue;
+    OrderPasses op{static_cast<DerivativeOrder>(o), {}};
+    for (const auto& [xk, yk] : kernels_of[o]) op.passes.push_back(index_of(plan.y, std::make_pair(index_of(plan.along_x, xk), yk)));
+    plan.orders.push_back(op);
+  }
+  return plan;
+}
+
+// gaussian_derivative's values of every order asked, row by row, from `source` (a w × h image).
 template <class Source>
-void derivative_rows(const Source& source, std::size_t w, std::size_t h, double sigma, DerivativeOrder order,
-                     const std::function<void(std::size_t, const double*)>& row) {
+void derivative_rows(const Source& source, std::size_t w, std::size_t h, double sigma, const std::array<bool, 3>& asked,
+                     const std::function<void(std::size_t, const OrderRows&)>& row) {
   if (!std::isfinite(sigma) || sigma < 0 || sigma > 64) throw std::invalid_argument("sigma must be from 0 to 64");
-  if (sigma == 0 && order != DerivativeOrder::zero) throw std::invalid_argument("a derivative needs sigma > 0");
+  if (sigma == 0 && (asked[1] || asked[2])) throw std::invalid_argument("a derivative needs sigma > 0");
   if (sigma == 0) {
     std::vector<double> out(3 * w);
     for (std::size_t y = 0; y < h; ++y) {
       check_interrupt();
       source(y, out.data());
-      row(y, out.data());
+      row(y, OrderRows{out.data(), nullptr, nullptr});
     }
     return;
   }
-  const std::vector<double> g = kernel(sigma, 0);
-  const std::vector<double> d1 = order == DerivativeOrder::zero ? std::vector<double>{} : kernel(sigma, 1);
-  const std::vector<double> d2 = order == DerivativeOrder::second ? kernel(sigma, 2) : std::vector<double>{};
-  // Order 0: g along x, then g along y. Order 1: f_x = d1 then g, f_y = g then d1. Order 2:
-  // f_xx = d2 then g, f_yy = g then d2, f_xy = d1 then d1.
-  std::vector<const std::vector<double>*> along_x = {&g};
-  std::vector<YPass> passes = {{0, &g}};
-  if (order == DerivativeOrder::first) along_x = {&d1, &g}, passes = {{0, &g}, {1, &d1}};
-  if (order == DerivativeOrder::second) along_x = {&d2, &g, &d1}, passes = {{0, &g}, {1, &d2}, {2, &d1}};
+  const std::vector<double> kernels[3] = {kernel(sigma, 0), asked[1] || asked[2] ? kernel(sigma, 1) : std::vector<double>{},
+                                          asked[2] ? kernel(sigma, 2) : std::vector<double>{}};
+  const SweepPlan plan = sweep_plan(asked);
+  std::vector<const std::vector<double>*> along_x;
+  for (std::size_t k : plan.along_x) along_x.push_back(&kernels[k]);
+  std::vector<YPass> passes;
+  for (const auto& [xi, yk] : plan.y) passes.push_back({xi, &kernels[yk]});
   // A channel constant over the image has derivatives exactly 0 (the edge is replicated): they
   // are set so, where the convolutions would leave round-off that reads as a direction.
-  const std::array<bool, 3> flat = order == DerivativeOrder::zero ? std::array<bool, 3>{} : flat_channels(source, 3 * w * h);
+  const std::array<bool, 3> flat = asked[1] || asked[2] ? flat_channels(source, 3 * w * h) : std::array<bool, 3>{};
+  Combiner combiner(plan.orders, flat, static_cast<long>(w));
   const long W = static_cast<long>(w), H = static_cast<long>(h);
-  if (static_cast<long>(g.size() / 2) >= internal::kFftMinRadius)
-    fft_rows(source, W, H, along_x, passes, order, flat, row);
+  if (static_cast<long>(kernels[0].size() / 2) >= internal::kFftMinRadius)
+    fft_rows(source, W, H, along_x, passes, combiner, row);
   else
-    direct_rows(source, W, H, along_x, passes, order, flat, row);
+    direct_rows(source, W, H, along_x, passes, combiner, row);
+}
+
+// One order's rows, through derivative_rows.
+template <class Source>
+void one_order_rows(const Source& source, std::size_t w, std::size_t h, double sigma, DerivativeOrder order,
+                    const std::function<void(std::size_t, const double*)>& row) {
+  std::array<bool, 3> asked{};
+  asked[static_cast<std::size_t>(order)] = true;
+  derivative_rows(source, w, h, sigma, asked,
+                  [&](std::size_t y, const OrderRows& rows) { row(y, rows[static_cast<std::size_t>(order)]); });
 }
 
 }  // namespace
@@ -322,7 +379,7 @@ DoubleImage linear_image(const RgbImage& image, std::uint32_t black_level) {
 
 DoubleImage gaussian_derivative(const DoubleImage& image, double sigma, DerivativeOrder order) {
   DoubleImage out{image.width, image.height, std::vector<double>(image.samples.size())};
-  derivative_rows(DoubleRows{image}, image.width, image.height, sigma, order, [&](std::size_t y, const double* row) {
+  one_order_rows(DoubleRows{image}, image.width, image.height, sigma, order, [&](std::size_t y, const double* row) {
     std::copy(row, row + 3 * image.width, out.samples.begin() + static_cast<long>(3 * image.width * y));
   });
   return out;
@@ -330,7 +387,13 @@ DoubleImage gaussian_derivative(const DoubleImage& image, double sigma, Derivati
 
 void gaussian_derivative_rows(const RgbImage& image, std::uint32_t black_level, double sigma, DerivativeOrder order,
                               const std::function<void(std::size_t, const double*)>& row) {
-  derivative_rows(LinearRows{image, black_level}, image.width, image.height, sigma, order, row);
+  one_order_rows(LinearRows{image, black_level}, image.width, image.height, sigma, order, row);
+}
+
+void gaussian_derivative_rows(const RgbImage& image, std::uint32_t black_level, double sigma,
+                              const std::array<bool, 3>& orders,
+                              const std::function<void(std::size_t, const std::array<const double*, 3>&)>& row) {
+  derivative_rows(LinearRows{image, black_level}, image.width, image.height, sigma, orders, row);
 }
 
 }  // namespace gmcc

@@ -196,6 +196,38 @@ BOOST_AUTO_TEST_CASE(derivative_rows_are_the_whole_images_rows) {
                     std::invalid_argument);
 }
 
+BOOST_AUTO_TEST_CASE(one_sweep_of_several_orders_is_each_order_alone) {
+  // Issue 46 (the baselines at full size): the orders asked together share their passes; each
+  // order's rows are those of a sweep of that order alone, bit for bit, on the direct and the FFT
+  // routes, for every set of orders, and null for an order not asked.
+  std::mt19937 rng(46);
+  for (std::size_t h : {1u, 7u, 45u}) {
+    const RgbImage im = mondrian(rng, 19, h, 0, 60000);
+    for (double sigma : {0.02, 1.0, 4.0, 11.5})
+      for (int mask = 1; mask < 8; ++mask) {
+        const std::array<bool, 3> asked{(mask & 1) != 0, (mask & 2) != 0, (mask & 4) != 0};
+        std::vector<double> alone[3];
+        for (int o = 0; o < 3; ++o)
+          if (asked[static_cast<std::size_t>(o)])
+            gaussian_derivative_rows(im, 300, sigma, static_cast<DerivativeOrder>(o), [&](std::size_t, const double* row) {
+              alone[o].insert(alone[o].end(), row, row + 3 * 19);
+            });
+        bool same = true;
+        std::size_t rows = 0;
+        gaussian_derivative_rows(im, 300, sigma, asked, [&](std::size_t y, const std::array<const double*, 3>& v) {
+          ++rows;
+          for (std::size_t o = 0; o < 3; ++o)
+            same = same && (asked[o] ? v[o] && std::memcmp(v[o], &alone[o][3 * 19 * y], 3 * 19 * sizeof(double)) == 0
+                                     : v[o] == nullptr);
+        });
+        BOOST_TEST((same && rows == h), "sigma " << sigma << " orders " << mask << " height " << h);
+      }
+  }
+  BOOST_CHECK_THROW(gaussian_derivative_rows(mondrian(rng, 4, 4, 0, 9), 0, 0, std::array<bool, 3>{true, true, false},
+                                             [](std::size_t, const std::array<const double*, 3>&) {}),
+                    std::invalid_argument);
+}
+
 BOOST_AUTO_TEST_CASE(fft_convolution_within_its_stated_bound) {
   // Issue 46: above radius kFftMinRadius the derivatives' 1-D passes are FFT convolutions; each
   // is within 2^-40·Σ|k|·max|in| of the exact truncated, edge-replicated sum (clamped_convolution.h),
@@ -342,6 +374,39 @@ BOOST_AUTO_TEST_CASE(grey_edge_from_the_samples) {
     for (int c = 0; c < 3; ++c) BOOST_TEST(std::abs((*got)[c] - e[c] / n) < 1e-14);
   }
   BOOST_CHECK_THROW(grey_edge_estimate(im, 0, std::vector<bool>(3), GreyEdgeParameters{}), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(baselines_together_are_each_alone) {
+  // The benchmark asks for its baselines together (one sweep per σ for the largest values, one
+  // for the sums): each light is bit for bit the one asked alone, in the order asked, whatever
+  // the mix of σ, orders and norms, the tiny σ of the Gaussian's tails included.
+  std::mt19937 rng(12);
+  const RgbImage im = mondrian(rng, 33, 21, 50, 60000);
+  PixelRules rules;
+  rules.black_level = 40;
+  const KeptPixels kept = kept_pixels(im, rules);
+  std::vector<GreyEdgeParameters> all;
+  for (Baseline b : all_baselines) all.push_back(baseline_parameters(b));
+  all.push_back({DerivativeOrder::second, 6, 2});
+  all.push_back({DerivativeOrder::first, HUGE_VAL, 2});
+  all.push_back({DerivativeOrder::zero, 2, 2});
+  all.push_back({DerivativeOrder::first, 1, 0.03});
+  all.push_back({DerivativeOrder::second, 1, 12});
+  const auto together = grey_edge_estimates(im, 40, kept.kept, all);
+  BOOST_TEST_REQUIRE(together.size() == all.size());
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    const auto alone = grey_edge_estimate(im, 40, kept.kept, all[k]);
+    BOOST_TEST_REQUIRE(together[k].has_value() == alone.has_value());
+    if (alone) BOOST_TEST(std::memcmp(together[k]->data(), alone->data(), sizeof(*alone)) == 0, "baseline " << k);
+  }
+  // Refused as one at a time: p < 1 before any work, a NaN σ or a derivative at σ = 0.
+  BOOST_CHECK_THROW(grey_edge_estimates(im, 40, kept.kept, {all[0], {DerivativeOrder::zero, 0.5, 0}}),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(grey_edge_estimates(im, 40, kept.kept, {all[0], {DerivativeOrder::first, 1, std::nan("")}}),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(grey_edge_estimates(im, 40, kept.kept, {all[0], {DerivativeOrder::first, 1, 0}}),
+                    std::invalid_argument);
+  BOOST_TEST(grey_edge_estimates(im, 40, kept.kept, {}).empty());
 }
 
 BOOST_AUTO_TEST_CASE(grey_edge_of_structure_in_the_tails) {

@@ -92,13 +92,18 @@ Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs&
       edges.sigma = o.edge_sigma;
       r.edges[k] = edge_colours(image, rules, edges).colours;
     }
+  // The baselines together, sharing their sweeps of the pixels and of the derivatives; grey edge
+  // at the run's derivative scale (the edge-based methods' σ).
+  std::vector<std::size_t> asked;
+  std::vector<GreyEdgeParameters> parameters;
   for (std::size_t b = 0; b < all_baselines.size(); ++b)
     if (n.baseline[b]) {
-      // Grey edge at the run's derivative scale (the edge-based methods' σ).
       GreyEdgeParameters p = baseline_parameters(all_baselines[b]);
       if (p.order != DerivativeOrder::zero) p.sigma = o.edge_sigma;
-      r.baselines[b] = grey_edge_estimate(image, rules.black_level, kept.kept, p);
+      asked.push_back(b), parameters.push_back(p);
     }
+  const auto estimates = grey_edge_estimates(image, rules.black_level, kept.kept, parameters);
+  for (std::size_t k = 0; k < asked.size(); ++k) r.baselines[asked[k]] = estimates[k];
   return r;
 }
 

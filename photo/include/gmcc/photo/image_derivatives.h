@@ -67,4 +67,17 @@ DoubleImage gaussian_derivative(const DoubleImage& image, double sigma, Derivati
 void gaussian_derivative_rows(const RgbImage& image, std::uint32_t black_level, double sigma,
                               DerivativeOrder order, const std::function<void(std::size_t, const double*)>& row);
 
+/// Several orders at one σ from one sweep: `row(y, values)` gets, for each order o with
+/// `orders[o]` true, the row values[o] that gaussian_derivative_rows(image, black_level, σ, o, …)
+/// hands on, bit for bit (null for an order not asked). The passes along x and y the orders share
+/// are made once (orders 1 and 2 share the smoothing and 1st-order kernels along x: five passes
+/// along y and three along x for both, where one at a time makes ten and five), and the memory
+/// is that of the passes made: the rings of the kernels along x and one row (σ ≤ 11) or block
+/// (above) of each pass along y and each order.
+/// \throws std::invalid_argument as gaussian_derivative (σ = 0 with order 1 or 2 asked);
+/// Interrupted; whatever `row` throws.
+void gaussian_derivative_rows(const RgbImage& image, std::uint32_t black_level, double sigma,
+                              const std::array<bool, 3>& orders,
+                              const std::function<void(std::size_t, const std::array<const double*, 3>&)>& row);
+
 }  // namespace gmcc
