@@ -39,13 +39,17 @@ GreyEdgeParameters baseline_parameters(Baseline b) {
 
 namespace {
 
-// One baseline's sums over the kept pixels: its largest structure value per channel, then Σ v^p
-// with each channel scaled by that value first (no overflow for large p), in pixel order.
+// One baseline's sums over the kept pixels, in pixel order: its largest structure value per
+// channel and, for p = 1, Σ v as it goes; for another finite p, in a second sweep, Σ (v/largest)^p
+// (each channel scaled by its largest value first: no overflow for large p).
 struct Norm {
   GreyEdgeParameters parameters;
-  std::array<double, 3> top{0, 0, 0}, sum{0, 0, 0};
+  std::array<double, 3> top{0, 0, 0}, sum{0, 0, 0}, plain{0, 0, 0};  // plain: Σ v for p = 1
   bool zero() const { return top[0] == 0 || top[1] == 0 || top[2] == 0; }
-  bool sums() const { return std::isfinite(parameters.p) && !zero(); }  // a second sweep
+  // p = 1 summed as it goes, unscaled (no overflow: below 2^62 for any image within the limits)
+  // unless the values are so small that their sum could lose bits to the subnormals.
+  bool one_sweep() const { return parameters.p == 1 && std::max({top[0], top[1], top[2]}) >= 0x1p-500; }
+  bool sums() const { return std::isfinite(parameters.p) && !zero() && !one_sweep(); }  // a second sweep
 };
 
 // One sweep of the structure at one σ for the baselines `norms` names (indices into all): each
@@ -80,8 +84,8 @@ std::optional<std::array<double, 3>> light_of(const Norm& n) {
   const double largest = std::max({n.top[0], n.top[1], n.top[2]});
   if (largest < 0x1p-500)
     for (double& t : scaled) t = std::ldexp(t, -std::ilogb(largest));
-  std::array<double, 3> e = scaled;
-  if (std::isfinite(n.parameters.p))
+  std::array<double, 3> e = n.one_sweep() ? n.plain : scaled;
+  if (std::isfinite(n.parameters.p) && !n.one_sweep())
     for (int c = 0; c < 3; ++c) e[c] = scaled[c] * std::pow(n.sum[c], 1 / n.parameters.p);
   const double length = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
   return std::array<double, 3>{e[0] / length, e[1] / length, e[2] / length};
@@ -100,14 +104,17 @@ std::vector<std::optional<std::array<double, 3>>> grey_edge_estimates(const RgbI
     all.push_back({p});
   }
   // The baselines of one σ share their sweeps (no image of doubles: docs/cli.md "Resource
-  // limits"): the largest values, then the sums of those with a finite p.
+  // limits"): the largest values (and p = 1's sums), then the sums of another finite p.
   std::vector<bool> done(all.size());
   for (std::size_t i = 0; i < all.size(); ++i) {
     if (done[i]) continue;
     std::vector<std::size_t> group = {i}, summed;  // a NaN σ alone: the sweep refuses it
     for (std::size_t j = i + 1; j < all.size(); ++j)
       if (!done[j] && all[j].parameters.sigma == all[i].parameters.sigma) group.push_back(j), done[j] = true;
-    sweep(image, black_level, kept, all, group, [](Norm& n, int c, double v) { n.top[c] = std::max(n.top[c], v); });
+    sweep(image, black_level, kept, all, group, [](Norm& n, int c, double v) {
+      n.top[c] = std::max(n.top[c], v);
+      n.plain[c] += v;
+    });
     for (std::size_t k : group)
       if (all[k].sums()) summed.push_back(k);
     sweep(image, black_level, kept, all, summed, [](Norm& n, int c, double v) {

@@ -46,8 +46,10 @@ GreyEdgeParameters baseline_parameters(Baseline baseline);
 /// The framework's estimate: unit-length light (r, g, b) from the derivative structure of
 /// `image` minus `black_level` (clamped at 0: the linear image, image_derivatives.h) at the pixels
 /// `kept` marks; absent when every kept pixel's structure is 0 in some channel (no direction).
-/// The structure is taken row by row (gaussian_derivative_rows), twice for a finite p (its
-/// largest value per channel, then the sums), never as an image of doubles. Structure of any
+/// The structure is taken row by row (gaussian_derivative_rows), never as an image of doubles:
+/// once for p = 1 and p = ∞ (the largest value per channel, and for p = 1 the plain sum Σ v in
+/// pixel order), twice for another finite p (the largest values, then Σ (v/largest)^p, so that
+/// no power overflows). Structure of any
 /// size gives its direction: values below 2^-500 (reached through the Gaussian's tails at small
 /// σ) are scaled by a power of 2 before the light is formed.
 /// \throws std::invalid_argument for bad parameters or a `kept` of the wrong size.
