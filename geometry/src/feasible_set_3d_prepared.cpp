@@ -90,25 +90,28 @@ bool small_integers(const std::vector<std::array<double, 3>>& d) {
 }
 
 // An index of a largest v·d[i] for each of the 26 directions v in {-1, 0, 1}^3 \ {0}, without
-// repeats: one pass per pair ±v. The products may round: any point chosen is a point of the set,
-// which is all Q needs.
+// repeats: the first index of the largest and of the smallest v·d[i] for one of each pair ±v, all
+// 13 in one pass over the colours. The products may round: any point chosen is a point of the
+// set, which is all Q needs.
 std::vector<std::size_t> extreme_indices(const std::vector<std::array<double, 3>>& d) {
-  std::vector<std::size_t> out;
+  constexpr int pairs = 13;
+  std::array<std::array<double, 3>, pairs> v{};
+  int k = 0;
   for (int x = 0; x <= 1; ++x)
     for (int y = -1; y <= 1; ++y)
-      for (int z = -1; z <= 1; ++z) {
-        // One of each pair ±v: the first non-zero component positive.
-        if (x == 0 && (y < 0 || (y == 0 && z <= 0))) continue;
-        const double vx = x, vy = y, vz = z;
-        std::size_t hi = 0, lo = 0;
-        double top = -HUGE_VAL, bottom = HUGE_VAL;
-        for (std::size_t i = 0; i < d.size(); ++i) {
-          const double v = vx * d[i][0] + vy * d[i][1] + vz * d[i][2];
-          if (v > top) top = v, hi = i;
-          if (v < bottom) bottom = v, lo = i;
-        }
-        out.push_back(hi), out.push_back(lo);
-      }
+      for (int z = -1; z <= 1; ++z)
+        if (x != 0 || y > 0 || (y == 0 && z > 0)) v[static_cast<std::size_t>(k++)] = {double(x), double(y), double(z)};
+  std::array<std::size_t, pairs> hi{}, lo{};
+  std::array<double, pairs> top, bottom;
+  top.fill(-HUGE_VAL), bottom.fill(HUGE_VAL);
+  for (std::size_t i = 0; i < d.size(); ++i)
+    for (std::size_t j = 0; j < pairs; ++j) {
+      const double p = v[j][0] * d[i][0] + v[j][1] * d[i][1] + v[j][2] * d[i][2];
+      if (p > top[j]) top[j] = p, hi[j] = i;
+      if (p < bottom[j]) bottom[j] = p, lo[j] = i;
+    }
+  std::vector<std::size_t> out;
+  for (std::size_t j = 0; j < pairs; ++j) out.push_back(hi[j]), out.push_back(lo[j]);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
