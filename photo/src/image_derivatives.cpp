@@ -220,15 +220,37 @@ struct OrderPasses {
 // What one sweep hands on per row: each order's values (3·w), null for an order not asked.
 using OrderRows = std::array<const double*, 3>;
 
+// out[i] = sqrt(a[i]² + 4c[i]² + b[i]²) (c null: sqrt(a[i]² + b[i]²)), as magnitude() writes them,
+// for i < n: a correctly rounded square root, so the clones (add_scaled) give the same bytes; the
+// sums are non-negative, so no errno is ever due (this file is compiled without errno for the
+// math functions, photo/CMakeLists.txt: the roots are then vector instructions).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+void root_sum_squares(const double* a, const double* b, const double* c, double* out, std::size_t n) {
+  if (c)
+    for (std::size_t i = 0; i < n; ++i) out[i] = std::sqrt(a[i] * a[i] + 4 * c[i] * c[i] + b[i] * b[i]);
+  else
+    for (std::size_t i = 0; i < n; ++i) out[i] = std::sqrt(a[i] * a[i] + b[i] * b[i]);
+}
+
 // One row of results (each 3·w values: f_σ; f_x, f_y; or f_xx, f_yy, f_xy) into out: f_σ, or the
-// magnitudes, 0 in the flat channels.
+// magnitudes, 0 in the flat channels. The magnitudes are the square roots of the sums of squares
+// for all first, then magnitude() where a root is at most 2^-500 (a superset of the sums below
+// 2^-1000 it treats apart: the root is monotone and 2^-500 exact).
 void combine(DerivativeOrder order, const double* const* v, const std::array<bool, 3>& flat, std::vector<double>& out) {
-  const double *a = v[0], *b = v[1], *c = v[2];
+  const double *a = v[0], *b = v[1], *c = order == DerivativeOrder::second ? v[2] : nullptr;
+  if (order == DerivativeOrder::zero) {
+    std::copy(a, a + out.size(), out.begin());
+    return;
+  }
+  root_sum_squares(a, b, c, out.data(), out.size());
   for (std::size_t i = 0; i < out.size(); ++i)
-    out[i] = order == DerivativeOrder::zero ? a[i]
-             : flat[i % 3]                  ? 0.0
-             : order == DerivativeOrder::first ? magnitude(a[i], b[i], 0, a[i] * a[i] + b[i] * b[i])
-                                               : magnitude(a[i], b[i], c[i], a[i] * a[i] + 4 * c[i] * c[i] + b[i] * b[i]);
+    if (flat[i % 3])
+      out[i] = 0.0;
+    else if (out[i] <= 0x1p-500)
+      out[i] = c ? magnitude(a[i], b[i], c[i], a[i] * a[i] + 4 * c[i] * c[i] + b[i] * b[i])
+                 : magnitude(a[i], b[i], 0, a[i] * a[i] + b[i] * b[i]);
 }
 
 // Each order's row from the passes' rows `results` (each 3·w values at `offset`), handed to `row`.
