@@ -2,6 +2,7 @@
 // prepared route", docs/derivations.md §4.6): image hull first, then the filtered exact clip of
 // polytope_clip.cpp; the CGAL pieces and the LP route are behind internal/crule_exact.h.
 #include <gmcc/geometry/colour_hull_3.h>
+#include <gmcc/geometry/colour_hull_sieve.h>
 #include <gmcc/geometry/convex_hull.h>
 #include <gmcc/geometry/feasible_ray_3d.h>
 #include <gmcc/geometry/feasible_set.h>
@@ -89,59 +90,25 @@ bool small_integers(const std::vector<std::array<double, 3>>& d) {
   return true;
 }
 
-// An index of a largest v·d[i] for each of the 26 directions v in {-1, 0, 1}^3 \ {0}, without
-// repeats: the first index of the largest and of the smallest v·d[i] for one of each pair ±v, all
-// 13 in one pass over the colours. The products may round: any point chosen is a point of the
-// set, which is all Q needs.
+// The indices of the colours extreme along the 26 directions (colour_hull_sieve.h), increasing.
 std::vector<std::size_t> extreme_indices(const std::vector<std::array<double, 3>>& d) {
-  constexpr int pairs = 13;
-  std::array<std::array<double, 3>, pairs> v{};
-  int k = 0;
-  for (int x = 0; x <= 1; ++x)
-    for (int y = -1; y <= 1; ++y)
-      for (int z = -1; z <= 1; ++z)
-        if (x != 0 || y > 0 || (y == 0 && z > 0)) v[static_cast<std::size_t>(k++)] = {double(x), double(y), double(z)};
-  std::array<std::size_t, pairs> hi{}, lo{};
-  std::array<double, pairs> top, bottom;
-  top.fill(-HUGE_VAL), bottom.fill(HUGE_VAL);
-  for (std::size_t i = 0; i < d.size(); ++i)
-    for (std::size_t j = 0; j < pairs; ++j) {
-      const double p = v[j][0] * d[i][0] + v[j][1] * d[i][1] + v[j][2] * d[i][2];
-      if (p > top[j]) top[j] = p, hi[j] = i;
-      if (p < bottom[j]) bottom[j] = p, lo[j] = i;
-    }
-  std::vector<std::size_t> out;
-  for (std::size_t j = 0; j < pairs; ++j) out.push_back(hi[j]), out.push_back(lo[j]);
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
+  ExtremeColours extremes;
+  for (std::size_t i = 0; i < d.size(); ++i) extremes.add(i, d[i]);
+  return extremes.indices();
 }
 
 // The indices of colours not strictly inside Q = conv(d[i], i in `extreme`), exactly, for small
-// integer colours: Q's triangles (Epick's exact predicates) give planes n·x <= n·a computed
-// exactly in double (small_integers), and a colour strictly inside all of them is no vertex of
-// the colours' hull. When Q is flat every index is kept.
+// integer colours (ColourHullSieve). When Q is flat every index is kept.
 // (On 64 × 64 photographs about 2,600 colours leave ~630 for the exact hull; a second round with
 // a Q from 98 directions cost as much as it saved.)
 std::vector<std::size_t> outside_small_hull(const std::vector<std::array<double, 3>>& d,
                                             const std::vector<std::size_t>& extreme) {
-  std::vector<std::array<double, 4>> planes;
-  for (const auto& t : hull_triangles_3(d, extreme)) {
-    const auto &a = d[t[0]], &b = d[t[1]], &c = d[t[2]];
-    const double u0 = b[0] - a[0], u1 = b[1] - a[1], u2 = b[2] - a[2];
-    const double v0 = c[0] - a[0], v1 = c[1] - a[1], v2 = c[2] - a[2];
-    const double n0 = u1 * v2 - u2 * v1, n1 = u2 * v0 - u0 * v2, n2 = u0 * v1 - u1 * v0;
-    planes.push_back({n0, n1, n2, n0 * a[0] + n1 * a[1] + n2 * a[2]});
-  }
+  std::vector<std::array<double, 3>> corners;
+  for (std::size_t i : extreme) corners.push_back(d[i]);
+  const ColourHullSieve sieve(corners);
   std::vector<std::size_t> out;
-  for (std::size_t i = 0; i < d.size(); ++i) {
-    bool inside = !planes.empty();
-    for (std::size_t j = 0; j < planes.size() && inside; ++j) {
-      const std::array<double, 4>& f = planes[j];
-      inside = f[0] * d[i][0] + f[1] * d[i][1] + f[2] * d[i][2] < f[3];
-    }
-    if (!inside) out.push_back(i);
-  }
+  for (std::size_t i = 0; i < d.size(); ++i)
+    if (!sieve.strictly_inside(d[i])) out.push_back(i);
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include <gmcc/input/input_error.h>
 #include <gmcc/photo/edge_colours.h>
 #include <gmcc/photo/estimate_3d.h>
+#include <gmcc/photo/image_hull_sets.h>
 #include <gmcc/photo/grey_edge.h>
 #include <gmcc/selection/prepare_canonical.h>
 #include <gmcc/selection/select_scene.h>
@@ -77,11 +78,11 @@ Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs&
   }
   if (kept.counts.kept == 0)
     throw InputError(im.path, 0, "no usable pixel after the mask, saturation and dark or bright rules");
-  // The 3-D hull's colours and the 2-D lifts from one sort of the kept pixels' distinct colours.
+  // The 3-D hull's colours and the 2-D lifts from one sieve of the kept pixels (no distinct count).
   std::vector<ColourSet> sets;
   if (n.gm3d || n.gcie) sets.push_back(ColourSet::hull_3d);
   if (n.gm2d) sets.push_back(ColourSet::hull);
-  std::vector<ImageColours> colours = image_colour_sets(image, rules, kept, sets);
+  std::vector<ImageColours> colours = image_hull_sets(image, rules, kept, sets);
   if (n.gm3d || n.gcie) r.hull3 = std::move(colours.front().colours);
   if (n.gm2d) r.lifts = std::move(colours.back().colours);
   for (int k = 0; k < 2; ++k)

@@ -1,0 +1,86 @@
+#pragma once
+/// \file colour_hull_sieve.h
+/// A sieve for the vertices of an image's colour hull, one colour at a time: a few colours extreme
+/// along 26 directions span a polytope Q inside the hull, and a colour strictly inside Q is no
+/// vertex of the hull (Akl & Toussaint 1978's discarding of interior points, in 3-D; docs/math.md
+/// §1b "The prepared route"). colour_hull_vertex_indices filters with it; a photograph's pixels
+/// stream through it (photo/image_hull_sets.h) so that only the colours it keeps are gathered,
+/// sorted and handed to the exact hull.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace gmcc {
+
+/// For each of the 13 directions v in {−1, 0, 1}^3 \ {0} whose first non-zero component is
+/// positive, the first colour (in the order added) of largest and of smallest v·c. Complexity
+/// O(1) a colour.
+class ExtremeColours {
+ public:
+  ExtremeColours();
+  /// Offers colour `c` under the caller's `index` (channels exact doubles; the products
+  /// v·c are exact for the integers below 2^16 of a pixel, and otherwise may round: any colour
+  /// chosen is still one of the set, which is all the sieve needs).
+  void add(std::size_t index, const std::array<double, 3>& c) {
+    for (std::size_t j = 0; j < directions; ++j) {
+      const double p = v_[j][0] * c[0] + v_[j][1] * c[1] + v_[j][2] * c[2];
+      if (p > top_[j]) top_[j] = p, hi_[j] = index;
+      if (p < bottom_[j]) bottom_[j] = p, lo_[j] = index;
+    }
+    any_ = true;
+  }
+  /// The indices of the colours chosen, increasing, without repeats; empty before any add.
+  std::vector<std::size_t> indices() const;
+
+ private:
+  static constexpr std::size_t directions = 13;
+  std::array<std::array<double, 3>, directions> v_;
+  std::array<double, directions> top_, bottom_;
+  std::array<std::size_t, directions> hi_{}, lo_{};
+  bool any_ = false;  // a colour was added
+};
+
+/// Q = conv(corners) as planes n·x <= n·a through its triangles, for corners whose channels are
+/// integers in [0, 2^16) (pixel values): n's coordinates are below 2^33 and n·a below 2^51 in
+/// magnitude, all exact in double, so the test is exact (no filter). When the corners span fewer
+/// than 3 dimensions Q has no interior and the sieve keeps every colour. A grid of at most 16^3
+/// cells over Q's bounding box, each a power of 2 wide (a colour's cell is a shift of integers),
+/// marks the cells whose eight corners (integers below 2^17: the products stay below 2^50, still
+/// exact) are strictly inside Q, so the whole closed cell is (Q is convex): a colour in such a
+/// cell is answered without the planes.
+class ColourHullSieve {
+ public:
+  /// The sieve of conv(corners). \throws std::invalid_argument if a channel is not an integer in
+  /// [0, 2^16). Complexity: the exact hull of the corners (CGAL's Epick, exact on doubles), and
+  /// 17^3 grid points against its planes.
+  explicit ColourHullSieve(const std::vector<std::array<double, 3>>& corners);
+  /// Whether `c` (channels integers in [0, 2^16), unchecked) is strictly inside Q, exactly: then
+  /// it is no vertex of the hull of any set holding the corners. O(1) in a cell inside Q, else
+  /// O(facets of Q).
+  bool strictly_inside(const std::array<double, 3>& c) const {
+    if (planes_.empty()) return false;
+    std::size_t cell = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (!(c[k] >= low_[k] && c[k] <= high_[k])) return false;  // outside the corners' box
+      cell = cell * grid + ((static_cast<std::uint32_t>(c[k]) - static_cast<std::uint32_t>(low_[k])) >> shift_[k]);
+    }
+    return inside_cell_[cell] || inside_planes(c);
+  }
+  /// How many planes bound Q (0 when it is flat).
+  std::size_t facets() const { return planes_.size(); }
+
+ private:
+  static constexpr std::size_t grid = 16;
+  bool inside_planes(const std::array<double, 3>& c) const {
+    for (const std::array<double, 4>& f : planes_)
+      if (!(f[0] * c[0] + f[1] * c[1] + f[2] * c[2] < f[3])) return false;
+    return true;
+  }
+  std::vector<std::array<double, 4>> planes_;
+  std::array<double, 3> low_{}, high_{};  // the corners' box
+  std::array<unsigned, 3> shift_{};       // cell i along k: [low + i·2^shift, low + (i + 1)·2^shift)
+  std::vector<bool> inside_cell_;                    // grid^3, row-major in (r, g, b)
+};
+
+}  // namespace gmcc

@@ -1,0 +1,71 @@
+#include <gmcc/geometry/colour_hull_sieve.h>
+
+#include "internal/crule_exact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+namespace gmcc {
+
+ExtremeColours::ExtremeColours() {
+  std::size_t k = 0;
+  for (int x = 0; x <= 1; ++x)
+    for (int y = -1; y <= 1; ++y)
+      for (int z = -1; z <= 1; ++z)
+        if (x != 0 || y > 0 || (y == 0 && z > 0)) v_[k++] = {double(x), double(y), double(z)};
+  top_.fill(-HUGE_VAL);
+  bottom_.fill(HUGE_VAL);
+}
+
+std::vector<std::size_t> ExtremeColours::indices() const {
+  std::vector<std::size_t> out;
+  if (!any_) return out;
+  for (std::size_t j = 0; j < directions; ++j) out.push_back(hi_[j]), out.push_back(lo_[j]);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+ColourHullSieve::ColourHullSieve(const std::vector<std::array<double, 3>>& corners) {
+  for (const auto& c : corners)
+    for (double x : c)
+      if (!internal::small_integer(x))
+        throw std::invalid_argument("ColourHullSieve: a channel that is not an integer in [0, 2^16)");
+  std::vector<std::size_t> all(corners.size());
+  std::iota(all.begin(), all.end(), std::size_t(0));
+  for (const auto& t : internal::hull_triangles_3(corners, all)) {
+    const auto &a = corners[t[0]], &b = corners[t[1]], &c = corners[t[2]];
+    const double u0 = b[0] - a[0], u1 = b[1] - a[1], u2 = b[2] - a[2];
+    const double v0 = c[0] - a[0], v1 = c[1] - a[1], v2 = c[2] - a[2];
+    const double n0 = u1 * v2 - u2 * v1, n1 = u2 * v0 - u0 * v2, n2 = u0 * v1 - u1 * v0;
+    planes_.push_back({n0, n1, n2, n0 * a[0] + n1 * a[1] + n2 * a[2]});
+  }
+  if (planes_.empty()) return;
+  // The grid: integer steps covering [low, high], the corners' box, in `grid` cells a side.
+  std::array<double, 3> step;
+  for (std::size_t k = 0; k < 3; ++k) {
+    double lo = corners[0][k], hi = corners[0][k];
+    for (const auto& c : corners) lo = std::min(lo, c[k]), hi = std::max(hi, c[k]);
+    low_[k] = lo, high_[k] = hi;
+    while (double(grid) * std::ldexp(1.0, static_cast<int>(shift_[k])) < hi - lo + 1) ++shift_[k];
+    step[k] = std::ldexp(1.0, static_cast<int>(shift_[k]));  // grid steps cover [lo, hi]
+  }
+  const std::size_t points = grid + 1;
+  std::vector<bool> inside_point(points * points * points);
+  for (std::size_t i = 0; i < inside_point.size(); ++i)
+    inside_point[i] = inside_planes({low_[0] + step[0] * double(i / (points * points)),
+                                     low_[1] + step[1] * double(i / points % points),
+                                     low_[2] + step[2] * double(i % points)});
+  inside_cell_.assign(grid * grid * grid, false);
+  for (std::size_t i = 0; i < inside_cell_.size(); ++i) {
+    const std::size_t r = i / (grid * grid), g = i / grid % grid, b = i % grid;
+    bool all = true;
+    for (std::size_t corner = 0; corner < 8 && all; ++corner)
+      all = inside_point[((r + (corner >> 2)) * points + g + ((corner >> 1) & 1)) * points + b + (corner & 1)];
+    inside_cell_[i] = all;
+  }
+}
+
+}  // namespace gmcc
