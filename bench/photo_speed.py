@@ -42,12 +42,13 @@ from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
-from scipy.optimize import linprog
 from scipy.spatial import ConvexHull
 
 import gmcc
 
 ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "tests" / "support"))
+import float_lp  # noqa: E402  (the float baseline, shared with tests/python/test_photographs.py)
 
 
 def read_png16(path):
@@ -104,23 +105,7 @@ def float_max_trace(A, b, img, unique_check=False):
     p = kept_pixels(img)
     p = p / p.max()
     q = p[ConvexHull(p).vertices]
-    rows = (A[:, None, :] * q[None, :, :]).reshape(-1, 3)
-    rhs = np.repeat(b, len(q))
-    r = linprog(-np.ones(3), A_ub=rows, b_ub=rhs, bounds=[(0, None)] * 3, method="highs")
-    if not unique_check or r.status != 0:
-        return r, None
-    top = -r.fun
-    unique = True
-    for k in range(3):
-        lo_hi = []
-        for sign in (1, -1):
-            c = np.zeros(3)
-            c[k] = sign
-            s = linprog(c, A_ub=rows, b_ub=rhs, A_eq=np.ones((1, 3)), b_eq=[top], bounds=[(0, None)] * 3,
-                        method="highs")
-            lo_hi.append(sign * s.fun if s.status == 0 else np.nan)
-        unique = unique and abs(lo_hi[0] - lo_hi[1]) <= 1e-7 * max(1.0, abs(r.x[k]))
-    return r, unique
+    return float_lp.max_trace(A, b, q, unique_check)
 
 
 def angle_deg(u, v):

@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <tuple>
 
 namespace gmcc::cli {
 namespace {
@@ -77,12 +78,11 @@ void add_pixel_options(CLI::App& cmd, PixelOptions& o) {
   cmd.add_option("--dark", o.dark,
                  "drop pixels with a channel below this after the black level, 0 to 65535")
       ->capture_default_str();
-  cmd.add_option("--dark-fraction", o.dark_fraction,
-                 "drop pixels with a channel below this fraction (0 to 1, e.g. 5/255) of the "
-                 "image's largest value after the black level");
-  cmd.add_option("--bright-fraction", o.bright_fraction,
-                 "drop pixels with a channel above this fraction (0 to 1, e.g. 245/255) of the "
-                 "image's largest value after the black level");
+  for (const auto& [name, value, side, example] : {std::tuple{"--dark-fraction", &o.dark_fraction, "below", "5/255"},
+                                                   std::tuple{"--bright-fraction", &o.bright_fraction, "above", "245/255"}})
+    cmd.add_option(name, *value,
+                   std::string("drop pixels with a channel ") + side + " this fraction (0 to 1, e.g. " + example +
+                       ") of the image's largest value after the black level");
   cmd.add_option("--pixel-rule", o.pixel_rule,
                  "none, or gijsenij: Gijsenij et al. (2010)'s rule, the image rescaled to a "
                  "maximum of 255 and pixels with a channel below 5 or above 245 dropped "

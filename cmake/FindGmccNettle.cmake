@@ -1,11 +1,4 @@
 # FindGmccNettle: Nettle's SHA-256, for the input checksums in gmcc's provenance records.
 # Defines the imported target gmcc_deps::nettle.
-include(FindPackageHandleStandardArgs)
-find_path(GmccNettle_INCLUDE nettle/sha2.h)
-find_library(GmccNettle_LIB nettle)
-find_package_handle_standard_args(GmccNettle REQUIRED_VARS GmccNettle_INCLUDE GmccNettle_LIB)
-if(GmccNettle_FOUND AND NOT TARGET gmcc_deps::nettle)
-  add_library(gmcc_deps::nettle UNKNOWN IMPORTED)
-  set_target_properties(gmcc_deps::nettle PROPERTIES IMPORTED_LOCATION "${GmccNettle_LIB}"
-    INTERFACE_INCLUDE_DIRECTORIES "${GmccNettle_INCLUDE}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/GmccFindOne.cmake)
+gmcc_find_one(GmccNettle nettle/sha2.h nettle gmcc_deps::nettle)

@@ -1,5 +1,5 @@
 #include <gmcc/geometry/chromaticity_hull.h>
-#include <gmcc/numerics/filtered_sign.h>
+#include <gmcc/numerics/filter_bounds.h>
 
 #include "internal/monotone_chain.h"
 
@@ -15,40 +15,43 @@ using Colour3 = std::array<double, 3>;
 
 // u = 2^-53. Error bounds (Higham; products and sums of non-negative magnitudes): a computed
 // a·b − c·d is within 3u·(|ab| + |cd|) of the exact value, and the 3×3 cofactor expansion below
-// within 8u·(its magnitude sum); the factors used here (4u, 16u) leave room, and a decision is
-// taken in double only when |value| exceeds the bound.
+// within 8u·(its magnitude sum); the factors used here (numerics/filter_bounds.h: 4u, 16u) leave
+// room, and a decision is taken in double only when |value| exceeds the bound. The bounds are
+// relative, so they hold only where every product is a normal number: the filters run only when
+// every channel is 0 or in [2^-100, 2^100] (then products of three channels, the chromaticities,
+// the octagon's coefficients and their products are all normal); otherwise every predicate is
+// exact (a colour scaled by 2^±1000 has the same chromaticity, and the same answer).
 constexpr double u = numerics::unit_roundoff;
+bool in_filter_range(const Colour3& c) {
+  return std::all_of(c.begin(), c.end(), [](double x) { return x == 0 || (x >= 0x1p-100 && x <= 0x1p100); });
+}
 
 Rational exact(double x) { return rational_from_double(x); }
 
-// sign(r1·b2 − r2·b1): the order of x = r/b.
-int compare_x(const Colour3& p, const Colour3& q) {
-  const double a = p[0] * q[2], b = q[0] * p[2];
-  const numerics::UncertainSign s = numerics::sign_within(a - b, 4 * u * (std::fabs(a) + std::fabs(b)));
-  if (s.is_certain()) return s.lo;
-  return sgn(Rational(exact(p[0]) * exact(q[2]) - exact(q[0]) * exact(p[2])));
-}
-int compare_y(const Colour3& p, const Colour3& q) {
-  const double a = p[1] * q[2], b = q[1] * p[2];
-  const numerics::UncertainSign s = numerics::sign_within(a - b, 4 * u * (std::fabs(a) + std::fabs(b)));
-  if (s.is_certain()) return s.lo;
-  return sgn(Rational(exact(p[1]) * exact(q[2]) - exact(q[1]) * exact(p[2])));
-}
-bool less_xy(const Colour3& p, const Colour3& q) {
-  const int c = compare_x(p, q);
-  return c != 0 ? c < 0 : compare_y(p, q) < 0;
+// sign(r1·b2 − r2·b1) (k = 0): the order of x = r/b; of y = g/b for k = 1.
+int compare(const Colour3& p, const Colour3& q, std::size_t k, bool filtered) {
+  if (filtered) {
+    const double a = p[k] * q[2], b = q[k] * p[2];
+    const numerics::UncertainSign s =
+        numerics::sign_within(a - b, numerics::filter_bound::chromaticity_order * (std::fabs(a) + std::fabs(b)));
+    if (s.is_certain()) return s.lo;
+  }
+  return sgn(Rational(exact(p[k]) * exact(q[2]) - exact(q[k]) * exact(p[2])));
 }
 
 // Orientation of the chromaticities of p, q, s: sign of det[p; q; s] (all b > 0).
-int orientation3(const Colour3& p, const Colour3& q, const Colour3& s) {
-  const double m0 = q[1] * s[2] - s[1] * q[2], m1 = q[0] * s[2] - s[0] * q[2],
-               m2 = q[0] * s[1] - s[0] * q[1];
-  const double det = p[0] * m0 - p[1] * m1 + p[2] * m2;
-  const double mag = std::fabs(p[0]) * (std::fabs(q[1] * s[2]) + std::fabs(s[1] * q[2])) +
-                     std::fabs(p[1]) * (std::fabs(q[0] * s[2]) + std::fabs(s[0] * q[2])) +
-                     std::fabs(p[2]) * (std::fabs(q[0] * s[1]) + std::fabs(s[0] * q[1]));
-  const numerics::UncertainSign filtered = numerics::sign_within(det, 16 * u * mag);
-  if (filtered.is_certain()) return filtered.lo;
+int orientation3(const Colour3& p, const Colour3& q, const Colour3& s, bool filtered) {
+  if (filtered) {
+    const double m0 = q[1] * s[2] - s[1] * q[2], m1 = q[0] * s[2] - s[0] * q[2],
+                 m2 = q[0] * s[1] - s[0] * q[1];
+    const double det = p[0] * m0 - p[1] * m1 + p[2] * m2;
+    const double mag = std::fabs(p[0]) * (std::fabs(q[1] * s[2]) + std::fabs(s[1] * q[2])) +
+                       std::fabs(p[1]) * (std::fabs(q[0] * s[2]) + std::fabs(s[0] * q[2])) +
+                       std::fabs(p[2]) * (std::fabs(q[0] * s[1]) + std::fabs(s[0] * q[1]));
+    const numerics::UncertainSign filtered_sign =
+        numerics::sign_within(det, numerics::filter_bound::chromaticity_orientation * mag);
+    if (filtered_sign.is_certain()) return filtered_sign.lo;
+  }
   const Rational P[3] = {exact(p[0]), exact(p[1]), exact(p[2])},
                  Q[3] = {exact(q[0]), exact(q[1]), exact(q[2])},
                  S[3] = {exact(s[0]), exact(s[1]), exact(s[2])};
@@ -56,28 +59,12 @@ int orientation3(const Colour3& p, const Colour3& q, const Colour3& s) {
                       P[2] * (Q[0] * S[1] - S[0] * Q[1])));
 }
 
-}  // namespace
-
-ChromaticityHull chromaticity_hull(const std::vector<std::array<double, 3>>& colours) {
-  ChromaticityHull out;
-  std::vector<Colour3> pts;
-  pts.reserve(colours.size());
-  for (const Colour3& c : colours) {
-    for (double x : c)
-      if (!std::isfinite(x) || x < 0)
-        throw std::invalid_argument("chromaticity_hull: channels must be finite and >= 0");
-    if (c[2] > 0)
-      pts.push_back(c);
-    else
-      ++out.dropped;
-  }
-  if (pts.empty()) return out;
-
-  // Akl–Toussaint: any polygon of input points lies inside the hull, so a point strictly inside
-  // it is no vertex. Its corners are the input points extreme (approximately) in the eight
-  // directions −x, −x−y, −y, x−y, x, x+y, y, y−x, in counter-clockwise order (approximation only
-  // chooses them: they are input points either way, and coinciding corners merely weaken the
-  // filter).
+// Akl–Toussaint: any polygon of input points lies inside the hull, so a point strictly inside
+// it is no vertex. Its corners are the input points extreme (approximately) in the eight
+// directions −x, −x−y, −y, x−y, x, x+y, y, y−x, in counter-clockwise order (approximation only
+// chooses them: they are input points either way, and coinciding corners merely weaken the
+// filter). The points not dropped.
+std::vector<Colour3> outside_extreme_octagon(const std::vector<Colour3>& pts) {
   constexpr int sides = 8;
   static const double dir[sides][2] = {{-1, 0}, {-1, -1}, {0, -1}, {1, -1}, {1, 0}, {1, 1}, {0, 1}, {-1, 1}};
   std::size_t corner[sides] = {};
@@ -119,14 +106,40 @@ ChromaticityHull chromaticity_hull(const std::vector<std::array<double, 3>>& col
     }
     if (!inside) survivors.push_back(p);
   }
+  return survivors;
+}
+
+}  // namespace
+
+ChromaticityHull chromaticity_hull(const std::vector<std::array<double, 3>>& colours) {
+  ChromaticityHull out;
+  std::vector<Colour3> pts;
+  pts.reserve(colours.size());
+  for (const Colour3& c : colours) {
+    for (double x : c)
+      if (!std::isfinite(x) || x < 0)
+        throw std::invalid_argument("chromaticity_hull: channels must be finite and >= 0");
+    if (c[2] > 0)
+      pts.push_back(c);
+    else
+      ++out.dropped;
+  }
+  if (pts.empty()) return out;
+  const bool filtered = std::all_of(pts.begin(), pts.end(), in_filter_range);
+  std::vector<Colour3> survivors = filtered ? outside_extreme_octagon(pts) : std::move(pts);
 
   // The hull of the survivors' distinct chromaticities, with exact (filtered) predicates.
-  std::sort(survivors.begin(), survivors.end(), less_xy);
+  std::sort(survivors.begin(), survivors.end(), [filtered](const Colour3& p, const Colour3& q) {
+    const int c = compare(p, q, 0, filtered);
+    return c != 0 ? c < 0 : compare(p, q, 1, filtered) < 0;
+  });
   survivors.erase(std::unique(survivors.begin(), survivors.end(),
-                              [](const Colour3& p, const Colour3& q) { return compare_x(p, q) == 0 && compare_y(p, q) == 0; }),
+                              [filtered](const Colour3& p, const Colour3& q) {
+                                return compare(p, q, 0, filtered) == 0 && compare(p, q, 1, filtered) == 0;
+                              }),
                   survivors.end());
   const std::vector<std::size_t> hull = internal::monotone_chain(survivors.size(), [&](std::size_t a, std::size_t b, std::size_t c) {
-    return orientation3(survivors[a], survivors[b], survivors[c]) > 0;
+    return orientation3(survivors[a], survivors[b], survivors[c], filtered) > 0;
   });
   std::vector<Point2> cycle;
   cycle.reserve(hull.size());

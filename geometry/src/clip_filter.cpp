@@ -1,6 +1,6 @@
 // The clip's certified box and all-inside tests over the live vertices (internal/clip_filter.h).
 #include "internal/clip_filter.h"
-#include <gmcc/numerics/filtered_sign.h>
+#include <gmcc/numerics/filter_bounds.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,8 +18,8 @@ constexpr double u = numerics::unit_roundoff;
 // box rows x_k >= 0); 1 ± 8u covers the roundings.
 void VertexDoubles::settle() {
   const double a = std::fabs(h[0]) + std::fabs(h[1]) + std::fabs(h[2]), e = err[0] + err[1] + err[2];
-  alpha = e + 16 * u * (a + e);
-  beta = err[3] + 16 * u * (std::fabs(h[3]) + err[3]);
+  alpha = e + numerics::filter_bound::polytope_side * (a + e);
+  beta = err[3] + numerics::filter_bound::polytope_side * (std::fabs(h[3]) + err[3]);
   const double w_lo = h[3] - err[3], w_hi = h[3] + err[3];
   bounded = filtered && w_lo > 0;
   if (!bounded) return;
@@ -111,8 +111,8 @@ void LiveVertexFilter::update(const std::vector<int>& live, const std::vector<in
 // exactly on the plane).
 bool LiveVertexFilter::none_outside(const double* a) const {
   if (!all_filtered_) return false;
-  const double m = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])}) * (1 + 128 * u);
-  const double b = std::fabs(a[3]) * (1 + 128 * u);
+  const double m = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])}) * (1 + numerics::filter_bound::polytope_quick_evaluation);
+  const double b = std::fabs(a[3]) * (1 + numerics::filter_bound::polytope_quick_evaluation);
   for (const Group& g : groups_) {
     if (g.used == 0 || group_inside(g, a)) continue;
     for (std::size_t k = 0; k < g.used; k += 6) {

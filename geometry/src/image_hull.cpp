@@ -1,5 +1,5 @@
 #include "internal/image_hull.h"
-#include <gmcc/numerics/filtered_sign.h>
+#include <gmcc/numerics/filter_bounds.h>
 
 #include "internal/extended_value.h"
 #include "internal/integer_line.h"
@@ -21,7 +21,7 @@ int orientation_sign(const Point2& a, const Point2& b, const Point2& c, const st
     const double l = (fb[0] - fa[0]) * (fc[1] - fa[1]), r = (fb[1] - fa[1]) * (fc[0] - fa[0]);
     const double mag = (std::fabs(fb[0]) + std::fabs(fa[0])) * (std::fabs(fc[1]) + std::fabs(fa[1])) +
                        (std::fabs(fb[1]) + std::fabs(fa[1])) * (std::fabs(fc[0]) + std::fabs(fa[0]));
-    const numerics::UncertainSign s = numerics::sign_within(l - r, 12 * u * mag);
+    const numerics::UncertainSign s = numerics::sign_within(l - r, numerics::filter_bound::image_hull_orientation * mag);
     if (s.is_certain()) return s.lo;
   }
   return sgn(orientation(a, b, c));
@@ -56,7 +56,7 @@ std::vector<ImagePoint> image_hull_vertices(const std::vector<const Point2*>& im
   auto compare = [filtered](const ImagePoint& a, const ImagePoint& b, int k) {
     if (filtered) {
       const numerics::UncertainSign s =
-          numerics::sign_within(a.f[k] - b.f[k], 5 * u * (std::fabs(a.f[k]) + std::fabs(b.f[k])));
+          numerics::sign_within(a.f[k] - b.f[k], numerics::filter_bound::image_hull_order * (std::fabs(a.f[k]) + std::fabs(b.f[k])));
       if (s.is_certain()) return s.lo;
     }
     return cmp(k ? a.exact->y : a.exact->x, k ? b.exact->y : b.exact->x);

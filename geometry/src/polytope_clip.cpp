@@ -1,7 +1,7 @@
 // A box clipped by integer half-spaces with filtered exact predicates (docs/derivations.md §4.6).
 #include "internal/polytope_clip.h"
 #include "internal/scaled_point.h"
-#include <gmcc/numerics/filtered_sign.h>
+#include <gmcc/numerics/filter_bounds.h>
 
 #include "internal/clip_filter.h"
 #include "internal/plane_meets.h"
@@ -358,10 +358,10 @@ class Clipper {
       const double b[3] = {p.c[3], q.c[3], r.c[3]};
       for (int k = 0; k < 3; ++k) {
         v.h[k] = b[0] * c[0][k] + b[1] * c[1][k] + b[2] * c[2][k];
-        v.err[k] = 32 * u * (std::fabs(b[0]) * ca[0][k] + std::fabs(b[1]) * ca[1][k] + std::fabs(b[2]) * ca[2][k]);
+        v.err[k] = numerics::filter_bound::polytope_vertex * (std::fabs(b[0]) * ca[0][k] + std::fabs(b[1]) * ca[1][k] + std::fabs(b[2]) * ca[2][k]);
       }
       v.h[3] = p.c[0] * c[0][0] + p.c[1] * c[0][1] + p.c[2] * c[0][2];
-      v.err[3] = 32 * u * (std::fabs(p.c[0]) * ca[0][0] + std::fabs(p.c[1]) * ca[0][1] + std::fabs(p.c[2]) * ca[0][2]);
+      v.err[3] = numerics::filter_bound::polytope_vertex * (std::fabs(p.c[0]) * ca[0][0] + std::fabs(p.c[1]) * ca[0][1] + std::fabs(p.c[2]) * ca[0][2]);
       const numerics::UncertainSign ws = filtered_sign(v.h[3], v.err[3]);
       if (ws.is_certain()) {
         const int w = ws.lo;
@@ -395,8 +395,8 @@ class Clipper {
       // |b|·β, made once per vertex), as LiveVertexFilter::none_outside reads it, 1 + 128u covering
       // its evaluation (docs/derivations.md §4.6, "The vertex's own bound"): a few operations, and
       // it settles a vertex clear of the plane (most of them).
-      const double quick = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])}) * (1 + 128 * u) * v.alpha +
-                           std::fabs(a[3]) * (1 + 128 * u) * v.beta;
+      const double quick = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])}) * (1 + numerics::filter_bound::polytope_quick_evaluation) * v.alpha +
+                           std::fabs(a[3]) * (1 + numerics::filter_bound::polytope_quick_evaluation) * v.beta;
       if (s > quick || s < -quick) {
         count(true);
         return s > 0 ? 1 : -1;
@@ -405,7 +405,7 @@ class Clipper {
                        std::fabs(a[3] * v.h[3]);
       const double E = std::fabs(a[0]) * v.err[0] + std::fabs(a[1]) * v.err[1] +
                        std::fabs(a[2]) * v.err[2] + std::fabs(a[3]) * v.err[3];
-      const numerics::UncertainSign filtered = filtered_sign(s, (E + 16 * u * (T + E)) * (1 + 64 * u));
+      const numerics::UncertainSign filtered = filtered_sign(s, (E + numerics::filter_bound::polytope_side * (T + E)) * (1 + numerics::filter_bound::polytope_side_evaluation));
       if (filtered.is_certain()) {
         const int sign = filtered.lo;
         count(true);

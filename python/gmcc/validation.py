@@ -20,7 +20,21 @@ __all__ = ["ErrorStatistics", "error_statistics", "summarise", "benchmark", "rep
 
 # Parameter and return descriptions the experiments share (spliced by _doc).
 _RECORD_PARTS = {
-    "records": """\
+    "surface_counts": """\
+min_surfaces : int, default 1
+    The smallest surface count n.
+max_surfaces : int, default 11
+    The largest surface count n (``--surfaces``).
+scenes : int, default 500
+    Seeded scenes per light and surface count.
+""",
+    "expand_policy": """\
+expand_policy : {'none', 'centroid-clip', 'multiplicative'}, default 'none'
+    How it is enlarged.
+""",
+    "run": """\
+threads : int, default 0
+    Worker threads (0: all cores); the records do not depend on it.
 data : str, optional
     The folder of the spectral data (default None: ``data_dir()``).
 frame : bool, optional
@@ -131,23 +145,15 @@ def reproduce_synthetic(*, lights=("D75", "D100", "P2856", "P15000"), canonical=
         The test lights: CIE daylights ``D<cct/100>`` and Planckians ``P<kelvin>``.
     canonical : str, default 'D55'
         The canonical light.
-    min_surfaces : int, default 1
-        The smallest surface count n.
-    max_surfaces : int, default 11
-        The largest surface count n (``--surfaces``).
-    scenes : int, default 500
-        Seeded scenes per light and surface count.
+    @surface_counts@
     seed : int, default 1
         The run's seed (docs/reproduction.md "Scene generator").
     expand : int, float, Fraction or str, default 0
         Enlarge the canonical gamut by this factor (``"0.1"``: exactly 10%).
-    expand_policy : {'none', 'centroid-clip', 'multiplicative'}, default 'none'
-        How it is enlarged.
+    @expand_policy@
     crule : bool, default False
         Also Forsyth's 3-D CRULE (``crule_max_volume``, ``crule_centroid``; slow).
-    threads : int, default 0
-        Worker threads (0: all cores); the records do not depend on it.
-    @records@
+    @run@
 
     @scene_records@
 
@@ -186,23 +192,15 @@ def reproduce_camera(*, lights=("syl-50MR16Q", "solux-4700+3202"), canonical="so
     canonical_surfaces : {'sfu', 'macbeth'}, default 'sfu'
         The canonical gamut's reflectances: all 1995 SFU surfaces, or the 24 Macbeth patches
         (``--canonical-surfaces sfu1995`` or ``macbeth``).
-    min_surfaces : int, default 1
-        The smallest surface count n.
-    max_surfaces : int, default 11
-        The largest surface count n (``--surfaces``).
-    scenes : int, default 500
-        Seeded scenes per light and surface count.
+    @surface_counts@
     seed : int, default 1
         The run's seed.
     expand : int, float, Fraction or str, default 0
         Enlarge the canonical gamut by this factor.
-    expand_policy : {'none', 'centroid-clip', 'multiplicative'}, default 'none'
-        How it is enlarged.
+    @expand_policy@
     crule : bool, default False
         Also Forsyth's 3-D CRULE (slow).
-    threads : int, default 0
-        Worker threads (0: all cores); the records do not depend on it.
-    @records@
+    @run@
 
     @scene_records@
 
@@ -261,13 +259,10 @@ def reproduce_gehler_shi(*, protocol="leave-one-out", cameras=("Canon1D", "Canon
         19–24, the achromatic row).
     expand : int, float, Fraction or str, default 0
         Enlarge every canonical gamut by this factor.
-    expand_policy : {'none', 'centroid-clip', 'multiplicative'}, default 'none'
-        How it is enlarged.
+    @expand_policy@
     mean3d : {'analytic', 'quadrature', 'monte-carlo'}, default 'analytic'
         The route to the 3-D mean.
-    threads : int, default 0
-        Worker threads (0: all cores); the records do not depend on it.
-    @records@
+    @run@
 
     Returns
     -------

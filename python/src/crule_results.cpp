@@ -1,6 +1,7 @@
 /// \file crule_results.cpp
 /// CRULE's 3-D result classes: ConvexSet3, Selection3 and Crule3d (results.h).
 
+#include "docstrings.h"
 #include "results.h"
 
 #include <gmcc/geometry/convex_set_3.h>
@@ -56,7 +57,7 @@ volume : Fraction
 
 // A 3-D CRULE rule's map and its worst case.
 void bind_selection3(py::module_& m) {
-  py::class_<Selection3>(m, "Selection3", R"doc(A 3-D CRULE rule's diagonal map and its worst case.
+  py::class_<Selection3>(m, "Selection3", (std::string(R"doc(A 3-D CRULE rule's diagonal map and its worst case.
 
 Max-volume (Forsyth 1990 §4, CRULE-MV; docs/derivations.md §2.4) or the centroid (Barnard,
 Cardei & Funt 2002, CRULE-AVE) of F3, with the largest map-space angle to a map of F3. Part
@@ -68,17 +69,11 @@ rule : str
     'max_volume' or 'centroid'.
 method : str
     'exact' (rational) or 'certified' (a quadratic irrational, enclosed).
-map : tuple of (float, float, float)
-    The map (d1, d2, d3) as doubles.
-exact : tuple of (Fraction, Fraction, Fraction) or None
-    The exact map where it is rational, else None.
-error_bound : float
-    A rigorous bound on the largest component's distance from the true value.
-enclosure : numpy.ndarray of float64, shape (3, 2)
+)doc") + doc::map3_attributes + R"doc(enclosure : numpy.ndarray of float64, shape (3, 2)
     A certified enclosure, rows (lo, hi) per component.
 worst_case_deg : float or None
     The largest angle from the map to a map of F3, degrees.
-)doc")
+)doc").c_str())
       .def_property_readonly("rule", [](const Selection3& s) { return s.estimate.rule; })
       .def_property_readonly("method", [](const Selection3& s) { return s.estimate.method; },
                              "`exact` (rational) or `certified` (a quadratic irrational, enclosed).")

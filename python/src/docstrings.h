@@ -329,6 +329,28 @@ TypeError
     ``feasible_set`` is not a ConvexSet, or an option of the wrong type.
 )doc";
 
+/// The attributes every 3-D rule's answer has (Selection3, ImageSelection3): its map as doubles,
+/// exactly where rational, and the bound on the doubles.
+inline const std::string map3_attributes = R"doc(map : tuple of (float, float, float)
+    The map (d1, d2, d3) as doubles.
+exact : tuple of (Fraction, Fraction, Fraction) or None
+    The exact map where it is rational, else None.
+error_bound : float
+    A rigorous bound on the largest component's distance from the true value.
+)doc";
+
+/// The returns of the angles in degrees, and the head of their errors: each adds its own
+/// ValueError cases.
+inline const std::string returns_degrees = R"doc(Returns
+-------
+float
+    Degrees.
+
+Raises
+------
+ValueError
+)doc";
+
 /// worst_case_map_deg's docstring.
 inline const std::string worst_case_map_deg = std::string(R"doc(The largest map-space angle between a map and any map of a feasible set, degrees.
 
@@ -342,15 +364,7 @@ feasible_set : ConvexSet
 map : sequence of 2 numbers
     The perspective map (m1, m2), taken exactly.
 
-Returns
--------
-float
-    Degrees.
-
-Raises
-------
-ValueError
-    F is empty, or a bad map.
+)doc" + returns_degrees + R"doc(    F is empty, or a bad map.
 TypeError
     An argument of the wrong type.
 
@@ -375,15 +389,7 @@ map : sequence of 2 numbers
 canonical_illuminant : sequence of 3 numbers, default (1, 1, 1)
     The canonical light c.
 
-Returns
--------
-float
-    Degrees.
-
-Raises
-------
-ValueError
-    F is empty or touches an axis, or a component of ``map`` is <= 0.
+)doc" + returns_degrees + R"doc(    F is empty or touches an axis, or a component of ``map`` is <= 0.
 TypeError
     An argument of the wrong type.
 )doc";
@@ -401,15 +407,7 @@ estimate : sequence of 2 numbers
 truth : sequence of 2 numbers
     The true map (t1, t2), taken exactly.
 
-Returns
--------
-float
-    Degrees.
-
-Raises
-------
-ValueError
-    A map that is not two finite numbers.
+)doc" + returns_degrees + R"doc(    A map that is not two finite numbers.
 TypeError
     An argument of the wrong type.
 
@@ -430,15 +428,7 @@ truth : sequence of 2 numbers
 
 /// Their returns and errors.
 inline const std::string error_degrees = R"doc(
-Returns
--------
-float
-    Degrees.
-
-Raises
-------
-ValueError
-    A component <= 0, or a bad number.
+)doc" + returns_degrees + R"doc(    A component <= 0, or a bad number.
 TypeError
     An argument of the wrong type.
 )doc";

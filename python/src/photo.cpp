@@ -17,11 +17,22 @@
 
 namespace gmcc::python {
 
-const std::string& learner_add_doc(const char* before, const char* after) {
+const std::string& learner_add_doc(const char* before, const char* more_parameters, const char* value_error) {
   static std::deque<std::string> docs;
   docs.push_back(std::string(before) + R"doc(light : sequence of 3 numbers
     The image's measured light e, every channel > 0.
-)doc" + doc::pixel_rules + after);
+)doc" + doc::pixel_rules + more_parameters + R"doc(
+Returns
+-------
+None
+
+Raises
+------
+ValueError
+    )doc" + value_error + R"doc(
+TypeError
+    An argument of the wrong type.
+)doc");
   return docs.back();
 }
 
@@ -107,7 +118,7 @@ black : str
 
 // One 3-D rule's answer on an image.
 void bind_image_selection3(py::module_& m) {
-  py::class_<PySelection3>(m, "ImageSelection3", R"doc(One 3-D rule's answer on an image: the map, its worst case and the light it implies.
+  py::class_<PySelection3>(m, "ImageSelection3", (std::string(R"doc(One 3-D rule's answer on an image: the map, its worst case and the light it implies.
 
 Max-volume (Forsyth 1990 §4, CRULE-MV), the centroid (Barnard, Cardei & Funt 2002, CRULE-AVE)
 or max-trace (Gijsenij, Gevers & van de Weijer 2010 §3) of F3 (estimate_3d.h;
@@ -120,13 +131,7 @@ rule : str
     'max_volume', 'centroid' or 'max_trace'.
 method : str
     'exact' (rational) or 'certified' (a double with a rigorous bound).
-map : tuple of (float, float, float)
-    The map (d1, d2, d3) as doubles.
-exact : tuple of (Fraction, Fraction, Fraction) or None
-    The exact map where it is rational, else None.
-error_bound : float
-    A rigorous bound on the largest component's distance from the true value.
-worst_case_deg : float or None
+)doc") + doc::map3_attributes + R"doc(worst_case_deg : float or None
     The largest angle from the map to a map of F3, degrees.
 light : tuple of (float, float, float) or None
     The light c ⊘ d with unit length; None when a component of d is 0.
@@ -135,7 +140,7 @@ recovery_error_deg : float or None
 map_error_deg : float or None
     With a truth: the angle between the map and the true map c ⊘ e, degrees: the space of
     ``worst_case_deg``, which bounds it whenever ``Estimate3.truth_in_feasible``; else None.
-)doc")
+)doc").c_str())
       .def_property_readonly("rule", [](const PySelection3& s) { return s.rule; })
       .def_property_readonly("method", [](const PySelection3& s) { return s.s.selection.estimate.method; },
                              "`exact` (rational) or `certified` (a double with a rigorous bound).")

@@ -25,9 +25,10 @@ auto without_gil(F f) {
 }
 
 /// The docstring of a learner's add(): `before` (summary and the image parameter), the light and
-/// pixel-rule parameters both learners share, then `after`. Kept for the module's lifetime (pybind
+/// pixel-rule parameters both learners share, `more_parameters`, then the returns (None) and the
+/// errors both share, `value_error` the ValueError's cases. Kept for the module's lifetime (pybind
 /// holds the pointer).
-const std::string& learner_add_doc(const char* before, const char* after);
+const std::string& learner_add_doc(const char* before, const char* more_parameters, const char* value_error);
 
 // gmcc.Canonical3: a 3-D canonical gamut prepared once.
 struct Canonical3 {

@@ -115,18 +115,7 @@ image : numpy.ndarray (H, W, 3), ImageColours, or array_like (n, 3)
     colours are taken as they are.
 )doc", R"doc(colour_set : {'hull-3d', 'distinct'}, default 'hull-3d'
     The colours an image is reduced to ('hull' gives chromaticity lifts: refused).
-
-Returns
--------
-None
-
-Raises
-------
-ValueError
-    A bad image or light, chromaticity lifts, or no usable pixel.
-TypeError
-    An argument of the wrong type.
-)doc").c_str());
+)doc", "A bad image or light, chromaticity lifts, or no usable pixel.").c_str());
   return learner;
 }
 
@@ -215,18 +204,7 @@ Parameters
 image : numpy.ndarray (H, W, 3), ImageColours, or array_like (n, 3)
     An image goes through the pixel rules below (colour set 'hull'); an ImageColours (lifts or
     pixel colours) and colours are taken as they are.
-)doc", R"doc(
-Returns
--------
-None
-
-Raises
-------
-ValueError
-    A bad image or light.
-TypeError
-    An argument of the wrong type.
-)doc").c_str())
+)doc", "", "A bad image or light.").c_str())
       .def("gamut", [](const Learner2& l) {
              py::list out;
              for (const Point2& p : l.with([](const CanonicalLearner2& x) { return x.gamut(); })) out.append(py::make_tuple(to_fraction(p.x), to_fraction(p.y), 1));

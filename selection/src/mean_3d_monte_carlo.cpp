@@ -1,5 +1,5 @@
 #include <gmcc/selection/mean_3d_monte_carlo.h>
-#include <gmcc/numerics/filtered_sign.h>
+#include <gmcc/numerics/filter_bounds.h>
 
 #include <gmcc/numerics/interrupt.h>
 
@@ -12,23 +12,29 @@ namespace gmcc {
 namespace {
 
 // The closed half-space A·x + B·y + C·z >= 0 of directions whose perspective (x/z, y/z) lies
-// left of a CCW edge p→q, exactly and as nearest doubles.
+// left of a CCW edge p→q, exactly and as nearest doubles; filtered when each coefficient is 0 or
+// its double in [2^-900, 2^900], so that the products with samples (0 or in [2^-53, 1)) are
+// normal and the filter's relative bound holds.
 struct Side {
   Rational a, b, c;
   double ad, bd, cd;
+  bool filtered;
 };
+bool in_filter_range(const Rational& exact, double d) {
+  return sgn(exact) == 0 || (std::fabs(d) >= 0x1p-900 && std::fabs(d) <= 0x1p900);
+}
 
-// Relative bound covering the rounding of the coefficients to double (u each) and of the
-// three products and two sums (≈ 5u): 8u = 2^-50 (u = 2^-53).
-const double filter_bound = std::ldexp(1.0, -50);
-
-// Exact sign of A·x + B·y + C·z, with a floating-point filter in front.
+// Exact sign of A·x + B·y + C·z, with a floating-point filter in front: the coefficients' rounding
+// to double (u each), three products and two sums, about 5u of the magnitude sum; 8u = 2^-50
+// (filter_bounds.h).
 int side_sign(const Side& s, double x, double y, double z) {
-  const double value = s.ad * x + s.bd * y + s.cd * z;
-  const double bound =
-      filter_bound * (std::fabs(s.ad) * x + std::fabs(s.bd) * y + std::fabs(s.cd) * z);
-  const numerics::UncertainSign filtered = numerics::sign_within(value, bound);
-  if (filtered.is_certain()) return filtered.lo;
+  if (s.filtered) {
+    const double value = s.ad * x + s.bd * y + s.cd * z;
+    const double bound =
+        numerics::filter_bound::monte_carlo_side * (std::fabs(s.ad) * x + std::fabs(s.bd) * y + std::fabs(s.cd) * z);
+    const numerics::UncertainSign filtered = numerics::sign_within(value, bound);
+    if (filtered.is_certain()) return filtered.lo;
+  }
   const Rational exact = s.a * rational_from_double(x) + s.b * rational_from_double(y) +
                          s.c * rational_from_double(z);
   return sgn(exact);
@@ -37,7 +43,7 @@ int side_sign(const Side& s, double x, double y, double z) {
 // x² + y² + z² <= 1, exactly (filtered the same way).
 bool in_unit_ball(double x, double y, double z) {
   const double r2 = x * x + y * y + z * z;
-  const double bound = filter_bound * r2;
+  const double bound = numerics::filter_bound::monte_carlo_side * r2;
   if (r2 < 1 - bound) return true;
   if (r2 > 1 + bound) return false;
   const Rational rx = rational_from_double(x), ry = rational_from_double(y),
@@ -70,8 +76,9 @@ MapEstimate mean_3d_monte_carlo(const ConvexSet2& F, std::uint64_t samples, std:
     const Point2& p = v[i];
     const Point2& q = v[(i + 1) % v.size()];
     Side s{Rational(p.y - q.y), Rational(q.x - p.x),
-           Rational((q.y - p.y) * p.x - (q.x - p.x) * p.y), 0, 0, 0};
+           Rational((q.y - p.y) * p.x - (q.x - p.x) * p.y), 0, 0, 0, false};
     s.ad = to_double_nearest(s.a), s.bd = to_double_nearest(s.b), s.cd = to_double_nearest(s.c);
+    s.filtered = in_filter_range(s.a, s.ad) && in_filter_range(s.b, s.bd) && in_filter_range(s.c, s.cd);
     sides.push_back(std::move(s));
   }
 

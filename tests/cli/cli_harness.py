@@ -1,12 +1,21 @@
 """The harness the command-line tests share: a runner of the gmcc binary with a folder for the
 files a case writes, named checks that report every failure and go on, and `expect`.
 
-A test script imports it from its own folder (python3 puts the script's folder on sys.path).
+A test script imports it from its own folder (python3 puts the script's folder on sys.path);
+importing it puts the tests' shared helpers (tests/support: png16, dng, ...) on the path too.
 """
 
 import json
 import os
 import subprocess
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "support"))
+
+
+def random_triples(rng, n, lo, hi):
+    """n triples (r, g, b) of integers from [lo, hi], drawn in that order from random.Random rng."""
+    return [(rng.randint(lo, hi), rng.randint(lo, hi), rng.randint(lo, hi)) for _ in range(n)]
 
 
 class Runner:

@@ -29,10 +29,7 @@ import random
 import sys
 import tempfile
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(os.path.dirname(HERE), "support"))
-from cli_harness import Runner, angle, expect  # noqa: E402
+from cli_harness import Runner, angle, expect, random_triples  # noqa: E402
 from png16 import write_png16  # noqa: E402
 
 
@@ -42,7 +39,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         r = Runner(binary, tmp)
         os.mkdir(os.path.join(tmp, "gcie"))
-        surfaces = [(rng.randint(20, 300), rng.randint(20, 300), rng.randint(20, 300)) for _ in range(12)]
+        surfaces = random_triples(rng, 12, 20, 300)
         canonical = r.file("r,g,b\n" + "".join(f"{a},{b},{c}\n" for a, b, c in surfaces))
         e = (30, 40, 50)
         image = os.path.join(tmp, "img.png")

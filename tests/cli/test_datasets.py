@@ -44,19 +44,27 @@ def main():
         subprocess.run([maker, tmp], check=True, timeout=300)
         r = Runner(binary, tmp, prefix=["benchmark"])
 
+        def two_runs(name, first, second, common, quiet=False):
+            """Both runs' records: benchmark with the arguments `first` and `second` (each followed
+            by `common` and --records to a file of its own), each expected to succeed and, when
+            quiet, to write nothing on stderr."""
+            out = []
+            for k, args in enumerate((first, second)):
+                path = os.path.join(tmp, f"{name}_{k}.jsonl")
+                rc, _, err = r.run(*args, *common, "--records", path)
+                expect(rc == 0 and (not quiet or err == ""), err)
+                out.append(records(path))
+            return out
+
         def nus_equals_its_table():
-            a, b = os.path.join(tmp, "a.jsonl"), os.path.join(tmp, "b.jsonl")
             common = ["--folds", "3", "--pixel-rule", "gijsenij", "--no-progress"]
-            rc, out, err = r.run("--layout", "nus", "--images", os.path.join(tmp, "nus"), *common, "--records", a)
-            expect(rc == 0, err)
-            rc, out, err = r.run("--images", os.path.join(tmp, "nus"), "--truths", os.path.join(tmp, "nus_table.csv"),
-                                 *common, "--records", b)
-            expect(rc == 0, err)
-            ra, rb = records(a), records(b)
+            ra, rb = two_runs("nus", ["--layout", "nus", "--images", os.path.join(tmp, "nus")],
+                              ["--images", os.path.join(tmp, "nus"), "--truths", os.path.join(tmp, "nus_table.csv")],
+                              common)
             expect(len(ra) == 6 * 11 and len(ra) == len(rb), len(ra))
             # The provenance states the levels the images were read with: the MAT file's, not the
             # options' defaults (--black-level 0 --saturation max).
-            levels = json.loads(open(a).readline())["provenance"]["image_levels"]
+            levels = json.loads(open(os.path.join(tmp, "nus_0.jsonl")).readline())["provenance"]["image_levels"]
             expect(len(levels) == 6 and all(x["black_level"] == 512 and x["saturation"] == 15000 and
                                             x["black_from"] == x["saturation_from"] == "given" for x in levels), levels)
             for x, y in zip(ra, rb):
@@ -66,24 +74,16 @@ def main():
         def nus_mat73_equals_mat5():
             # The same ground truth as MATLAB 7.3 (HDF5, read through libmatio): the same records,
             # and nothing on stderr (HDF5's and libmatio's own messages are kept off it).
-            a, b = os.path.join(tmp, "m5.jsonl"), os.path.join(tmp, "m73.jsonl")
             common = ["--folds", "3", "--methods", "grey-world,gm3d-max-trace", "--no-progress"]
-            rc, out, err = r.run("--layout", "nus", "--images", os.path.join(tmp, "nus"), *common, "--records", a)
-            expect(rc == 0 and err == "", err)
-            rc, out, err = r.run("--layout", "nus", "--images", os.path.join(tmp, "nus73"), *common, "--records", b)
-            expect(rc == 0 and err == "", err)
-            ra, rb = records(a), records(b)
+            ra, rb = two_runs("mat", ["--layout", "nus", "--images", os.path.join(tmp, "nus")],
+                              ["--layout", "nus", "--images", os.path.join(tmp, "nus73")], common, quiet=True)
             expect(len(ra) == 12 and ra == rb, (ra[:1], rb[:1]))
 
         def cube_equals_its_table():
-            a, b = os.path.join(tmp, "c.jsonl"), os.path.join(tmp, "d.jsonl")
             common = ["--folds", "2", "--methods", "gm3d-max-trace,grey-world", "--no-progress"]
-            rc, out, err = r.run("--layout", "cube+", "--images", os.path.join(tmp, "cube"), *common, "--records", a)
-            expect(rc == 0, err)
-            rc, out, err = r.run("--images", os.path.join(tmp, "cube"), "--truths", os.path.join(tmp, "cube_table.csv"),
-                                 *common, "--records", b)
-            expect(rc == 0, err)
-            ra, rb = records(a), records(b)
+            ra, rb = two_runs("cube", ["--layout", "cube+", "--images", os.path.join(tmp, "cube")],
+                              ["--images", os.path.join(tmp, "cube"), "--truths", os.path.join(tmp, "cube_table.csv")],
+                              common)
             expect(len(ra) == 8 and [x["error_deg"] for x in ra] == [x["error_deg"] for x in rb], (ra, rb))
             # The masked corner is bright: had it been kept, grey world would move; with it masked,
             # grey world of images of random surfaces under a light is within a few degrees.
@@ -107,17 +107,11 @@ def main():
             expect(rc == 2 and "cube+_gt.txt:1:" in err, err)
 
         def gehler_shi_equals_its_table():
-            a, b = os.path.join(tmp, "e.jsonl"), os.path.join(tmp, "f.jsonl")
-            common = ["--pixel-rule", "gijsenij", "--no-progress"]
             # The split shipped in threefoldCVsplit.mat, against the same folds in a folds file.
-            rc, out, err = r.run("--layout", "gehler-shi", "--images", os.path.join(tmp, "gehler"), *common,
-                                 "--records", a)
-            expect(rc == 0, err)
-            rc, out, err = r.run("--images", os.path.join(tmp, "gehler"), "--truths",
-                                 os.path.join(tmp, "gehler_table.csv"), "--folds-file",
-                                 os.path.join(tmp, "gehler_folds.csv"), *common, "--records", b)
-            expect(rc == 0, err)
-            ra, rb = records(a), records(b)
+            ra, rb = two_runs("gehler", ["--layout", "gehler-shi", "--images", os.path.join(tmp, "gehler")],
+                              ["--images", os.path.join(tmp, "gehler"), "--truths", os.path.join(tmp, "gehler_table.csv"),
+                               "--folds-file", os.path.join(tmp, "gehler_folds.csv")],
+                              ["--pixel-rule", "gijsenij", "--no-progress"])
             expect(len(ra) == 6 * 11 and ra == rb, (len(ra), ra[:1], rb[:1]))
             expect([x["fold"] for x in ra[::11]] == [0, 1, 2, 0, 1, 2], [x["fold"] for x in ra[::11]])
 
@@ -134,14 +128,11 @@ def main():
                 expect(p.returncode == 0 and p.stdout.startswith("# gmcc-provenance: "), p.stderr)
                 with open(table, "w") as f:
                     f.write(p.stdout)
-                a, b = os.path.join(tmp, folder + "_l.jsonl"), os.path.join(tmp, folder + "_t.jsonl")
-                common = ["--methods", "gm3d-max-trace,grey-world", "--no-progress"]
-                rc, out, err = r.run("--layout", layout, "--images", d, *extra, *common, "--records", a)
-                expect(rc == 0, err)
-                rc, out, err = r.run("--images", d, "--truths", table, *extra, *common, "--records", b,
-                                     *(["--folds-file", folds] if layout == "gehler-shi" else []))
-                expect(rc == 0, err)
-                expect(records(a) == records(b), (layout, records(a)[:1], records(b)[:1]))
+                ra, rb = two_runs(folder + "_read", ["--layout", layout, "--images", d, *extra],
+                                  ["--images", d, "--truths", table, *extra,
+                                   *(["--folds-file", folds] if layout == "gehler-shi" else [])],
+                                  ["--methods", "gm3d-max-trace,grey-world", "--no-progress"])
+                expect(ra == rb, (layout, ra[:1], rb[:1]))
             rows = [line.split(",") for line in open(os.path.join(tmp, "gehler_read.csv")).read().splitlines()[2:]]
             expect([x[4] for x in rows] == ["0", "0", "129", "129", "129", "129"], rows)  # Shi's description.txt
             expect(open(os.path.join(tmp, "gehler_folds_read.csv")).read().splitlines()[1:] ==

@@ -32,9 +32,7 @@ import tempfile
 from fractions import Fraction
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(os.path.dirname(HERE), "support"))
-from cli_harness import Runner, expect  # noqa: E402
+from cli_harness import Runner, expect, random_triples  # noqa: E402
 from png16 import write_png16  # noqa: E402
 
 # The independent exact test of truth in F3 (central projections, integer determinants).
@@ -52,7 +50,7 @@ def main():
         # its light outside F3.
         surfaces = [(rng.randint(5, 300), rng.randint(5, 300), rng.choice([0, rng.randint(5, 300)]))
                     for _ in range(40)] + [(200, 180, 160)]
-        lights = [(rng.randint(20, 80), rng.randint(20, 80), rng.randint(20, 80)) for _ in range(12)]
+        lights = random_triples(rng, 12, 20, 80)
         names, pixels_of = [], []
         for i, e in enumerate(lights):
             shown = rng.sample(surfaces, 18) + [(200, 180, 160)]

@@ -25,18 +25,15 @@ import random
 import sys
 import tempfile
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(os.path.dirname(HERE), "support"))
-from cli_harness import Runner, angle, expect  # noqa: E402
+from cli_harness import Runner, angle, expect, random_triples  # noqa: E402
 from png16 import write_grey_png, write_png16  # noqa: E402
 
 
 def main():
     binary = sys.argv[1]
     rng = random.Random(26)
-    surfaces = [(rng.randint(20, 900), rng.randint(20, 900), rng.randint(20, 900)) for _ in range(12)]
-    lights = [(rng.randint(3, 40), rng.randint(3, 40), rng.randint(3, 40)) for _ in range(9)]
+    surfaces = random_triples(rng, 12, 20, 900)
+    lights = random_triples(rng, 9, 3, 40)
     with tempfile.TemporaryDirectory() as tmp:
         r = Runner(binary, tmp)
         names = []

@@ -28,10 +28,7 @@ import struct
 import sys
 import tempfile
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(os.path.dirname(HERE), "support"))
-from cli_harness import Runner, expect, memory_limit  # noqa: E402
+from cli_harness import Runner, expect, memory_limit, random_triples  # noqa: E402
 from dng import write_dng  # noqa: E402
 from png16 import write_png16  # noqa: E402
 
@@ -66,8 +63,8 @@ def mosaic(quads, pattern, blacks, rng, saturate=()):
 def main():
     binary = sys.argv[1]
     rng = random.Random(31)
-    surfaces = [(rng.randint(20, 900), rng.randint(20, 900), rng.randint(20, 900)) for _ in range(12)]
-    lights = [(rng.randint(3, 15), rng.randint(3, 15), rng.randint(3, 15)) for _ in range(6)]
+    surfaces = random_triples(rng, 12, 20, 900)
+    lights = random_triples(rng, 6, 3, 15)
     w, h = 16, 12  # quads: a 32×24 mosaic (LibRaw reads no raw file under 22 photosites a side)
     saturate = {(1, 1), (5, 7), (10, 3)}
     with tempfile.TemporaryDirectory() as tmp:

@@ -59,6 +59,29 @@ BOOST_AUTO_TEST_CASE(ulp_level_degeneracies_are_decided_exactly) {
   BOOST_CHECK_THROW(chromaticity_hull({{1, NAN, 1}}), std::invalid_argument);
 }
 
+// Scaling a colour by a power of 2 leaves its chromaticity and the hull unchanged, however far:
+// colours near one line, each scaled by 2^e for e up to ±1000, where the double predicates'
+// products leave the normal range (their bounds are relative: tests/numerics/test_filter_bounds.cpp),
+// give the reference's hull.
+BOOST_AUTO_TEST_CASE(extreme_scales_give_the_same_hull) {
+  std::mt19937_64 gen(44);
+  std::uniform_real_distribution<double> unit(0.5, 1.0);
+  std::uniform_int_distribution<int> scale(-1000, 1000), nudge(-2, 2);
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<std::array<double, 3>> colours, scaled;
+    const double slope = unit(gen);
+    for (int k = 0; k < 12; ++k) {
+      const double x = unit(gen) * 4, b = unit(gen);
+      double g = slope * x * b;  // (x·b, g, b): chromaticity near the line y = slope·x
+      for (int n = nudge(gen); n != 0; n += n > 0 ? -1 : 1) g = std::nextafter(g, n > 0 ? 2.0 : 0.0);
+      colours.push_back({x * b, g, b});
+      const int e = trial % 2 ? scale(gen) : scale(gen) / 2;
+      scaled.push_back({std::ldexp(x * b, e), std::ldexp(g, e), std::ldexp(b, e)});
+    }
+    BOOST_TEST_REQUIRE((chromaticity_hull(scaled).hull == reference(colours)), "trial " << trial);
+  }
+}
+
 // The integer route (image pixels) against the reference: small channel ranges give many equal
 // chromaticities, ties in x and collinear triples; wide ones the general case; b = 0 is dropped.
 BOOST_AUTO_TEST_CASE(integer_colours_agree_with_the_reference) {

@@ -4,6 +4,7 @@
 // its volume and centroid by the divergence theorem over faces ordered here — all exact.
 #include "../test_support.h"
 
+#include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/geometry/convex_set_3.h>
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
@@ -24,13 +25,6 @@ inline std::ostream& operator<<(std::ostream& os, const Point3& p) {
 }  // namespace gmcc
 
 namespace {
-Point3 sub(const Point3& a, const Point3& b) { return {R(a.x - b.x), R(a.y - b.y), R(a.z - b.z)}; }
-Point3 cross(const Point3& a, const Point3& b) {
-  return {R(a.y * b.z - a.z * b.y), R(a.z * b.x - a.x * b.z), R(a.x * b.y - a.y * b.x)};
-}
-R dot(const Point3& a, const Point3& b) { return R(a.x * b.x + a.y * b.y + a.z * b.z); }
-Point3 times(const Point3& a, const Point3& b) { return {R(a.x * b.x), R(a.y * b.y), R(a.z * b.z)}; }
-bool zero(const Point3& a) { return sgn(a.x) == 0 && sgn(a.y) == 0 && sgn(a.z) == 0; }
 
 struct Plane {
   Point3 a;
@@ -44,7 +38,7 @@ std::vector<Plane> brute_force_facets(const std::vector<Point3>& s) {
     for (std::size_t j = i + 1; j < s.size(); ++j)
       for (std::size_t k = j + 1; k < s.size(); ++k) {
         Point3 n = cross(sub(s[j], s[i]), sub(s[k], s[i]));
-        if (zero(n)) continue;
+        if (is_zero(n)) continue;
         R b = dot(n, s[i]);
         int above = 0, below = 0;
         for (const Point3& p : s) {
@@ -65,14 +59,14 @@ bool in_hull(const std::vector<Plane>& facets, const Point3& x) {
 // The definition: d ⊙ p ∈ G for every image colour p.
 bool feasible(const std::vector<Plane>& G, const std::vector<Point3>& image, const Point3& d) {
   for (const Point3& p : image)
-    if (!in_hull(G, times(d, p))) return false;
+    if (!in_hull(G, hadamard(d, p))) return false;
   return true;
 }
 // F3's vertices by brute force: every triple of constraint planes with a unique feasible point.
 std::vector<Point3> brute_force_vertices(const std::vector<Plane>& G, const std::vector<Point3>& image) {
   std::vector<Plane> rows;
   for (const Point3& p : image)
-    for (const Plane& f : G) rows.push_back({times(f.a, p), f.b});
+    for (const Plane& f : G) rows.push_back({hadamard(f.a, p), f.b});
   std::vector<Point3> out;
   for (std::size_t i = 0; i < rows.size(); ++i)
     for (std::size_t j = i + 1; j < rows.size(); ++j)
@@ -221,7 +215,7 @@ BOOST_AUTO_TEST_CASE(random_scenes_against_brute_force) {
     BOOST_TEST(F.vertices == brute_force_vertices(G, image));
     std::vector<Plane> rows;
     for (const Point3& p : image)
-      for (const Plane& f : G) rows.push_back({times(f.a, p), f.b});
+      for (const Plane& f : G) rows.push_back({hadamard(f.a, p), f.b});
     const auto [vol, moment] = divergence_volume_moment(F.vertices, rows);
     BOOST_TEST(volume(F) == vol);
     BOOST_TEST(sgn(vol) > 0);

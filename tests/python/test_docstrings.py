@@ -79,6 +79,13 @@ def check_summary_and_citation(what, doc):
         f"{what}: no citation of a paper with its equation, section or figure")
 
 
+def checked_doc(what, obj):
+    """obj's own docstring (own_doc), its summary and citation checked."""
+    doc = own_doc(obj)
+    check_summary_and_citation(what, doc)
+    return doc
+
+
 def check_parameters(what, doc, params):
     s = sections(doc)
     if not params:
@@ -119,8 +126,7 @@ CLASSES = [n for n in gmcc.__all__ if inspect.isclass(getattr(gmcc, n))]
 @pytest.mark.parametrize("name", FUNCTIONS)
 def test_function_docstring(name):
     f = getattr(gmcc, name)
-    doc = own_doc(f)
-    check_summary_and_citation(name, doc)
+    doc = checked_doc(name, f)
     params = parameters(f)
     check_parameters(name, doc, params)
     check_returns_and_raises(name, doc, bool(params))
@@ -139,8 +145,7 @@ def public_members(cls):
 @pytest.mark.parametrize("name", CLASSES)
 def test_class_docstring(name):
     cls = getattr(gmcc, name)
-    doc = own_doc(cls)
-    check_summary_and_citation(name, doc)
+    doc = checked_doc(name, cls)
     s = sections(doc)
     attributes, methods = public_members(cls)
     assert "Attributes" in s, f"{name}: no Attributes section"
@@ -152,9 +157,8 @@ def test_class_docstring(name):
     check_parameters(name, doc, params)
     for method in methods:
         m = getattr(cls, method)
-        mdoc = own_doc(m)
         what = f"{name}.{method}"
-        check_summary_and_citation(what, mdoc)
+        mdoc = checked_doc(what, m)
         mparams = parameters(m)
         check_parameters(what, mdoc, mparams)
         check_returns_and_raises(what, mdoc, bool(mparams))

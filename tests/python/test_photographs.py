@@ -79,23 +79,12 @@ def test_learner_and_estimate_recover_the_light():
 
 
 def lp_max_trace(A, b, q):
-    """Independent float LP: maximise d1 + d2 + d3 subject to A (d ∘ q) <= b, d >= 0; and whether
-    the maximiser is unique (each coordinate's range over the optimal face below 1e-7)."""
-    linprog = scipy_optimize.linprog
-    rows = (A[:, None, :] * q[None, :, :]).reshape(-1, 3)
-    rhs = np.repeat(b, len(q))
-    r = linprog(-np.ones(3), A_ub=rows, b_ub=rhs, bounds=[(0, None)] * 3, method="highs")
+    """The independent float LP (tests/support/float_lp.py): its maximiser d, and whether it is
+    unique."""
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
+    import float_lp
+    r, unique = float_lp.max_trace(A, b, q)
     assert r.status == 0
-    unique = True
-    for k in range(3):
-        ends = []
-        for sign in (1, -1):
-            c = np.zeros(3)
-            c[k] = sign
-            t = linprog(c, A_ub=rows, b_ub=rhs, A_eq=np.ones((1, 3)), b_eq=[-r.fun], bounds=[(0, None)] * 3,
-                        method="highs")
-            ends.append(sign * t.fun)
-        unique = unique and abs(ends[0] - ends[1]) <= 1e-7 * max(1.0, abs(r.x[k]))
     return r.x, unique
 
 

@@ -10,6 +10,7 @@
 #include "../test_support.h"
 #include "crule_oracles.h"
 
+#include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/selection/crule_3d.h>
 #include <gmcc/selection/centroid_3.h>
@@ -32,10 +33,6 @@ using gmcc::test::worst_case_oracle;
 using R = Rational;
 
 namespace {
-
-R dot(const Point3& a, const Point3& b) { return R(a.x * b.x + a.y * b.y + a.z * b.z); }
-bool is_zero(const Point3& a) { return sgn(a.x) == 0 && sgn(a.y) == 0 && sgn(a.z) == 0; }
-
 
 // The oracle: p on the inner side of every facet's plane (outward normal from its first three
 // vertices), in ℚ.

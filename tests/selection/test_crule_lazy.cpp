@@ -13,6 +13,7 @@
 #include "../test_support.h"
 #include "crule_oracles.h"
 
+#include <gmcc/geometry/point3_arithmetic.h>
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/geometry/lazy_convex_set_3.h>
 #include <gmcc/selection/centroid_3.h>
@@ -36,9 +37,6 @@ using gmcc::test::worst_case_oracle;
 using R = Rational;
 
 namespace {
-
-bool is_zero(const Point3& a) { return sgn(a.x) == 0 && sgn(a.y) == 0 && sgn(a.z) == 0; }
-R dot(const Point3& a, const Point3& b) { return R(a.x * b.x + a.y * b.y + a.z * b.z); }
 
 void same_enclosures(const LazyConvexSet3& L, const ConvexSet3& E) {
   BOOST_TEST_REQUIRE(L.size() == E.vertices.size());

@@ -3,6 +3,7 @@
 // feasible sets as results, recovery, the illumination constraint, scoring against truth, and
 // the errors it names.
 #include "../test_support.h"
+#include "random_canonical_side.h"
 
 #include <gmcc/geometry/canonical_gamut.h>
 #include <gmcc/geometry/chromaticity.h>
@@ -56,11 +57,10 @@ BOOST_AUTO_TEST_CASE(agrees_with_its_steps_on_random_scenes) {
   // The route `gmcc select` took before the library pipeline: chromaticities, canonical_gamut,
   // feasible_set, select_maps with c. The prepared canonical side is reused across scenes.
   test::Rng rng(12);
-  const std::vector<Colour> canonical = test::random_colours(rng, 12, 1, 60, 7);
-  SelectSceneOptions o;
-  o.expansion = {ExpansionPolicy::multiplicative, R(1, 10)};
-  o.canonical_illuminant = {R(9, 10), 1, R(11, 10)};
-  const PreparedCanonical pc = prepare_canonical(canonical, o);
+  const test::RandomCanonicalSide side = test::random_canonical_side(rng);
+  const std::vector<Colour>& canonical = side.canonical;
+  const SelectSceneOptions& o = side.options;
+  const PreparedCanonical& pc = side.prepared;
   const ConvexSet2 G = canonical_gamut(
       perspective_chromaticities(canonical, NonPositiveBluePolicy::drop).points, o.expansion);
   BOOST_TEST(pc.gamut == G);

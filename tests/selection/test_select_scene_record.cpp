@@ -5,6 +5,7 @@
 // extended-precision stage), random scenes, degenerate (segment, point) and empty feasible sets,
 // the illumination constraint and a recovery policy.
 #include "../test_support.h"
+#include "random_canonical_side.h"
 
 #include <gmcc/selection/select_scene_record.h>
 #include <gmcc/input/colour_csv.h>
@@ -138,11 +139,9 @@ BOOST_AUTO_TEST_CASE(munsell_scenes_agree_with_the_exact_route) {
 
 BOOST_AUTO_TEST_CASE(random_scenes_and_choices) {
   test::Rng rng(31);
-  const std::vector<Colour> canonical = test::random_colours(rng, 12, 1, 60, 7);
-  SelectSceneOptions o;
-  o.expansion = {ExpansionPolicy::multiplicative, R(1, 10)};
-  o.canonical_illuminant = {R(9, 10), 1, R(11, 10)};
-  const PreparedCanonical pc = prepare_canonical(canonical, o);
+  const test::RandomCanonicalSide side = test::random_canonical_side(rng);
+  const std::vector<Colour>& canonical = side.canonical;
+  const PreparedCanonical& pc = side.prepared;
   for (int s = 0; s < 60; ++s) {
     std::vector<Colour> image;
     for (int i = 0, n = 1 + s % 5; i < n; ++i) {

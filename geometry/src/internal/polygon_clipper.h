@@ -4,7 +4,7 @@
 // (docs/derivations.md §4.3, docs/math.md §1a′). Internal to gmcc::geometry.
 
 #include <gmcc/geometry/feasible_polygon.h>
-#include <gmcc/numerics/filtered_sign.h>
+#include <gmcc/numerics/filter_bounds.h>
 
 #include "internal/canonical_lines.h"
 #include "internal/extended_value.h"
@@ -105,10 +105,10 @@ class PolygonClipper {
     const int ia = l.a > 0, ib = l.b > 0;
     const double x_hi = l.a * (ia ? v.hi[0] : v.lo[0]), y_hi = l.b * (ib ? v.hi[1] : v.lo[1]);
     const double top = x_hi + y_hi - l.c;
-    if (top < -16 * u * (std::fabs(x_hi) + std::fabs(y_hi) + std::fabs(l.c))) return -1;
+    if (top < -numerics::filter_bound::clip_point_side * (std::fabs(x_hi) + std::fabs(y_hi) + std::fabs(l.c))) return -1;
     const double x_lo = l.a * (ia ? v.lo[0] : v.hi[0]), y_lo = l.b * (ib ? v.lo[1] : v.hi[1]);
     const double bottom = x_lo + y_lo - l.c;
-    if (bottom > 16 * u * (std::fabs(x_lo) + std::fabs(y_lo) + std::fabs(l.c))) return 1;
+    if (bottom > numerics::filter_bound::clip_point_side * (std::fabs(x_lo) + std::fabs(y_lo) + std::fabs(l.c))) return 1;
     return 0;
   }
 
@@ -139,7 +139,7 @@ class PolygonClipper {
     if (filtered_) {
       const ApproximateLine &p = lines_[i].approx, &q = lines_[j].approx;
       const double l = p.a * q.b, r = q.a * p.b;
-      const numerics::UncertainSign w = numerics::sign_within(l - r, 16 * u * (std::fabs(l) + std::fabs(r)));
+      const numerics::UncertainSign w = numerics::sign_within(l - r, numerics::filter_bound::clip_weight * (std::fabs(l) + std::fabs(r)));
       if (w.is_certain()) return w.lo;
     }
     const Line &p = exact(i), &q = exact(j);
@@ -216,7 +216,7 @@ class PolygonClipper {
     const ApproximateLine &p = lines_[v.p].approx, &q = lines_[v.q].approx;
     auto det = [](double a, double d, double b, double c) {  // a·d − b·c
       const double l = a * d, r = b * c;
-      return Enclosure{l - r, Enclosure::round_up(16 * u * (std::fabs(l) + std::fabs(r)))};
+      return Enclosure{l - r, Enclosure::round_up(numerics::filter_bound::clip_weight * (std::fabs(l) + std::fabs(r)))};
     };
     const Enclosure w = det(p.a, q.b, q.a, p.b);
     return {det(p.c, q.b, q.c, p.b) / w, det(p.a, q.c, q.a, p.c) / w};
@@ -231,7 +231,7 @@ class PolygonClipper {
       const ApproximateLine& l = lines_[h].approx;
       const double x = l.a * (*fm)[0], y = l.b * (*fm)[1];
       const numerics::UncertainSign s =
-          numerics::sign_within(x + y - l.c, 16 * u * (std::fabs(x) + std::fabs(y) + std::fabs(l.c)));
+          numerics::sign_within(x + y - l.c, numerics::filter_bound::clip_point_side * (std::fabs(x) + std::fabs(y) + std::fabs(l.c)));
       if (s.is_certain()) return s.lo;
     }
     const Line& l = exact(h);
@@ -304,7 +304,7 @@ class PolygonClipper {
       const double mag = std::fabs(h.a) * (std::fabs(x1) + std::fabs(x2)) +
                          std::fabs(h.b) * (std::fabs(y1) + std::fabs(y2)) +
                          std::fabs(h.c) * (std::fabs(w1) + std::fabs(w2));
-      const numerics::UncertainSign filtered = numerics::sign_within(s, 32 * u * mag);
+      const numerics::UncertainSign filtered = numerics::sign_within(s, numerics::filter_bound::clip_vertex_side * mag);
       if (filtered.is_certain()) return filtered.lo;
       if (mag == 0) return 0;  // every term has an exactly zero factor (no underflow in range)
     }

@@ -24,7 +24,9 @@ struct ChromaticityHull {
 /// raw channels: x-order is sign(r1·b2 − r2·b1), orientation is sign(det[(r,g,b)_1; _2; _3])
 /// (b > 0). Each is evaluated in double with a rigorous error bound and decided exactly (GMP)
 /// only when the bound cannot decide — a filtered predicate (Shewchuk 1997; CGAL's filtered
-/// kernels), so the answer is exact whatever the input. Points strictly inside the octagon of
+/// kernels), so the answer is exact whatever the input. The bounds are relative: the doubles
+/// are used only when every channel is 0 or in [2^-100, 2^100] (every product then normal);
+/// otherwise every predicate, and no octagon, is exact. Points strictly inside the octagon of
 /// input points extreme in eight directions are discarded first by a conservative double test
 /// (Akl & Toussaint 1978), then Andrew's monotone
 /// chain (1979) runs on the rest. Complexity O(n) filtered tests plus O(h' log h') for the h'
