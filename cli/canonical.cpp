@@ -13,6 +13,7 @@
 #include <map>
 #include <set>
 
+#include "option_choices.h"
 #include "output_files.h"
 #include "provenance.h"
 #include "write_stdout.h"
@@ -39,7 +40,7 @@ CLI::App* add_canonical_command(CLI::App& app, CanonicalOptions& o) {
                   "2d: the hull of the white-balanced chromaticities, written as chromaticity "
                   "lifts r/b,g/b,1 (the perspective route); 3d: the hull of the white-balanced "
                   "pixel colours, written as r,g,b (3-D gamut mapping, estimate --space 3d)")
-      ->check(CLI::IsMember({"2d", "3d"}))
+      ->check(CLI::IsMember(space_choices))
       ->capture_default_str();
   cmd->add_option("--intensity", o.intensity,
                   "3d: max (each image scaled so that its largest white-balanced channel is 1) "

@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "json_output.h"
+#include "option_choices.h"
 #include "output_files.h"
 #include "provenance.h"
 #include "raw_report.h"
@@ -200,7 +201,7 @@ CLI::App* add_estimate_command(CLI::App& app, EstimateOptions& o) {
                   "Barnard's ECRULE)");
   cmd->add_option("--illuminant-worst-case", o.illuminant_worst_case,
                   "on | off: each rule's illuminant-space worst case")
-      ->check(CLI::IsMember({"on", "off"}))
+      ->check(CLI::IsMember(switch_choices))
       ->capture_default_str();
   cmd->add_flag("--json", o.json, "print one JSON document instead of a summary");
   cmd->add_option("--corrected", o.corrected_dir,
@@ -210,7 +211,7 @@ CLI::App* add_estimate_command(CLI::App& app, EstimateOptions& o) {
                   "2d: the perspective route (chromaticities, max-area, 2-D mean, 3-D mean); "
                   "3d: Forsyth's CRULE on the pixel colours against a 3-D canonical gamut "
                   "(gmcc canonical --space 3d), with max-volume, centroid and max-trace")
-      ->check(CLI::IsMember({"2d", "3d"}))
+      ->check(CLI::IsMember(space_choices))
       ->capture_default_str();
   cmd->add_option("--rules", o.rules_3d,
                   "3d: the rules to apply, of max-volume, centroid, max-trace (default all)")

@@ -2,6 +2,7 @@
 
 #include "integer_option.h"
 #include "json_output.h"
+#include "option_choices.h"
 #include "select_3d.h"
 #include "select_batch.h"
 #include "write_stdout.h"
@@ -187,7 +188,7 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
   cmd->add_option("--illuminant-worst-case", o.illuminant_worst_case,
                   "on: each rule's illuminant-space worst case (exact edge quartics, about a "
                   "third of a scene's time); off: leave it out")
-      ->check(CLI::IsMember({"on", "off"}))
+      ->check(CLI::IsMember(switch_choices))
       ->capture_default_str();
   cmd->add_option("--on-empty", o.on_empty,
                   "when F is empty: none (report it), grow-canonical (least multiplicative "
@@ -198,7 +199,7 @@ CLI::App* add_select_command(CLI::App& app, SelectOptions& o) {
   cmd->add_option("--space", o.space,
                   "2d: perspective maps (d1/d3, d2/d3), the paper's rules; 3d: Forsyth's CRULE, "
                   "diagonal maps (d1, d2, d3) as an exact polytope, max-volume and centroid")
-      ->check(CLI::IsMember({"2d", "3d"}))
+      ->check(CLI::IsMember(space_choices))
       ->capture_default_str();
   cmd->add_option("--black", o.black, "3d: include or exclude black (0,0,0) in the canonical gamut")
       ->check(CLI::IsMember(canonical_black_names()))
