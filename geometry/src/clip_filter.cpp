@@ -36,15 +36,6 @@ void LiveVertexFilter::add(const VertexDoubles& v) {
   where_.push_back({0, 0});
 }
 
-// The octant of v's box centre about centre_ (0 when the bounds are not known).
-std::size_t LiveVertexFilter::octant(const VertexDoubles& v) const {
-  std::size_t o = 0;
-  if (box_ok_)
-    for (std::size_t c = 0; c < 3; ++c)
-      if (v.lo[c] + v.hi[c] > centre_[c]) o |= std::size_t(1) << c;
-  return o;
-}
-
 // Vertex v's record appended to its octant's group, the group's box widened to hold it.
 void LiveVertexFilter::place(int v) {
   const VertexDoubles& x = vertices_[static_cast<std::size_t>(v)];
@@ -96,31 +87,41 @@ void LiveVertexFilter::update(const std::vector<int>& live, const std::vector<in
   bool fresh = !box_ok_ || changed_ >= live.size();
   for (int v : added) fresh = fresh || !vertices_[static_cast<std::size_t>(v)].bounded;
   if (fresh) return rebuild(live);
+  // top_, the largest upper bounds over the live vertices: a maximum over the vertices kept is the
+  // old one unless a removed vertex attained it (then made anew), and the added ones join it.
+  bool attained = false;
   for (int v : removed) {
     const std::array<std::size_t, 2>& w = where_[static_cast<std::size_t>(v)];
     std::fill_n(groups_[w[0]].packed.begin() + static_cast<std::ptrdiff_t>(w[1]), 6, 0.0);
+    const double* hi = vertices_[static_cast<std::size_t>(v)].hi;
+    attained = attained || hi[0] == top_[0] || hi[1] == top_[1] || hi[2] == top_[2];
   }
   for (int v : added) place(v);
-  top_ = {0, 0, 0};
-  for (int v : live)
+  const std::vector<int>& over = attained ? live : added;
+  if (attained) top_ = {0, 0, 0};
+  for (int v : over)
     for (std::size_t c = 0; c < 3; ++c) top_[c] = std::max(top_[c], vertices_[static_cast<std::size_t>(v)].hi[c]);
 }
 
 // A vertex: s = a·(X, Y, Z) − b·W < −bound with the side test's bound enlarged (1 + 64u for its
 // evaluation, 1 + 16u more for α, β); a zero bound means every term is exactly zero (the vertex
-// exactly on the plane).
+// exactly on the plane). Inside: v < −bound, which is sign_within(v, bound) certainly negative
+// (bound >= 0: a sum of products of non-negative numbers), or exactly 0 with a zero bound; a
+// group's vertices tested without a branch each (most groups pass whole), the group then.
 bool LiveVertexFilter::none_outside(const double* a) const {
   if (!all_filtered_) return false;
   const double m = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])}) * (1 + numerics::filter_bound::polytope_quick_evaluation);
   const double b = std::fabs(a[3]) * (1 + numerics::filter_bound::polytope_quick_evaluation);
   for (const Group& g : groups_) {
     if (g.used == 0 || group_inside(g, a)) continue;
+    bool inside = true;
+    const double* p = g.packed.data();
     for (std::size_t k = 0; k < g.used; k += 6) {
-      const double* h = &g.packed[k];
+      const double* h = p + k;
       const double v = a[0] * h[0] + a[1] * h[1] + a[2] * h[2] - a[3] * h[3], bound = m * h[4] + b * h[5];
-      // Inside: certainly negative, or exactly 0 (a zero bound: every term exactly zero).
-      if (!(numerics::certainly_negative(numerics::sign_within(v, bound)) || (bound == 0 && v == 0))) return false;
+      inside &= (v < -bound) | ((bound == 0) & (v == 0));
     }
+    if (!inside) return false;
   }
   return true;
 }

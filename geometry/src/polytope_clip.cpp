@@ -109,6 +109,7 @@ class Clipper {
     for (const Group& g : groups_) mark_implied(g, implied);
     // Corner (bx, by, bz) is vertex bx + 2by + 4bz; faces counter-clockwise seen from outside.
     vertices_.reserve(384);  // a typical clip's (growing moves every vertex)
+    filter_.reserve(384);
     for (int c = 0; c < 8; ++c)
       add_vertex({c & 1 ? 3 : 0, c & 2 ? 4 : 1, c & 4 ? 5 : 2});
     faces_ = {{0, {0, 4, 6, 2}}, {3, {1, 3, 7, 5}}, {1, {0, 1, 5, 4}},
@@ -133,17 +134,25 @@ class Clipper {
   // come first, and most later rows then hold on the whole polytope, settled by box_inside or
   // none_outside without a cut. A heuristic in doubles that decides nothing (on the NUS
   // thumbnails, 22% fewer cuts than the pseudo-random order alone; docs/performance-history.md).
+  // A row the box's own filter shows to hold on the box (box_inside before the first cut) is
+  // left out: every later polytope lies in the box, so the row never cuts, and run() would
+  // only have tested it again. The bands are those of every row, so the rows kept are in the
+  // order they had among all (a stable sort restricted to them).
   void deepest_first(const Point3& box) {
     double c[3];
     for (int k = 0; k < 3; ++k) c[k] = coord(box, k).get_d() / 2;
     // Each row's distance; a constant row (a = 0) first, one without a filter copy last.
-    std::vector<double> d(order_.size());
+    const std::size_t n = order_.size();
+    std::vector<double> d(n);
+    std::vector<std::uint32_t> kept;  // positions in order_ of the rows the box does not settle
+    kept.reserve(n);
     double lo = HUGE_VAL, hi = -HUGE_VAL;
-    for (std::size_t k = 0; k < order_.size(); ++k) {
+    for (std::size_t k = 0; k < n; ++k) {
       const Filter& f = filters_[order_[k]];
       const double norm = std::sqrt(f.c[0] * f.c[0] + f.c[1] * f.c[1] + f.c[2] * f.c[2]);
       d[k] = !f.usable ? -HUGE_VAL : norm > 0 ? (f.c[0] * c[0] + f.c[1] * c[1] + f.c[2] * c[2] - f.c[3]) / norm : HUGE_VAL;
       if (std::isfinite(d[k])) lo = std::min(lo, d[k]), hi = std::max(hi, d[k]);
+      if (!(f.usable && filter_.box_inside(f.c))) kept.push_back(static_cast<std::uint32_t>(k));
     }
     // A stable sort into `levels` equal bands of distance, deepest band first, each band in the
     // order it had (a comparison sort's mispredicted branches cost more than it gained): band
@@ -151,25 +160,27 @@ class Clipper {
     // sort, the same order as one counting pass over every band at a fraction of the counts).
     constexpr std::size_t levels = 4096;
     const double scale = hi > lo ? double(levels - 1) / (hi - lo) : 0;
-    std::vector<std::uint16_t> band(order_.size());
-    for (std::size_t k = 0; k < order_.size(); ++k) {
-      const double x = d[k];
-      band[k] = x == HUGE_VAL ? 0 : x == -HUGE_VAL || std::isnan(x) ? levels + 1
+    const std::size_t m = kept.size();
+    std::vector<std::uint16_t> band(m);
+    for (std::size_t j = 0; j < m; ++j) {
+      const double x = d[kept[j]];
+      band[j] = x == HUGE_VAL ? 0 : x == -HUGE_VAL || std::isnan(x) ? levels + 1
                 : static_cast<std::uint16_t>(1 + std::min(double(levels - 1), std::floor((hi - x) * scale)));
     }
-    std::vector<std::size_t> index(order_.size()), sorted(order_.size());
-    for (std::size_t k = 0; k < index.size(); ++k) index[k] = k;
+    std::vector<std::uint32_t> index(m), sorted(m);
+    for (std::size_t j = 0; j < m; ++j) index[j] = static_cast<std::uint32_t>(j);
     for (const int shift : {0, 7}) {
-      std::array<std::size_t, 129> start{};
-      for (std::size_t k = 0; k < order_.size(); ++k) ++start[((band[k] >> shift) & 127u) + 1u];
+      std::array<std::uint32_t, 129> start{};
+      for (std::size_t j = 0; j < m; ++j) ++start[((band[j] >> shift) & 127u) + 1u];
       for (std::size_t b = 0; b + 1 < start.size(); ++b) start[b + 1] += start[b];
-      for (const std::size_t k : index) sorted[start[(band[k] >> shift) & 127u]++] = k;
+      for (const std::uint32_t j : index) sorted[start[(band[j] >> shift) & 127u]++] = j;
       index.swap(sorted);
     }
-    for (std::size_t k = 0; k < index.size(); ++k) sorted[k] = order_[index[k]];
-    order_ = std::move(sorted);
-    queue_.resize(order_.size());
-    for (std::size_t k = 0; k < order_.size(); ++k) queue_[k] = filters_[order_[k]];
+    std::vector<std::size_t> rows(m);
+    for (std::size_t j = 0; j < m; ++j) rows[j] = order_[kept[index[j]]];
+    order_ = std::move(rows);
+    queue_.resize(m);
+    for (std::size_t k = 0; k < m; ++k) queue_[k] = filters_[order_[k]];
   }
 
   // Marks the rows of group g implied by another row of the same facet on x >= 0, which every
@@ -180,11 +191,22 @@ class Clipper {
   void mark_implied(const Group& g, std::vector<char>& implied) const {
     const std::size_t n = g.source->size();
     if (n < 2) return;
-    // Each point's rank in each coordinate (equal coordinates, equal ranks), compared exactly.
+    // Each point's rank in each coordinate (equal coordinates, equal ranks), compared exactly: by
+    // the coordinates' truncated doubles where both are known and differ (truncation is monotone;
+    // certified_double, NaN outside the range policy), else exactly.
     std::vector<std::array<int, 3>> rank(n);
+    std::vector<std::array<double, 3>> key(n);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int k = 0; k < 3; ++k)
+        key[i][static_cast<std::size_t>(k)] =
+            numerics::certified_double(coord((*g.source)[i], k).get_mpq_t()).value_or(std::nan(""));
     std::vector<std::size_t> by(n);
     for (int k = 0; k < 3; ++k) {
-      auto less = [&](std::size_t i, std::size_t j) { return cmp(coord((*g.source)[i], k), coord((*g.source)[j], k)) < 0; };
+      auto less = [&](std::size_t i, std::size_t j) {
+        const double x = key[i][static_cast<std::size_t>(k)], y = key[j][static_cast<std::size_t>(k)];
+        if (x < y || x > y) return x < y;  // both known (a NaN compares false both ways) and different
+        return cmp(coord((*g.source)[i], k), coord((*g.source)[j], k)) < 0;
+      };
       std::iota(by.begin(), by.end(), std::size_t(0));
       std::sort(by.begin(), by.end(), less);
       int r = 0;
@@ -293,8 +315,9 @@ class Clipper {
   }
 
   // A row left one vertex v of the polytope on it and the others strictly outside: F3 ⊆ {v}, and
-  // v satisfies every row so far; so F3 is {v} if v satisfies the rows from order_[from] on, else
-  // empty (each side decided as every other, by the filter or exactly).
+  // v satisfies every row so far and, a point of the box, every row deepest_first left out; so F3
+  // is {v} if v satisfies the rows from order_[from] on, else empty (each side decided as every
+  // other, by the filter or exactly).
   ClippedPolytope point(std::size_t from) {
     Vertex& v = vertices_[static_cast<std::size_t>(flat_point_)];
     for (std::size_t k = from; k < order_.size(); ++k) {
@@ -468,8 +491,21 @@ class Clipper {
     if (sign_.size() < vertices_.size()) sign_.resize(vertices_.size() + 64);
     int in = 0, out = 0;
     removed_.clear(), on_.clear();
+    // side()'s first test inline, its row's factors made once (the same operations, the same
+    // decisions); side() for the vertices it leaves.
+    const Filter& f = filters_[static_cast<std::size_t>(i)];
+    const double* a = f.c;
+    const double ma = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])}) * (1 + 128 * u);
+    const double mb = std::fabs(a[3]) * (1 + 128 * u);
     for (int v : live_) {
-      const int s = side(i, vertices_[v]);
+      Vertex& x = vertices_[static_cast<std::size_t>(v)];
+      int s = 2;
+      if (f.usable && x.filtered) {
+        const double value = a[0] * x.h[0] + a[1] * x.h[1] + a[2] * x.h[2] - a[3] * x.h[3];
+        const double quick = ma * x.alpha + mb * x.beta;
+        if (value > quick || value < -quick) count(true), s = value > 0 ? 1 : -1;
+      }
+      if (s == 2) s = side(i, x);
       sign_[v] = s;
       in += s < 0, out += s > 0;
       if (s > 0) removed_.push_back(v);  // the vertices strictly outside (removed by a cut)

@@ -12,6 +12,7 @@
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/geometry/integers_over_lcm.h>
 
+#include "internal/clip_filter.h"
 #include "internal/crule_exact.h"
 #include "internal/polytope_clip.h"
 #include "support/cgal_references.h"
@@ -537,6 +538,156 @@ BOOST_AUTO_TEST_CASE(joint_feasible_sets_of_several_types_agree_with_the_lp_rout
   BOOST_TEST(t.segment + t.point + t.polygon > 0);  // the joint LP route
   BOOST_TEST(t.empty > 0);
   BOOST_CHECK_THROW(feasible_set_3d(std::vector<GamutConstraint3>{}), std::invalid_argument);
+}
+
+// Rows that hold on the whole box are left out of the clip's order (deepest_first: the box's own
+// filter settles them before the first cut, and no later polytope leaves the box): the outcome and
+// the exact set are those of brute force and of the clip without those rows, with rows tangent to
+// the box at a corner (kept: the filter cannot settle them), constant rows (0 <= 1 left out,
+// 0 <= -1 kept: no map at all), and a row that leaves one corner (the point outcome, whose check of
+// the later rows skips those left out).
+BOOST_AUTO_TEST_CASE(rows_the_box_holds_are_left_out_and_change_nothing) {
+  Rng rng(4631);
+  std::uniform_int_distribution<long> coefficient(-5, 5), side(1, 6), extra(0, 3), pick(0, 99);
+  auto plane = [](long a, long b, long c, long d) {
+    return internal::IntegerPlane3{{mpz_class(a), mpz_class(b), mpz_class(c)}, mpz_class(d)};
+  };
+  int polytopes = 0, held = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const long B[3] = {side(rng), side(rng), side(rng)};
+    const Point3 box{R(B[0]), R(B[1]), R(B[2])};
+    std::vector<internal::IntegerPlane3> cutting, all;
+    for (int n = 0; n < 2 + trial % 4; ++n) {  // through a point inside the box: they cut it
+      long a[3];
+      do {
+        for (long& x : a) x = coefficient(rng);
+      } while (a[0] == 0 && a[1] == 0 && a[2] == 0);
+      cutting.push_back(plane(2 * a[0], 2 * a[1], 2 * a[2], a[0] * B[0] + a[1] * B[1] + a[2] * B[2]));
+    }
+    all = cutting;
+    for (int n = 0; n < 14; ++n) {  // holding on the box: strictly, or tangent at a corner
+      long a[3], top = 0;
+      for (int k = 0; k < 3; ++k) a[k] = coefficient(rng), top += std::max(a[k], 0L) * B[k];
+      if (a[0] == 0 && a[1] == 0 && a[2] == 0) continue;
+      all.push_back(plane(a[0], a[1], a[2], top + (n % 4 == 0 ? 0 : 1 + extra(rng))));
+      held += n % 4 != 0;
+    }
+    all.push_back(plane(0, 0, 0, 1));
+    std::shuffle(all.begin(), all.end(), rng);
+    const internal::ClippedPolytope r = internal::clip_polytope(box, all, nullptr);
+    const internal::ClippedPolytope c = internal::clip_polytope(box, cutting, nullptr);
+    BOOST_TEST((r.outcome == c.outcome), "trial " << trial);
+    if (r.outcome != internal::ClippedPolytope::Outcome::polytope || c.outcome != r.outcome) continue;
+    ++polytopes;
+    const ConvexSet3 F = r.set.exact();
+    BOOST_TEST((F == c.set.exact()), "trial " << trial);
+    BOOST_TEST((F.vertices == brute_force(box, all).vertices), "trial " << trial);
+    // No map at all: 0 <= -1 is never left out.
+    all.push_back(plane(0, 0, 0, -1));
+    std::shuffle(all.begin(), all.end(), rng);
+    BOOST_TEST((internal::clip_polytope(box, all, nullptr).outcome == internal::ClippedPolytope::Outcome::empty));
+    // One corner left: -x - y - z <= -(B0 + B1 + B2), then the rows that hold on the box.
+    std::vector<internal::IntegerPlane3> corner{plane(-1, -1, -1, -(B[0] + B[1] + B[2]))};
+    const std::vector<Point3> corners = brute_force(box, {}).vertices;
+    for (const internal::IntegerPlane3& h : all)  // those holding on the box (its corners unchanged)
+      if (sgn(h.a[0]) != 0 || sgn(h.a[1]) != 0 || sgn(h.a[2]) != 0)
+        if (pick(rng) < 50 && brute_force(box, {h}).vertices == corners) corner.push_back(h);
+    const internal::ClippedPolytope x = internal::clip_polytope(box, corner, nullptr);
+    BOOST_TEST((x.outcome == internal::ClippedPolytope::Outcome::polytope), "trial " << trial);
+    if (x.outcome == internal::ClippedPolytope::Outcome::polytope) {
+      BOOST_TEST((x.set.kind() == ConvexKind3::point));
+      BOOST_TEST((x.set.exact().vertices == std::vector<Point3>{box}));
+    }
+  }
+  BOOST_TEST(polytopes > 20);
+  BOOST_TEST(held > 300);
+}
+
+// The implied rows' ranks compare image channels by their truncated doubles and, where those tie,
+// exactly: channels 1 and 1 + 2^-70 (one double, two ranks), equal channels (one rank), and
+// channels beyond the double range (2^±300, compared exactly), against the LP route.
+BOOST_AUTO_TEST_CASE(implied_rows_rank_channels_that_tie_in_double) {
+  Rng rng(4632);
+  Tally t;
+  mpz_class big = 1;
+  mpz_mul_2exp(big.get_mpz_t(), big.get_mpz_t(), 70);
+  const R close(big + 1, big);  // 1 + 2^-70
+  mpz_class huge = 1;
+  mpz_mul_2exp(huge.get_mpz_t(), huge.get_mpz_t(), 300);
+  for (int trial = 0; trial < 40; ++trial) {
+    std::vector<Colour> canonical = test::random_colours(rng, 4 + trial % 8, 1, 1000, 64);
+    const R unit = trial % 4 == 3 ? R(huge) : trial % 4 == 2 ? R(mpz_class(1), huge) : R(1);
+    std::vector<Colour> image;
+    for (int i = 0; i < 3 + trial % 5; ++i) {
+      const Colour c = random_colour(rng, 3, 1);
+      const R base[3] = {R(c.r + 1), R(c.g + 1), R(c.b + 1)};
+      image.push_back({R(base[0] * unit), R(base[1] * unit), R(base[2] * unit)});
+      // Its twin: one channel 2^-70 relative above (the same truncated double), another equal.
+      const int k = i % 3;
+      image.push_back({R((k == 0 ? base[0] * close : base[0]) * unit), R((k == 1 ? base[1] * close : base[1]) * unit),
+                       R((k == 2 ? base[2] * close : base[2]) * unit)});
+    }
+    agree(canonical, image, trial % 2 == 0, t);
+  }
+  BOOST_TEST(t.polytope > 10);
+}
+
+// The live-vertex filter's bounding box kept across updates (the largest upper bounds made anew
+// only when a removed vertex attained one) answers every box test as a filter rebuilt from the
+// same live vertices, on seeded sequences of cuts: removed vertices at the top, added ones above
+// it, coordinates at 1 and at 2^±300.
+BOOST_AUTO_TEST_CASE(live_vertex_filter_box_after_updates_as_rebuilt) {
+  Rng rng(4633);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::uniform_int_distribution<int> coin(0, 3);
+  long agreed = 0, inside = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    const double scale = trial % 3 == 0 ? 0x1p-300 : trial % 3 == 1 ? 1 : 0x1p300;
+    internal::LiveVertexFilter filter;
+    std::vector<internal::VertexDoubles> made;
+    auto make = [&](double x, double y, double z) {
+      internal::VertexDoubles v;
+      v.h[0] = x * scale, v.h[1] = y * scale, v.h[2] = z * scale, v.h[3] = 1;
+      for (int k = 0; k < 3; ++k) v.err[k] = 0x1p-50 * std::fabs(v.h[k]);
+      v.filtered = true;
+      v.settle();
+      filter.add(v);
+      made.push_back(v);
+      return static_cast<int>(made.size()) - 1;
+    };
+    std::vector<int> live;
+    for (int i = 0; i < 20; ++i) live.push_back(make(unit(rng), unit(rng), unit(rng)));
+    filter.rebuild(live);
+    for (int cut = 0; cut < 40; ++cut) {
+      std::vector<int> removed, added, kept;
+      // Remove the vertices largest in a random coordinate (they attain the box) or random ones.
+      const int k = coin(rng) % 3;
+      std::sort(live.begin(), live.end(), [&](int a, int b) { return made[a].hi[k] > made[b].hi[k]; });
+      for (std::size_t j = 0; j < live.size(); ++j)
+        ((j < 2 && cut % 2 == 0) || coin(rng) == 0 ? removed : kept).push_back(live[j]);
+      for (int n = 0; n < 1 + coin(rng); ++n) {
+        const double grow = cut % 5 == 0 ? 1.5 : 0.9;
+        added.push_back(make(grow * unit(rng), grow * unit(rng), grow * unit(rng)));
+      }
+      live = kept;
+      live.insert(live.end(), added.begin(), added.end());
+      filter.update(live, removed, added);
+      internal::LiveVertexFilter fresh;
+      for (const internal::VertexDoubles& v : made) fresh.add(v);
+      fresh.rebuild(live);
+      for (int q = 0; q < 20; ++q) {
+        // Planes a·x <= b near the live vertices' largest values (scaled as filter copies are).
+        double a[4] = {unit(rng) - 0.3, unit(rng) - 0.3, unit(rng) - 0.3, 0};
+        for (const int v : live) a[3] = std::max(a[3], (a[0] * made[v].h[0] + a[1] * made[v].h[1] + a[2] * made[v].h[2]));
+        a[3] *= 0.9 + 0.3 * unit(rng);
+        const bool x = filter.box_inside(a), y = fresh.box_inside(a);
+        BOOST_TEST(x == y, "trial " << trial << " cut " << cut);
+        agreed += x == y, inside += x;
+      }
+    }
+  }
+  BOOST_TEST(agreed == 30 * 40 * 20);
+  BOOST_TEST(inside > 100);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -35,6 +35,8 @@ class LiveVertexFilter {
  public:
   // Vertex number add()'s count so far (vertices are numbered in the order they are added).
   void add(const VertexDoubles& v);
+  // Room for n vertices without moving the ones added (as the clip reserves its own).
+  void reserve(std::size_t n) { vertices_.reserve(n), where_.reserve(n); }
   // The filter of the polytope whose vertices are `live` (numbers from add()), from scratch: the
   // groups about the mean of the vertices' box centres, each group's box tight.
   void rebuild(const std::vector<int>& live);
@@ -106,6 +108,15 @@ inline bool box_below_plane(const double* a, const double* lo, const double* hi,
   total = p + n + std::fabs(a[3]);
   excess = p - (n + a[3]);
   return excess <= -16 * u * total;
+}
+
+// The octant of v's box centre about centre_ (0 when the bounds are not known).
+inline std::size_t LiveVertexFilter::octant(const VertexDoubles& v) const {
+  std::size_t o = 0;
+  if (box_ok_)
+    for (std::size_t c = 0; c < 3; ++c)
+      if (v.lo[c] + v.hi[c] > centre_[c]) o |= std::size_t(1) << c;
+  return o;
 }
 
 inline bool LiveVertexFilter::group_inside(const Group& g, const double* a) const {
