@@ -78,14 +78,16 @@ void sweep(const RgbImage& image, std::uint32_t black_level, const std::vector<b
   std::array<bool, 3> orders{};
   for (std::size_t k : norms) orders[static_cast<std::size_t>(all[k].parameters.order)] = true;
   const std::size_t w = image.width;
+  std::vector<std::size_t> row_kept;  // a row's kept columns, found once for every baseline
   gaussian_derivative_rows(image, black_level, all[norms.front()].parameters.sigma, orders,
                            [&](std::size_t y, const std::array<const double*, 3>& rows) {
+                             row_kept.clear();
+                             for (std::size_t x = 0; x < w; ++x)
+                               if (kept[y * w + x]) row_kept.push_back(3 * x);
                              for (std::size_t k : norms) {
                                const double* s = rows[static_cast<std::size_t>(all[k].parameters.order)];
-                               for (std::size_t x = 0; x < w; ++x)
-                                 if (kept[y * w + x])
-                                   for (int c = 0; c < 3; ++c)
-                                     f(all[k], c, std::fabs(s[3 * x + static_cast<std::size_t>(c)]));
+                               for (std::size_t i : row_kept)
+                                 for (int c = 0; c < 3; ++c) f(all[k], c, std::fabs(s[i + static_cast<std::size_t>(c)]));
                              }
                            });
 }
