@@ -90,25 +90,33 @@ bool small_integers(const std::vector<std::array<double, 3>>& d) {
 }
 
 // An index of a largest v·d[i] for each of the 26 directions v in {-1, 0, 1}^3 \ {0}, without
-// repeats: one pass per pair ±v. The products may round: any point chosen is a point of the set,
-// which is all Q needs.
+// repeats: the first largest and the first smallest along one of each pair ±v, all 13 in one
+// pass over the colours. The products may round: any point chosen is a point of the set, which
+// is all Q needs.
 std::vector<std::size_t> extreme_indices(const std::vector<std::array<double, 3>>& d) {
-  std::vector<std::size_t> out;
+  constexpr int n = 13;
+  double v[n][3];
+  int m = 0;
   for (int x = 0; x <= 1; ++x)
     for (int y = -1; y <= 1; ++y)
       for (int z = -1; z <= 1; ++z) {
         // One of each pair ±v: the first non-zero component positive.
         if (x == 0 && (y < 0 || (y == 0 && z <= 0))) continue;
-        const double vx = x, vy = y, vz = z;
-        std::size_t hi = 0, lo = 0;
-        double top = -HUGE_VAL, bottom = HUGE_VAL;
-        for (std::size_t i = 0; i < d.size(); ++i) {
-          const double v = vx * d[i][0] + vy * d[i][1] + vz * d[i][2];
-          if (v > top) top = v, hi = i;
-          if (v < bottom) bottom = v, lo = i;
-        }
-        out.push_back(hi), out.push_back(lo);
+        v[m][0] = x, v[m][1] = y, v[m][2] = z;
+        ++m;
       }
+  std::size_t hi[n] = {}, lo[n] = {};
+  double top[n], bottom[n];
+  std::fill(top, top + n, -HUGE_VAL);
+  std::fill(bottom, bottom + n, HUGE_VAL);
+  for (std::size_t i = 0; i < d.size(); ++i)
+    for (int k = 0; k < n; ++k) {
+      const double t = v[k][0] * d[i][0] + v[k][1] * d[i][1] + v[k][2] * d[i][2];
+      if (t > top[k]) top[k] = t, hi[k] = i;
+      if (t < bottom[k]) bottom[k] = t, lo[k] = i;
+    }
+  std::vector<std::size_t> out;
+  for (int k = 0; k < n; ++k) out.push_back(hi[k]), out.push_back(lo[k]);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
