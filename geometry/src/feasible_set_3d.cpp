@@ -94,6 +94,44 @@ CGAL::Polyhedron_3<Kernel> hull_3(const std::vector<Point3>& pts) {
   return poly;
 }
 
+/// The facets of conv(pts), pts spanning 3-D with `f` their affine frame (4 points), appended to
+/// `out` (normalised, not yet deduplicated); with `vertices`, the hull's vertices too (the mesh's,
+/// each an input point: the extreme points, as extreme_points_3 finds them), unsorted.
+void full_dimensional_facets(const std::vector<Point3>& pts, const std::vector<Point3>& f, std::vector<HalfSpace>& out,
+                             std::vector<Point3>* vertices) {
+  // CGAL's hull over the points' indices; each facet's plane through its first three vertices
+  // in integers from their homogeneous forms (internal/homogeneous_plane.h), oriented away from
+  // a point strictly inside (the frame's centroid, 4·inside in homogeneous form).
+  std::vector<KPoint3> in;
+  for (const Point3& p : pts) in.push_back(kernel_point(p));
+  std::vector<std::size_t> index(pts.size());
+  std::iota(index.begin(), index.end(), std::size_t(0));
+  CGAL::Surface_mesh<std::size_t> mesh;
+  CGAL::convex_hull_3(index.begin(), index.end(), mesh,
+                      CGAL::make_extreme_points_traits_adapter(CGAL::make_property_map(in)));
+  std::vector<std::optional<std::array<mpz_class, 4>>> homogeneous(pts.size());
+  auto h = [&](std::size_t i) -> const std::array<mpz_class, 4>& {
+    if (!homogeneous[i]) homogeneous[i] = homogeneous_integers(pts[i]);
+    return *homogeneous[i];
+  };
+  // 4 × the centroid, as (I, L): inside = I/(4L).
+  const std::array<mpz_class, 4> in4 = homogeneous_integers(add(add(f[0], f[1]), add(f[2], f[3])));
+  for (const auto fc : mesh.faces()) {
+    std::array<std::size_t, 3> v{};
+    std::size_t n = 0;
+    for (const auto x : CGAL::vertices_around_face(mesh.halfedge(fc), mesh))
+      if (n < 3) v[n++] = mesh.point(x);
+    auto [a, b] = internal::plane_through(h(v[0]), h(v[1]), h(v[2]));
+    // outward when a·I <= 4L·b (strictly: the frame spans 3-D).
+    const mpz_class lhs = a[0] * in4[0] + a[1] * in4[1] + a[2] * in4[2], rhs = 4 * in4[3] * b;
+    if (lhs > rhs)
+      for (mpz_class* x : {&a[0], &a[1], &a[2], &b}) *x = -*x;
+    out.push_back(normalised({Rational(a[0]), Rational(a[1]), Rational(a[2])}, Rational(b)));
+  }
+  if (vertices)
+    for (const auto x : mesh.vertices()) vertices->push_back(pts[mesh.point(x)]);
+}
+
 /// conv(pts) as closed half-spaces, any dimension (equalities as opposite pairs).
 std::vector<HalfSpace> hull_half_spaces(const std::vector<Point3>& pts) {
   const std::vector<Point3> f = affine_frame(pts);
@@ -129,35 +167,7 @@ std::vector<HalfSpace> hull_half_spaces(const std::vector<Point3>& pts) {
       out.push_back(normalised(a, h.c));
     }
   } else {
-    // CGAL's hull over the points' indices; each facet's plane through its first three vertices
-    // in integers from their homogeneous forms (internal/homogeneous_plane.h), oriented away from
-    // a point strictly inside (the frame's centroid, 4·inside in homogeneous form).
-    std::vector<KPoint3> in;
-    for (const Point3& p : pts) in.push_back(kernel_point(p));
-    std::vector<std::size_t> index(pts.size());
-    std::iota(index.begin(), index.end(), std::size_t(0));
-    CGAL::Surface_mesh<std::size_t> mesh;
-    CGAL::convex_hull_3(index.begin(), index.end(), mesh,
-                        CGAL::make_extreme_points_traits_adapter(CGAL::make_property_map(in)));
-    std::vector<std::optional<std::array<mpz_class, 4>>> homogeneous(pts.size());
-    auto h = [&](std::size_t i) -> const std::array<mpz_class, 4>& {
-      if (!homogeneous[i]) homogeneous[i] = homogeneous_integers(pts[i]);
-      return *homogeneous[i];
-    };
-    // 4 × the centroid, as (I, L): inside = I/(4L).
-    const std::array<mpz_class, 4> in4 = homogeneous_integers(add(add(f[0], f[1]), add(f[2], f[3])));
-    for (const auto fc : mesh.faces()) {
-      std::array<std::size_t, 3> v{};
-      std::size_t n = 0;
-      for (const auto x : CGAL::vertices_around_face(mesh.halfedge(fc), mesh))
-        if (n < 3) v[n++] = mesh.point(x);
-      auto [a, b] = internal::plane_through(h(v[0]), h(v[1]), h(v[2]));
-      // outward when a·I <= 4L·b (strictly: the frame spans 3-D).
-      const mpz_class lhs = a[0] * in4[0] + a[1] * in4[1] + a[2] * in4[2], rhs = 4 * in4[3] * b;
-      if (lhs > rhs)
-        for (mpz_class* x : {&a[0], &a[1], &a[2], &b}) *x = -*x;
-      out.push_back(normalised({Rational(a[0]), Rational(a[1]), Rational(a[2])}, Rational(b)));
-    }
+    full_dimensional_facets(pts, f, out, nullptr);
   }
   dedupe(out);
   return out;
@@ -378,6 +388,16 @@ int affine_dimension(const std::vector<Point3>& points) {
 
 std::vector<HalfSpace3> hull_half_spaces_3(const std::vector<Point3>& points) {
   return hull_half_spaces(points);
+}
+
+HullFacets3 hull_facets_and_vertices_3(const std::vector<Point3>& points) {
+  const std::vector<Point3> f = affine_frame(points);
+  GMCC_CHECK(f.size() == 4, "hull_facets_and_vertices_3: the points span 3-D");
+  HullFacets3 out;
+  full_dimensional_facets(points, f, out.half_spaces, &out.vertices);
+  dedupe(out.half_spaces);
+  out.vertices = sorted_unique(std::move(out.vertices));
+  return out;
 }
 
 // Points whose coordinates are all doubles exactly (integer pixel colours, samples read as

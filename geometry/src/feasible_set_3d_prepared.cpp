@@ -270,12 +270,16 @@ CanonicalConstraints3::CanonicalConstraints3(const std::vector<Colour>& canonica
     c->max.z = std::max(c->max.z, p.z);
   }
   c->dimension = internal::affine_dimension(pts);
-  c->half_spaces = internal::hull_half_spaces_3(pts);
   if (c->dimension == 3) {
+    // The facets and the vertices from one hull.
+    internal::HullFacets3 hull = internal::hull_facets_and_vertices_3(pts);
+    c->half_spaces = std::move(hull.half_spaces);
     std::vector<internal::IntegerPlane3> planes;
     for (const internal::HalfSpace3& h : c->half_spaces) planes.push_back(internal::integer_plane(h));
     // With G_c3's vertices: the rows of one image point then settle some sides without arithmetic.
-    c->integer = internal::clip_facets(std::move(planes), internal::extreme_points_3(pts));
+    c->integer = internal::clip_facets(std::move(planes), hull.vertices);
+  } else {
+    c->half_spaces = internal::hull_half_spaces_3(pts);
   }
   planes_ = std::move(c);
 }

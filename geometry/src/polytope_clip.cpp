@@ -863,18 +863,37 @@ std::optional<std::array<double, 4>> plane_filter(const IntegerPlane3& p) {
 
 ClipFacets clip_facets(std::vector<IntegerPlane3> planes, const std::vector<Point3>& vertices) {
   ClipFacets out;
-  std::vector<std::array<mpz_class, 4>> h;  // the points as (X, Y, Z, L), L > 0
-  for (const Point3& v : vertices) h.push_back(homogeneous_integers(v));
+  // Each point's doubles (certified_double: within 2u, in the range policy) where they exist, and
+  // its exact homogeneous integers (X, Y, Z, L), L > 0, made when a side needs them.
+  std::vector<std::array<double, 3>> d(vertices.size());
+  std::vector<char> filtered(vertices.size(), 1);
+  for (std::size_t j = 0; j < vertices.size(); ++j)
+    for (int k = 0; k < 3; ++k) {
+      const std::optional<double> x = numerics::certified_double(coord(vertices[j], k).get_mpq_t());
+      if (x) d[j][static_cast<std::size_t>(k)] = *x;
+      else filtered[j] = 0;
+    }
+  std::vector<std::optional<std::array<mpz_class, 4>>> h(vertices.size());
   mpz_class side;
   for (const IntegerPlane3& p : planes) {
     const Filter f = filter_of(p);
     out.filters.push_back({f.c[0], f.c[1], f.c[2], f.c[3]});
     out.usable.push_back(f.usable);
     out.wide.push_back(wide_plane(p));
-    if (h.empty()) continue;
-    std::vector<std::uint64_t>& on = out.on.emplace_back((h.size() + 63) / 64, 0);
-    for (std::size_t j = 0; j < h.size(); ++j) {  // sign(a·X − b·L), exactly
-      side = p.a[0] * h[j][0] + p.a[1] * h[j][1] + p.a[2] * h[j][2] - p.b * h[j][3];
+    if (vertices.empty()) continue;
+    std::vector<std::uint64_t>& on = out.on.emplace_back((vertices.size() + 63) / 64, 0);
+    for (std::size_t j = 0; j < vertices.size(); ++j) {
+      // Strictly inside by the filter (the image-hull prefilter's model, docs/derivations.md §4.6:
+      // s = a·p − b within 16u·T of s~): most points of a facet's gamut are.
+      if (f.usable && filtered[j]) {
+        const double s = f.c[0] * d[j][0] + f.c[1] * d[j][1] + f.c[2] * d[j][2] - f.c[3];
+        const double T = std::fabs(f.c[0] * d[j][0]) + std::fabs(f.c[1] * d[j][1]) + std::fabs(f.c[2] * d[j][2]) +
+                         std::fabs(f.c[3]);
+        if (s < -16 * u * T) continue;
+      }
+      if (!h[j]) h[j] = homogeneous_integers(vertices[j]);
+      const std::array<mpz_class, 4>& x = *h[j];
+      side = p.a[0] * x[0] + p.a[1] * x[1] + p.a[2] * x[2] - p.b * x[3];  // sign(a·X − b·L), exactly
       if (sgn(side) > 0) throw std::invalid_argument("clip_facets: a point outside a half-space");
       if (sgn(side) == 0) on[j / 64] |= std::uint64_t(1) << (j % 64);
     }

@@ -44,21 +44,41 @@ Rational white_balanced_maximum(const std::vector<Colour>& colours, const Colour
 CanonicalLearner3::CanonicalLearner3(CanonicalIntensity intensity) : intensity_(intensity) {}
 
 void CanonicalLearner3::add(const std::vector<Colour>& colours, const Colour& light) {
-  add_scaled(colours, light, nullptr);
+  add_scaled(colours, light, nullptr, false);
 }
 
 void CanonicalLearner3::add(const std::vector<Colour>& colours, const Colour& light, const Rational& scale) {
   if (sgn(scale) <= 0) throw std::invalid_argument("an intensity scale must be > 0");
-  add_scaled(colours, light, &scale);
+  add_scaled(colours, light, &scale, false);
 }
 
-void CanonicalLearner3::add_scaled(const std::vector<Colour>& colours, const Colour& light, const Rational* scale) {
+void CanonicalLearner3::add_hull_vertices(const std::vector<Colour>& vertices, const Colour& light) {
+  add_scaled(vertices, light, nullptr, true);
+}
+
+void CanonicalLearner3::add_hull_vertices(const std::vector<Colour>& vertices, const Colour& light,
+                                          const Rational& scale) {
+  if (sgn(scale) <= 0) throw std::invalid_argument("an intensity scale must be > 0");
+  add_scaled(vertices, light, &scale, true);
+}
+
+void CanonicalLearner3::add_scaled(const std::vector<Colour>& colours, const Colour& light, const Rational* scale,
+                                   bool vertices) {
   check_light(light);
   ++images_;
   if (colours.empty()) return;
   // Only the image's hull vertices can be vertices of the union; the diagonal map and the
-  // scaling keep them vertices.
-  std::vector<Colour> v = colour_hull_vertices(colours);
+  // scaling keep them vertices (and keep every other point a non-vertex: given vertices, or a
+  // superset of them, the union's hull is the same).
+  std::vector<Colour> v;
+  if (vertices) {
+    for (const Colour& c : colours)
+      if (sgn(c.r) < 0 || sgn(c.g) < 0 || sgn(c.b) < 0)
+        throw std::invalid_argument("colour_hull_vertices: a negative channel");
+    v = colours;
+  } else {
+    v = colour_hull_vertices(colours);
+  }
   const Rational top = white_balanced_maximum(v, light);
   if (sgn(top) == 0) return;  // only black: nothing a hull with black lacks
   for (Colour& c : v) c = {c.r / light.r, c.g / light.g, c.b / light.b};

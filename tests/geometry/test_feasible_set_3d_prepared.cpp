@@ -11,6 +11,7 @@
 #include <gmcc/geometry/feasible_set.h>
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/geometry/integers_over_lcm.h>
+#include <gmcc/geometry/point3_arithmetic.h>
 
 #include "internal/clip_filter.h"
 #include "internal/crule_exact.h"
@@ -691,3 +692,77 @@ BOOST_AUTO_TEST_CASE(live_vertex_filter_box_after_updates_as_rebuilt) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// ClipFacets::on, whose sides the double filter settles where a point is certainly strictly inside
+// (docs/derivations.md §4.6) and exact integers decide otherwise, against every side made exact:
+// gamuts of small integers (many points on each facet), Munsell-like rationals, and both scaled
+// by 2^±100 (in the filter's range) and 2^±300 (beyond it: every side exact), with extra points
+// of the gamut (on facets, on edges, inside) beside its vertices.
+BOOST_AUTO_TEST_CASE(clip_facet_incidences_filtered_match_the_exact_sides) {
+  Rng rng(4646);
+  long on_bits = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    std::vector<Point3> g{{0, 0, 0}};
+    for (int i = 0; i < 6 + trial % 25; ++i) {
+      const Colour c = random_colour(rng, trial % 2 ? 3 : 1000, trial % 2 ? 1 : 999983);
+      g.push_back({c.r, c.g, c.b});
+    }
+    const int shift = trial % 5 == 0 ? 0 : std::vector<int>{100, -100, 300, -300}[static_cast<std::size_t>(trial % 4)];
+    for (Point3& p : g)
+      for (int k = 0; k < 3; ++k) {
+        Rational& x = coord(p, k);
+        if (shift > 0) mpq_mul_2exp(x.get_mpq_t(), x.get_mpq_t(), static_cast<mp_bitcnt_t>(shift));
+        if (shift < 0) mpq_div_2exp(x.get_mpq_t(), x.get_mpq_t(), static_cast<mp_bitcnt_t>(-shift));
+      }
+    g = internal::sorted_unique(std::move(g));
+    if (internal::affine_dimension(g) < 3) continue;
+    std::vector<internal::IntegerPlane3> planes;
+    for (const internal::HalfSpace3& h : internal::hull_half_spaces_3(g)) {
+      const mpz_class l = lcm_of_denominators_of(h.a.x, h.a.y, h.a.z, h.b);
+      planes.push_back({{times_lcm(h.a.x, l), times_lcm(h.a.y, l), times_lcm(h.a.z, l)}, times_lcm(h.b, l)});
+    }
+    // The vertices, then midpoints of pairs of them (on edges, facets or inside), then the gamut's points.
+    std::vector<Point3> points = internal::extreme_points_3(g);
+    const std::size_t nv = points.size();
+    for (std::size_t i = 0; i + 1 < nv; i += 2) points.push_back(scale(add(points[i], points[i + 1]), Rational(1, 2)));
+    points.insert(points.end(), g.begin(), g.end());
+    const internal::ClipFacets f = internal::clip_facets(planes, points);
+    BOOST_TEST_REQUIRE(f.on.size() == planes.size());
+    for (std::size_t p = 0; p < planes.size(); ++p)
+      for (std::size_t j = 0; j < points.size(); ++j) {
+        const Rational side = planes[p].a[0] * points[j].x + planes[p].a[1] * points[j].y +
+                              planes[p].a[2] * points[j].z - planes[p].b;
+        BOOST_TEST(sgn(side) <= 0);
+        const bool on = (f.on[p][j / 64] >> (j % 64)) & 1u;
+        BOOST_TEST(on == (sgn(side) == 0), "trial " << trial << " plane " << p << " point " << j);
+        on_bits += on;
+      }
+  }
+  BOOST_TEST(on_bits > 1000);
+}
+
+// The facets and the vertices of one hull (hull_facets_and_vertices_3, what CanonicalConstraints3
+// builds from) against hull_half_spaces_3 and extreme_points_3 run apart: rationals, doubles
+// (extreme_points_3's fast route), small integer grids with many points on faces and edges.
+BOOST_AUTO_TEST_CASE(one_hull_gives_the_facets_and_the_vertices) {
+  Rng rng(4647);
+  int checked = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    std::vector<Point3> g;
+    if (trial % 3 == 0) g.push_back({0, 0, 0});
+    for (int i = 0; i < 5 + 7 * (trial % 9); ++i) {
+      const Colour c = random_colour(rng, trial % 3 == 1 ? 3 : 1000, trial % 3 == 1 ? 1 : trial % 3 == 2 ? 1024 : 999983);
+      g.push_back({c.r, c.g, c.b});
+    }
+    g = internal::sorted_unique(std::move(g));
+    if (internal::affine_dimension(g) < 3) continue;
+    const internal::HullFacets3 h = internal::hull_facets_and_vertices_3(g);
+    const std::vector<internal::HalfSpace3> apart = internal::hull_half_spaces_3(g);
+    BOOST_TEST_REQUIRE(h.half_spaces.size() == apart.size());
+    for (std::size_t i = 0; i < apart.size(); ++i)
+      BOOST_TEST((h.half_spaces[i].a == apart[i].a && h.half_spaces[i].b == apart[i].b), "trial " << trial);
+    BOOST_TEST((h.vertices == internal::extreme_points_3(g)), "trial " << trial);
+    ++checked;
+  }
+  BOOST_TEST(checked > 40);
+}

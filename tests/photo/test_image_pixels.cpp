@@ -6,6 +6,7 @@
 #include <gmcc/photo/image_pixels.h>
 #include <gmcc/validation/mondrian.h>
 
+#include "internal/sort_colours.h"
 #include "internal/sort_keys.h"
 
 #include "../test_support.h"
@@ -13,6 +14,7 @@
 #include <boost/test/unit_test.hpp>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <functional>
 #include <iterator>
@@ -508,6 +510,36 @@ BOOST_AUTO_TEST_CASE(in_place_key_sort) {
       BOOST_TEST((keys == want), "n " << n << " kind " << kind);
     }
   }
+}
+
+// The colours of doubles sorted by buckets of their first channel (internal/sort_colours.h)
+// against std::sort: edge-like magnitudes (most near 0, a long tail), repeats, zeros, one value,
+// wide exponents (2^-1000 to 2^1000), subnormals, sizes around the route's bounds, and first
+// channels that send it to std::sort (a −0, a negative); compared bit for bit.
+BOOST_AUTO_TEST_CASE(double_colours_sorted_as_std_sort) {
+  std::mt19937_64 rng(4649);
+  std::exponential_distribution<double> tail(0.01);
+  std::uniform_int_distribution<int> exponent(-1000, 1000), small(0, 3);
+  const auto bits = [](const std::vector<std::array<double, 3>>& v) {
+    std::vector<std::array<std::uint64_t, 3>> out(v.size());
+    std::memcpy(out.data(), v.data(), v.size() * sizeof v[0]);
+    return out;
+  };
+  for (const std::size_t n : {0, 1, 255, 256, 257, 1000, 16384, (1 << 20) + 1})
+    for (int kind = 0; kind < 7; ++kind) {
+      std::vector<std::array<double, 3>> c(n);
+      for (std::size_t i = 0; i < n; ++i)
+        for (double& x : c[i]) {
+          x = kind == 0 ? tail(rng) : kind == 1 ? double(small(rng)) : kind == 2 ? std::ldexp(1.0 + tail(rng), exponent(rng))
+              : kind == 3 ? 0x1p-1060 * small(rng) : 5.0;
+        }
+      if (kind == 5 && n > 0) c[n / 2][0] = -0.0;
+      if (kind == 6 && n > 0) c[n / 2][0] = -1.0;
+      std::vector<std::array<double, 3>> want = c;
+      std::sort(want.begin(), want.end());
+      internal::sort_double_colours(c);
+      BOOST_TEST((bits(c) == bits(want)), "n " << n << " kind " << kind);
+    }
 }
 
 // The Gaussian pre-filter (image_pixels.h): a constant image stays one colour exactly; a smoothed

@@ -79,6 +79,37 @@ BOOST_AUTO_TEST_CASE(max_intensity_scales_each_image_to_one) {
   BOOST_CHECK_THROW(canonical_intensity_from_string("mean"), std::invalid_argument);
 }
 
+// Colours given as their hull's vertices already (add_hull_vertices) or any superset of them
+// (add): the same gamut, with the intensity rule and with a given scale, and the same counts.
+BOOST_AUTO_TEST_CASE(hull_vertices_added_as_given_learn_the_same_gamut) {
+  std::mt19937 rng(4648);
+  for (const CanonicalIntensity intensity : {CanonicalIntensity::max, CanonicalIntensity::none}) {
+    CanonicalLearner3 hulled(intensity), given(intensity), scaled(intensity), scaled_given(intensity);
+    for (int image = 0; image < 30; ++image) {  // 30 × 200 points: compaction runs
+      std::vector<Colour> colours = sphere_points(rng, 200);
+      for (int i = 0; i < 40; ++i)  // inner points: no vertex
+        colours.push_back({(colours[i].r + colours[i + 1].r) / 2, (colours[i].g + colours[i + 1].g) / 2,
+                           (colours[i].b + colours[i + 1].b) / 2});
+      const std::vector<Colour> vertices = colour_hull_vertices(colours);
+      const Colour e = random_light(rng);
+      const Rational scale(image + 1, 7);
+      hulled.add(colours, e);
+      given.add_hull_vertices(vertices, e);
+      scaled.add(colours, e, scale);
+      scaled_given.add_hull_vertices(vertices, e, scale);
+    }
+    given.add_hull_vertices({Colour{0, 0, 0}}, Colour{1, 1, 1});  // black only: adds nothing
+    hulled.add({Colour{0, 0, 0}}, Colour{1, 1, 1});
+    BOOST_TEST((given.gamut() == hulled.gamut()));
+    BOOST_TEST((scaled_given.gamut() == scaled.gamut()));
+    BOOST_TEST(given.images() == hulled.images());
+    BOOST_TEST(given.contributing() == hulled.contributing());
+    BOOST_CHECK_THROW(given.add_hull_vertices({Colour{1, -1, 1}}, Colour{1, 1, 1}), std::invalid_argument);
+    BOOST_CHECK_THROW(given.add_hull_vertices({Colour{1, 1, 1}}, Colour{1, 0, 1}), std::invalid_argument);
+    BOOST_CHECK_THROW(given.add_hull_vertices({Colour{1, 1, 1}}, Colour{1, 1, 1}, Rational(0)), std::invalid_argument);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(learned_2d_gamut_is_the_hull_of_white_balanced_chromaticities) {
   std::mt19937 rng(11);
   CanonicalLearner2 learner;

@@ -119,23 +119,29 @@ FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, c
   // Edge colours scaled by their image's pixel factor (learn_canonical.h).
   CanonicalLearner3 edges[2];
   std::size_t training = 0;
+  std::size_t colourful = 0;  // training images with a pixel colour above black (the pixel gamut's contributors)
   for (std::size_t i = 0; i < images.size(); ++i) {
     if (images[i].fold == fold) continue;
     ++training;
-    if (n.gm3d) learner3.add(reduced[i].hull3, images[i].light);
+    // The reduced colours are their hull's vertices already (ColourSet::hull_3d, reduce()).
+    if (n.gamut3) learner3.add_hull_vertices(reduced[i].hull3, images[i].light);
     if (n.gm2d) learner2.add(reduced[i].lifts, images[i].light);
     if (n.gcie) learner_gcie.add(reduced[i].hull3, images[i].light);
-    if (!n.order[0] && !n.order[1]) continue;
-    Rational scale(1);
-    if (o.intensity == CanonicalIntensity::max) scale = white_balanced_maximum(reduced[i].hull3, images[i].light);
+    if (!n.gm3d) continue;
+    const Colour& e = images[i].light;
+    if (sgn(e.r) <= 0 || sgn(e.g) <= 0 || sgn(e.b) <= 0)  // as the learners say it
+      throw std::invalid_argument("a training light needs every channel > 0");
+    const Rational top = white_balanced_maximum(reduced[i].hull3, e);
+    if (sgn(top) > 0) ++colourful;
+    const Rational scale = o.intensity == CanonicalIntensity::max ? top : Rational(1);
     if (sgn(scale) == 0) continue;  // only black: the pixel gamut takes nothing of it either
     for (int k = 0; k < 2; ++k)
-      if (n.order[k]) edges[k].add(reduced[i].edges[k], images[i].light, scale);
+      if (n.order[k]) edges[k].add_hull_vertices(reduced[i].edges[k], images[i].light, scale);
   }
   if (training == 0) throw std::invalid_argument("fold " + std::to_string(fold) + " has no training image (one fold only)");
   // Training images that give only black (a black level or saturation that leaves no colour):
   // no canonical gamut can be learned, a fault of the input, not of the program.
-  if ((n.gm3d && learner3.contributing() == 0) || (n.gm2d && learner2.gamut().empty()) ||
+  if ((n.gm3d && colourful == 0) || (n.gm2d && learner2.gamut().empty()) ||
       (n.gcie && learner_gcie.gamut().empty()))
     throw InputError("fold " + std::to_string(fold), 0,
                      "its " + std::to_string(training) + " training images give no colour above black (the black "
@@ -143,7 +149,7 @@ FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, c
   FoldCanonicals c;
   for (std::size_t i = 0; i < images.size(); ++i)
     if (images[i].fold != fold) c.lights.push_back(images[i].light);
-  if (n.gm3d) c.gamut3.emplace(learner3.gamut(), o.black);
+  if (n.gamut3) c.gamut3.emplace(learner3.gamut(), o.black);
   if (n.gcie) c.gcie.emplace(learner_gcie.gamut(), Colour{Rational(1), Rational(1), Rational(1)}, c.lights);
   for (int k = 0; k < 2; ++k)
     if (n.order[k] && edges[k].contributing() > 0) c.edges[k].emplace(edges[k].gamut(), o.black);
@@ -209,7 +215,7 @@ std::vector<BenchmarkRecord> records_3d(const FoldCanonicals& c, const Reduced& 
       if ((constrained ? n.rule3c : n.rule3)[rule]) rules.push_back(rule);
     if (rules.empty()) continue;
     const std::optional<ImageEstimate3> est =
-        estimate_in_f({{&*c.gamut3, &r.hull3}}, rules, e, constrained ? c.lights : std::vector<Colour>{});
+        estimate_in_f({{&*c.gamut3, &r.hull3, true}}, rules, e, constrained ? c.lights : std::vector<Colour>{});
     for (Rule3 rule : rules)
       out.push_back(record_3d(constrained ? gm3d_constrained_method(rule) : gm3d_method(rule), est, rule));
   }
@@ -230,7 +236,7 @@ std::vector<BenchmarkRecord> records_edges(const FoldCanonicals& c, const Reduce
     for (int t = 0; t < 3; ++t) {
       if (!kEdgeTypes[k][t]) continue;
       if (!*gamuts[t] || colours[t]->empty()) available = false;
-      else types.push_back({&**gamuts[t], colours[t]});
+      else types.push_back({&**gamuts[t], colours[t], true});  // reduce() kept hull vertices only
     }
     BenchmarkRecord rec;
     rec.method = kEdge[k];

@@ -41,18 +41,20 @@ Needs needs_of(const std::vector<std::string>& methods) {
     if (!seen.insert(m).second) throw std::invalid_argument("benchmark method \"" + m + "\" is given twice");
     bool known = false;
     for (Rule3 rule : all_rules_3)
-      if (m == gm3d_method(rule)) n.gm3d = n.rule3[rule] = known = true;
+      if (m == gm3d_method(rule)) n.gm3d = n.gamut3 = n.rule3[rule] = known = true;
     for (Rule rule : all_rules)
       if (m == gm2d_method(rule)) n.gm2d = n.rule2[rule] = known = true;
     for (Rule3 rule : all_rules_3)
-      if (m == gm3d_constrained_method(rule)) n.gm3d = n.rule3c[rule] = known = true;
+      if (m == gm3d_constrained_method(rule)) n.gm3d = n.gamut3 = n.rule3c[rule] = known = true;
     for (Rule rule : all_rules)
       if (m == gm2d_constrained_method(rule)) n.gm2d = n.gm2dc = n.rule2c[rule] = known = true;
     if (m == kGcie) n.gcie = known = true;
-    // An edge-based method needs the pixel colours too: their scale is its edge colours' scale.
+    // An edge-based method needs the pixel colours too: their scale is its edge colours' scale;
+    // the pixel canonical gamut only when it intersects the pixel feasible set (the n-jets).
     for (int k = 0; k < 4; ++k)
       if (m == kEdge[k]) {
         n.gm3d = n.edge[k] = known = true;
+        n.gamut3 = n.gamut3 || kEdgeTypes[k][0];
         for (int o = 0; o < 2; ++o) n.order[o] = n.order[o] || kEdgeTypes[k][o + 1];
       }
     for (std::size_t b = 0; b < all_baselines.size() && !known; ++b)

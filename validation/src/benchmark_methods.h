@@ -56,7 +56,8 @@ struct Reduced {
 
 // Which families the methods asked for need.
 struct Needs {
-  bool gm3d = false, gm2d = false;  // gm3d: the pixel colours' 3-D hull and canonical gamut
+  bool gm3d = false, gm2d = false;  // gm3d: the pixel colours' 3-D hull
+  bool gamut3 = false;  // the pixel colours' 3-D canonical gamut (not the edge methods' own)
   PerRule3<bool> rule3{};
   PerRule<bool> rule2{};
   // The rules with the illumination constraint (the fold's training lights).

@@ -41,6 +41,15 @@ int affine_dimension(const std::vector<Point3>& points);
 // half-spaces); sorted, without repeats. \pre points non-empty, sorted, without repeats.
 std::vector<HalfSpace3> hull_half_spaces_3(const std::vector<Point3>& points);
 
+// conv(points) of points spanning 3-D: its facets as hull_half_spaces_3 gives them and its
+// vertices as extreme_points_3 does, from one hull. \pre points sorted, without repeats, spanning
+// 3-D.
+struct HullFacets3 {
+  std::vector<HalfSpace3> half_spaces;  // sorted, without repeats
+  std::vector<Point3> vertices;         // sorted
+};
+HullFacets3 hull_facets_and_vertices_3(const std::vector<Point3>& points);
+
 // The vertices of conv(points) (CGAL::convex_hull_3 over Epeck), sorted; all of `points` when
 // they are flat. \pre points non-empty, sorted, without repeats.
 std::vector<Point3> extreme_points_3(const std::vector<Point3>& points);

@@ -63,6 +63,14 @@ class CanonicalLearner3 {
   /// intensity scale (docs/photographs.md §5). \throws std::invalid_argument as add above, or if
   /// `scale` <= 0. Complexity as add.
   void add(const std::vector<Colour>& colours, const Colour& light, const Rational& scale);
+  /// add above, for colours that are their hull's vertices already (ColourSet::hull_3d, or
+  /// edge_colours with it): the same gamut, without hulling them again (any superset of the hull's
+  /// vertices still gives the same gamut; only the work differs). O(n) exact divisions.
+  /// \throws std::invalid_argument as add above.
+  void add_hull_vertices(const std::vector<Colour>& vertices, const Colour& light);
+  /// add above with `scale`, for colours that are their hull's vertices already (as
+  /// add_hull_vertices). \throws std::invalid_argument as add above, or if `scale` <= 0.
+  void add_hull_vertices(const std::vector<Colour>& vertices, const Colour& light, const Rational& scale);
   /// The vertices of the hull of every added image's scaled colours, sorted; empty before any
   /// colour. The canonical light is white (1, 1, 1).
   std::vector<Colour> gamut() const;
@@ -73,8 +81,9 @@ class CanonicalLearner3 {
   ///@}
 
  private:
-  // add, dividing by *scale when given, else by the intensity rule's factor.
-  void add_scaled(const std::vector<Colour>& colours, const Colour& light, const Rational* scale);
+  // add, dividing by *scale when given, else by the intensity rule's factor; the colours hulled
+  // first unless `vertices` says they are their hull's vertices already.
+  void add_scaled(const std::vector<Colour>& colours, const Colour& light, const Rational* scale, bool vertices);
   void compact() const;
   CanonicalIntensity intensity_;
   mutable std::vector<Colour> points_;  // vertices of the hull so far, then new candidates
