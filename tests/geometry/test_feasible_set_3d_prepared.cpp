@@ -73,6 +73,17 @@ std::vector<Colour> image_of(Rng& rng, const std::vector<Colour>& surfaces, cons
   return out;
 }
 
+// The facets of conv(g) (full-dimensional) as integer planes: each half-space times the lcm of
+// its denominators.
+std::vector<internal::IntegerPlane3> integer_facet_planes(const std::vector<Point3>& g) {
+  std::vector<internal::IntegerPlane3> planes;
+  for (const internal::HalfSpace3& h : internal::hull_half_spaces_3(g)) {
+    const mpz_class l = lcm_of_denominators_of(h.a.x, h.a.y, h.a.z, h.b);
+    planes.push_back({{times_lcm(h.a.x, l), times_lcm(h.a.y, l), times_lcm(h.a.z, l)}, times_lcm(h.b, l)});
+  }
+  return planes;
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(feasible_set_3d_prepared)
@@ -405,11 +416,7 @@ BOOST_AUTO_TEST_CASE(rows_of_one_point_settled_by_the_gamut_incidences) {
     }
     g = internal::sorted_unique(std::move(g));
     if (internal::affine_dimension(g) < 3) continue;
-    std::vector<internal::IntegerPlane3> planes;
-    for (const internal::HalfSpace3& h : internal::hull_half_spaces_3(g)) {
-      const mpz_class l = lcm_of_denominators_of(h.a.x, h.a.y, h.a.z, h.b);
-      planes.push_back({{times_lcm(h.a.x, l), times_lcm(h.a.y, l), times_lcm(h.a.z, l)}, times_lcm(h.b, l)});
-    }
+    const std::vector<internal::IntegerPlane3> planes = integer_facet_planes(g);
     const internal::ClipFacets with = internal::clip_facets(planes, internal::extreme_points_3(g));
     const internal::ClipFacets without = internal::clip_facets(planes);
     std::vector<Point3> points;
@@ -716,11 +723,7 @@ BOOST_AUTO_TEST_CASE(clip_facet_incidences_filtered_match_the_exact_sides) {
       }
     g = internal::sorted_unique(std::move(g));
     if (internal::affine_dimension(g) < 3) continue;
-    std::vector<internal::IntegerPlane3> planes;
-    for (const internal::HalfSpace3& h : internal::hull_half_spaces_3(g)) {
-      const mpz_class l = lcm_of_denominators_of(h.a.x, h.a.y, h.a.z, h.b);
-      planes.push_back({{times_lcm(h.a.x, l), times_lcm(h.a.y, l), times_lcm(h.a.z, l)}, times_lcm(h.b, l)});
-    }
+    const std::vector<internal::IntegerPlane3> planes = integer_facet_planes(g);
     // The vertices, then midpoints of pairs of them (on edges, facets or inside), then the gamut's points.
     std::vector<Point3> points = internal::extreme_points_3(g);
     const std::size_t nv = points.size();
