@@ -60,9 +60,9 @@ std::optional<std::array<double, 3>> grey_edge_estimate(const RgbImage& image, s
 
 /// grey_edge_estimate for several baselines at once, each result bit for bit the one alone: the
 /// baselines of one σ share each sweep of the derivative structure (gaussian_derivative_rows of
-/// several orders), so the five named baselines at σ = 0 and one σ for grey edge cost two sweeps
-/// of the pixels and two of the derivatives of both orders, where one at a time they cost four and
-/// four (of one order each).
+/// several orders), so the five named baselines (grey edge at one σ) cost two sweeps of the pixels
+/// (the second for shades of grey's sums) and one of the derivatives of both orders, where one at
+/// a time they cost four sweeps of the pixels and two of each order's derivatives.
 /// \throws as grey_edge_estimate, before any work for a p < 1 or a `kept` of the wrong size.
 std::vector<std::optional<std::array<double, 3>>> grey_edge_estimates(const RgbImage& image, std::uint32_t black_level,
                                                                      const std::vector<bool>& kept,
