@@ -62,7 +62,8 @@ std::optional<std::array<double, 3>> grey_edge_estimate(const RgbImage& image, s
 /// baselines of one σ share each sweep of the derivative structure (gaussian_derivative_rows of
 /// several orders), so the five named baselines (grey edge at one σ) cost two sweeps of the pixels
 /// (the second for shades of grey's sums) and one of the derivatives of both orders, where one at
-/// a time they cost four sweeps of the pixels and two of each order's derivatives.
+/// a time they cost four sweeps of the pixels and one of each order's derivatives (five passes
+/// along x where together they take three).
 /// \throws as grey_edge_estimate, before any work for a p < 1 or a `kept` of the wrong size.
 std::vector<std::optional<std::array<double, 3>>> grey_edge_estimates(const RgbImage& image, std::uint32_t black_level,
                                                                      const std::vector<bool>& kept,
