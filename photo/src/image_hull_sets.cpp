@@ -52,29 +52,28 @@ std::vector<ImageColours> image_hull_sets(const RgbImage& image, const PixelRule
   const bool hulls = !sets.empty() && std::all_of(sets.begin(), sets.end(), [](ColourSet s) {
     return s == ColourSet::hull_3d || s == ColourSet::hull;
   });
-  const bool lifts = std::find(sets.begin(), sets.end(), ColourSet::hull) != sets.end();
   if (!hulls || rules.bin != 1 || rules.prefilter_sigma > 0 || kept.counts.kept == 0 ||
       kept.kept.size() != image.width * image.height)
     return image_colour_sets(image, rules, kept, sets);
-  // Pass 1: the range of red (and whether a chromaticity is missing); the colours fall into
-  // slabs of red, each with its own sieve: a slab's hull is thin along red, so its few extreme
-  // colours leave far fewer inside candidates than one Q for the whole image.
+  // Pass 1: the range of red; the colours fall into slabs of red, each with its own sieve: a
+  // slab's hull is thin along red, so its few extreme colours leave far fewer inside candidates
+  // than one Q for the whole image.
   double low = HUGE_VAL, high = -HUGE_VAL;
-  bool blue_zero = false;
   each_kept_colour(image, rules.black_level, kept, [&](std::size_t, const std::array<double, 3>& c) {
     low = std::min(low, c[0]), high = std::max(high, c[0]);
-    blue_zero = blue_zero || c[2] == 0;
   });
-  if (lifts && blue_zero) return image_colour_sets(image, rules, kept, sets);
   // A slab from red by one product: monotone in red, so the sorted keys meet the slabs in order.
   const double per_red = double(slabs) / (high - low + 1);
   const auto slab = [&](const std::array<double, 3>& c) {
     return std::min(slabs - 1, static_cast<std::size_t>((c[0] - low) * per_red));
   };
-  // Pass 2: each slab's extreme colours. Pass 3: the colours their sieves keep.
+  // Pass 2: each slab's extreme colours among those with b > 0 (S+, the colours with a
+  // chromaticity), so that Q ⊆ conv(S+) ⊆ conv(S): a colour strictly inside it is a vertex of
+  // neither hull, and one with b = 0 is never inside. Pass 3: the colours their sieves keep.
   std::vector<ExtremeColours> extremes(slabs);
-  each_kept_colour(image, rules.black_level, kept,
-                   [&](std::size_t i, const std::array<double, 3>& c) { extremes[slab(c)].add(i, c); });
+  each_kept_colour(image, rules.black_level, kept, [&](std::size_t i, const std::array<double, 3>& c) {
+    if (c[2] > 0) extremes[slab(c)].add(i, c);
+  });
   std::vector<ColourHullSieve> sieves;
   for (const ExtremeColours& e : extremes) {
     std::vector<std::array<double, 3>> corners;
@@ -105,9 +104,9 @@ std::vector<ImageColours> image_hull_sets(const RgbImage& image, const PixelRule
     c.set = set;
     if (set == ColourSet::hull_3d) {
       for (const auto& v : vertices) c.colours.push_back({Rational(v[0]), Rational(v[1]), Rational(v[2])});
-    } else {
+    } else {  // the survivors hold every vertex of conv(S+): its chromaticity hull is theirs
       std::vector<std::array<std::uint16_t, 3>> pixels;
-      for (const auto& v : vertices) pixels.push_back({std::uint16_t(v[0]), std::uint16_t(v[1]), std::uint16_t(v[2])});
+      for (std::uint64_t key : keys) pixels.push_back({std::uint16_t(key >> 32), std::uint16_t(key >> 16), std::uint16_t(key)});
       for (const Point2& p : chromaticity_hull_of_pixels(pixels).hull.vertices) c.colours.push_back({p.x, p.y, Rational(1)});
     }
     c.counts.hull_vertices = c.colours.size();

@@ -173,8 +173,21 @@ BOOST_AUTO_TEST_CASE(hull_sets_are_the_sorted_colour_sets) {
     for (std::size_t i = 0; i < line.samples.size(); i += 3) line.samples[i + 1] = line.samples[i + 2] = line.samples[i];
     check_same(line, plain, sets, "grey colours (a segment)");
     RgbImage blue_zero = noisy(rng, 90, 70, 0, 65535);
-    blue_zero.samples[2] = 0;  // a colour without chromaticity: the lifts take the sorted route
+    blue_zero.samples[2] = 0;  // a colour without chromaticity
     check_same(blue_zero, plain, sets, "a blue channel of 0");
+    // Colours with b = 0 that hide a vertex of conv(S+) inside the image's hull: P = (1000, 500,
+    // 1000) has the largest r/b of the colours with a chromaticity, but lies inside the hull of
+    // the others with (3000, g, 0) and black (masked pixels kept): the lifts must still have it.
+    RgbImage hidden = noisy(rng, 64, 64, 0, 0);
+    std::uniform_int_distribution<unsigned> r(0, 999), g(0, 1000), b(1001, 2000);
+    for (std::size_t i = 0; i < 64 * 64; ++i) {
+      const std::array<unsigned, 3> c = i % 7 == 0   ? std::array<unsigned, 3>{3000, unsigned(i % 3) * 500, 0}
+                                        : i % 11 == 0 ? std::array<unsigned, 3>{0, 0, 0}
+                                        : i == 5      ? std::array<unsigned, 3>{1000, 500, 1000}
+                                                      : std::array<unsigned, 3>{r(rng), g(rng), b(rng)};
+      for (int k = 0; k < 3; ++k) hidden.samples[3 * i + k] = static_cast<std::uint16_t>(c[k]);
+    }
+    check_same(hidden, plain, sets, "a vertex of the chromatic colours' hull hidden by colours with b = 0");
     PixelRules masked = plain;
     masked.keep.assign(90 * 70, false);
     for (std::size_t i = 0; i < masked.keep.size(); i += 3) masked.keep[i] = true;

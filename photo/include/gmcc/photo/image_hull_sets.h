@@ -15,17 +15,19 @@ namespace gmcc {
 /// What image_colour_sets(image, rules, kept, sets) gives, colour for colour and in the same
 /// order, with two counts left 0: `colours` (the distinct colours are not found) and
 /// `no_chromaticity`. Each of `sets` must be ColourSet::hull_3d or ColourSet::hull; otherwise, and
-/// with binning, a pre-filter, no kept pixel, or (for ColourSet::hull) a kept pixel whose blue
-/// channel is 0 after the black level, this is image_colour_sets itself, counts and all.
+/// with binning, a pre-filter or no kept pixel, this is image_colour_sets itself, counts and all.
 ///
-/// The route: one pass over the kept pixels finds the colours extreme along 26 directions, whose
-/// hull Q lies inside the image's (ExtremeColours); a second keeps the colours not strictly inside
-/// Q, exactly (ColourHullSieve: integer channels below 2^16); those are sorted and the exact 3-D
-/// hull takes them (colour_hull_vertex_indices: a colour strictly inside Q is no vertex, so its
-/// vertices are the image's). The chromaticity hull is that of the 3-D hull's vertices: the
-/// chromaticities (r/b, g/b) of colours with b > 0 are a section of the cone they span, and a cone
-/// spanned by a set is spanned by its hull's vertices (chromaticity_hull_of_pixels on them).
-/// Memory: 8 bytes a colour the sieve keeps, not a kept pixel.
+/// The route: the kept pixels fall into 8 slabs of red; one pass finds each slab's colours
+/// extreme along 26 directions among those with b > 0 (S+, the colours with a chromaticity), whose
+/// hull Q lies inside conv(S+) and so inside the image's hull (ExtremeColours); a second keeps the
+/// colours not strictly inside their slab's Q, exactly (ColourHullSieve: integer channels below
+/// 2^16). A colour strictly inside Q is in the interior of both conv(S+) and the image's hull, so
+/// the colours kept hold every vertex of both (a colour with b = 0 is never inside Q, whose corners
+/// have b >= 1). They are sorted; the exact 3-D hull takes each slab's, then the union of their
+/// vertices (colour_hull_vertex_indices); the chromaticity hull takes those with b > 0
+/// (chromaticity_hull_of_pixels: the chromaticities (r/b, g/b) are a section of the cone S+ spans,
+/// which the vertices of conv(S+) span). Memory: 8 bytes a colour the sieve keeps, not a kept
+/// pixel.
 /// \throws as image_colour_sets.
 std::vector<ImageColours> image_hull_sets(const RgbImage& image, const PixelRules& rules, const KeptPixels& kept,
                                           const std::vector<ColourSet>& sets);
