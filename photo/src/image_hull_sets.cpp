@@ -4,6 +4,7 @@
 #include <gmcc/geometry/colour_hull_3.h>
 #include <gmcc/geometry/colour_hull_sieve.h>
 
+#include "internal/colour_keys.h"
 #include "internal/sort_keys.h"
 
 #include <algorithm>
@@ -15,14 +16,10 @@
 namespace gmcc {
 namespace {
 
-// Pixel i's colour after the black level (clamped at 0), as exact doubles.
+// Pixel i's linear colour as exact doubles.
 std::array<double, 3> linear_colour(const RgbImage& image, std::uint32_t black_level, std::size_t i) {
-  std::array<double, 3> c;
-  for (std::size_t k = 0; k < 3; ++k) {
-    const std::uint32_t v = image.samples[3 * i + k];
-    c[k] = v > black_level ? double(v - black_level) : 0.0;
-  }
-  return c;
+  const auto c = internal::linear_channels(image, black_level, i);
+  return {double(c[0]), double(c[1]), double(c[2])};
 }
 
 // The kept pixels' colours, to f(pixel, colour) in pixel order.
@@ -34,11 +31,12 @@ void each_kept_colour(const RgbImage& image, std::uint32_t black_level, const Ke
 }
 
 std::uint64_t key_of(const std::array<double, 3>& c) {
-  return (std::uint64_t(c[0]) << 32) | (std::uint64_t(c[1]) << 16) | std::uint64_t(c[2]);
+  return internal::colour_key({std::uint32_t(c[0]), std::uint32_t(c[1]), std::uint32_t(c[2])});
 }
 
 std::array<double, 3> colour_of(std::uint64_t key) {
-  return {double(key >> 32), double((key >> 16) & 0xffff), double(key & 0xffff)};
+  const auto c = internal::key_channels(key);
+  return {double(c[0]), double(c[1]), double(c[2])};
 }
 
 // How many slabs of red the sieve cuts the colours into (8: measured on full-size stand-ins, where
@@ -106,7 +104,10 @@ std::vector<ImageColours> image_hull_sets(const RgbImage& image, const PixelRule
       for (const auto& v : vertices) c.colours.push_back({Rational(v[0]), Rational(v[1]), Rational(v[2])});
     } else {  // the survivors hold every vertex of conv(S+): its chromaticity hull is theirs
       std::vector<std::array<std::uint16_t, 3>> pixels;
-      for (std::uint64_t key : keys) pixels.push_back({std::uint16_t(key >> 32), std::uint16_t(key >> 16), std::uint16_t(key)});
+      for (std::uint64_t key : keys) {
+        const auto k = internal::key_channels(key);
+        pixels.push_back({std::uint16_t(k[0]), std::uint16_t(k[1]), std::uint16_t(k[2])});
+      }
       for (const Point2& p : chromaticity_hull_of_pixels(pixels).hull.vertices) c.colours.push_back({p.x, p.y, Rational(1)});
     }
     c.counts.hull_vertices = c.colours.size();

@@ -7,6 +7,7 @@
 #include <gmcc/input/colour_csv.h>
 
 #include "internal/sort_colours.h"
+#include "internal/colour_keys.h"
 #include "internal/sort_keys.h"
 
 #include <gmcc/numerics/interrupt.h>
@@ -233,11 +234,7 @@ std::vector<bool> excluded_pixels(const PixelRules& rules, std::size_t w, std::s
 // or their hull's vertices, into out.
 ImageColours colours_of_keys(const std::vector<std::uint64_t>& keys, ColourSet colour_set, ImageColours out) {
   out.counts.colours = keys.size();
-  auto channels = [](std::uint64_t key) {
-    return std::array<std::uint32_t, 3>{static_cast<std::uint32_t>(key >> 32),
-                                        static_cast<std::uint32_t>((key >> 16) & 0xffff),
-                                        static_cast<std::uint32_t>(key & 0xffff)};
-  };
+  const auto channels = internal::key_channels;
   // The hulls are taken chunk by chunk of the sorted keys: a hull's vertices are among its
   // parts' hulls' vertices, so the hull of the chunks' vertices is the whole set's, while the
   // working copies stay at a chunk's size (colour_chunk colours) whatever the image's.
@@ -481,13 +478,7 @@ std::vector<std::uint64_t> distinct_keys(const RgbImage& image, std::uint32_t bl
   keys.reserve(static_cast<std::size_t>(kept.counts.kept));
   const std::size_t n = image.width * image.height;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!kept.kept[i]) continue;
-    std::uint32_t v[3];
-    for (int c = 0; c < 3; ++c) {
-      v[c] = image.samples[3 * i + static_cast<std::size_t>(c)];
-      v[c] = v[c] > black_level ? v[c] - black_level : 0;
-    }
-    keys.push_back((std::uint64_t(v[0]) << 32) | (std::uint64_t(v[1]) << 16) | v[2]);
+    if (kept.kept[i]) keys.push_back(internal::colour_key(internal::linear_channels(image, black_level, i)));
   }
   sort_keys(keys);
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
