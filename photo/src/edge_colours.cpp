@@ -8,22 +8,29 @@
 
 namespace gmcc {
 
-ImageColours edge_colours(const RgbImage& image, const PixelRules& pixels, const EdgeRules& edges) {
+namespace {
+
+// Each order asked's edge colours (out[0] the 1st, out[1] the 2nd order), as edge_colours says.
+std::array<ImageColours, 2> edge_colour_sets(const RgbImage& image, const PixelRules& pixels, const EdgeRules& edges,
+                                             const std::array<bool, 3>& orders) {
   if (!pixel_colours(pixels.colour_set))
     throw std::invalid_argument("edge colours: the chromaticity hull colour set gives lifts, not colours");
   if (pixels.bin != 1 || pixels.prefilter_sigma != 0)
     throw std::invalid_argument("edge colours: no binning or pre-filter (the derivatives smooth the image)");
-  if (edges.order == DerivativeOrder::zero)
-    throw std::invalid_argument("edge colours: the derivative order is first or second");
+  if (!orders[1] && !orders[2]) throw std::invalid_argument("edge colours: the derivative order is first or second");
   if (!(edges.sigma > 0 && edges.sigma <= 64))
     throw std::invalid_argument("edge colours: sigma must be in (0, 64]");
   const KeptPixels kept = kept_pixels(image, pixels);
   const std::size_t w = image.width, h = image.height, r = edges.neighbourhood;
   PixelCounts counts = kept.counts;
   counts.kept = 0;
-  std::vector<std::array<double, 3>> colours;
+  std::array<ImageColours, 2> out;
   // No (2r + 1)² neighbourhood fits in the image (r compared first: 2r + 1 may overflow).
-  if (r >= w || r >= h || 2 * r + 1 > w || 2 * r + 1 > h) return colour_set_of_doubles({}, pixels.colour_set, counts);
+  if (r >= w || r >= h || 2 * r + 1 > w || 2 * r + 1 > h) {
+    for (int o = 0; o < 2; ++o)
+      if (orders[static_cast<std::size_t>(o + 1)]) out[o] = colour_set_of_doubles({}, pixels.colour_set, counts);
+    return out;
+  }
   const std::size_t span = 2 * r + 1;
   // A pixel's neighbourhood is kept when the 2r + 1 pixels of the row around it are kept in each
   // of the 2r + 1 rows around it: per column, the number of rows in a row ending here whose row
@@ -48,20 +55,41 @@ ImageColours edge_colours(const RgbImage& image, const PixelRules& pixels, const
     if (counted + 1 >= span)
       for (std::size_t x = 0; x < w; ++x) edge_pixels += rows_kept[x] >= span;
   }
-  colours.reserve(edge_pixels);
+  std::vector<std::array<double, 3>> colours[2];
+  for (int o = 0; o < 2; ++o)
+    if (orders[static_cast<std::size_t>(o + 1)]) colours[o].reserve(edge_pixels);
   std::fill(rows_kept.begin(), rows_kept.end(), 0);
   counted = 0;
   // The derivatives row by row: no image of doubles (docs/cli.md "Resource limits").
-  gaussian_derivative_rows(image, pixels.black_level, edges.sigma, edges.order, [&](std::size_t y, const double* g) {
-    for (; counted < h && counted <= y + r; ++counted) count_row(counted);
-    if (y < r || y + r >= h) return;
-    for (std::size_t x = 0; x < w; ++x) {
-      if (rows_kept[x] < span) continue;
-      ++counts.kept;
-      colours.push_back({g[3 * x], g[3 * x + 1], g[3 * x + 2]});
-    }
-  });
-  return colour_set_of_doubles(std::move(colours), pixels.colour_set, counts);
+  gaussian_derivative_rows(image, pixels.black_level, edges.sigma, orders,
+                           [&](std::size_t y, const std::array<const double*, 3>& g) {
+                             for (; counted < h && counted <= y + r; ++counted) count_row(counted);
+                             if (y < r || y + r >= h) return;
+                             for (std::size_t x = 0; x < w; ++x) {
+                               if (rows_kept[x] < span) continue;
+                               ++counts.kept;
+                               for (int o = 0; o < 2; ++o)
+                                 if (const double* v = g[static_cast<std::size_t>(o + 1)])
+                                   colours[o].push_back({v[3 * x], v[3 * x + 1], v[3 * x + 2]});
+                             }
+                           });
+  for (int o = 0; o < 2; ++o)
+    if (orders[static_cast<std::size_t>(o + 1)])
+      out[o] = colour_set_of_doubles(std::move(colours[o]), pixels.colour_set, counts);
+  return out;
+}
+
+}  // namespace
+
+ImageColours edge_colours(const RgbImage& image, const PixelRules& pixels, const EdgeRules& edges) {
+  std::array<bool, 3> orders{};  // order zero: none of 1 and 2, refused
+  orders[static_cast<std::size_t>(edges.order)] = true;
+  return std::move(edge_colour_sets(image, pixels, edges, orders)[edges.order == DerivativeOrder::second ? 1 : 0]);
+}
+
+std::array<ImageColours, 2> edge_colours_both_orders(const RgbImage& image, const PixelRules& pixels,
+                                                      const EdgeRules& edges) {
+  return edge_colour_sets(image, pixels, edges, {false, true, true});
 }
 
 }  // namespace gmcc

@@ -309,20 +309,25 @@ void fft_rows(const Source& source, long w, long h, const std::vector<const std:
   for (long y0 = 0; y0 < h; y0 += block) {
     const long rows = std::min(block, h - y0);
     x.make_to(std::min(h - 1, y0 + rows - 1 + r));
-    for (std::size_t p = 0; p < passes.size(); ++p)
+    // Per pass along x, each column pair transformed once for every pass along y that reads it
+    // (the 2-jet's five passes along y read three passes along x): the same transform each time.
+    for (std::size_t a = 0; a < along_x.size(); ++a)
       for (long i = 0; i < width; i += 2) {
         check_interrupt();
         std::fill(z.begin(), z.end(), std::complex<double>());
         for (long m = 0; m < rows + 2 * r; ++m) {
-          const double* in = x.row(passes[p].along_x, std::min(std::max(y0 - r + m, 0L), h - 1));
+          const double* in = x.row(a, std::min(std::max(y0 - r + m, 0L), h - 1));
           z[static_cast<std::size_t>(m)] = {in[i], i + 1 < width ? in[i + 1] : 0.0};
         }
         fy.transform(z.data());
-        fy.apply(p, z.data(), t.data());
-        double* res = results[p].data();
-        for (long j = 0; j < rows; ++j) {
-          res[j * width + i] = t[static_cast<std::size_t>(j + 2 * r)].real();
-          if (i + 1 < width) res[j * width + i + 1] = t[static_cast<std::size_t>(j + 2 * r)].imag();
+        for (std::size_t p = 0; p < passes.size(); ++p) {
+          if (passes[p].along_x != a) continue;
+          fy.apply(p, z.data(), t.data());
+          double* res = results[p].data();
+          for (long j = 0; j < rows; ++j) {
+            res[j * width + i] = t[static_cast<std::size_t>(j + 2 * r)].real();
+            if (i + 1 < width) res[j * width + i + 1] = t[static_cast<std::size_t>(j + 2 * r)].imag();
+          }
         }
       }
     for (long j = 0; j < rows; ++j) combiner(results, j * width, static_cast<std::size_t>(y0 + j), row);

@@ -107,6 +107,46 @@ BOOST_AUTO_TEST_CASE(edges_next_to_a_dropped_pixel_are_not_taken) {
   BOOST_CHECK_THROW(edge_colours(im, binned), std::invalid_argument);
 }
 
+BOOST_AUTO_TEST_CASE(both_orders_from_one_sweep_are_each_order_alone) {
+  // Issue 46 (the 2-jet): the 1st- and 2nd-order edge colours from one sweep are those of each
+  // order alone, colour for colour and count for count: both colour sets, the direct and the FFT
+  // routes (σ = 16), a dropped pixel and a black level, a neighbourhood too wide for the image.
+  std::mt19937 rng(46);
+  for (const auto& [w, h] : {std::pair<std::size_t, std::size_t>{23, 17}, {9, 40}}) {
+    const RgbImage im = mondrian(rng, w, h, 100, 20000);
+    PixelRules rules;
+    rules.black_level = 150;
+    rules.keep.assign(w * h, true);
+    rules.keep[(h / 2) * w + w / 3] = false;
+    for (ColourSet set : {ColourSet::distinct, ColourSet::hull_3d})
+      for (double sigma : {1.0, 4.0, 16.0})
+        for (std::size_t r : {std::size_t(0), std::size_t(2), std::size_t(20)}) {
+          rules.colour_set = set;
+          EdgeRules e{DerivativeOrder::second, sigma, r};  // the order is not read
+          const std::array<ImageColours, 2> both = edge_colours_both_orders(im, rules, e);
+          for (int o = 0; o < 2; ++o) {
+            e.order = o == 0 ? DerivativeOrder::first : DerivativeOrder::second;
+            const ImageColours alone = edge_colours(im, rules, e);
+            const ImageColours& b = both[static_cast<std::size_t>(o)];
+            BOOST_TEST((b.colours == alone.colours), "order " << o + 1 << " sigma " << sigma << " r " << r);
+            BOOST_TEST(b.counts.kept == alone.counts.kept);
+            BOOST_TEST(b.counts.colours == alone.counts.colours);
+            BOOST_TEST(b.counts.hull_vertices == alone.counts.hull_vertices);
+            BOOST_TEST(b.counts.dark == alone.counts.dark);
+            BOOST_TEST((b.set == alone.set));
+          }
+          BOOST_TEST((r == 20 || !both[0].colours.empty()));
+          BOOST_TEST((both[0].colours != both[1].colours || both[0].colours.empty()));
+        }
+  }
+  const RgbImage im = mondrian(rng, 8, 8, 100, 900);
+  PixelRules lifts;
+  lifts.colour_set = ColourSet::hull;
+  BOOST_CHECK_THROW(edge_colours_both_orders(im, lifts, EdgeRules{}), std::invalid_argument);
+  BOOST_CHECK_THROW(edge_colours_both_orders(im, PixelRules{}, EdgeRules{DerivativeOrder::first, 0, 2}),
+                    std::invalid_argument);
+}
+
 // A scene seen under a light e: canonical pixel and edge gamuts learned from the same scene under
 // white light, the true map 1/e in the joint F3; with one type the joint estimate is the single one.
 BOOST_AUTO_TEST_CASE(joint_estimate_of_pixel_and_edge_gamuts) {

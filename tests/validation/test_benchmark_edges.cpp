@@ -1,6 +1,6 @@
 // The benchmark's edge-based methods run alone against the same methods run beside the pixel
-// method (which learns the pixel canonical gamut the edge methods alone skip): the same records
-// at σ = 1 and 4 on seeded noisy Mondrians; and the fold whose training images keep no colour
+// method (which learns the pixel canonical gamut and makes the pixel hull the edge methods alone
+// skip): the same records at σ = 1 and 4, and with a black level, on seeded noisy Mondrians; and the fold whose training images keep no colour
 // above black still refused when only an edge method is asked for.
 #include <gmcc/input/colour_csv.h>
 #include <gmcc/input/image_file.h>
@@ -51,7 +51,9 @@ std::vector<BenchmarkImage> mondrians(const std::string& name, bool black) {
 
 BOOST_AUTO_TEST_CASE(edge_methods_alone_give_the_records_they_give_beside_the_pixel_method) {
   const std::vector<BenchmarkImage> images = mondrians("gmcc_test_benchmark_edges", false);
-  for (const double sigma : {1.0, 4.0}) {
+  // Alone, edge1 and edge2 take the pixel colours' scale from their largest channels, beside the
+  // pixel method from their hull: a black level (subtracted from both) as well as none.
+  for (const auto& [sigma, black] : {std::pair<double, std::uint32_t>{1.0, 0}, {4.0, 0}, {1.0, 9000}}) {
     BenchmarkOptions both, alone;
     both.methods = {"gm3d-max-trace", "gm3d-edge1-max-trace", "gm3d-edge2-max-trace"};
     alone.methods = {"gm3d-edge1-max-trace", "gm3d-edge2-max-trace"};
@@ -59,6 +61,8 @@ BOOST_AUTO_TEST_CASE(edge_methods_alone_give_the_records_they_give_beside_the_pi
       o->edge_sigma = sigma;
       o->threads = 1;
       o->pixels.rules.saturation = 65535;
+      o->pixels.rules.black_level = black;
+      o->pixels.black_level_given = black > 0;
     }
     const BenchmarkResult a = run_benchmark(images, both), b = run_benchmark(images, alone);
     std::vector<const BenchmarkRecord*> edges;

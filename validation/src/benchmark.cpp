@@ -131,7 +131,8 @@ FoldCanonicals learn_fold(int fold, const std::vector<BenchmarkImage>& images, c
     const Colour& e = images[i].light;
     if (sgn(e.r) <= 0 || sgn(e.g) <= 0 || sgn(e.b) <= 0)  // as the learners say it
       throw std::invalid_argument("a training light needs every channel > 0");
-    const Rational top = white_balanced_maximum(reduced[i].hull3, e);
+    // The pixel colours' scale from their largest channels: the same as from every colour.
+    const Rational top = white_balanced_maximum({reduced[i].top}, e);
     if (sgn(top) > 0) ++colourful;
     const Rational scale = o.intensity == CanonicalIntensity::max ? top : Rational(1);
     if (sgn(scale) == 0) continue;  // only black: the pixel gamut takes nothing of it either

@@ -41,19 +41,21 @@ Needs needs_of(const std::vector<std::string>& methods) {
     if (!seen.insert(m).second) throw std::invalid_argument("benchmark method \"" + m + "\" is given twice");
     bool known = false;
     for (Rule3 rule : all_rules_3)
-      if (m == gm3d_method(rule)) n.gm3d = n.gamut3 = n.rule3[rule] = known = true;
+      if (m == gm3d_method(rule)) n.gm3d = n.hull3 = n.gamut3 = n.rule3[rule] = known = true;
     for (Rule rule : all_rules)
       if (m == gm2d_method(rule)) n.gm2d = n.rule2[rule] = known = true;
     for (Rule3 rule : all_rules_3)
-      if (m == gm3d_constrained_method(rule)) n.gm3d = n.gamut3 = n.rule3c[rule] = known = true;
+      if (m == gm3d_constrained_method(rule)) n.gm3d = n.hull3 = n.gamut3 = n.rule3c[rule] = known = true;
     for (Rule rule : all_rules)
       if (m == gm2d_constrained_method(rule)) n.gm2d = n.gm2dc = n.rule2c[rule] = known = true;
     if (m == kGcie) n.gcie = known = true;
     // An edge-based method needs the pixel colours too: their scale is its edge colours' scale;
-    // the pixel canonical gamut only when it intersects the pixel feasible set (the n-jets).
+    // their hull and the pixel canonical gamut only when it intersects the pixel feasible set (the
+    // n-jets).
     for (int k = 0; k < 4; ++k)
       if (m == kEdge[k]) {
         n.gm3d = n.edge[k] = known = true;
+        n.hull3 = n.hull3 || kEdgeTypes[k][0];
         n.gamut3 = n.gamut3 || kEdgeTypes[k][0];
         for (int o = 0; o < 2; ++o) n.order[o] = n.order[o] || kEdgeTypes[k][o + 1];
       }
@@ -63,6 +65,32 @@ Needs needs_of(const std::vector<std::string>& methods) {
   }
   return n;
 }
+
+namespace {
+
+// The kept pixels' largest linear channels (image_hull_sets' colours: the sample minus the black
+// level, clamped at 0), from their hull's vertices when it was made (each channel's largest value
+// is a vertex's: a linear function's maximum over conv(S) is reached at a vertex), else from every
+// kept pixel: the same colour either way, and white_balanced_maximum({top}, e) is that of the
+// colours, max over colours c and channels k of c_k/e_k, since every e_k > 0.
+Colour largest_channels(const RgbImage& image, std::uint32_t black_level, const KeptPixels& kept,
+                        const std::vector<Colour>& hull) {
+  if (!hull.empty()) {
+    Colour top{Rational(0), Rational(0), Rational(0)};
+    for (const Colour& c : hull) top = {std::max(top.r, c.r), std::max(top.g, c.g), std::max(top.b, c.b)};
+    return top;
+  }
+  std::array<std::uint32_t, 3> top{0, 0, 0};
+  for (std::size_t i = 0; i < kept.kept.size(); ++i)
+    if (kept.kept[i])
+      for (std::size_t k = 0; k < 3; ++k) {
+        const std::uint32_t v = image.samples[3 * i + k];
+        top[k] = std::max(top[k], v > black_level ? v - black_level : 0);
+      }
+  return {Rational(top[0]), Rational(top[1]), Rational(top[2])};
+}
+
+}  // namespace
 
 Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs& n) {
   CameraImage read = read_camera_image(im.path, levels_to_read(o.pixels, im.own));
@@ -82,19 +110,24 @@ Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs&
     throw InputError(im.path, 0, "no usable pixel after the mask, saturation and dark or bright rules");
   // The 3-D hull's colours and the 2-D lifts from one sieve of the kept pixels (no distinct count).
   std::vector<ColourSet> sets;
-  if (n.gm3d || n.gcie) sets.push_back(ColourSet::hull_3d);
+  if (n.hull3 || n.gcie) sets.push_back(ColourSet::hull_3d);
   if (n.gm2d) sets.push_back(ColourSet::hull);
   std::vector<ImageColours> colours = image_hull_sets(image, rules, kept, sets);
-  if (n.gm3d || n.gcie) r.hull3 = std::move(colours.front().colours);
+  if (n.hull3 || n.gcie) r.hull3 = std::move(colours.front().colours);
   if (n.gm2d) r.lifts = std::move(colours.back().colours);
-  for (int k = 0; k < 2; ++k)
-    if (n.order[k]) {
-      rules.colour_set = ColourSet::hull_3d;
-      EdgeRules edges;
-      edges.order = k == 0 ? DerivativeOrder::first : DerivativeOrder::second;
-      edges.sigma = o.edge_sigma;
-      r.edges[k] = edge_colours(image, rules, edges).colours;
+  if (n.gm3d) r.top = largest_channels(image, rules.black_level, kept, r.hull3);
+  if (n.order[0] || n.order[1]) {
+    rules.colour_set = ColourSet::hull_3d;
+    EdgeRules edges;
+    edges.sigma = o.edge_sigma;
+    if (n.order[0] && n.order[1]) {  // one sweep of the derivatives for both (the 2-jet)
+      std::array<ImageColours, 2> both = edge_colours_both_orders(image, rules, edges);
+      for (int k = 0; k < 2; ++k) r.edges[k] = std::move(both[k].colours);
+    } else {
+      edges.order = n.order[0] ? DerivativeOrder::first : DerivativeOrder::second;
+      r.edges[n.order[0] ? 0 : 1] = edge_colours(image, rules, edges).colours;
     }
+  }
   // The baselines together, sharing their sweeps of the pixels and of the derivatives; grey edge
   // at the run's derivative scale (the edge-based methods' σ).
   std::vector<std::size_t> asked;

@@ -48,7 +48,8 @@ inline constexpr bool kEdgeTypes[4][3] = {{false, true, false}, {false, false, t
 
 // What an image is reduced to: all the methods need of it.
 struct Reduced {
-  std::vector<Colour> hull3;  // pixel colours on their 3-D hull
+  std::vector<Colour> hull3;  // pixel colours on their 3-D hull (Needs::hull3 or gcie)
+  Colour top;                 // the pixel colours' largest channels (Needs::gm3d): their intensity scale
   std::vector<Colour> lifts;  // chromaticity lifts of their 2-D hull
   std::vector<Colour> edges[2];  // 1st- and 2nd-order edge colours on their 3-D hull
   std::array<std::optional<std::array<double, 3>>, all_baselines.size()> baselines;
@@ -56,7 +57,8 @@ struct Reduced {
 
 // Which families the methods asked for need.
 struct Needs {
-  bool gm3d = false, gm2d = false;  // gm3d: the pixel colours' 3-D hull
+  bool gm3d = false, gm2d = false;  // gm3d: the pixel colours' scale (their largest channels)
+  bool hull3 = false;  // the pixel colours' 3-D hull (the pixel rules and the n-jets, not edge1 or edge2)
   bool gamut3 = false;  // the pixel colours' 3-D canonical gamut (not the edge methods' own)
   PerRule3<bool> rule3{};
   PerRule<bool> rule2{};

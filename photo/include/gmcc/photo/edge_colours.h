@@ -15,6 +15,7 @@
 #include <gmcc/photo/image_derivatives.h>
 #include <gmcc/photo/image_pixels.h>
 
+#include <array>
 #include <cstddef>
 
 namespace gmcc {
@@ -41,5 +42,16 @@ struct EdgeRules {
 /// colours at a time). Memory: the pixel rules' bits, 24 bytes an edge pixel (its colour, kept for
 /// the exact distinct set) and the derivatives' rows (docs/cli.md "Resource limits").
 ImageColours edge_colours(const RgbImage& image, const PixelRules& pixels, const EdgeRules& edges = {});
+
+/// The 1st- and 2nd-order edge colours from one sweep of the derivatives (the n-jet methods,
+/// docs/photographs.md §5 "Edge-based gamut mapping"): element 0 is edge_colours(image, pixels,
+/// e) for `edges` with order first, element 1 with order second, colour for colour and count for
+/// count (`edges.order` is not read). The sweep is gaussian_derivative_rows with both orders
+/// asked, which makes the passes along x the two orders share once and hands on each order's
+/// values bit for bit; the pixel rules and the neighbourhood rule are applied once.
+/// 	hrows as edge_colours. Memory: as edge_colours, 48 bytes an edge pixel (both orders'
+/// colours) and the two-order sweep's rows.
+std::array<ImageColours, 2> edge_colours_both_orders(const RgbImage& image, const PixelRules& pixels,
+                                                      const EdgeRules& edges);
 
 }  // namespace gmcc
