@@ -138,18 +138,23 @@ std::vector<std::size_t> hull_candidate_indices(const std::vector<std::array<dou
       }
       facets.push_back(*f);
     }
+  // Each facet copy f moved outwards by 16u of each coefficient's magnitude (16u·|f_k| is exact:
+  // a power of 2 times a normal double): g_k = fl(f_k + 16u|f_k|), h = fl(f_3 − 16u|f_3|). For a
+  // colour with channels >= 0, fl(g·d − h) < 0 certifies s = a·p − b < 0 with one dot product
+  // (docs/derivations.md §4.6, the image-hull prefilter: the shift is at least 14.9u·T, the
+  // evaluation's and the inputs' errors at most 8.1u·T, T = Σ|f_k|·d_k + |f_3|).
+  std::vector<std::array<double, 4>> shifted;
+  for (const std::array<double, 4>& f : facets)
+    shifted.push_back({f[0] + 16 * u * std::fabs(f[0]), f[1] + 16 * u * std::fabs(f[1]),
+                       f[2] + 16 * u * std::fabs(f[2]), f[3] - 16 * u * std::fabs(f[3])});
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i < d.size(); ++i) {
-    bool inside = !facets.empty();
-    for (int k = 0; k < 3 && inside; ++k)  // magnitudes where the relative bound below holds
-      inside = numerics::in_double_range(d[i][k]);
-    for (std::size_t j = 0; j < facets.size() && inside; ++j) {
-      // s = a·p - b; inputs within 2u each, a 4-term dot product: |s~ - s| <= 8.1u·T.
-      const std::array<double, 4>& f = facets[j];
-      const double s = f[0] * d[i][0] + f[1] * d[i][1] + f[2] * d[i][2] - f[3];
-      const double T = std::fabs(f[0] * d[i][0]) + std::fabs(f[1] * d[i][1]) + std::fabs(f[2] * d[i][2]) +
-                       std::fabs(f[3]);
-      inside = s < -16 * u * T;
+    bool inside = !shifted.empty();
+    for (int k = 0; k < 3 && inside; ++k)  // magnitudes where the relative bound holds, channels >= 0
+      inside = numerics::in_double_range(d[i][k]) && d[i][k] >= 0;
+    for (std::size_t j = 0; j < shifted.size() && inside; ++j) {
+      const std::array<double, 4>& g = shifted[j];
+      inside = g[0] * d[i][0] + g[1] * d[i][1] + g[2] * d[i][2] - g[3] < 0;
     }
     if (!inside) out.push_back(i);
   }

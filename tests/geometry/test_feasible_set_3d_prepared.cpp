@@ -20,6 +20,8 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <cmath>
+
 #include <stdexcept>
 #include <thread>
 
@@ -469,6 +471,34 @@ BOOST_AUTO_TEST_CASE(small_integer_colour_hulls_agree_with_the_general_route) {
     std::vector<Colour> by_index;
     for (std::size_t i : colour_hull_vertex_indices(d)) by_index.push_back(colours[i]);
     BOOST_TEST((by_index == expected), "trial " << trial);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(scaled_colour_hulls_through_the_shifted_planes_agree) {
+  // Issue 46 (edge colours): the double prefilter's shifted facet planes (one dot product a
+  // facet) against the small-integer sieve, an independent route: integer colours, many on
+  // planes through the extreme colours (the cube's faces, r + g + b = top, the grey axis), and
+  // the same colours times 2^k as doubles (not small integers: the general route), the same
+  // vertices by index at every scale.
+  Rng rng(4646);
+  for (int trial = 0; trial < 24; ++trial) {
+    const unsigned top = trial % 3 == 0 ? 12 : trial % 3 == 1 ? 255 : 65535;
+    std::uniform_int_distribution<unsigned> channel(0, top);
+    std::vector<std::array<double, 3>> colours;
+    for (int i = 0; i < 200 + 150 * trial; ++i) {
+      unsigned c[3] = {channel(rng), channel(rng), channel(rng)};
+      if (i % 4 == 1) c[i % 3] = i % 8 == 1 ? 0 : top;  // on a face of the cube
+      if (i % 4 == 2 && c[0] + c[1] <= top) c[2] = top - c[0] - c[1];  // on r + g + b = top
+      if (i % 16 == 3) c[1] = c[2] = c[0];  // the grey axis
+      colours.push_back({double(c[0]), double(c[1]), double(c[2])});
+    }
+    const std::vector<std::size_t> want = colour_hull_vertex_indices(colours);
+    BOOST_TEST(want.size() >= 4u);
+    for (int k : {-100, -30, 1, 7, 100}) {
+      std::vector<std::array<double, 3>> scaled;
+      for (const auto& c : colours) scaled.push_back({std::ldexp(c[0], k), std::ldexp(c[1], k), std::ldexp(c[2], k)});
+      BOOST_TEST((colour_hull_vertex_indices(scaled) == want), "trial " << trial << " scale 2^" << k);
+    }
   }
 }
 
