@@ -75,7 +75,9 @@ std::array<ImageColours, 2> edge_colour_sets(const RgbImage& image, const PixelR
                            });
   for (int o = 0; o < 2; ++o)
     if (orders[static_cast<std::size_t>(o + 1)])
-      out[o] = colour_set_of_doubles(std::move(colours[o]), pixels.colour_set, counts);
+      out[o] = !edges.count_colours && pixels.colour_set == ColourSet::hull_3d
+                   ? hull_3d_of_doubles(std::move(colours[o]), counts)
+                   : colour_set_of_doubles(std::move(colours[o]), pixels.colour_set, counts);
   return out;
 }
 

@@ -418,6 +418,34 @@ ImageColours prefiltered_colours(const RgbImage& image, const PixelRules& rules,
 
 }  // namespace
 
+ImageColours hull_3d_of_doubles(std::vector<std::array<double, 3>> colours, const PixelCounts& counts) {
+  ImageColours out;
+  out.counts = counts;
+  out.counts.colours = 0;
+  out.set = ColourSet::hull_3d;
+  if (colours.empty()) return out;
+  // Chunk by chunk, as colours_of_keys: the hull of the chunks' vertices is the whole set's, its
+  // vertices the same, and the working copies a chunk's size. colour_hull_vertex_indices gives
+  // one index per distinct vertex in increasing colour order, in any order of its input.
+  const std::size_t n = colours.size();
+  std::vector<std::array<double, 3>> vertices, chunk;
+  for (std::size_t begin = 0; begin < n; begin += colour_chunk) {
+    const std::size_t end = std::min(n, begin + colour_chunk);
+    chunk.assign(colours.begin() + static_cast<long>(begin), colours.begin() + static_cast<long>(end));
+    for (std::size_t i : colour_hull_vertex_indices(chunk)) vertices.push_back(chunk[i]);
+  }
+  std::vector<std::array<double, 3>>().swap(colours);
+  std::vector<std::array<double, 3>>().swap(chunk);
+  if (n > colour_chunk) {
+    std::vector<std::array<double, 3>> all;
+    for (std::size_t i : colour_hull_vertex_indices(vertices)) all.push_back(vertices[i]);
+    vertices.swap(all);
+  }
+  for (const auto& c : vertices) out.colours.push_back({Rational(c[0]), Rational(c[1]), Rational(c[2])});
+  out.counts.hull_vertices = out.colours.size();
+  return out;
+}
+
 ImageColours colour_set_of_doubles(std::vector<std::array<double, 3>> colours, ColourSet colour_set,
                                    const PixelCounts& counts) {
   ImageColours out;
@@ -435,24 +463,9 @@ ImageColours colour_set_of_doubles(std::vector<std::array<double, 3>> colours, C
     return out;
   }
   if (colour_set == ColourSet::hull_3d) {
-    // Chunk by chunk of the sorted colours, as colours_of_keys: the hull of the chunks' vertices
-    // is the whole set's, its vertices the same, and the working copies a chunk's size.
-    std::vector<std::array<double, 3>> vertices, chunk;
-    for (std::size_t begin = 0; begin < colours.size(); begin += colour_chunk) {
-      const std::size_t end = std::min(colours.size(), begin + colour_chunk);
-      chunk.assign(colours.begin() + static_cast<long>(begin), colours.begin() + static_cast<long>(end));
-      for (std::size_t i : colour_hull_vertex_indices(chunk)) vertices.push_back(chunk[i]);
-    }
-    std::vector<std::array<double, 3>>().swap(colours);
-    std::vector<std::array<double, 3>>().swap(chunk);
-    if (out.counts.colours > colour_chunk) {
-      std::vector<std::array<double, 3>> all;
-      for (std::size_t i : colour_hull_vertex_indices(vertices)) all.push_back(vertices[i]);
-      vertices.swap(all);
-    }
-    for (const auto& c : vertices) out.colours.push_back({Rational(c[0]), Rational(c[1]), Rational(c[2])});
-    out.counts.hull_vertices = out.colours.size();
-    return out;
+    ImageColours hull = hull_3d_of_doubles(std::move(colours), out.counts);
+    hull.counts.colours = out.counts.colours;
+    return hull;
   }
   if (colours.size() > max_colours)
     throw std::length_error(std::to_string(colours.size()) + " distinct colours, more than the " +

@@ -15,6 +15,7 @@
 
 #include "internal/clamped_convolution.h"  // photo/src: the FFT route and the kernels
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -145,6 +146,56 @@ BOOST_AUTO_TEST_CASE(both_orders_from_one_sweep_are_each_order_alone) {
   BOOST_CHECK_THROW(edge_colours_both_orders(im, lifts, EdgeRules{}), std::invalid_argument);
   BOOST_CHECK_THROW(edge_colours_both_orders(im, PixelRules{}, EdgeRules{DerivativeOrder::first, 0, 2}),
                     std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(hull_without_the_distinct_colours_is_the_same_hull) {
+  // Issue 46: the benchmark's edge colours skip finding the distinct colours (hull_3d_of_doubles):
+  // the same vertices in the same order as colour_set_of_doubles's hull of the sorted distinct
+  // colours, from shuffled colours with repeats and from flat ones, and edge_colours with
+  // count_colours false the same colours and counts but the distinct count.
+  std::mt19937_64 rng(46);
+  std::uniform_int_distribution<int> small(0, 40);
+  for (int trial = 0; trial < 6; ++trial) {
+    std::vector<std::array<double, 3>> colours;
+    for (int i = 0; i < 300 + 400 * trial; ++i) {
+      std::array<double, 3> c{small(rng) / 8.0, small(rng) * 0.3, small(rng) * 1e-3};
+      if (trial % 3 == 2) c[2] = c[0];  // flat: the plane b = r
+      colours.push_back(c);
+      if (i % 5 == 0) colours.push_back(c);  // repeats
+    }
+    std::shuffle(colours.begin(), colours.end(), rng);
+    // The reference: the hull of the sorted distinct colours by index (colour_hull_3.h).
+    std::vector<std::array<double, 3>> sorted = colours;
+    std::sort(sorted.begin(), sorted.end());
+    sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+    std::vector<Colour> want;
+    for (std::size_t i : colour_hull_vertex_indices(sorted))
+      want.push_back({Rational(sorted[i][0]), Rational(sorted[i][1]), Rational(sorted[i][2])});
+    const ImageColours got = hull_3d_of_doubles(colours, PixelCounts{});
+    const ImageColours set = colour_set_of_doubles(colours, ColourSet::hull_3d, PixelCounts{});
+    BOOST_TEST_REQUIRE(want.size() >= 3u);
+    BOOST_TEST((got.colours == want), "trial " << trial);
+    BOOST_TEST((set.colours == want), "trial " << trial);
+    BOOST_TEST(got.counts.hull_vertices == want.size());
+    BOOST_TEST(got.counts.colours == 0u);
+    BOOST_TEST(set.counts.colours == sorted.size());
+  }
+  BOOST_TEST(hull_3d_of_doubles({}, PixelCounts{}).colours.empty());
+  std::mt19937 rng32(47);
+  const RgbImage im = mondrian(rng32, 30, 26, 100, 20000);
+  PixelRules rules;
+  rules.colour_set = ColourSet::hull_3d;
+  for (double sigma : {1.0, 16.0}) {
+    EdgeRules e{DerivativeOrder::first, sigma, 2};
+    const ImageColours counted = edge_colours(im, rules, e);
+    e.count_colours = false;
+    const ImageColours hull = edge_colours(im, rules, e);
+    BOOST_TEST((hull.colours == counted.colours));
+    BOOST_TEST(hull.counts.kept == counted.counts.kept);
+    BOOST_TEST(hull.counts.hull_vertices == counted.counts.hull_vertices);
+    BOOST_TEST(hull.counts.colours == 0u);
+    BOOST_TEST(counted.counts.colours > 0u);
+  }
 }
 
 // A scene seen under a light e: canonical pixel and edge gamuts learned from the same scene under

@@ -120,6 +120,7 @@ Reduced reduce(const BenchmarkImage& im, const BenchmarkOptions& o, const Needs&
     rules.colour_set = ColourSet::hull_3d;
     EdgeRules edges;
     edges.sigma = o.edge_sigma;
+    edges.count_colours = false;  // only the hull's vertices are read
     if (n.order[0] && n.order[1]) {  // one sweep of the derivatives for both (the 2-jet)
       std::array<ImageColours, 2> both = edge_colours_both_orders(image, rules, edges);
       for (int k = 0; k < 2; ++k) r.edges[k] = std::move(both[k].colours);

@@ -28,6 +28,10 @@ struct EdgeRules {
   /// the pixel rules: an edge next to a masked chart or a dropped (clipped, dark) pixel is coloured
   /// by it. 2 (a 5 × 5 neighbourhood) suits σ = 1.
   std::size_t neighbourhood = 2;
+  /// With the hull_3d colour set: whether the distinct edge colours are found and counted
+  /// (`counts.colours`). false: counts.colours is 0 and the hull is taken without sorting every
+  /// colour (hull_3d_of_doubles), the same vertices in the same order (the benchmark's route).
+  bool count_colours = true;
 };
 
 /// The edge colours of `image`: the pixel rules' steps 1–4 (mask, saturation, black level, dark

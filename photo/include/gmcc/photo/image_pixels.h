@@ -135,6 +135,13 @@ KeptPixels kept_pixels(const RgbImage& image, const PixelRules& rules);
 ImageColours colour_set_of_doubles(std::vector<std::array<double, 3>> colours, ColourSet colour_set,
                                    const PixelCounts& counts);
 
+/// colour_set_of_doubles(colours, ColourSet::hull_3d, counts) without finding the distinct colours
+/// (none are sorted but the hull's candidates): the same vertices in the same order, (r, g, b)
+/// increasing, with `counts.colours` left 0 (docs/photographs.md §5, the edge colours of the
+/// benchmark, which needs only the hull). \throws std::invalid_argument for a negative or not
+/// finite channel (colour_hull_vertex_indices).
+ImageColours hull_3d_of_doubles(std::vector<std::array<double, 3>> colours, const PixelCounts& counts);
+
 /// Apply the rules to `image`.
 /// \throws std::length_error for ColourSet::distinct with more than max_colours (colour_csv.h)
 ///         distinct colours; std::invalid_argument if bin is 0, `keep` is neither empty nor width
