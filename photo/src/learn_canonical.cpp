@@ -36,6 +36,18 @@ std::vector<std::string> canonical_intensity_names() {
 
 Rational white_balanced_maximum(const std::vector<Colour>& colours, const Colour& light) {
   Rational top = 0;
+  if (sgn(light.r) > 0 && sgn(light.g) > 0 && sgn(light.b) > 0) {
+    // Each channel's largest value over the light's (e_k > 0: max over c of c_k/e_k is
+    // (max over c of c_k)/e_k): comparisons a colour, three divisions in all.
+    if (colours.empty()) return top;
+    Colour m = colours.front();
+    for (const Colour& c : colours) {
+      if (c.r > m.r) m.r = c.r;
+      if (c.g > m.g) m.g = c.g;
+      if (c.b > m.b) m.b = c.b;
+    }
+    return std::max({top, Rational(m.r / light.r), Rational(m.g / light.g), Rational(m.b / light.b)});
+  }
   for (const Colour& c : colours)
     top = std::max({top, Rational(c.r / light.r), Rational(c.g / light.g), Rational(c.b / light.b)});
   return top;
@@ -79,12 +91,18 @@ void CanonicalLearner3::add_scaled(const std::vector<Colour>& colours, const Col
   } else {
     v = colour_hull_vertices(colours);
   }
-  const Rational top = white_balanced_maximum(v, light);
-  if (sgn(top) == 0) return;  // only black: nothing a hull with black lacks
-  for (Colour& c : v) c = {c.r / light.r, c.g / light.g, c.b / light.b};
-  const Rational* divide = scale ? scale : intensity_ == CanonicalIntensity::max ? &top : nullptr;
-  if (divide)
-    for (Colour& c : v) c = {c.r / *divide, c.g / *divide, c.b / *divide};
+  // Only black (every channel 0, the light's > 0: white_balanced_maximum 0): nothing a hull with
+  // black lacks. The factor itself only where it divides.
+  const bool own = !scale && intensity_ == CanonicalIntensity::max;
+  const Rational top = own ? white_balanced_maximum(v, light) : Rational(0);
+  if (own ? sgn(top) == 0 : std::all_of(v.begin(), v.end(), [](const Colour& c) {
+        return sgn(c.r) == 0 && sgn(c.g) == 0 && sgn(c.b) == 0;
+      }))
+    return;
+  // c ⊘ e, then divided by the factor: c ⊘ (e·factor) exactly, one division a channel.
+  const Rational* divide = scale ? scale : own ? &top : nullptr;
+  const Colour by = divide ? Colour{light.r * *divide, light.g * *divide, light.b * *divide} : light;
+  for (Colour& c : v) c = {c.r / by.r, c.g / by.g, c.b / by.b};
   ++contributing_;
   points_.insert(points_.end(), std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
   if (points_.size() - hulled_ > std::max(hulled_, compact_from)) compact();

@@ -110,6 +110,38 @@ BOOST_AUTO_TEST_CASE(hull_vertices_added_as_given_learn_the_same_gamut) {
   }
 }
 
+// The learned points written out (issue 46: one division a channel, the factor from each
+// channel's largest value): each colour divided by its light, then by the image's factor —
+// white_balanced_maximum as the largest c_k/e_k over every colour, or the given scale.
+BOOST_AUTO_TEST_CASE(learned_points_are_the_colours_over_light_and_factor) {
+  std::mt19937 rng(4649);
+  for (const CanonicalIntensity intensity : {CanonicalIntensity::max, CanonicalIntensity::none})
+    for (const bool scaled : {false, true}) {
+      CanonicalLearner3 learner(intensity);
+      std::vector<Colour> points;
+      for (int image = 0; image < 6; ++image) {
+        std::vector<Colour> colours = colour_hull_vertices(sphere_points(rng, 60));
+        const Colour e = random_light(rng);
+        Rational top = 0;  // by brute force
+        for (const Colour& c : colours) top = std::max({top, Rational(c.r / e.r), Rational(c.g / e.g), Rational(c.b / e.b)});
+        BOOST_TEST(white_balanced_maximum(colours, e) == top);
+        Rational scale(image + 2, 5);
+        scale.canonicalize();
+        const Rational factor = scaled ? scale : intensity == CanonicalIntensity::max ? top : Rational(1);
+        for (const Colour& c : colours)
+          points.push_back({c.r / e.r / factor, c.g / e.g / factor, c.b / e.b / factor});
+        if (scaled) learner.add_hull_vertices(colours, e, scale);
+        else learner.add_hull_vertices(colours, e);
+      }
+      BOOST_TEST((learner.gamut() == colour_hull_vertices(points)), "scaled " << scaled);
+    }
+  // A light with a channel <= 0 (outside the precondition): the largest c_k/e_k still.
+  const std::vector<Colour> cs{Colour{1, 2, 3}, Colour{4, 1, 2}};
+  BOOST_TEST(white_balanced_maximum(cs, Colour{-1, 1, 1}) == 3);
+  BOOST_TEST(white_balanced_maximum({}, Colour{1, 1, 1}) == 0);
+  BOOST_TEST(white_balanced_maximum(cs, Colour{2, 4, 1}) == 3);
+}
+
 BOOST_AUTO_TEST_CASE(learned_2d_gamut_is_the_hull_of_white_balanced_chromaticities) {
   std::mt19937 rng(11);
   CanonicalLearner2 learner;
