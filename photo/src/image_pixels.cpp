@@ -429,7 +429,10 @@ ImageColours hull_3d_of_doubles(std::vector<std::array<double, 3>> colours, cons
   // one index per distinct vertex in increasing colour order, in any order of its input.
   const std::size_t n = colours.size();
   std::vector<std::array<double, 3>> vertices, chunk;
-  for (std::size_t begin = 0; begin < n; begin += colour_chunk) {
+  if (n <= colour_chunk) {  // one chunk: the colours themselves, no copy
+    for (std::size_t i : colour_hull_vertex_indices(colours)) vertices.push_back(colours[i]);
+  }
+  for (std::size_t begin = 0; n > colour_chunk && begin < n; begin += colour_chunk) {
     const std::size_t end = std::min(n, begin + colour_chunk);
     chunk.assign(colours.begin() + static_cast<long>(begin), colours.begin() + static_cast<long>(end));
     for (std::size_t i : colour_hull_vertex_indices(chunk)) vertices.push_back(chunk[i]);
