@@ -52,20 +52,36 @@ ColourHullSieve::ColourHullSieve(const std::vector<std::array<double, 3>>& corne
     while (double(grid) * std::ldexp(1.0, static_cast<int>(shift_[k])) < hi - lo + 1) ++shift_[k];
     step[k] = std::ldexp(1.0, static_cast<int>(shift_[k]));  // grid steps cover [lo, hi]
   }
-  const std::size_t points = grid + 1;
-  std::vector<bool> inside_point(points * points * points);
-  for (std::size_t i = 0; i < inside_point.size(); ++i)
-    inside_point[i] = inside_planes({low_[0] + step[0] * double(i / (points * points)),
-                                     low_[1] + step[1] * double(i / points % points),
-                                     low_[2] + step[2] * double(i % points)});
-  inside_cell_.assign(grid * grid * grid, false);
-  for (std::size_t i = 0; i < inside_cell_.size(); ++i) {
-    const std::size_t r = i / (grid * grid), g = i / grid % grid, b = i % grid;
-    bool all = true;
-    for (std::size_t corner = 0; corner < 8 && all; ++corner)
-      all = inside_point[((r + (corner >> 2)) * points + g + ((corner >> 1) & 1)) * points + b + (corner & 1)];
-    inside_cell_[i] = all;
+  sort_planes_into_cells(step);
+}
+
+void ColourHullSieve::sort_planes_into_cells(const std::array<double, 3>& step) {
+  const std::size_t cells = grid * grid * grid;
+  outside_cell_.assign(cells, 0);
+  cell_first_.assign(cells + 1, 0);
+  for (std::size_t i = 0; i < cells; ++i) {
+    cell_first_[i] = static_cast<std::uint32_t>(cell_planes_.size());
+    // The closed cell [lo, hi]: integers below 2^18 (low_ below 2^16, 16 steps below 2^17), so
+    // with |n| below 2^33 every product is below 2^51 and every sum below 2^53: exact.
+    const std::array<std::size_t, 3> at = {i / (grid * grid), i / grid % grid, i % grid};
+    std::array<double, 3> lo, hi;
+    for (std::size_t k = 0; k < 3; ++k) lo[k] = low_[k] + step[k] * double(at[k]), hi[k] = lo[k] + step[k];
+    for (const std::array<double, 4>& f : planes_) {
+      // The least and the largest of n·x over the cell, at the corners the signs of n pick.
+      double least = 0, largest = 0;
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double a = f[k] * lo[k], b = f[k] * hi[k];
+        least += std::min(a, b), largest += std::max(a, b);
+      }
+      if (!(least < f[3])) {  // no point of the cell strictly inside this plane
+        outside_cell_[i] = 1;
+        cell_planes_.resize(cell_first_[i]);
+        break;
+      }
+      if (!(largest < f[3])) cell_planes_.push_back(f);  // the plane crosses the cell
+    }
   }
+  cell_first_[cells] = static_cast<std::uint32_t>(cell_planes_.size());
 }
 
 }  // namespace gmcc

@@ -42,6 +42,8 @@ std::array<double, 3> colour_of(std::uint64_t key) {
 // How many slabs of red the sieve cuts the colours into (8: measured on full-size stand-ins, where
 // one Q for the whole image kept about 18% of the pixels for the exact hull).
 constexpr std::size_t slabs = 8;
+// About how many kept pixels the sieves' corners are chosen from.
+constexpr std::size_t sample = 1 << 16;
 
 }  // namespace
 
@@ -53,23 +55,32 @@ std::vector<ImageColours> image_hull_sets(const RgbImage& image, const PixelRule
   if (!hulls || rules.bin != 1 || rules.prefilter_sigma > 0 || kept.counts.kept == 0 ||
       kept.kept.size() != image.width * image.height)
     return image_colour_sets(image, rules, kept, sets);
-  // Pass 1: the range of red; the colours fall into slabs of red, each with its own sieve: a
+  // The sieves' corners from a sample of the kept pixels (about `sample` of them, every
+  // stride-th pixel): any colours of the image will do, since a colour strictly inside the hull of
+  // some of its colours is a vertex of neither hull; the full passes below would choose colours
+  // only slightly more extreme, at the cost of two more sweeps of every pixel.
+  const std::size_t n = image.width * image.height, stride = std::max<std::size_t>(1, kept.counts.kept / sample);
+  const auto each_sampled_colour = [&](const auto& f) {
+    for (std::size_t i = 0; i < n; i += stride)
+      if (kept.kept[i]) f(i, linear_colour(image, rules.black_level, i));
+  };
+  // The sample's range of red; the colours fall into slabs of red, each with its own sieve: a
   // slab's hull is thin along red, so its few extreme colours leave far fewer inside candidates
-  // than one Q for the whole image.
+  // than one Q for the whole image. Colours beyond the sample's range go to the end slabs.
   double low = HUGE_VAL, high = -HUGE_VAL;
-  each_kept_colour(image, rules.black_level, kept, [&](std::size_t, const std::array<double, 3>& c) {
+  each_sampled_colour([&](std::size_t, const std::array<double, 3>& c) {
     low = std::min(low, c[0]), high = std::max(high, c[0]);
   });
   // A slab from red by one product: monotone in red, so the sorted keys meet the slabs in order.
   const double per_red = double(slabs) / (high - low + 1);
   const auto slab = [&](const std::array<double, 3>& c) {
-    return std::min(slabs - 1, static_cast<std::size_t>((c[0] - low) * per_red));
+    return c[0] <= low ? 0 : std::min(slabs - 1, static_cast<std::size_t>((c[0] - low) * per_red));
   };
-  // Pass 2: each slab's extreme colours among those with b > 0 (S+, the colours with a
+  // Each slab's extreme colours among the sample's with b > 0 (S+, the colours with a
   // chromaticity), so that Q ⊆ conv(S+) ⊆ conv(S): a colour strictly inside it is a vertex of
-  // neither hull, and one with b = 0 is never inside. Pass 3: the colours their sieves keep.
+  // neither hull, and one with b = 0 is never inside. Then every kept colour its sieve keeps.
   std::vector<ExtremeColours> extremes(slabs);
-  each_kept_colour(image, rules.black_level, kept, [&](std::size_t i, const std::array<double, 3>& c) {
+  each_sampled_colour([&](std::size_t i, const std::array<double, 3>& c) {
     if (c[2] > 0) extremes[slab(c)].add(i, c);
   });
   std::vector<ColourHullSieve> sieves;
