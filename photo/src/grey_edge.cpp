@@ -130,10 +130,21 @@ std::vector<std::optional<std::array<double, 3>>> grey_edge_estimates(const RgbI
     std::vector<std::size_t> group = {i}, summed;  // a NaN σ alone: the sweep refuses it
     for (std::size_t j = i + 1; j < all.size(); ++j)
       if (!done[j] && all[j].parameters.sigma == all[i].parameters.sigma) group.push_back(j), done[j] = true;
-    sweep(image, black_level, kept, all, group, [](Norm& n, int c, double v) {
+    // The largest values and Σ v depend on the order alone: made once per order, then copied.
+    std::array<std::size_t, 3> first_of{all.size(), all.size(), all.size()};
+    std::vector<std::size_t> firsts;
+    for (std::size_t k : group) {
+      std::size_t& first = first_of[static_cast<std::size_t>(all[k].parameters.order)];
+      if (first == all.size()) first = k, firsts.push_back(k);
+    }
+    sweep(image, black_level, kept, all, firsts, [](Norm& n, int c, double v) {
       n.top[c] = std::max(n.top[c], v);
       n.plain[c] += v;
     });
+    for (std::size_t k : group) {
+      const Norm& first = all[first_of[static_cast<std::size_t>(all[k].parameters.order)]];
+      all[k].top = first.top, all[k].plain = first.plain;
+    }
     for (std::size_t k : group)
       if (all[k].sums()) summed.push_back(k), all[k].make_powers();
     sweep(image, black_level, kept, all, summed, [](Norm& n, int c, double v) { n.sum[c] += n.term(c, v); });
