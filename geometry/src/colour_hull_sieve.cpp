@@ -59,6 +59,7 @@ void ColourHullSieve::sort_planes_into_cells(const std::array<double, 3>& step) 
   const std::size_t cells = grid * grid * grid;
   outside_cell_.assign(cells, 0);
   cell_first_.assign(cells + 1, 0);
+  std::vector<std::array<double, 4>> crossing;
   for (std::size_t i = 0; i < cells; ++i) {
     cell_first_[i] = static_cast<std::uint32_t>(cell_planes_.size());
     // The closed cell [lo, hi]: integers below 2^18 (low_ below 2^16, 16 steps below 2^17), so
@@ -66,6 +67,7 @@ void ColourHullSieve::sort_planes_into_cells(const std::array<double, 3>& step) 
     const std::array<std::size_t, 3> at = {i / (grid * grid), i / grid % grid, i % grid};
     std::array<double, 3> lo, hi;
     for (std::size_t k = 0; k < 3; ++k) lo[k] = low_[k] + step[k] * double(at[k]), hi[k] = lo[k] + step[k];
+    crossing.clear();
     for (const std::array<double, 4>& f : planes_) {
       // The least and the largest of n·x over the cell, at the corners the signs of n pick.
       double least = 0, largest = 0;
@@ -75,10 +77,18 @@ void ColourHullSieve::sort_planes_into_cells(const std::array<double, 3>& step) 
       }
       if (!(least < f[3])) {  // no point of the cell strictly inside this plane
         outside_cell_[i] = 1;
-        cell_planes_.resize(cell_first_[i]);
+        crossing.clear();
         break;
       }
-      if (!(largest < f[3])) cell_planes_.push_back(f);  // the plane crosses the cell
+      if (!(largest < f[3])) crossing.push_back(f);  // the plane crosses the cell
+    }
+    for (std::size_t j = 0; j < crossing.size(); j += 4) {
+      Planes four;
+      for (std::size_t l = 0; l < 4; ++l) {
+        const std::array<double, 4> f = j + l < crossing.size() ? crossing[j + l] : std::array<double, 4>{0, 0, 0, 1};
+        four.n[0][l] = f[0], four.n[1][l] = f[1], four.n[2][l] = f[2], four.d[l] = f[3];
+      }
+      cell_planes_.push_back(four);
     }
   }
   cell_first_[cells] = static_cast<std::uint32_t>(cell_planes_.size());

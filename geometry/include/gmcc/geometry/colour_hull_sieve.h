@@ -69,8 +69,10 @@ class ColourHullSieve {
     }
     if (outside_cell_[cell]) return false;
     for (std::uint32_t j = cell_first_[cell]; j < cell_first_[cell + 1]; ++j) {
-      const std::array<double, 4>& f = cell_planes_[j];
-      if (!(f[0] * c[0] + f[1] * c[1] + f[2] * c[2] < f[3])) return false;
+      const Planes& f = cell_planes_[j];  // four planes at a time (vector instructions where there are)
+      const Four r = {c[0], c[0], c[0], c[0]}, g = {c[1], c[1], c[1], c[1]}, b = {c[2], c[2], c[2], c[2]};
+      const auto inside = f.n[0] * r + f.n[1] * g + f.n[2] * b < f.d;  // each lane 0 or −1
+      if (!(inside[0] & inside[1] & inside[2] & inside[3])) return false;
     }
     return true;
   }
@@ -84,11 +86,17 @@ class ColourHullSieve {
   std::array<double, 3> low_{}, high_{};  // the corners' box
   std::array<unsigned, 3> shift_{};       // cell i along k: [low + i·2^shift, low + (i + 1)·2^shift)
   // Per cell of the grid (grid^3, row-major in (r, g, b)): whether no colour of it is strictly
-  // inside Q, and else the planes it must be tested against, cell_planes_[cell_first_[cell] ..
-  // cell_first_[cell + 1]).
+  // inside Q, and else the planes it must be tested against, four at a time in
+  // cell_planes_[cell_first_[cell] .. cell_first_[cell + 1]).
+  // Four planes n·x < d by coordinate; a plane n = 0, d = 1 (which every colour satisfies) fills
+  // a cell's last four.
+  typedef double Four __attribute__((vector_size(32)));
+  struct Planes {
+    Four n[3], d;
+  };
   std::vector<std::uint8_t> outside_cell_;
   std::vector<std::uint32_t> cell_first_;
-  std::vector<std::array<double, 4>> cell_planes_;
+  std::vector<Planes> cell_planes_;
 };
 
 }  // namespace gmcc

@@ -18,7 +18,7 @@ namespace gmcc {
 /// with binning, a pre-filter or no kept pixel, this is image_colour_sets itself, counts and all.
 ///
 /// The route: the kept pixels fall into 8 slabs of red (cut at the range of red of a sample of
-/// about 2^16 kept pixels, every k-th pixel); each slab's colours extreme along 26 directions
+/// about 2^18 kept pixels, every k-th pixel); each slab's colours extreme along 26 directions
 /// among the sample's with b > 0 (S+, the colours with a chromaticity) span a hull Q inside
 /// conv(S+) and so inside the image's hull (ExtremeColours: any colours of the image will do, the
 /// sample's only make Q a little smaller); one pass over the kept pixels keeps the colours not
