@@ -271,13 +271,19 @@ void combine(DerivativeOrder order, const double* const* v, const std::array<boo
     return;
   }
   root_sum_squares(a, b, c, out.data(), out.size());
-  for (std::size_t first = 0; first < out.size(); first += 3)
-    for (std::size_t i = first; i < first + 3; ++i)
-      if (flat[i - first])
-        out[i] = 0.0;
-      else if (out[i] <= 0x1p-500)
-        out[i] = c ? magnitude(a[i], b[i], c[i], a[i] * a[i] + 4 * c[i] * c[i] + b[i] * b[i])
-                   : magnitude(a[i], b[i], 0, a[i] * a[i] + b[i] * b[i]);
+  const std::array<bool, 3> is_flat = flat;
+  bool tiny = false;  // a root at most 2^-500 in the row (a pass with no branch)
+  for (double v : out) tiny |= v <= 0x1p-500;
+  if (tiny)
+    for (std::size_t first = 0; first < out.size(); first += 3)
+      for (std::size_t i = first; i < first + 3; ++i)
+        if (!is_flat[i - first] && out[i] <= 0x1p-500)
+          out[i] = c ? magnitude(a[i], b[i], c[i], a[i] * a[i] + 4 * c[i] * c[i] + b[i] * b[i])
+                     : magnitude(a[i], b[i], 0, a[i] * a[i] + b[i] * b[i]);
+  if (is_flat[0] || is_flat[1] || is_flat[2])
+    for (std::size_t first = 0; first < out.size(); first += 3)
+      for (std::size_t k = 0; k < 3; ++k)
+        if (is_flat[k]) out[first + k] = 0.0;
 }
 
 // Each order's row from the passes' rows `results` (each 3·w values at `offset`), handed to `row`.
