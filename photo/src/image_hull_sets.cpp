@@ -89,7 +89,7 @@ std::vector<ImageColours> image_hull_sets(const RgbImage& image, const PixelRule
   each_sampled_colour([&](std::size_t, const std::array<double, 3>& c) {
     low = std::min(low, c[0]), high = std::max(high, c[0]);
   });
-  // A slab from red by one product: monotone in red, so the sorted keys meet the slabs in order.
+  // A slab from red by one product, monotone in red.
   const double per_red = double(slabs) / (high - low + 1);
   const auto slab = [&](const std::array<double, 3>& c) {
     return c[0] <= low ? 0 : std::min(slabs - 1, static_cast<std::size_t>((c[0] - low) * per_red));
@@ -111,17 +111,14 @@ std::vector<ImageColours> image_hull_sets(const RgbImage& image, const PixelRule
   std::vector<std::uint8_t> slab_of_red(1 << 16);
   for (std::size_t r = 0; r < slab_of_red.size(); ++r) slab_of_red[r] = static_cast<std::uint8_t>(slab({double(r), 0, 0}));
   sieve_pass(image, rules.black_level, kept.kept, slab_of_red, sieves, keys);
-  // Distinct and sorted: (r, g, b) order, so each slab's colours are one run of the keys. Each
-  // slab's hull vertices, then the hull of all of them (the hull of the parts' vertices).
+  // The colours kept, distinct and sorted, and their exact hull (its own filter first: a Q from
+  // their extreme colours, which the sample's need not be). One hull over every slab's colours
+  // measured faster than a hull per slab and then the hull of their vertices.
   internal::sort_keys_in_place(keys);
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-  std::vector<std::array<double, 3>> candidates, colours;
-  for (std::size_t first = 0; first < keys.size();) {
-    colours.clear();
-    const std::size_t s = slab(colour_of(keys[first]));
-    for (; first < keys.size() && slab(colour_of(keys[first])) == s; ++first) colours.push_back(colour_of(keys[first]));
-    for (std::size_t i : colour_hull_vertex_indices(colours)) candidates.push_back(colours[i]);
-  }
+  std::vector<std::array<double, 3>> candidates;
+  candidates.reserve(keys.size());
+  for (std::uint64_t k : keys) candidates.push_back(colour_of(k));
   std::vector<std::array<double, 3>> vertices;
   for (std::size_t i : colour_hull_vertex_indices(candidates)) vertices.push_back(candidates[i]);
   std::vector<ImageColours> out;

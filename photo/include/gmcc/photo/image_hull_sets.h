@@ -25,8 +25,8 @@ namespace gmcc {
 /// strictly inside their slab's Q, exactly (ColourHullSieve: integer channels below
 /// 2^16). A colour strictly inside Q is in the interior of both conv(S+) and the image's hull, so
 /// the colours kept hold every vertex of both (a colour with b = 0 is never inside Q, whose corners
-/// have b >= 1). They are sorted; the exact 3-D hull takes each slab's, then the union of their
-/// vertices (colour_hull_vertex_indices); the chromaticity hull takes those with b > 0
+/// have b >= 1). They are sorted; the exact 3-D hull takes them all (colour_hull_vertex_indices);
+/// the chromaticity hull takes those with b > 0
 /// (chromaticity_hull_of_pixels: the chromaticities (r/b, g/b) are a section of the cone S+ spans,
 /// which the vertices of conv(S+) span). Memory: 8 bytes a colour the sieve keeps, not a kept
 /// pixel.
