@@ -96,7 +96,7 @@ void ColourHullSieve::sort_planes_into_cells(const std::array<double, 3>& step) 
       Planes four;
       for (std::size_t l = 0; l < 4; ++l) {
         const std::array<double, 4> f = j + l < crossing.size() ? crossing[j + l] : std::array<double, 4>{0, 0, 0, 1};
-        four.n[0][l] = f[0], four.n[1][l] = f[1], four.n[2][l] = f[2], four.d[l] = f[3];
+        for (std::size_t k = 0; k < 4; ++k) four[k][l] = f[k];
       }
       cell_planes_.push_back(four);
     }

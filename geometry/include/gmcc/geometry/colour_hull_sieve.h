@@ -71,7 +71,7 @@ class ColourHullSieve {
     for (std::uint32_t j = cell_first_[cell]; j < cell_first_[cell + 1]; ++j) {
       const Planes& f = cell_planes_[j];  // four planes at a time (vector instructions where there are)
       const Four r = {c[0], c[0], c[0], c[0]}, g = {c[1], c[1], c[1], c[1]}, b = {c[2], c[2], c[2], c[2]};
-      const auto inside = f.n[0] * r + f.n[1] * g + f.n[2] * b < f.d;  // each lane 0 or −1
+      const auto inside = f[0] * r + f[1] * g + f[2] * b < f[3];  // each lane 0 or −1
       if (!(inside[0] & inside[1] & inside[2] & inside[3])) return false;
     }
     return true;
@@ -91,9 +91,7 @@ class ColourHullSieve {
   // Four planes n·x < d by coordinate; a plane n = 0, d = 1 (which every colour satisfies) fills
   // a cell's last four.
   typedef double Four __attribute__((vector_size(32)));
-  struct Planes {
-    Four n[3], d;
-  };
+  using Planes = std::array<Four, 4>;  // n's three coordinates, then d
   std::vector<std::uint8_t> outside_cell_;
   std::vector<std::uint32_t> cell_first_;
   std::vector<Planes> cell_planes_;
