@@ -260,6 +260,24 @@ void root_sum_squares(const double* a, const double* b, const double* c, double*
     for (std::size_t i = 0; i < n; ++i) out[i] = std::sqrt(a[i] * a[i] + b[i] * b[i]);
 }
 
+// Whether some v[i] (square roots: +0 or more, −0 or NaN) may be at most 2^-500, for i < n: by the
+// values' bits as signed integers, which order non-negative doubles as their values do, with no
+// branch (a vector loop, with an AVX2 clone picked at load time as weighted_sum's). A −0 or a NaN
+// with its sign bit set counts too, and a NaN without it does not: the caller tests each value.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+bool any_at_most_2_500(const double* v, std::size_t n) {
+  const std::int64_t bound = 0x20b0000000000000;  // the bits of 2^-500: biased exponent 1023 − 500
+  std::int64_t any = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::int64_t bits;
+    std::memcpy(&bits, v + i, sizeof bits);
+    any |= bits <= bound;
+  }
+  return any != 0;
+}
+
 // One row of results (each 3·w values: f_σ; f_x, f_y; or f_xx, f_yy, f_xy) into out: f_σ, or the
 // magnitudes, 0 in the flat channels. The magnitudes are the square roots of the sums of squares
 // for all first, then magnitude() where a root is at most 2^-500 (a superset of the sums below
@@ -272,9 +290,7 @@ void combine(DerivativeOrder order, const double* const* v, const std::array<boo
   }
   root_sum_squares(a, b, c, out.data(), out.size());
   const std::array<bool, 3> is_flat = flat;
-  bool tiny = false;  // a root at most 2^-500 in the row (a pass with no branch)
-  for (double v : out) tiny |= v <= 0x1p-500;
-  if (tiny)
+  if (any_at_most_2_500(out.data(), out.size()))
     for (std::size_t first = 0; first < out.size(); first += 3)
       for (std::size_t i = first; i < first + 3; ++i)
         if (!is_flat[i - first] && out[i] <= 0x1p-500)
