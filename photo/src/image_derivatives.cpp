@@ -260,28 +260,35 @@ void root_sum_squares(const double* a, const double* b, const double* c, double*
     for (std::size_t i = 0; i < n; ++i) out[i] = std::sqrt(a[i] * a[i] + b[i] * b[i]);
 }
 
-// Whether some v[i] (square roots: +0 or more, −0 or NaN) may be at most 2^-500, for i < n: by the
-// values' bits as signed integers, which order non-negative doubles as their values do, with no
-// branch (a vector loop, with an AVX2 clone picked at load time as weighted_sum's). A −0 or a NaN
-// with its sign bit set counts too, and a NaN without it does not: the caller tests each value.
+// Whether some root[i] (a square root: +0 or more, −0 or NaN) may be at most 2^-500 while a[i],
+// b[i] or c[i] is not 0, for i < n: a root of an exact 0 needs no second look (magnitude() gives
+// the same 0), and flat regions of a photograph give many. The roots are compared by their bits as
+// signed integers, which order non-negative doubles as their values do, with no branch (a vector
+// loop, with an AVX2 clone picked at load time as weighted_sum's); a −0 or a NaN with its sign bit
+// set counts, a NaN without it does not: the caller tests each value again.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-bool any_at_most_2_500(const double* v, std::size_t n) {
+bool any_small_root(const double* root, const double* a, const double* b, const double* c, std::size_t n) {
   const std::int64_t bound = 0x20b0000000000000;  // the bits of 2^-500: biased exponent 1023 − 500
   std::int64_t any = 0;
   for (std::size_t i = 0; i < n; ++i) {
     std::int64_t bits;
-    std::memcpy(&bits, v + i, sizeof bits);
-    any |= bits <= bound;
+    std::memcpy(&bits, root + i, sizeof bits);
+    any |= (bits <= bound) & ((a[i] != 0) | (b[i] != 0) | (c[i] != 0));
   }
   return any != 0;
 }
 
+// magnitude() where it may differ from the root already made: a root at most 2^-500 of values not
+// all 0.
+bool needs_magnitude(double root, double a, double b, double c) { return root <= 0x1p-500 && (a != 0 || b != 0 || c != 0); }
+
 // One row of results (each 3·w values: f_σ; f_x, f_y; or f_xx, f_yy, f_xy) into out: f_σ, or the
 // magnitudes, 0 in the flat channels. The magnitudes are the square roots of the sums of squares
-// for all first, then magnitude() where a root is at most 2^-500 (a superset of the sums below
-// 2^-1000 it treats apart: the root is monotone and 2^-500 exact).
+// for all first, then magnitude() where a root is at most 2^-500 and the values are not all 0 (a
+// superset of the sums below 2^-1000 it treats apart: the root is monotone and 2^-500 exact; for
+// values all 0 it gives the root's 0).
 void combine(DerivativeOrder order, const double* const* v, const std::array<bool, 3>& flat, std::vector<double>& out) {
   const double *a = v[0], *b = v[1], *c = order == DerivativeOrder::second ? v[2] : nullptr;
   if (order == DerivativeOrder::zero) {
@@ -290,10 +297,10 @@ void combine(DerivativeOrder order, const double* const* v, const std::array<boo
   }
   root_sum_squares(a, b, c, out.data(), out.size());
   const std::array<bool, 3> is_flat = flat;
-  if (any_at_most_2_500(out.data(), out.size()))
+  if (any_small_root(out.data(), a, b, c ? c : a, out.size()))
     for (std::size_t first = 0; first < out.size(); first += 3)
       for (std::size_t i = first; i < first + 3; ++i)
-        if (!is_flat[i - first] && out[i] <= 0x1p-500)
+        if (!is_flat[i - first] && needs_magnitude(out[i], a[i], b[i], c ? c[i] : 0))
           out[i] = c ? magnitude(a[i], b[i], c[i], a[i] * a[i] + 4 * c[i] * c[i] + b[i] * b[i])
                      : magnitude(a[i], b[i], 0, a[i] * a[i] + b[i] * b[i]);
   if (is_flat[0] || is_flat[1] || is_flat[2])
