@@ -52,20 +52,56 @@ ColourHullSieve::ColourHullSieve(const std::vector<std::array<double, 3>>& corne
     while (double(grid) * std::ldexp(1.0, static_cast<int>(shift_[k])) < hi - lo + 1) ++shift_[k];
     step[k] = std::ldexp(1.0, static_cast<int>(shift_[k]));  // grid steps cover [lo, hi]
   }
-  const std::size_t points = grid + 1;
-  std::vector<bool> inside_point(points * points * points);
-  for (std::size_t i = 0; i < inside_point.size(); ++i)
-    inside_point[i] = inside_planes({low_[0] + step[0] * double(i / (points * points)),
-                                     low_[1] + step[1] * double(i / points % points),
-                                     low_[2] + step[2] * double(i % points)});
-  inside_cell_.assign(grid * grid * grid, false);
-  for (std::size_t i = 0; i < inside_cell_.size(); ++i) {
-    const std::size_t r = i / (grid * grid), g = i / grid % grid, b = i % grid;
-    bool all = true;
-    for (std::size_t corner = 0; corner < 8 && all; ++corner)
-      all = inside_point[((r + (corner >> 2)) * points + g + ((corner >> 1) & 1)) * points + b + (corner & 1)];
-    inside_cell_[i] = all;
+  sort_planes_into_cells(step);
+}
+
+void ColourHullSieve::sort_planes_into_cells(const std::array<double, 3>& step) {
+  const std::size_t cells = grid * grid * grid;
+  outside_cell_.assign(cells, 0);
+  cell_first_.assign(cells + 1, 0);
+  // The cell (a0, a1, a2) is the box of [lo_k, hi_k] = [low_k + a_k·step_k, lo_k + step_k]: the
+  // least and the largest of n·x over it are sums over k of the least and largest of n_k·x_k over
+  // [lo_k, hi_k], made once per plane, axis and a_k. Each is an integer below 2^51 in magnitude
+  // (|n_k| below 2^33, lo_k and hi_k integers below 2^18: low_ below 2^16, `grid` steps below
+  // 2^17), so every sum of three is exact in double.
+  const std::size_t m = planes_.size();
+  std::vector<double> least_term(m * 3 * grid), largest_term(m * 3 * grid);
+  for (std::size_t p = 0; p < m; ++p)
+    for (std::size_t k = 0; k < 3; ++k)
+      for (std::size_t a = 0; a < grid; ++a) {
+        const double lo = low_[k] + step[k] * double(a), x = planes_[p][k] * lo, y = planes_[p][k] * (lo + step[k]);
+        least_term[(p * 3 + k) * grid + a] = std::min(x, y), largest_term[(p * 3 + k) * grid + a] = std::max(x, y);
+      }
+  const auto over_cell = [&](const std::vector<double>& term, std::size_t p, const std::array<std::size_t, 3>& a) {
+    return term[(p * 3) * grid + a[0]] + term[(p * 3 + 1) * grid + a[1]] + term[(p * 3 + 2) * grid + a[2]];
+  };
+  std::vector<std::array<double, 4>> crossing;
+  std::size_t last_out = 0;  // the plane that last put a cell outside, tried first (neighbours share it)
+  for (std::size_t i = 0; i < cells; ++i) {
+    cell_first_[i] = static_cast<std::uint32_t>(cell_planes_.size());
+    const std::array<std::size_t, 3> at = {i / (grid * grid), i / grid % grid, i % grid};
+    bool outside = !(over_cell(least_term, last_out, at) < planes_[last_out][3]);
+    crossing.clear();
+    for (std::size_t p = 0; p < m && !outside; ++p) {
+      if (!(over_cell(least_term, p, at) < planes_[p][3]))  // no point of the cell strictly inside
+        outside = true, last_out = p;
+      else if (!(over_cell(largest_term, p, at) < planes_[p][3]))  // the plane crosses the cell
+        crossing.push_back(planes_[p]);
+    }
+    if (outside) {
+      outside_cell_[i] = 1;
+      continue;
+    }
+    for (std::size_t j = 0; j < crossing.size(); j += 4) {
+      Planes four;
+      for (std::size_t l = 0; l < 4; ++l) {
+        const std::array<double, 4> f = j + l < crossing.size() ? crossing[j + l] : std::array<double, 4>{0, 0, 0, 1};
+        for (std::size_t k = 0; k < 4; ++k) four[k][l] = f[k];
+      }
+      cell_planes_.push_back(four);
+    }
   }
+  cell_first_[cells] = static_cast<std::uint32_t>(cell_planes_.size());
 }
 
 }  // namespace gmcc

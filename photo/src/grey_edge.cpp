@@ -70,7 +70,8 @@ struct Norm {
 };
 
 // One sweep of the structure at one σ for the baselines `norms` names (indices into all): each
-// gets f(norm, channel, |value|) at every kept pixel, row by row in pixel order.
+// gets f(norm, row, kept columns) for every row in order, to take |value| at every kept pixel of
+// the row in pixel order.
 template <class F>
 void sweep(const RgbImage& image, std::uint32_t black_level, const std::vector<bool>& kept, std::vector<Norm>& all,
            const std::vector<std::size_t>& norms, const F& f) {
@@ -84,11 +85,8 @@ void sweep(const RgbImage& image, std::uint32_t black_level, const std::vector<b
                              row_kept.clear();
                              for (std::size_t x = 0; x < w; ++x)
                                if (kept[y * w + x]) row_kept.push_back(3 * x);
-                             for (std::size_t k : norms) {
-                               const double* s = rows[static_cast<std::size_t>(all[k].parameters.order)];
-                               for (std::size_t i : row_kept)
-                                 for (int c = 0; c < 3; ++c) f(all[k], c, std::fabs(s[i + static_cast<std::size_t>(c)]));
-                             }
+                             for (std::size_t k : norms)
+                               f(all[k], rows[static_cast<std::size_t>(all[k].parameters.order)], row_kept);
                            });
 }
 
@@ -130,13 +128,36 @@ std::vector<std::optional<std::array<double, 3>>> grey_edge_estimates(const RgbI
     std::vector<std::size_t> group = {i}, summed;  // a NaN σ alone: the sweep refuses it
     for (std::size_t j = i + 1; j < all.size(); ++j)
       if (!done[j] && all[j].parameters.sigma == all[i].parameters.sigma) group.push_back(j), done[j] = true;
-    sweep(image, black_level, kept, all, group, [](Norm& n, int c, double v) {
-      n.top[c] = std::max(n.top[c], v);
-      n.plain[c] += v;
+    // The largest values and Σ v depend on the order alone: made once per order, then copied.
+    std::array<std::size_t, 3> first_of{all.size(), all.size(), all.size()};
+    std::vector<std::size_t> firsts;
+    for (std::size_t k : group) {
+      std::size_t& first = first_of[static_cast<std::size_t>(all[k].parameters.order)];
+      if (first == all.size()) first = k, firsts.push_back(k);
+    }
+    // Each sum in its own variable, in pixel order (the same bytes as summing into the Norm).
+    sweep(image, black_level, kept, all, firsts, [](Norm& n, const double* s, const std::vector<std::size_t>& columns) {
+      std::array<double, 3> top = n.top, plain = n.plain;
+      for (std::size_t i : columns)
+        for (std::size_t c = 0; c < 3; ++c) {
+          const double v = std::fabs(s[i + c]);
+          top[c] = std::max(top[c], v);
+          plain[c] += v;
+        }
+      n.top = top, n.plain = plain;
     });
+    for (std::size_t k : group) {
+      const Norm& first = all[first_of[static_cast<std::size_t>(all[k].parameters.order)]];
+      all[k].top = first.top, all[k].plain = first.plain;
+    }
     for (std::size_t k : group)
       if (all[k].sums()) summed.push_back(k), all[k].make_powers();
-    sweep(image, black_level, kept, all, summed, [](Norm& n, int c, double v) { n.sum[c] += n.term(c, v); });
+    sweep(image, black_level, kept, all, summed, [](Norm& n, const double* s, const std::vector<std::size_t>& columns) {
+      std::array<double, 3> sum = n.sum;
+      for (std::size_t i : columns)
+        for (std::size_t c = 0; c < 3; ++c) sum[c] += n.term(static_cast<int>(c), std::fabs(s[i + c]));
+      n.sum = sum;
+    });
   }
   std::vector<std::optional<std::array<double, 3>>> out;
   for (const Norm& n : all) out.push_back(light_of(n));

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <cstring>
 #include <optional>
 #include <stdexcept>
 
@@ -52,15 +53,38 @@ std::vector<double> kernel(double sigma, int order) {
   return k;
 }
 
-// out[i] += k·in[i] for i < n: each a product rounded, then a sum rounded. On x86-64 ELF with GCC
-// it is compiled twice and the loader picks the clone the processor supports (as
-// GMCC_DW_FMA_CLONES, numerics/internal): the AVX2 clone makes the same operations four at a
+// out[i] = (…((0 + k[0]·in[0][i]) + k[1]·in[1][i]) + …) + k[m−1]·in[m−1][i] for i < n: each
+// product rounded, then each sum, in the order of the terms (a convolution's sum term by term).
+// 32 outputs at a time, their partial sums held in registers while the terms stream past. On
+// x86-64 ELF with GCC it is compiled twice and the loader picks the clone the processor supports
+// (as GMCC_DW_FMA_CLONES, numerics/internal): the AVX2 clone makes the same operations four at a
 // time, with no fused multiply-add (AVX2 does not enable FMA), so the same bytes.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-void add_scaled(double k, const double* in, double* out, long n) {
-  for (long i = 0; i < n; ++i) out[i] += k * in[i];
+void weighted_sum(const double* k, const double* const* in, long m, double* out, long n) {
+  typedef double Four __attribute__((vector_size(32)));
+  constexpr long lanes = 8;  // vectors of partial sums
+  long i = 0;
+  for (; i + 4 * lanes <= n; i += 4 * lanes) {
+    Four sum[lanes];
+    for (long l = 0; l < lanes; ++l) sum[l] = Four{0.0, 0.0, 0.0, 0.0};
+    for (long t = 0; t < m; ++t) {
+      const Four kt = {k[t], k[t], k[t], k[t]};
+      const double* p = in[t] + i;
+      for (long l = 0; l < lanes; ++l) {
+        Four x;
+        std::memcpy(&x, p + 4 * l, sizeof x);
+        sum[l] += kt * x;
+      }
+    }
+    for (long l = 0; l < lanes; ++l) std::memcpy(out + i + 4 * l, &sum[l], sizeof sum[l]);
+  }
+  for (; i < n; ++i) {
+    double sum = 0.0;
+    for (long t = 0; t < m; ++t) sum += k[t] * in[t][i];
+    out[i] = sum;
+  }
 }
 
 // The image's rows as doubles: the linear image of an RgbImage (black level removed, clamped at
@@ -70,10 +94,7 @@ struct LinearRows {
   std::uint32_t black;
   void operator()(std::size_t y, double* out) const {
     const std::size_t n = 3 * image.width, first = y * n;
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::uint32_t v = image.samples[first + i];
-      out[i] = v > black ? double(v - black) : 0.0;
-    }
+    for (std::size_t i = 0; i < n; ++i) out[i] = double(std::max<std::uint32_t>(image.samples[first + i], black) - black);
   }
   bool same(std::size_t i, std::size_t j) const {  // linear samples i and j equal
     const auto level = [&](std::uint32_t v) { return v > black ? v - black : 0u; };
@@ -126,18 +147,24 @@ class XPasses {
  private:
   double* slot(std::size_t k, long y) { return rings_[k].data() + (y % slots_) * 3 * w_; }
   // One kernel along the source row in_ into out: per value, Σ_t k(t)·in(x − t) with t from −r
-  // to r in that order (the sums made term by term for every x at once), x − t clamped.
+  // to r in that order, x − t clamped (the edge replicated): the columns whose terms all lie inside
+  // the row by weighted_sum, the r at each end one by one.
   void along_x(const std::vector<double>& kernel, double* out) const {
-    std::fill(out, out + 3 * w_, 0.0);
-    for (long t = -r_; t <= r_; ++t) {
-      const double k = kernel[static_cast<std::size_t>(t + r_)];
-      const long from = std::min(std::max(t, 0L), w_), to = std::max(std::min(w_ + t, w_), from);  // x − t in [0, w)
-      for (long x = 0; x < from; ++x)
-        for (long c = 0; c < 3; ++c) out[3 * x + c] += k * in_[static_cast<std::size_t>(c)];
-      add_scaled(k, in_.data() + 3 * (from - t), out + 3 * from, 3 * (to - from));
-      for (long x = to; x < w_; ++x)
-        for (long c = 0; c < 3; ++c) out[3 * x + c] += k * in_[static_cast<std::size_t>(3 * (w_ - 1) + c)];
+    const auto one = [&](long x) {
+      for (long c = 0; c < 3; ++c) {
+        double sum = 0.0;
+        for (long t = -r_; t <= r_; ++t)
+          sum += kernel[static_cast<std::size_t>(t + r_)] * in_[static_cast<std::size_t>(3 * std::min(std::max(x - t, 0L), w_ - 1) + c)];
+        out[3 * x + c] = sum;
+      }
+    };
+    const long inner_first = std::min(r_, w_), inner_end = std::max(inner_first, w_ - r_);
+    for (long x = 0; x < inner_first; ++x) one(x);
+    if (inner_end > inner_first) {
+      for (long t = -r_; t <= r_; ++t) terms_[static_cast<std::size_t>(t + r_)] = in_.data() + 3 * (inner_first - t);
+      weighted_sum(kernel.data(), terms_.data(), 2 * r_ + 1, out + 3 * inner_first, 3 * (inner_end - inner_first));
     }
+    for (long x = inner_end; x < w_; ++x) one(x);
   }
   // Every kernel along in_ by FFT (clamped_convolution.h): channels r and g as one complex
   // sequence, then b alone.
@@ -166,6 +193,7 @@ class XPasses {
   std::vector<const std::vector<double>*> kernels_;
   long w_, r_, slots_, next_ = 0;
   std::vector<double> in_;
+  mutable std::vector<const double*> terms_ = std::vector<const double*>(2 * static_cast<std::size_t>(r_) + 1);  // along_x's rows of terms
   std::vector<std::vector<double>> rings_;
   std::optional<internal::ClampedFftConvolution> fft_;  // above kFftMinRadius
   std::vector<std::complex<double>> z_, t_;
@@ -177,19 +205,17 @@ template <class Source>
 void y_pass(const XPasses<Source>& x, std::size_t along_x, const std::vector<double>& k, long y, long w, long h,
             double* out) {
   const long r = x.radius();
-  std::fill(out, out + 3 * w, 0.0);
-  for (long t = -r; t <= r; ++t) {
-    const double kt = k[static_cast<std::size_t>(t + r)];
-    const double* row = x.row(along_x, std::min(std::max(y - t, 0L), h - 1));
-    add_scaled(kt, row, out, 3 * w);
-  }
+  std::vector<const double*> rows(static_cast<std::size_t>(2 * r + 1));
+  for (long t = -r; t <= r; ++t) rows[static_cast<std::size_t>(t + r)] = x.row(along_x, std::min(std::max(y - t, 0L), h - 1));
+  weighted_sum(k.data(), rows.data(), 2 * r + 1, out, 3 * w);
 }
 
 // The channels constant over the whole image (their derivatives are exactly 0).
 template <class Source>
 std::array<bool, 3> flat_channels(const Source& source, std::size_t samples) {
   std::array<bool, 3> flat{true, true, true};
-  for (std::size_t i = 3; i < samples; ++i) flat[i % 3] = flat[i % 3] && source.same(i, i % 3);
+  for (std::size_t i = 3; i < samples && (flat[0] || flat[1] || flat[2]); i += 3)  // until none is flat
+    for (std::size_t c = 0; c < 3; ++c) flat[c] = flat[c] && source.same(i + c, c);
   return flat;
 }
 
@@ -221,7 +247,7 @@ struct OrderPasses {
 using OrderRows = std::array<const double*, 3>;
 
 // out[i] = sqrt(a[i]² + 4c[i]² + b[i]²) (c null: sqrt(a[i]² + b[i]²)), as magnitude() writes them,
-// for i < n: a correctly rounded square root, so the clones (add_scaled) give the same bytes; the
+// for i < n: a correctly rounded square root, so the clones (weighted_sum) give the same bytes; the
 // sums are non-negative, so no errno is ever due (this file is compiled without errno for the
 // math functions, photo/CMakeLists.txt: the roots are then vector instructions).
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
@@ -234,10 +260,35 @@ void root_sum_squares(const double* a, const double* b, const double* c, double*
     for (std::size_t i = 0; i < n; ++i) out[i] = std::sqrt(a[i] * a[i] + b[i] * b[i]);
 }
 
+// Whether some root[i] (a square root: +0 or more, −0 or NaN) may be at most 2^-500 while a[i],
+// b[i] or c[i] is not 0, for i < n: a root of an exact 0 needs no second look (magnitude() gives
+// the same 0), and flat regions of a photograph give many. The roots are compared by their bits as
+// signed integers, which order non-negative doubles as their values do, with no branch (a vector
+// loop, with an AVX2 clone picked at load time as weighted_sum's); a −0 or a NaN with its sign bit
+// set counts, a NaN without it does not: the caller tests each value again.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+bool any_small_root(const double* root, const double* a, const double* b, const double* c, std::size_t n) {
+  const std::int64_t bound = 0x20b0000000000000;  // the bits of 2^-500: biased exponent 1023 − 500
+  std::int64_t any = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::int64_t bits;
+    std::memcpy(&bits, root + i, sizeof bits);
+    any |= (bits <= bound) & ((a[i] != 0) | (b[i] != 0) | (c[i] != 0));
+  }
+  return any != 0;
+}
+
+// magnitude() where it may differ from the root already made: a root at most 2^-500 of values not
+// all 0.
+bool needs_magnitude(double root, double a, double b, double c) { return root <= 0x1p-500 && (a != 0 || b != 0 || c != 0); }
+
 // One row of results (each 3·w values: f_σ; f_x, f_y; or f_xx, f_yy, f_xy) into out: f_σ, or the
 // magnitudes, 0 in the flat channels. The magnitudes are the square roots of the sums of squares
-// for all first, then magnitude() where a root is at most 2^-500 (a superset of the sums below
-// 2^-1000 it treats apart: the root is monotone and 2^-500 exact).
+// for all first, then magnitude() where a root is at most 2^-500 and the values are not all 0 (a
+// superset of the sums below 2^-1000 it treats apart: the root is monotone and 2^-500 exact; for
+// values all 0 it gives the root's 0).
 void combine(DerivativeOrder order, const double* const* v, const std::array<bool, 3>& flat, std::vector<double>& out) {
   const double *a = v[0], *b = v[1], *c = order == DerivativeOrder::second ? v[2] : nullptr;
   if (order == DerivativeOrder::zero) {
@@ -245,12 +296,17 @@ void combine(DerivativeOrder order, const double* const* v, const std::array<boo
     return;
   }
   root_sum_squares(a, b, c, out.data(), out.size());
-  for (std::size_t i = 0; i < out.size(); ++i)
-    if (flat[i % 3])
-      out[i] = 0.0;
-    else if (out[i] <= 0x1p-500)
-      out[i] = c ? magnitude(a[i], b[i], c[i], a[i] * a[i] + 4 * c[i] * c[i] + b[i] * b[i])
-                 : magnitude(a[i], b[i], 0, a[i] * a[i] + b[i] * b[i]);
+  const std::array<bool, 3> is_flat = flat;
+  if (any_small_root(out.data(), a, b, c ? c : a, out.size()))
+    for (std::size_t first = 0; first < out.size(); first += 3)
+      for (std::size_t i = first; i < first + 3; ++i)
+        if (!is_flat[i - first] && needs_magnitude(out[i], a[i], b[i], c ? c[i] : 0))
+          out[i] = c ? magnitude(a[i], b[i], c[i], a[i] * a[i] + 4 * c[i] * c[i] + b[i] * b[i])
+                     : magnitude(a[i], b[i], 0, a[i] * a[i] + b[i] * b[i]);
+  if (is_flat[0] || is_flat[1] || is_flat[2])
+    for (std::size_t first = 0; first < out.size(); first += 3)
+      for (std::size_t k = 0; k < 3; ++k)
+        if (is_flat[k]) out[first + k] = 0.0;
 }
 
 // Each order's row from the passes' rows `results` (each 3·w values at `offset`), handed to `row`.

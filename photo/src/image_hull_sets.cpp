@@ -42,6 +42,26 @@ std::array<double, 3> colour_of(std::uint64_t key) {
 // How many slabs of red the sieve cuts the colours into (8: measured on full-size stand-ins, where
 // one Q for the whole image kept about 18% of the pixels for the exact hull).
 constexpr std::size_t slabs = 8;
+// About how many kept pixels the sieves' corners are chosen from.
+constexpr std::size_t sample = 1 << 18;
+
+// The keys of the kept pixels' colours that their slab's sieve keeps, in pixel order (the slab
+// of a linear red r is slab_of_red[r]). On x86-64 ELF with GCC it is compiled twice and the loader
+// picks the clone the processor supports, so that the sieve's tests of four planes at a time are
+// vector instructions: exact in either, every product and sum an integer below 2^53.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+void sieve_pass(const RgbImage& image, std::uint32_t black_level, const std::vector<bool>& kept,
+                const std::vector<std::uint8_t>& slab_of_red, const std::vector<ColourHullSieve>& sieves,
+                std::vector<std::uint64_t>& keys) {
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    if (kept[i]) {
+      const auto c = internal::linear_channels(image, black_level, i);
+      if (!sieves[slab_of_red[c[0]]].strictly_inside({double(c[0]), double(c[1]), double(c[2])}))
+        keys.push_back(internal::colour_key(c));
+    }
+}
 
 }  // namespace
 
@@ -53,23 +73,32 @@ std::vector<ImageColours> image_hull_sets(const RgbImage& image, const PixelRule
   if (!hulls || rules.bin != 1 || rules.prefilter_sigma > 0 || kept.counts.kept == 0 ||
       kept.kept.size() != image.width * image.height)
     return image_colour_sets(image, rules, kept, sets);
-  // Pass 1: the range of red; the colours fall into slabs of red, each with its own sieve: a
+  // The sieves' corners from a sample of the kept pixels (about `sample` of them, every
+  // stride-th pixel): any colours of the image will do, since a colour strictly inside the hull of
+  // some of its colours is a vertex of neither hull; the full passes below would choose colours
+  // only slightly more extreme, at the cost of two more sweeps of every pixel.
+  const std::size_t n = image.width * image.height, stride = std::max<std::size_t>(1, kept.counts.kept / sample);
+  const auto each_sampled_colour = [&](const auto& f) {
+    for (std::size_t i = 0; i < n; i += stride)
+      if (kept.kept[i]) f(i, linear_colour(image, rules.black_level, i));
+  };
+  // The sample's range of red; the colours fall into slabs of red, each with its own sieve: a
   // slab's hull is thin along red, so its few extreme colours leave far fewer inside candidates
-  // than one Q for the whole image.
+  // than one Q for the whole image. Colours beyond the sample's range go to the end slabs.
   double low = HUGE_VAL, high = -HUGE_VAL;
-  each_kept_colour(image, rules.black_level, kept, [&](std::size_t, const std::array<double, 3>& c) {
+  each_sampled_colour([&](std::size_t, const std::array<double, 3>& c) {
     low = std::min(low, c[0]), high = std::max(high, c[0]);
   });
-  // A slab from red by one product: monotone in red, so the sorted keys meet the slabs in order.
+  // A slab from red by one product, monotone in red.
   const double per_red = double(slabs) / (high - low + 1);
   const auto slab = [&](const std::array<double, 3>& c) {
-    return std::min(slabs - 1, static_cast<std::size_t>((c[0] - low) * per_red));
+    return c[0] <= low ? 0 : std::min(slabs - 1, static_cast<std::size_t>((c[0] - low) * per_red));
   };
-  // Pass 2: each slab's extreme colours among those with b > 0 (S+, the colours with a
+  // Each slab's extreme colours among the sample's with b > 0 (S+, the colours with a
   // chromaticity), so that Q ⊆ conv(S+) ⊆ conv(S): a colour strictly inside it is a vertex of
-  // neither hull, and one with b = 0 is never inside. Pass 3: the colours their sieves keep.
+  // neither hull, and one with b = 0 is never inside. Then every kept colour its sieve keeps.
   std::vector<ExtremeColours> extremes(slabs);
-  each_kept_colour(image, rules.black_level, kept, [&](std::size_t i, const std::array<double, 3>& c) {
+  each_sampled_colour([&](std::size_t i, const std::array<double, 3>& c) {
     if (c[2] > 0) extremes[slab(c)].add(i, c);
   });
   std::vector<ColourHullSieve> sieves;
@@ -79,20 +108,17 @@ std::vector<ImageColours> image_hull_sets(const RgbImage& image, const PixelRule
     sieves.emplace_back(corners);
   }
   std::vector<std::uint64_t> keys;
-  each_kept_colour(image, rules.black_level, kept, [&](std::size_t, const std::array<double, 3>& c) {
-    if (!sieves[slab(c)].strictly_inside(c)) keys.push_back(key_of(c));
-  });
-  // Distinct and sorted: (r, g, b) order, so each slab's colours are one run of the keys. Each
-  // slab's hull vertices, then the hull of all of them (the hull of the parts' vertices).
+  std::vector<std::uint8_t> slab_of_red(1 << 16);
+  for (std::size_t r = 0; r < slab_of_red.size(); ++r) slab_of_red[r] = static_cast<std::uint8_t>(slab({double(r), 0, 0}));
+  sieve_pass(image, rules.black_level, kept.kept, slab_of_red, sieves, keys);
+  // The colours kept, distinct and sorted, and their exact hull (its own filter first: a Q from
+  // their extreme colours, which the sample's need not be). One hull over every slab's colours
+  // measured faster than a hull per slab and then the hull of their vertices.
   internal::sort_keys_in_place(keys);
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-  std::vector<std::array<double, 3>> candidates, colours;
-  for (std::size_t first = 0; first < keys.size();) {
-    colours.clear();
-    const std::size_t s = slab(colour_of(keys[first]));
-    for (; first < keys.size() && slab(colour_of(keys[first])) == s; ++first) colours.push_back(colour_of(keys[first]));
-    for (std::size_t i : colour_hull_vertex_indices(colours)) candidates.push_back(colours[i]);
-  }
+  std::vector<std::array<double, 3>> candidates;
+  candidates.reserve(keys.size());
+  for (std::uint64_t k : keys) candidates.push_back(colour_of(k));
   std::vector<std::array<double, 3>> vertices;
   for (std::size_t i : colour_hull_vertex_indices(candidates)) vertices.push_back(candidates[i]);
   std::vector<ImageColours> out;

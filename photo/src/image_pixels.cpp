@@ -349,53 +349,46 @@ KeptPixels kept_pixels(const RgbImage& image, const PixelRules& rules) {
     if (*f && (sgn(**f) < 0 || **f > 1))
       throw std::invalid_argument("a dark or bright fraction must lie in [0, 1], not " + to_string(**f));
   const std::vector<bool> excluded = excluded_pixels(rules, w, h);
-  auto level = [&](std::uint32_t v) { return v > rules.black_level ? v - rules.black_level : 0; };
-  // M, the largest channel after the black level over the pixels the mask keeps, and step 4's
-  // integer thresholds: v < f·M iff v < ceil(f·M); v > f·M iff v > floor(f·M) (v an integer).
-  std::uint32_t M = 0;
-  for (std::size_t i = 0; i < w * h; ++i)
-    if (!excluded[i])
-      for (int c = 0; c < 3; ++c) M = std::max(M, level(image.samples[3 * i + static_cast<std::size_t>(c)]));
+  const bool any_excluded = std::find(excluded.begin(), excluded.end(), true) != excluded.end();
+  const std::uint64_t black = rules.black_level;
+  // M, the largest channel after the black level over the pixels the mask keeps (the level of the
+  // largest sample, the level being monotone), and step 4's integer thresholds: v < f·M iff
+  // v < ceil(f·M); v > f·M iff v > floor(f·M) (v an integer).
+  std::uint16_t largest = 0;
+  if (!any_excluded)
+    largest = image.samples.empty() ? 0 : *std::max_element(image.samples.begin(), image.samples.end());
+  else
+    for (std::size_t i = 0; i < w * h; ++i)
+      if (!excluded[i])
+        for (std::size_t c = 0; c < 3; ++c) largest = std::max(largest, image.samples[3 * i + c]);
+  const std::uint64_t M = largest > black ? largest - black : 0;
   std::uint64_t dark = rules.dark_below.value_or(0);
   if (rules.dark_below_fraction)
     dark = std::max<std::uint64_t>(dark, static_cast<std::uint64_t>(ceil_of(*rules.dark_below_fraction * M)));
-  std::optional<std::uint64_t> bright;
+  // The same rules on the raw samples v: level(v) < dark iff v < black + dark (dark > 0), and
+  // level(v) > bright iff v > black + bright.
+  const std::uint64_t dark_raw = dark > 0 ? black + dark : 0;
+  std::uint64_t bright_raw = UINT64_MAX;
   if (rules.bright_above_fraction)
-    bright = static_cast<std::uint64_t>(floor_of(*rules.bright_above_fraction * M));
+    bright_raw = black + static_cast<std::uint64_t>(floor_of(*rules.bright_above_fraction * M));
+  const std::uint64_t saturation = rules.saturation ? *rules.saturation : UINT64_MAX;
 
   KeptPixels out;
   out.kept.assign(w * h, false);
   out.counts.pixels = static_cast<std::uint64_t>(w) * h;
   for (std::size_t i = 0; i < w * h; ++i) {
-    if (excluded[i]) {
+    const std::uint16_t* v = image.samples.data() + 3 * i;
+    const std::uint64_t low = std::min({v[0], v[1], v[2]}), high = std::max({v[0], v[1], v[2]});
+    if (any_excluded && excluded[i])
       ++out.counts.masked;
-      continue;
-    }
-    std::uint32_t v[3];
-    bool saturated = false;
-    for (int c = 0; c < 3; ++c) {
-      v[c] = image.samples[3 * i + static_cast<std::size_t>(c)];
-      if (rules.saturation && v[c] >= *rules.saturation) saturated = true;
-    }
-    if (saturated) {
+    else if (high >= saturation)
       ++out.counts.saturated;
-      continue;
-    }
-    bool is_dark = false, is_bright = false;
-    for (std::uint32_t c : v) {
-      is_dark = is_dark || level(c) < dark;
-      is_bright = is_bright || (bright && level(c) > *bright);
-    }
-    if (is_dark) {
+    else if (low < dark_raw)
       ++out.counts.dark;
-      continue;
-    }
-    if (is_bright) {
+    else if (high > bright_raw)
       ++out.counts.bright;
-      continue;
-    }
-    ++out.counts.kept;
-    out.kept[i] = true;
+    else
+      ++out.counts.kept, out.kept[i] = true;
   }
   return out;
 }

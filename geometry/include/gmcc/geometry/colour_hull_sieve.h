@@ -46,18 +46,20 @@ class ExtremeColours {
 /// magnitude, all exact in double, so the test is exact (no filter). When the corners span fewer
 /// than 3 dimensions Q has no interior and the sieve keeps every colour. A grid of at most 16^3
 /// cells over Q's bounding box, each a power of 2 wide (a colour's cell is a shift of integers),
-/// marks the cells whose eight corners (integers below 2^17: the products stay below 2^50, still
-/// exact) are strictly inside Q, so the whole closed cell is (Q is convex): a colour in such a
-/// cell is answered without the planes.
+/// sorts Q's planes per cell by the closed cell's corners (integers below 2^18: every product below
+/// 2^51, the sums below 2^53, still exact): a plane the whole cell satisfies strictly is left out,
+/// a plane no point of the cell satisfies strictly marks the cell as outside Q, and the cell keeps
+/// the planes that cross it (a linear function takes its extremes over a box at corners). A colour
+/// is then tested against its cell's planes only: none in a cell inside Q.
 class ColourHullSieve {
  public:
   /// The sieve of conv(corners). \throws std::invalid_argument if a channel is not an integer in
   /// [0, 2^16). Complexity: the exact hull of the corners (CGAL's Epick, exact on doubles), and
-  /// 17^3 grid points against its planes.
+  /// 16^3 cells against its planes.
   explicit ColourHullSieve(const std::vector<std::array<double, 3>>& corners);
   /// Whether `c` (channels integers in [0, 2^16), unchecked) is strictly inside Q, exactly: then
-  /// it is no vertex of the hull of any set holding the corners. O(1) in a cell inside Q, else
-  /// O(facets of Q).
+  /// it is no vertex of the hull of any set holding the corners. O(the planes crossing its cell):
+  /// O(1) in a cell inside or outside Q.
   bool strictly_inside(const std::array<double, 3>& c) const {
     if (planes_.empty()) return false;
     std::size_t cell = 0;
@@ -65,22 +67,34 @@ class ColourHullSieve {
       if (!(c[k] >= low_[k] && c[k] <= high_[k])) return false;  // outside the corners' box
       cell = cell * grid + ((static_cast<std::uint32_t>(c[k]) - static_cast<std::uint32_t>(low_[k])) >> shift_[k]);
     }
-    return inside_cell_[cell] || inside_planes(c);
+    if (outside_cell_[cell]) return false;
+    for (std::uint32_t j = cell_first_[cell]; j < cell_first_[cell + 1]; ++j) {
+      const Planes& f = cell_planes_[j];  // four planes at a time (vector instructions where there are)
+      const Four r = {c[0], c[0], c[0], c[0]}, g = {c[1], c[1], c[1], c[1]}, b = {c[2], c[2], c[2], c[2]};
+      const auto inside = f[0] * r + f[1] * g + f[2] * b < f[3];  // each lane 0 or −1
+      if (!(inside[0] & inside[1] & inside[2] & inside[3])) return false;
+    }
+    return true;
   }
   /// How many planes bound Q (0 when it is flat).
   std::size_t facets() const { return planes_.size(); }
 
  private:
   static constexpr std::size_t grid = 16;
-  bool inside_planes(const std::array<double, 3>& c) const {
-    for (const std::array<double, 4>& f : planes_)
-      if (!(f[0] * c[0] + f[1] * c[1] + f[2] * c[2] < f[3])) return false;
-    return true;
-  }
+  void sort_planes_into_cells(const std::array<double, 3>& step);
   std::vector<std::array<double, 4>> planes_;
   std::array<double, 3> low_{}, high_{};  // the corners' box
   std::array<unsigned, 3> shift_{};       // cell i along k: [low + i·2^shift, low + (i + 1)·2^shift)
-  std::vector<bool> inside_cell_;                    // grid^3, row-major in (r, g, b)
+  // Per cell of the grid (grid^3, row-major in (r, g, b)): whether no colour of it is strictly
+  // inside Q, and else the planes it must be tested against, four at a time in
+  // cell_planes_[cell_first_[cell] .. cell_first_[cell + 1]).
+  // Four planes n·x < d by coordinate; a plane n = 0, d = 1 (which every colour satisfies) fills
+  // a cell's last four.
+  typedef double Four __attribute__((vector_size(32)));
+  using Planes = std::array<Four, 4>;  // n's three coordinates, then d
+  std::vector<std::uint8_t> outside_cell_;
+  std::vector<std::uint32_t> cell_first_;
+  std::vector<Planes> cell_planes_;
 };
 
 }  // namespace gmcc
