@@ -27,6 +27,8 @@ namespace {
 
 // u = 2^-53, the unit roundoff of double.
 constexpr double u = numerics::unit_roundoff;
+// No index.
+constexpr std::size_t none = static_cast<std::size_t>(-1);
 
 // A plane's filter copy: a_k·2^-E and b·2^-E (E the largest binary exponent among them), each
 // truncated to 53 bits by mpz_get_d_2exp (relative error below 2u; the scaling by a power of 2 is
@@ -72,6 +74,7 @@ class Clipper {
     std::vector<std::array<mpz_class, 4>> points;  // the points as (p·L, L)
     const std::vector<Point3>* source;             // the points as given
     std::vector<std::optional<WidePlane>> wide;    // (p·L, L) as double-word enclosures, scaled
+    std::shared_ptr<const void> owner;             // ClipGroup::owner
   };
 
  public:
@@ -101,7 +104,7 @@ class Clipper {
     for (const ClipGroup& g : groups) {
       const int nf = static_cast<int>(g.facets->planes.size());
       if (nf == 0 || g.points->empty()) continue;
-      groups_.push_back({g.facets, nf, filters_.size() - 6, {}, g.points, {}});
+      groups_.push_back({g.facets, nf, filters_.size() - 6, {}, g.points, {}, g.owner});
       for (const Point3& p : *g.points) add_point(groups_.back(), p);
     }
     rows_.resize(filters_.size());
@@ -759,7 +762,8 @@ class Clipper {
       }
       vertices.push_back(*t);
     }
-    // The lazy vertices' planes, exact (the clip reads no row after this: its rows move).
+    // The lazy vertices' planes (the clip reads no row after this: its rows and points move).
+    std::vector<std::size_t> points_at(groups_.size(), none);  // a group's first point in meets->points
     for (std::size_t j = 0; j < n; ++j) {
       if (!lazy[j]) continue;
       const Vertex& x = vertices_[static_cast<std::size_t>(live_[j])];
@@ -767,15 +771,42 @@ class Clipper {
         int& l = local[static_cast<std::size_t>(x.planes[k])];
         if (l < 0) {
           l = static_cast<int>(meets->planes.size());
-          plane(x.planes[k]);
-          meets->planes.push_back(x.planes[k] < 6 ? box_[static_cast<std::size_t>(x.planes[k])]
-                                                  : std::move(*rows_[static_cast<std::size_t>(x.planes[k])]));
+          meets->planes.emplace_back(), meets->rows.emplace_back();
+          keep_plane(x.planes[k], *meets, points_at);
         }
         meets->meets[j][k] = l;
       }
     }
     return LazyConvexSet3::from_truncated(ConvexKind3::polytope, std::move(vertices), std::move(faces),
                                           [meets](std::size_t i) { return meets->homogeneous(i); });
+  }
+
+  // Plane i as meets' last plane: a box side's or a row made exactly during the clip, moved; a row
+  // of a group with an owner, as its facet and point (the group's points moved into meets once,
+  // points_at[g] their first index there), made only when a vertex asks (PlaneMeets::plane);
+  // another row made now.
+  void keep_plane(int i, PlaneMeets& meets, std::vector<std::size_t>& points_at) {
+    IntegerPlane3& out = meets.planes.back();
+    if (i < 6) {
+      out = box_[static_cast<std::size_t>(i)];
+      return;
+    }
+    std::unique_ptr<IntegerPlane3>& row = rows_[static_cast<std::size_t>(i)];
+    const RowOf r = row_of(static_cast<std::size_t>(i));
+    if (row || !r.group->owner) {
+      plane(i);
+      out = std::move(*row);
+      return;
+    }
+    std::size_t& first = points_at[static_cast<std::size_t>(r.group - groups_.data())];
+    if (first == none) {
+      Group& g = groups_[static_cast<std::size_t>(r.group - groups_.data())];
+      first = meets.points.size();
+      meets.points.insert(meets.points.end(), std::make_move_iterator(g.points.begin()),
+                          std::make_move_iterator(g.points.end()));
+      meets.owners.push_back(g.owner);
+    }
+    meets.rows.back() = {&r.group->facets->planes[r.facet], first + r.point};
   }
 
   // The polytope with every vertex exact (faces indexed by position in live_).
