@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <memory>
 #include <numeric>
 #include <optional>
@@ -65,6 +66,41 @@ Filter filter_of(const IntegerPlane3& p) {
   return f;
 }
 
+
+// A face's cycle of vertices: up to `in_place` of them inside the face, more in a vector (a clip
+// rewrites its faces at every cut; most have fewer vertices than that, and then no allocation).
+class Cycle {
+ public:
+  Cycle() = default;
+  Cycle(std::initializer_list<int> v) { assign(v.begin(), v.end()); }
+  const int* begin() const { return data(); }
+  const int* end() const { return data() + n_; }
+  std::size_t size() const { return n_; }
+  bool empty() const { return n_ == 0; }
+  int back() const { return data()[n_ - 1]; }
+  int operator[](std::size_t k) const { return data()[k]; }
+  void clear() { n_ = 0, spilled_.clear(); }
+  void push_back(int v) {
+    if (n_ < in_place && spilled_.empty()) {
+      here_[n_++] = v;
+      return;
+    }
+    if (spilled_.empty()) spilled_.assign(here_, here_ + n_);
+    spilled_.push_back(v), ++n_;
+  }
+  template <class It>
+  void assign(It first, It last) {
+    clear();
+    for (; first != last; ++first) push_back(*first);
+  }
+
+ private:
+  static constexpr std::size_t in_place = 12;
+  const int* data() const { return spilled_.empty() ? here_ : spilled_.data(); }
+  std::size_t n_ = 0;
+  int here_[in_place];
+  std::vector<int> spilled_;  // every vertex, when there are more than in_place
+};
 
 // The filter's doubles (VertexDoubles: homogeneous coordinates of the filter planes' solution,
 // W > 0, each within err[k] of the exact value, docs/derivations.md §4.6), and:
@@ -139,6 +175,7 @@ class Clipper {
     // only decides how many cuts it takes (in point-major order the first point alone gives a copy
     // of G_c3 with all its vertices).
     const std::size_t n = filters_.size() - 6;
+    order_.reserve(n);
     std::size_t step = 2654435761u % (n ? n : 1);
     while (n && std::gcd(step, n) != 1) ++step;
     for (std::size_t k = 0, j = 0; k < n; ++k, j = j + step < n ? j + step : j + step - n)  // step < n
@@ -607,7 +644,7 @@ class Clipper {
     touched_.clear();
     faces_to_visit(on);
     for (const std::size_t f : visit_) {
-      const std::vector<int>& c = faces_[f].cycle;
+      const Cycle& c = faces_[f].cycle;
       bool outside = false, on = false;
       int a = c.back(), sa = sign_[a];
       for (const int b : c) {
@@ -650,7 +687,7 @@ class Clipper {
     if (next_on_cap_.size() < vertices_.size()) next_on_cap_.resize(vertices_.size() + 64, -1);
     int cap_edges = 0, cap_start = -1;
     for (const Touched& t : touched_) {
-      std::vector<int>& c = faces_[t.face].cycle;
+      Cycle& c = faces_[t.face].cycle;
       if (t.outside) {
         scratch_.clear();
         for (std::size_t k = 0; k < c.size(); ++k) {
@@ -658,7 +695,7 @@ class Clipper {
           if (sign_[a] <= 0) scratch_.push_back(a);
           if (sign_[a] * sign_[b] < 0) scratch_.push_back(cuts_[static_cast<std::size_t>(find_cut(a, b))].vertex);
         }
-        c.swap(scratch_);
+        c.assign(scratch_.begin(), scratch_.end());
         if (c.size() < 3) {
           c.clear();
           continue;
@@ -675,7 +712,6 @@ class Clipper {
     }
     for (const Cut& c : cuts_) cut_head_[static_cast<std::size_t>(sign_[c.u] > 0 ? c.u : c.w)] = -1;  // lists emptied
     Face cap{i, {}};
-    cap.cycle.reserve(static_cast<std::size_t>(cap_edges));
     for (int v = cap_start; v != -1 && static_cast<int>(cap.cycle.size()) <= cap_edges &&
                             (cap.cycle.empty() || v != cap_start);
          v = next_on_cap_[v])
@@ -758,7 +794,7 @@ class Clipper {
     }
     wide_index_.assign(filters_.size(), -1);
     auto meets = std::make_shared<PlaneMeets>();
-    meets->meets.resize(n), meets->made.resize(n), meets->planes.reserve(3 * n);
+    meets->meets.resize(n), meets->made.resize(n), meets->planes.reserve(3 * n), meets->rows.reserve(3 * n);
     std::vector<LazyConvexSet3::TruncatedVertex> vertices;
     vertices.reserve(n);
     std::vector<int> local(filters_.size(), -1);
@@ -836,7 +872,7 @@ class Clipper {
 
   struct Face {
     int plane;
-    std::vector<int> cycle;
+    Cycle cycle;
   };
   // Row i >= 6: its group, facet and point.
   struct RowOf {
