@@ -278,8 +278,8 @@ class Clipper {
       const std::array<int, 3> s{sgn(a.a[0]), sgn(a.a[1]), sgn(a.a[2])};
       std::vector<char>& d = dominated[static_cast<std::size_t>((s[0] + 1) + 3 * (s[1] + 1) + 9 * (s[2] + 1))];
       if (d.empty()) d = dominated_points(rank, s);
-      for (std::size_t i = 0; i < n; ++i)
-        if (d[i]) implied[6 + g.first + i * static_cast<std::size_t>(g.nf) + static_cast<std::size_t>(f)] = 1;
+      for (std::size_t i = 0; i < n; ++i)  // each row written once (no branch: about 2 in 5 are implied)
+        implied[6 + g.first + i * static_cast<std::size_t>(g.nf) + static_cast<std::size_t>(f)] = d[i];
     }
   }
 
