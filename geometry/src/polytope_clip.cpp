@@ -330,13 +330,13 @@ class Clipper {
       const IntegerPlane3& h = facets.planes[f];
       const bool zero = sgn(h.a[0]) * s[0] == 0 && sgn(h.a[1]) * s[1] == 0 && sgn(h.a[2]) * s[2] == 0;
       constant_.push_back(static_cast<signed char>(!zero ? -1 : sgn(h.b) >= 0 ? 1 : 0));
-      Filter r;
+      // Made in place (a copy from the stack read back wider than it was written, a stall per row).
+      Filter& r = filters_.emplace_back();
       const std::array<double, 4>& a = facets.filters[f];
       if (q.usable && facets.usable[f]) {
         r.c[0] = a[0] * q.c[0], r.c[1] = a[1] * q.c[1], r.c[2] = a[2] * q.c[2], r.c[3] = a[3] * q.scale;
         r.usable = in_range_always || (filter_range(r.c[0]) && filter_range(r.c[1]) && filter_range(r.c[2]) && filter_range(r.c[3]));
       }
-      filters_.push_back(r);
     }
   }
 
