@@ -105,6 +105,9 @@ class Cycle {
 // The filter's doubles (VertexDoubles: homogeneous coordinates of the filter planes' solution,
 // W > 0, each within err[k] of the exact value, docs/derivations.md §4.6), and:
 struct Vertex : VertexDoubles {
+  // Each member from its initializer (planes set by add_vertex): emplace_back() would otherwise
+  // zero the whole vertex first (a rep stos per vertex).
+  Vertex() {}
   std::array<int, 3> planes;  // three independent planes through it
   // Exact homogeneous coordinates of the integer planes' solution (W of either sign), on demand
   // (behind a pointer: few vertices have them, and a small vertex keeps the clip's vector small).
