@@ -38,6 +38,8 @@ struct CanonicalPlanes3 {
 
 struct FeasibleSet3Access {
   static const CanonicalPlanes3& planes(const CanonicalConstraints3& c) { return *c.planes_; }
+  // What keeps planes(c) alive (ClipGroup::owner).
+  static std::shared_ptr<const void> owner(const CanonicalConstraints3& c) { return c.planes_; }
 };
 
 std::vector<Point3> sorted_unique(std::vector<Point3> p) {
@@ -316,7 +318,8 @@ LazyConvexSet3 feasible_set_3d_lazy(const std::vector<GamutConstraint3>& constra
   if (all_full) {
     std::vector<internal::ClipGroup> groups;
     for (std::size_t i = 0; i < constraints.size(); ++i)
-      groups.push_back({&internal::FeasibleSet3Access::planes(*constraints[i].canonical).integer, &points[i]});
+      groups.push_back({&internal::FeasibleSet3Access::planes(*constraints[i].canonical).integer, &points[i],
+                        internal::FeasibleSet3Access::owner(*constraints[i].canonical)});
     std::size_t rows = 0;
     for (const internal::ClipGroup& g : groups) rows += g.facets->planes.size() * g.points->size();
     // Many rows (edge colours at large σ: ~1000 hull points): generated lazily, the same set.

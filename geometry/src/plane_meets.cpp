@@ -83,9 +83,22 @@ std::array<mpz_class, 4> PlaneMeets::homogeneous(std::size_t i) {
   if (sgn(made[i][3]) != 0) return made[i];
   std::array<mpz_class, 4> h;
   const std::array<int, 3>& t = meets[i];
-  homogeneous_meet(planes[static_cast<std::size_t>(t[0])], planes[static_cast<std::size_t>(t[1])],
-                   planes[static_cast<std::size_t>(t[2])], scratch, h);
+  homogeneous_meet(plane(static_cast<std::size_t>(t[0])), plane(static_cast<std::size_t>(t[1])),
+                   plane(static_cast<std::size_t>(t[2])), scratch, h);
   return h;
+}
+
+const IntegerPlane3& PlaneMeets::plane(std::size_t k) {
+  IntegerPlane3& p = planes[k];
+  Row& r = rows[k];
+  if (r.facet) {  // the row (a ⊙ P)·x <= b·L, as the clip makes it
+    const IntegerPlane3& a = *r.facet;
+    const std::array<mpz_class, 4>& q = points[r.point];
+    for (int j = 0; j < 3; ++j) mpz_mul(p.a[j].get_mpz_t(), a.a[j].get_mpz_t(), q[static_cast<std::size_t>(j)].get_mpz_t());
+    mpz_mul(p.b.get_mpz_t(), a.b.get_mpz_t(), q[3].get_mpz_t());
+    r.facet = nullptr;
+  }
+  return p;
 }
 
 }  // namespace gmcc::internal

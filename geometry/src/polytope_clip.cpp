@@ -16,17 +16,34 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <memory>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <utility>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace gmcc::internal {
 namespace {
 
 // u = 2^-53, the unit roundoff of double.
 constexpr double u = numerics::unit_roundoff;
+// No index.
+constexpr std::size_t none = static_cast<std::size_t>(-1);
+
+// √x, the correctly rounded double std::sqrt gives: one instruction where SSE2 is there (this
+// unit is built with -frounding-math, under which the compiler makes std::sqrt a call into libm,
+// one per row in deepest_first).
+inline double root(double x) {
+#if defined(__SSE2__)
+  return _mm_cvtsd_f64(_mm_sqrt_sd(_mm_setzero_pd(), _mm_set_sd(x)));
+#else
+  return std::sqrt(x);
+#endif
+}
 
 // A plane's filter copy: a_k·2^-E and b·2^-E (E the largest binary exponent among them), each
 // truncated to 53 bits by mpz_get_d_2exp (relative error below 2u; the scaling by a power of 2 is
@@ -50,9 +67,47 @@ Filter filter_of(const IntegerPlane3& p) {
 }
 
 
+// A face's cycle of vertices: up to `in_place` of them inside the face, more in a vector (a clip
+// rewrites its faces at every cut; most have fewer vertices than that, and then no allocation).
+class Cycle {
+ public:
+  Cycle() = default;
+  Cycle(std::initializer_list<int> v) { assign(v.begin(), v.end()); }
+  const int* begin() const { return data(); }
+  const int* end() const { return data() + n_; }
+  std::size_t size() const { return n_; }
+  bool empty() const { return n_ == 0; }
+  int back() const { return data()[n_ - 1]; }
+  int operator[](std::size_t k) const { return data()[k]; }
+  void clear() { n_ = 0, spilled_.clear(); }
+  void push_back(int v) {
+    if (n_ < in_place && spilled_.empty()) {
+      here_[n_++] = v;
+      return;
+    }
+    if (spilled_.empty()) spilled_.assign(here_, here_ + n_);
+    spilled_.push_back(v), ++n_;
+  }
+  template <class It>
+  void assign(It first, It last) {
+    clear();
+    for (; first != last; ++first) push_back(*first);
+  }
+
+ private:
+  static constexpr std::size_t in_place = 12;
+  const int* data() const { return spilled_.empty() ? here_ : spilled_.data(); }
+  std::size_t n_ = 0;
+  int here_[in_place];
+  std::vector<int> spilled_;  // every vertex, when there are more than in_place
+};
+
 // The filter's doubles (VertexDoubles: homogeneous coordinates of the filter planes' solution,
 // W > 0, each within err[k] of the exact value, docs/derivations.md §4.6), and:
 struct Vertex : VertexDoubles {
+  // Each member from its initializer (planes set by add_vertex): emplace_back() would otherwise
+  // zero the whole vertex first (a rep stos per vertex).
+  Vertex() {}
   std::array<int, 3> planes;  // three independent planes through it
   // Exact homogeneous coordinates of the integer planes' solution (W of either sign), on demand
   // (behind a pointer: few vertices have them, and a small vertex keeps the clip's vector small).
@@ -72,6 +127,7 @@ class Clipper {
     std::vector<std::array<mpz_class, 4>> points;  // the points as (p·L, L)
     const std::vector<Point3>* source;             // the points as given
     std::vector<std::optional<WidePlane>> wide;    // (p·L, L) as double-word enclosures, scaled
+    std::shared_ptr<const void> owner;             // ClipGroup::owner
   };
 
  public:
@@ -101,7 +157,7 @@ class Clipper {
     for (const ClipGroup& g : groups) {
       const int nf = static_cast<int>(g.facets->planes.size());
       if (nf == 0 || g.points->empty()) continue;
-      groups_.push_back({g.facets, nf, filters_.size() - 6, {}, g.points, {}});
+      groups_.push_back({g.facets, nf, filters_.size() - 6, {}, g.points, {}, g.owner});
       for (const Point3& p : *g.points) add_point(groups_.back(), p);
     }
     rows_.resize(filters_.size());
@@ -124,8 +180,11 @@ class Clipper {
     const std::size_t n = filters_.size() - 6;
     std::size_t step = 2654435761u % (n ? n : 1);
     while (n && std::gcd(step, n) != 1) ++step;
+    order_.resize(n);
+    std::size_t kept = 0;  // each row written, kept when not implied (no branch: about 2 in 5 are)
     for (std::size_t k = 0, j = 0; k < n; ++k, j = j + step < n ? j + step : j + step - n)  // step < n
-      if (!implied[6 + j]) order_.push_back(6 + j);
+      order_[kept] = 6 + j, kept += !implied[6 + j];
+    order_.resize(kept);
     deepest_first(box);
   }
 
@@ -144,23 +203,24 @@ class Clipper {
     // Each row's distance; a constant row (a = 0) first, one without a filter copy last.
     const std::size_t n = order_.size();
     std::vector<double> d(n);
-    std::vector<std::uint32_t> kept;  // positions in order_ of the rows the box does not settle
-    kept.reserve(n);
+    std::vector<std::uint32_t> kept(n);  // positions in order_ of the rows the box does not settle
+    std::size_t m = 0;                   // how many (each written, kept without a branch)
     double lo = HUGE_VAL, hi = -HUGE_VAL;
     for (std::size_t k = 0; k < n; ++k) {
       const Filter& f = filters_[order_[k]];
-      const double norm = std::sqrt(f.c[0] * f.c[0] + f.c[1] * f.c[1] + f.c[2] * f.c[2]);
+      const double norm = root(f.c[0] * f.c[0] + f.c[1] * f.c[1] + f.c[2] * f.c[2]);
       d[k] = !f.usable ? -HUGE_VAL : norm > 0 ? (f.c[0] * c[0] + f.c[1] * c[1] + f.c[2] * c[2] - f.c[3]) / norm : HUGE_VAL;
       if (std::isfinite(d[k])) lo = std::min(lo, d[k]), hi = std::max(hi, d[k]);
-      if (!(f.usable && filter_.box_inside(f.c))) kept.push_back(static_cast<std::uint32_t>(k));
+      const bool settled = f.usable ? filter_.box_inside(f.c) : false;
+      kept[m] = static_cast<std::uint32_t>(k), m += !settled;
     }
+    kept.resize(m);
     // A stable sort into `levels` equal bands of distance, deepest band first, each band in the
     // order it had (a comparison sort's mispredicted branches cost more than it gained): band
     // numbers below 2^14, sorted by their low 7 bits, then stably by the high 7 (an LSD radix
     // sort, the same order as one counting pass over every band at a fraction of the counts).
     constexpr std::size_t levels = 4096;
     const double scale = hi > lo ? double(levels - 1) / (hi - lo) : 0;
-    const std::size_t m = kept.size();
     std::vector<std::uint16_t> band(m);
     for (std::size_t j = 0; j < m; ++j) {
       const double x = d[kept[j]];
@@ -221,8 +281,8 @@ class Clipper {
       const std::array<int, 3> s{sgn(a.a[0]), sgn(a.a[1]), sgn(a.a[2])};
       std::vector<char>& d = dominated[static_cast<std::size_t>((s[0] + 1) + 3 * (s[1] + 1) + 9 * (s[2] + 1))];
       if (d.empty()) d = dominated_points(rank, s);
-      for (std::size_t i = 0; i < n; ++i)
-        if (d[i]) implied[6 + g.first + i * static_cast<std::size_t>(g.nf) + static_cast<std::size_t>(f)] = 1;
+      for (std::size_t i = 0; i < n; ++i)  // each row written once (no branch: about 2 in 5 are implied)
+        implied[6 + g.first + i * static_cast<std::size_t>(g.nf) + static_cast<std::size_t>(f)] = d[i];
     }
   }
 
@@ -273,13 +333,13 @@ class Clipper {
       const IntegerPlane3& h = facets.planes[f];
       const bool zero = sgn(h.a[0]) * s[0] == 0 && sgn(h.a[1]) * s[1] == 0 && sgn(h.a[2]) * s[2] == 0;
       constant_.push_back(static_cast<signed char>(!zero ? -1 : sgn(h.b) >= 0 ? 1 : 0));
-      Filter r;
+      // Made in place (a copy from the stack read back wider than it was written, a stall per row).
+      Filter& r = filters_.emplace_back();
       const std::array<double, 4>& a = facets.filters[f];
       if (q.usable && facets.usable[f]) {
         r.c[0] = a[0] * q.c[0], r.c[1] = a[1] * q.c[1], r.c[2] = a[2] * q.c[2], r.c[3] = a[3] * q.scale;
         r.usable = in_range_always || (filter_range(r.c[0]) && filter_range(r.c[1]) && filter_range(r.c[2]) && filter_range(r.c[3]));
       }
-      filters_.push_back(r);
     }
   }
 
@@ -590,7 +650,7 @@ class Clipper {
     touched_.clear();
     faces_to_visit(on);
     for (const std::size_t f : visit_) {
-      const std::vector<int>& c = faces_[f].cycle;
+      const Cycle& c = faces_[f].cycle;
       bool outside = false, on = false;
       int a = c.back(), sa = sign_[a];
       for (const int b : c) {
@@ -633,7 +693,7 @@ class Clipper {
     if (next_on_cap_.size() < vertices_.size()) next_on_cap_.resize(vertices_.size() + 64, -1);
     int cap_edges = 0, cap_start = -1;
     for (const Touched& t : touched_) {
-      std::vector<int>& c = faces_[t.face].cycle;
+      Cycle& c = faces_[t.face].cycle;
       if (t.outside) {
         scratch_.clear();
         for (std::size_t k = 0; k < c.size(); ++k) {
@@ -641,7 +701,7 @@ class Clipper {
           if (sign_[a] <= 0) scratch_.push_back(a);
           if (sign_[a] * sign_[b] < 0) scratch_.push_back(cuts_[static_cast<std::size_t>(find_cut(a, b))].vertex);
         }
-        c.swap(scratch_);
+        c.assign(scratch_.begin(), scratch_.end());
         if (c.size() < 3) {
           c.clear();
           continue;
@@ -658,7 +718,6 @@ class Clipper {
     }
     for (const Cut& c : cuts_) cut_head_[static_cast<std::size_t>(sign_[c.u] > 0 ? c.u : c.w)] = -1;  // lists emptied
     Face cap{i, {}};
-    cap.cycle.reserve(static_cast<std::size_t>(cap_edges));
     for (int v = cap_start; v != -1 && static_cast<int>(cap.cycle.size()) <= cap_edges &&
                             (cap.cycle.empty() || v != cap_start);
          v = next_on_cap_[v])
@@ -741,7 +800,7 @@ class Clipper {
     }
     wide_index_.assign(filters_.size(), -1);
     auto meets = std::make_shared<PlaneMeets>();
-    meets->meets.resize(n), meets->made.resize(n), meets->planes.reserve(3 * n);
+    meets->meets.resize(n), meets->made.resize(n), meets->planes.reserve(3 * n), meets->rows.reserve(3 * n);
     std::vector<LazyConvexSet3::TruncatedVertex> vertices;
     vertices.reserve(n);
     std::vector<int> local(filters_.size(), -1);
@@ -759,7 +818,8 @@ class Clipper {
       }
       vertices.push_back(*t);
     }
-    // The lazy vertices' planes, exact (the clip reads no row after this: its rows move).
+    // The lazy vertices' planes (the clip reads no row after this: its rows and points move).
+    std::vector<std::size_t> points_at(groups_.size(), none);  // a group's first point in meets->points
     for (std::size_t j = 0; j < n; ++j) {
       if (!lazy[j]) continue;
       const Vertex& x = vertices_[static_cast<std::size_t>(live_[j])];
@@ -767,15 +827,42 @@ class Clipper {
         int& l = local[static_cast<std::size_t>(x.planes[k])];
         if (l < 0) {
           l = static_cast<int>(meets->planes.size());
-          plane(x.planes[k]);
-          meets->planes.push_back(x.planes[k] < 6 ? box_[static_cast<std::size_t>(x.planes[k])]
-                                                  : std::move(*rows_[static_cast<std::size_t>(x.planes[k])]));
+          meets->planes.emplace_back(), meets->rows.emplace_back();
+          keep_plane(x.planes[k], *meets, points_at);
         }
         meets->meets[j][k] = l;
       }
     }
     return LazyConvexSet3::from_truncated(ConvexKind3::polytope, std::move(vertices), std::move(faces),
                                           [meets](std::size_t i) { return meets->homogeneous(i); });
+  }
+
+  // Plane i as meets' last plane: a box side's or a row made exactly during the clip, moved; a row
+  // of a group with an owner, as its facet and point (the group's points moved into meets once,
+  // points_at[g] their first index there), made only when a vertex asks (PlaneMeets::plane);
+  // another row made now.
+  void keep_plane(int i, PlaneMeets& meets, std::vector<std::size_t>& points_at) {
+    IntegerPlane3& out = meets.planes.back();
+    if (i < 6) {
+      out = box_[static_cast<std::size_t>(i)];
+      return;
+    }
+    std::unique_ptr<IntegerPlane3>& row = rows_[static_cast<std::size_t>(i)];
+    const RowOf r = row_of(static_cast<std::size_t>(i));
+    if (row || !r.group->owner) {
+      plane(i);
+      out = std::move(*row);
+      return;
+    }
+    std::size_t& first = points_at[static_cast<std::size_t>(r.group - groups_.data())];
+    if (first == none) {
+      Group& g = groups_[static_cast<std::size_t>(r.group - groups_.data())];
+      first = meets.points.size();
+      meets.points.insert(meets.points.end(), std::make_move_iterator(g.points.begin()),
+                          std::make_move_iterator(g.points.end()));
+      meets.owners.push_back(g.owner);
+    }
+    meets.rows.back() = {&r.group->facets->planes[r.facet], first + r.point};
   }
 
   // The polytope with every vertex exact (faces indexed by position in live_).
@@ -791,7 +878,7 @@ class Clipper {
 
   struct Face {
     int plane;
-    std::vector<int> cycle;
+    Cycle cycle;
   };
   // Row i >= 6: its group, facet and point.
   struct RowOf {

@@ -101,6 +101,38 @@ LDInterval angle_deg_enclosure(const std::array<LDInterval, 3>& u, const std::ar
   return atan2(sqrt(cross2(u, v)), dot(u, v)) * degrees_per_radian_ld;
 }
 
+// ray_angle_deg's proof. Let θ be the exact angle (degrees) between the rays, the same for any
+// positive multiples, and deg an enclosure of θ from the multiples given. angle_deg(ray(u), ray(v))
+// returns round(y), round the nearest double, where, for θ >= 2^-40:
+// - on its x87 stages, y is the long double midpoint of an enclosure [lo', hi'] of θ with
+//   hi' − lo' <= lo'·2^-56 (tight_degrees), so |y − θ| <= 2^-56·θ;
+// - on its MPFR stage (x87 off, or neither x87 stage tight), y is θ within 2^-148 (the inputs
+//   rounded to 160 bits move each cross product component by at most 2^-155|u||v| and the dot
+//   product by 2^-157|u||v|, so atan2 moves by at most 2^-154 rad, as s² + d² = |u|²|v|²; the
+//   later roundings are 2^-159 relative), below 2^-56·θ;
+// - u = v, or parallel rays, give θ = 0 (excluded) or exactly 180.
+// So y ∈ [θ(1 − 2^-56), θ(1 + 2^-56)] ⊂ [L, H] below; when L and H round to the same double,
+// so does every number between them (rounding is monotone), y among them.
+std::optional<double> ray_angle_deg(const std::array<const mpz_class*, 3>& u_int,
+                                    const std::array<const mpz_class*, 3>& v_int) {
+  if (!numerics::extended_precision_active()) return std::nullopt;
+  static const mpz_class one = 1;
+  std::array<LDInterval, 3> u, v;
+  for (int k = 0; k < 3; ++k)
+    u[k] = enclose_ld(u_int[k]->get_mpz_t(), one.get_mpz_t()), v[k] = enclose_ld(v_int[k]->get_mpz_t(), one.get_mpz_t());
+  const LDInterval c2 = cross2(u, v);
+  if (!(c2.lo > 0)) return std::nullopt;
+  const LDInterval deg = atan2(sqrt(c2), dot(u, v)) * degrees_per_radian_ld;
+  if (!(deg.lo >= 0x1p-40L) || !std::isfinite(deg.hi)) return std::nullopt;
+  // Each subtraction or addition rounds by at most 2^-64 relative, and angle_deg's midpoint by
+  // 2^-63: within the extra 2^-60.
+  const long double lo = deg.lo - std::ldexp(deg.lo, -56) - std::ldexp(deg.lo, -60);
+  const long double hi = deg.hi + std::ldexp(deg.hi, -56) + std::ldexp(deg.hi, -60);
+  const double a = static_cast<double>(lo), b = static_cast<double>(hi);
+  if (a != b) return std::nullopt;
+  return a;
+}
+
 double angle_deg(const std::array<Rational, 3>& u_exact, const std::array<Rational, 3>& v_exact) {
   if (u_exact == v_exact) return 0;  // what the MPFR route returns for them, exactly
   if (numerics::extended_precision_active()) {

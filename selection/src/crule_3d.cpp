@@ -71,6 +71,11 @@ std::array<Rational, 3> ray_of(const Point3& u) {
   divide_by_content_of(z[0], z[1], z[2]);
   return {Rational(z[0]), Rational(z[1]), Rational(z[2])};
 }
+// A positive multiple of u's ray without a gcd: u_k times the other two denominators.
+std::array<mpz_class, 3> multiple_of_ray(const Point3& u) {
+  const mpz_class &d0 = u.x.get_den(), &d1 = u.y.get_den(), &d2 = u.z.get_den();
+  return {u.x.get_num() * d1 * d2, u.y.get_num() * d0 * d2, u.z.get_num() * d0 * d1};
+}
 // The same for the point (X/W, Y/W, Z/W), W > 0, from its homogeneous integers: (X, Y, Z) divided
 // by its content is that primitive vector, without the point's lowest terms.
 std::array<Rational, 3> ray_of(const std::array<mpz_class, 4>& h) {
@@ -97,8 +102,15 @@ double worst_case_map_deg_3d(const LazyConvexSet3& F, const Point3& m) {
   // among the filter's contenders (in vertex order, so that ties go to the first vertex as over
   // all of them); a lone contender is the worst vertex without a comparison.
   const std::vector<std::size_t> contenders = worst_case_contenders(F, m);
-  if (contenders.size() == 1 && !is_zero(m))  // diagonal_map_angular_error_deg's rays (a non-zero vertex)
-    return internal::angle_deg(ray_of(m), ray_of(F.homogeneous(contenders[0])));
+  if (contenders.size() == 1 && !is_zero(m)) {  // diagonal_map_angular_error_deg's rays (a non-zero vertex)
+    // Their double from any multiples when the filter settles it (ray_angle_deg), else from the
+    // rays themselves.
+    const std::array<mpz_class, 4>& h = F.homogeneous(contenders[0]);
+    const std::array<mpz_class, 3> mm = multiple_of_ray(m);
+    if (const std::optional<double> deg = internal::ray_angle_deg({&mm[0], &mm[1], &mm[2]}, {&h[0], &h[1], &h[2]}))
+      return *deg;
+    return internal::angle_deg(ray_of(m), ray_of(h));
+  }
   const Point3* worst = nullptr;
   Rational worst_cos2;
   for (std::size_t i : contenders) {

@@ -197,6 +197,60 @@ BOOST_AUTO_TEST_CASE(a_vertex_made_exact_then_one_out_of_range) {
               test::feasible_set_3d_reference(canonical, image, CanonicalBlack::include)));
 }
 
+// The lazy set's final vertices are made from rows kept as their canonical facet and image point
+// (issue 46 item 3, fourth round): made exact only after the prepared gamuts are gone (their
+// memory reused by others), with two constraints (two groups of rows, the second group's points
+// after the first's), they must be the LP route's F3. Fails if the set does not keep the facets
+// alive (under the sanitizers at least) or reads a group's points at the wrong place.
+BOOST_AUTO_TEST_CASE(lazy_rows_outlive_the_prepared_gamuts_and_serve_several_groups) {
+  Rng rng(4607);
+  int polytopes = 0;
+  for (int trial = 0; trial < 16; ++trial) {
+    std::vector<Colour> g[2];
+    for (int k = 0; k < 2; ++k)
+      for (int i = 0; i < 8 + trial % 9; ++i) g[k].push_back(random_colour(rng, 1000, trial % 2 ? 999983 : 64));
+    const Colour d{test::random_rational(rng, 1, 9, 4), test::random_rational(rng, 1, 9, 4),
+                   test::random_rational(rng, 1, 9, 4)};
+    // Each image colour the mean of three of its gamut's colours, halved, under 1/d: d maps it
+    // inside G_c3, so F3 is (generically) a polytope.
+    std::vector<Colour> image[2];
+    for (int k = 0; k < 2; ++k) {
+      const std::vector<Colour> a = image_of(rng, g[k], d, 3 * (3 + (trial + k) % 5), false);
+      for (std::size_t i = 0; i + 2 < a.size(); i += 3)
+        image[k].push_back({R((a[i].r + a[i + 1].r + a[i + 2].r) / 6), R((a[i].g + a[i + 1].g + a[i + 2].g) / 6),
+                            R((a[i].b + a[i + 1].b + a[i + 2].b) / 6)});
+    }
+    LazyConvexSet3 F;
+    {
+      const CanonicalConstraints3 c0(g[0], CanonicalBlack::include), c1(g[1], CanonicalBlack::include);
+      F = feasible_set_3d_lazy({{&c0, &image[0]}, {&c1, &image[1]}});
+    }
+    for (int k = 0; k < 2; ++k) {  // other gamuts in the memory the first ones had
+      std::vector<Colour> other;
+      for (int i = 0; i < 12; ++i) other.push_back(random_colour(rng, 50, 3));
+      const CanonicalConstraints3 junk(other, CanonicalBlack::exclude);
+      BOOST_TEST(junk.dimension() == 3);
+    }
+    std::vector<Point3> points[2], hull[2];
+    std::vector<internal::HalfSpace3> half_spaces[2];
+    Point3 max[2];
+    for (int k = 0; k < 2; ++k) {
+      hull[k].push_back({0, 0, 0});  // black included
+      for (const Colour& c : g[k]) {
+        hull[k].push_back({c.r, c.g, c.b});
+        max[k] = {std::max(max[k].x, c.r), std::max(max[k].y, c.g), std::max(max[k].z, c.b)};
+      }
+      for (const Colour& c : image[k]) points[k].push_back({c.r, c.g, c.b});
+      half_spaces[k] = internal::hull_half_spaces_3(hull[k]);
+    }
+    const ConvexSet3 want = internal::feasible_set_3d_lp(
+        {{&half_spaces[0], &max[0], &points[0]}, {&half_spaces[1], &max[1], &points[1]}});
+    BOOST_TEST((F.exact() == want), "trial " << trial);
+    polytopes += want.kind == ConvexKind3::polytope;
+  }
+  BOOST_TEST(polytopes > 10);
+}
+
 BOOST_AUTO_TEST_CASE(large_images_through_the_hull_prefilter_agree) {
   Rng rng(4242);
   Tally t;

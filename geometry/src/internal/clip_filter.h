@@ -36,7 +36,13 @@ class LiveVertexFilter {
   // Vertex number add()'s count so far (vertices are numbered in the order they are added).
   void add(const VertexDoubles& v);
   // Room for n vertices without moving the ones added (as the clip reserves its own).
-  void reserve(std::size_t n) { vertices_.reserve(n), where_.reserve(n); }
+  // Each octant's group is given room for n/16 records at once (a clip's live vertices, about a
+  // third of those made, spread over the octants; more grow by doubling).
+  void reserve(std::size_t n) {
+    vertices_.reserve(n), where_.reserve(n);
+    for (Group& g : groups_)
+      if (g.packed.size() < 6 * (n / 16)) g.packed.resize(6 * (n / 16));
+  }
   // The filter of the polytope whose vertices are `live` (numbers from add()), from scratch: the
   // groups about the mean of the vertices' box centres, each group's box tight.
   void rebuild(const std::vector<int>& live);

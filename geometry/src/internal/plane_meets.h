@@ -40,13 +40,24 @@ std::optional<LazyConvexSet3::TruncatedVertex> truncated_meet(const WidePlane& p
 
 // The exact planes of a set's vertices, kept so that each vertex's homogeneous coordinates can be
 // made on request (LazyConvexSet3::from_truncated's maker): vertex i is the meet of planes
-// meets[i], or given already in made[i] (W != 0).
+// meets[i], or given already in made[i] (W != 0). Plane k is planes[k], or, while rows[k].facet
+// is set, the row (a ⊙ P)·x <= b·L of that facet a·x <= b and the point points[rows[k].point] =
+// (P, L), made on first use (the facets kept alive by `owners`).
 struct PlaneMeets {
+  struct Row {
+    const IntegerPlane3* facet = nullptr;
+    std::size_t point = 0;
+  };
   std::vector<IntegerPlane3> planes;
+  std::vector<Row> rows;
+  std::vector<std::array<mpz_class, 4>> points;
+  std::vector<std::shared_ptr<const void>> owners;
   std::vector<std::array<int, 3>> meets;
   std::vector<std::array<mpz_class, 4>> made;
   std::array<std::array<mpz_class, 3>, 3> scratch;
   std::array<mpz_class, 4> homogeneous(std::size_t i);
+  // Plane k, made now if it was not yet.
+  const IntegerPlane3& plane(std::size_t k);
 };
 
 }  // namespace gmcc::internal

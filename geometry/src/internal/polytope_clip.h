@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -76,9 +77,14 @@ ClipFacets clip_facets(std::vector<IntegerPlane3> planes, const std::vector<Poin
 ClippedPolytope clip_polytope(const Point3& box, const ClipFacets& facets, const std::vector<Point3>& points,
                               ClipCounts* counts = nullptr);
 // One group of rows for clip_polytope: (a ⊙ p)·x <= b for every point p and facet a·x <= b.
+// `owner`, when given, keeps *facets alive (shares its ownership): then the final vertices' rows of
+// this group are made exact only when a vertex's homogeneous coordinates are asked (PlaneMeets),
+// from the facet and the point's integers, which the result keeps; without it, when the result
+// is made.
 struct ClipGroup {
   const ClipFacets* facets;
   const std::vector<Point3>* points;
+  std::shared_ptr<const void> owner = nullptr;
 };
 // The box cut by the rows of every group at once (several gamut types' constraints on one map,
 // feasible_set_3d.h): the same clip, the groups' rows one after another in the fixed order.

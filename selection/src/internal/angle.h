@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 
 namespace gmcc::internal {
 
@@ -27,6 +28,13 @@ namespace gmcc::internal {
 /// Equal vectors give 0 at once; between the two stages above, the cross product is enclosed
 /// from its exact value (integer cross-multiplication), which settles small angles.
 double angle_deg(const std::array<Rational, 3>& u, const std::array<Rational, 3>& v);
+
+/// angle_deg(ray(u), ray(v)) for integer vectors u, v, each any positive multiple of its ray (not
+/// divided by its content, so without a gcd), when a filter settles it: the double angle_deg gives
+/// for the rays, or nothing (then angle_deg of the rays decides). Decides only where x87
+/// extended precision is active, from an enclosure of the angle in intervals: see angle.cpp for
+/// why any stage of angle_deg then returns that double.
+std::optional<double> ray_angle_deg(const std::array<const mpz_class*, 3>& u, const std::array<const mpz_class*, 3>& v);
 
 /// A rigorous enclosure of ∠(u, v) in degrees from the first stage alone, however wide (for
 /// pruning: a maximum need not evaluate candidates that certainly lose). Needs the x87 fast path.
