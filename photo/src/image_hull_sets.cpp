@@ -22,18 +22,6 @@ std::array<double, 3> linear_colour(const RgbImage& image, std::uint32_t black_l
   return {double(c[0]), double(c[1]), double(c[2])};
 }
 
-// The kept pixels' colours, to f(pixel, colour) in pixel order.
-template <class F>
-void each_kept_colour(const RgbImage& image, std::uint32_t black_level, const KeptPixels& kept, const F& f) {
-  const std::size_t n = image.width * image.height;
-  for (std::size_t i = 0; i < n; ++i)
-    if (kept.kept[i]) f(i, linear_colour(image, black_level, i));
-}
-
-std::uint64_t key_of(const std::array<double, 3>& c) {
-  return internal::colour_key({std::uint32_t(c[0]), std::uint32_t(c[1]), std::uint32_t(c[2])});
-}
-
 std::array<double, 3> colour_of(std::uint64_t key) {
   const auto c = internal::key_channels(key);
   return {double(c[0]), double(c[1]), double(c[2])};
