@@ -29,6 +29,11 @@ Fft::Fft(std::size_t n) : n_(n), w_(n / 2), rev_(n) {
     const long double a = -2 * pi * static_cast<long double>(k) / static_cast<long double>(n);
     w_[k] = {static_cast<double>(std::cos(a)), static_cast<double>(std::sin(a))};
   }
+  // Each stage's twiddles in a row (the stage of `half` reads w_[j·n/(2·half)] for j < half): the
+  // same values, at n/2 + half − 1 + j, so that a stage reads them one after the other.
+  w_.reserve(n / 2 + n - 1);
+  for (std::size_t half = 1; half < n; half *= 2)
+    for (std::size_t j = 0; j < half; ++j) w_.push_back(w_[j * (n / (2 * half))]);
   std::size_t bits = 0;
   while ((std::size_t(1) << bits) < n) ++bits;
   for (std::size_t i = 0; i < n; ++i) {
@@ -38,14 +43,20 @@ Fft::Fft(std::size_t n) : n_(n), w_(n / 2), rev_(n) {
   }
 }
 
+// On x86-64 ELF with GCC compiled twice, the loader picking the clone the processor supports (as
+// image_derivatives.cpp's weighted_sum): the AVX2 clone makes the same operations (no fused
+// multiply-add), so the same bytes.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+__attribute__((target_clones("avx2", "default")))
+#endif
 void Fft::forward(std::complex<double>* a) const {
   for (std::size_t i = 0; i < n_; ++i)
     if (i < rev_[i]) std::swap(a[i], a[rev_[i]]);
   for (std::size_t half = 1; half < n_; half *= 2) {
-    const std::size_t step = n_ / (2 * half);
+    const std::complex<double>* w = w_.data() + n_ / 2 - 1 + half;  // this stage's, in a row
     for (std::size_t i = 0; i < n_; i += 2 * half)
       for (std::size_t j = 0; j < half; ++j) {
-        const std::complex<double> u = a[i + j], v = times(a[i + j + half], w_[j * step]);
+        const std::complex<double> u = a[i + j], v = times(a[i + j + half], w[j]);
         a[i + j] = u + v;
         a[i + j + half] = u - v;
       }

@@ -39,7 +39,7 @@ class Fft {
 
  private:
   std::size_t n_;
-  std::vector<std::complex<double>> w_;  // e^{−2πik/n}, k < n/2
+  std::vector<std::complex<double>> w_;  // e^{−2πik/n}, k < n/2, then each stage's: see forward
   std::vector<std::size_t> rev_;         // bit reversal
 };
 
