@@ -12,11 +12,12 @@
 #include <gmcc/numerics/rational_to_float.h>
 #include <gmcc/numerics/truncated_quotient.h>
 
+#include <boost/container/small_vector.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <initializer_list>
 #include <memory>
 #include <numeric>
 #include <optional>
@@ -67,40 +68,9 @@ Filter filter_of(const IntegerPlane3& p) {
 }
 
 
-// A face's cycle of vertices: up to `in_place` of them inside the face, more in a vector (a clip
-// rewrites its faces at every cut; most have fewer vertices than that, and then no allocation).
-class Cycle {
- public:
-  Cycle() = default;
-  Cycle(std::initializer_list<int> v) { assign(v.begin(), v.end()); }
-  const int* begin() const { return data(); }
-  const int* end() const { return data() + n_; }
-  std::size_t size() const { return n_; }
-  bool empty() const { return n_ == 0; }
-  int back() const { return data()[n_ - 1]; }
-  int operator[](std::size_t k) const { return data()[k]; }
-  void clear() { n_ = 0, spilled_.clear(); }
-  void push_back(int v) {
-    if (n_ < in_place && spilled_.empty()) {
-      here_[n_++] = v;
-      return;
-    }
-    if (spilled_.empty()) spilled_.assign(here_, here_ + n_);
-    spilled_.push_back(v), ++n_;
-  }
-  template <class It>
-  void assign(It first, It last) {
-    clear();
-    for (; first != last; ++first) push_back(*first);
-  }
-
- private:
-  static constexpr std::size_t in_place = 12;
-  const int* data() const { return spilled_.empty() ? here_ : spilled_.data(); }
-  std::size_t n_ = 0;
-  int here_[in_place];
-  std::vector<int> spilled_;  // every vertex, when there are more than in_place
-};
+// A face's cycle of vertices: up to 12 of them inside the face, more on the heap (a clip rewrites
+// its faces at every cut; most have fewer vertices than that, and then no allocation).
+using Cycle = boost::container::small_vector<int, 12>;
 
 // The filter's doubles (VertexDoubles: homogeneous coordinates of the filter planes' solution,
 // W > 0, each within err[k] of the exact value, docs/derivations.md §4.6), and:

@@ -63,8 +63,8 @@ std::vector<ImageColours> image_hull_sets(const RgbImage& image, const PixelRule
     return image_colour_sets(image, rules, kept, sets);
   // The sieves' corners from a sample of the kept pixels (about `sample` of them, every
   // stride-th pixel): any colours of the image will do, since a colour strictly inside the hull of
-  // some of its colours is a vertex of neither hull; the full passes below would choose colours
-  // only slightly more extreme, at the cost of two more sweeps of every pixel.
+  // some of its colours is a vertex of neither hull; every kept pixel would give colours only
+  // slightly more extreme, at the cost of two more sweeps of the image.
   const std::size_t n = image.width * image.height, stride = std::max<std::size_t>(1, kept.counts.kept / sample);
   const auto each_sampled_colour = [&](const auto& f) {
     for (std::size_t i = 0; i < n; i += stride)
@@ -99,23 +99,23 @@ std::vector<ImageColours> image_hull_sets(const RgbImage& image, const PixelRule
   std::vector<std::uint8_t> slab_of_red(1 << 16);
   for (std::size_t r = 0; r < slab_of_red.size(); ++r) slab_of_red[r] = static_cast<std::uint8_t>(slab({double(r), 0, 0}));
   sieve_pass(image, rules.black_level, kept.kept, slab_of_red, sieves, keys);
-  // The colours kept, distinct and sorted, and their exact hull (its own filter first: a Q from
-  // their extreme colours, which the sample's need not be). One hull over every slab's colours
-  // measured faster than a hull per slab and then the hull of their vertices.
+  // The colours kept, distinct and sorted.
   internal::sort_keys_in_place(keys);
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-  std::vector<std::array<double, 3>> candidates;
-  candidates.reserve(keys.size());
-  for (std::uint64_t k : keys) candidates.push_back(colour_of(k));
-  std::vector<std::array<double, 3>> vertices;
-  for (std::size_t i : colour_hull_vertex_indices(candidates)) vertices.push_back(candidates[i]);
   std::vector<ImageColours> out;
   for (ColourSet set : sets) {
     ImageColours c;
     c.counts = kept.counts;
     c.set = set;
     if (set == ColourSet::hull_3d) {
-      for (const auto& v : vertices) c.colours.push_back({Rational(v[0]), Rational(v[1]), Rational(v[2])});
+      // Their exact hull (its own filter first: a Q from their extreme colours, which the
+      // sample's need not be). One hull over every slab's colours measured faster than a hull
+      // per slab and then the hull of their vertices.
+      std::vector<std::array<double, 3>> candidates;
+      candidates.reserve(keys.size());
+      for (std::uint64_t k : keys) candidates.push_back(colour_of(k));
+      for (std::size_t i : colour_hull_vertex_indices(candidates))
+        c.colours.push_back({Rational(candidates[i][0]), Rational(candidates[i][1]), Rational(candidates[i][2])});
     } else {  // the survivors hold every vertex of conv(S+): its chromaticity hull is theirs
       std::vector<std::array<std::uint16_t, 3>> pixels;
       for (std::uint64_t key : keys) {

@@ -53,7 +53,7 @@ ImageColours edge_colours(const RgbImage& image, const PixelRules& pixels, const
 /// count (`edges.order` is not read). The sweep is gaussian_derivative_rows with both orders
 /// asked, which makes the passes along x the two orders share once and hands on each order's
 /// values bit for bit; the pixel rules and the neighbourhood rule are applied once.
-/// 	hrows as edge_colours. Memory: as edge_colours, 48 bytes an edge pixel (both orders'
+/// \throws as edge_colours. Memory: as edge_colours, 48 bytes an edge pixel (both orders'
 /// colours) and the two-order sweep's rows.
 std::array<ImageColours, 2> edge_colours_both_orders(const RgbImage& image, const PixelRules& pixels,
                                                       const EdgeRules& edges);

@@ -44,7 +44,7 @@ class GcieGamuts {
 
 /// The score of plausible light l: Σ_j dist²(p_j, cone_l) over the image colours p_j, each
 /// distance the value of a non-negative least-squares problem (cone_distance.h), exactly; cone_l
-/// as in gcie_select. 0 exactly when every colour is consistent with l. 	hrows as gcie_select.
+/// as in gcie_select. 0 exactly when every colour is consistent with l. \throws as gcie_select.
 /// O(m + n·m) exact operations for m chromaticities and n colours.
 Rational gcie_score(const std::vector<Point2>& canonical_chromaticities, const Colour& canonical_light,
                     const Colour& light, const std::vector<Colour>& image_colours);
