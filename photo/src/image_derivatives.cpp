@@ -54,37 +54,56 @@ std::vector<double> kernel(double sigma, int order) {
 }
 
 // out[i] = (…((0 + k[0]·in[0][i]) + k[1]·in[1][i]) + …) + k[m−1]·in[m−1][i] for i < n: each
-// product rounded, then each sum, in the order of the terms (a convolution's sum term by term).
-// 32 outputs at a time, their partial sums held in registers while the terms stream past. On
-// x86-64 ELF with GCC it is compiled twice and the loader picks the clone the processor supports
-// (as GMCC_DW_FMA_CLONES, numerics/internal): the AVX2 clone makes the same operations four at a
-// time, with no fused multiply-add (AVX2 does not enable FMA), so the same bytes.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
-__attribute__((target_clones("avx2", "default")))
-#endif
-void weighted_sum(const double* k, const double* const* in, long m, double* out, long n) {
+// product rounded, then each sum, in the order of the terms (a convolution's sum term by term),
+// for K kernels k[j] over the same terms at once into out[j]: each term read once for all K.
+// 4·lanes outputs of each kernel at a time, their partial sums held in registers while the terms
+// stream past.
+template <long K, long lanes>
+inline __attribute__((always_inline)) void sums_of(const double* const* k, const double* const* in, long m,
+                                                   double* const* out, long n) {
   typedef double Four __attribute__((vector_size(32)));
-  constexpr long lanes = 8;  // vectors of partial sums
+  typedef double UnalignedFour __attribute__((vector_size(32), aligned(8)));  // a store to out
   long i = 0;
   for (; i + 4 * lanes <= n; i += 4 * lanes) {
-    Four sum[lanes];
-    for (long l = 0; l < lanes; ++l) sum[l] = Four{0.0, 0.0, 0.0, 0.0};
+    Four sum[K][lanes];
+    for (long j = 0; j < K; ++j)
+      for (long l = 0; l < lanes; ++l) sum[j][l] = Four{0.0, 0.0, 0.0, 0.0};
     for (long t = 0; t < m; ++t) {
-      const Four kt = {k[t], k[t], k[t], k[t]};
+      Four kt[K];
+      for (long j = 0; j < K; ++j) kt[j] = Four{k[j][t], k[j][t], k[j][t], k[j][t]};
       const double* p = in[t] + i;
       for (long l = 0; l < lanes; ++l) {
         Four x;
         std::memcpy(&x, p + 4 * l, sizeof x);
-        sum[l] += kt * x;
+        for (long j = 0; j < K; ++j) sum[j][l] += kt[j] * x;
       }
     }
-    for (long l = 0; l < lanes; ++l) std::memcpy(out + i + 4 * l, &sum[l], sizeof sum[l]);
+    // Each register stored whole: a copy through memory read back in halves stalled.
+    for (long j = 0; j < K; ++j)
+      for (long l = 0; l < lanes; ++l) *reinterpret_cast<UnalignedFour*>(out[j] + i + 4 * l) = sum[j][l];
   }
-  for (; i < n; ++i) {
-    double sum = 0.0;
-    for (long t = 0; t < m; ++t) sum += k[t] * in[t][i];
-    out[i] = sum;
-  }
+  for (; i < n; ++i)
+    for (long j = 0; j < K; ++j) {
+      double sum = 0.0;
+      for (long t = 0; t < m; ++t) sum += k[j][t] * in[t][i];
+      out[j][i] = sum;
+    }
+}
+
+// sums_of for `count` (1 to 3) kernels. On x86-64 ELF with GCC it is compiled twice and the
+// loader picks the clone the processor supports (as GMCC_DW_FMA_CLONES, numerics/internal): the
+// AVX2 clone makes the same operations four at a time, with no fused multiply-add (AVX2 does not
+// enable FMA), so the same bytes.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+void weighted_sums(const double* const* k, long count, const double* const* in, long m, double* const* out, long n) {
+  if (count == 1) sums_of<1, 8>(k, in, m, out, n);
+  else if (count == 2) sums_of<2, 4>(k, in, m, out, n);
+  else sums_of<3, 4>(k, in, m, out, n);
+}
+void weighted_sum(const double* k, const double* const* in, long m, double* out, long n) {
+  weighted_sums(&k, 1, in, m, &out, n);
 }
 
 // The image's rows as doubles: the linear image of an RgbImage (black level removed, clamped at
@@ -137,7 +156,7 @@ class XPasses {
         along_x_fft();
         continue;
       }
-      for (std::size_t k = 0; k < kernels_.size(); ++k) along_x(*kernels_[k], slot(k, next_));
+      along_x();
     }
   }
   // Kernel k's pass along x at row y (made, and within the last `slots` made).
@@ -146,25 +165,32 @@ class XPasses {
 
  private:
   double* slot(std::size_t k, long y) { return rings_[k].data() + (y % slots_) * 3 * w_; }
-  // One kernel along the source row in_ into out: per value, Σ_t k(t)·in(x − t) with t from −r
-  // to r in that order, x − t clamped (the edge replicated): the columns whose terms all lie inside
-  // the row by weighted_sum, the r at each end one by one.
-  void along_x(const std::vector<double>& kernel, double* out) const {
-    const auto one = [&](long x) {
-      for (long c = 0; c < 3; ++c) {
-        double sum = 0.0;
-        for (long t = -r_; t <= r_; ++t)
-          sum += kernel[static_cast<std::size_t>(t + r_)] * in_[static_cast<std::size_t>(3 * std::min(std::max(x - t, 0L), w_ - 1) + c)];
-        out[3 * x + c] = sum;
-      }
-    };
+  // Every kernel along the source row in_ into its slot of row next_: per value, Σ_t k(t)·in(x − t)
+  // with t from −r to r in that order, x − t clamped (the edge replicated): the columns whose
+  // terms all lie inside the row by weighted_sums (each term read once for every kernel), the r
+  // at each end one by one.
+  void along_x() {
     const long inner_first = std::min(r_, w_), inner_end = std::max(inner_first, w_ - r_);
-    for (long x = 0; x < inner_first; ++x) one(x);
+    const double* k[3];  // at most g, d1 and d2 (sweep_plan)
+    double* out[3];
+    for (std::size_t j = 0; j < kernels_.size(); ++j) {
+      k[j] = kernels_[j]->data(), out[j] = slot(j, next_);
+      const auto one = [&](long x) {
+        for (long c = 0; c < 3; ++c) {
+          double sum = 0.0;
+          for (long t = -r_; t <= r_; ++t)
+            sum += k[j][t + r_] * in_[static_cast<std::size_t>(3 * std::min(std::max(x - t, 0L), w_ - 1) + c)];
+          out[j][3 * x + c] = sum;
+        }
+      };
+      for (long x = 0; x < inner_first; ++x) one(x);
+      for (long x = inner_end; x < w_; ++x) one(x);
+    }
     if (inner_end > inner_first) {
       for (long t = -r_; t <= r_; ++t) terms_[static_cast<std::size_t>(t + r_)] = in_.data() + 3 * (inner_first - t);
-      weighted_sum(kernel.data(), terms_.data(), 2 * r_ + 1, out + 3 * inner_first, 3 * (inner_end - inner_first));
+      for (std::size_t j = 0; j < kernels_.size(); ++j) out[j] += 3 * inner_first;
+      weighted_sums(k, static_cast<long>(kernels_.size()), terms_.data(), 2 * r_ + 1, out, 3 * (inner_end - inner_first));
     }
-    for (long x = inner_end; x < w_; ++x) one(x);
   }
   // Every kernel along in_ by FFT (clamped_convolution.h): channels r and g as one complex
   // sequence, then b alone.
@@ -199,15 +225,30 @@ class XPasses {
   std::vector<std::complex<double>> z_, t_;
 };
 
-// The pass along y of kernel `k` over pass `along_x` of `x` at row y, into out (3·w values): per
-// value, Σ_t k(t)·row(y − t) with t from −r to r in that order, y − t clamped.
+// The passes along y: per result, the pass along x it reads and its kernel.
+struct YPass {
+  std::size_t along_x;
+  const std::vector<double>* kernel;
+};
+
+// The passes along y `group` (indices into `passes`, all over the same pass along x) at row y,
+// each into its results (3·w values): per value, Σ_t k(t)·row(y − t) with t from −r to r in that
+// order, y − t clamped; each row's terms read once for every pass of the group.
 template <class Source>
-void y_pass(const XPasses<Source>& x, std::size_t along_x, const std::vector<double>& k, long y, long w, long h,
-            double* out) {
+void y_passes(const XPasses<Source>& x, const std::vector<YPass>& passes, const std::vector<std::size_t>& group, long y,
+              long w, long h, std::vector<std::vector<double>>& results) {
   const long r = x.radius();
   std::vector<const double*> rows(static_cast<std::size_t>(2 * r + 1));
-  for (long t = -r; t <= r; ++t) rows[static_cast<std::size_t>(t + r)] = x.row(along_x, std::min(std::max(y - t, 0L), h - 1));
-  weighted_sum(k.data(), rows.data(), 2 * r + 1, out, 3 * w);
+  for (long t = -r; t <= r; ++t)
+    rows[static_cast<std::size_t>(t + r)] = x.row(passes[group.front()].along_x, std::min(std::max(y - t, 0L), h - 1));
+  for (std::size_t first = 0; first < group.size(); first += 3) {
+    const double* k[3];
+    double* out[3];
+    const std::size_t count = std::min<std::size_t>(3, group.size() - first);
+    for (std::size_t j = 0; j < count; ++j)
+      k[j] = passes[group[first + j]].kernel->data(), out[j] = results[group[first + j]].data();
+    weighted_sums(k, static_cast<long>(count), rows.data(), 2 * r + 1, out, 3 * w);
+  }
 }
 
 // The channels constant over the whole image (their derivatives are exactly 0).
@@ -230,12 +271,6 @@ double magnitude(double a, double b, double c, double squares) {
   return m * std::sqrt(a * a + 4 * c * c + b * b);
 }
 
-// The passes along y: per result, the pass along x it reads and its kernel.
-struct YPass {
-  std::size_t along_x;
-  const std::vector<double>* kernel;
-};
-
 // The orders a sweep makes, each from the passes along y it combines (indices into the sweep's
 // YPass list: f_σ; f_x, f_y; or f_xx, f_yy, f_xy).
 struct OrderPasses {
@@ -246,37 +281,41 @@ struct OrderPasses {
 // What one sweep hands on per row: each order's values (3·w), null for an order not asked.
 using OrderRows = std::array<const double*, 3>;
 
-// out[i] = sqrt(a[i]² + 4c[i]² + b[i]²) (c null: sqrt(a[i]² + b[i]²)), as magnitude() writes them,
-// for i < n: a correctly rounded square root, so the clones (weighted_sum) give the same bytes; the
-// sums are non-negative, so no errno is ever due (this file is compiled without errno for the
-// math functions, photo/CMakeLists.txt: the roots are then vector instructions).
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
-__attribute__((target_clones("avx2", "default")))
-#endif
-void root_sum_squares(const double* a, const double* b, const double* c, double* out, std::size_t n) {
-  if (c)
-    for (std::size_t i = 0; i < n; ++i) out[i] = std::sqrt(a[i] * a[i] + 4 * c[i] * c[i] + b[i] * b[i]);
-  else
-    for (std::size_t i = 0; i < n; ++i) out[i] = std::sqrt(a[i] * a[i] + b[i] * b[i]);
+// Whether a square root `root` (+0 or more, −0 or NaN) may be at most 2^-500 while a, b or c is
+// not 0: a root of an exact 0 needs no second look (magnitude() gives the same 0), and flat
+// regions of a photograph give many. The root is compared by its bits as a signed integer, which
+// orders non-negative doubles as their values do, with no branch; a −0 or a NaN with its sign bit
+// set counts, a NaN without it does not: the caller tests each value again.
+inline std::int64_t small_root(double root, double a, double b, double c) {
+  const std::int64_t bound = 0x20b0000000000000;  // the bits of 2^-500: biased exponent 1023 − 500
+  std::int64_t bits;
+  std::memcpy(&bits, &root, sizeof bits);
+  return (bits <= bound) & ((a != 0) | (b != 0) | (c != 0));
 }
 
-// Whether some root[i] (a square root: +0 or more, −0 or NaN) may be at most 2^-500 while a[i],
-// b[i] or c[i] is not 0, for i < n: a root of an exact 0 needs no second look (magnitude() gives
-// the same 0), and flat regions of a photograph give many. The roots are compared by their bits as
-// signed integers, which order non-negative doubles as their values do, with no branch (a vector
-// loop, with an AVX2 clone picked at load time as weighted_sum's); a −0 or a NaN with its sign bit
-// set counts, a NaN without it does not: the caller tests each value again.
+// out[i] = sqrt(a[i]² + 4c[i]² + b[i]²) (c null: sqrt(a[i]² + b[i]²)), as magnitude() writes them,
+// for i < n, and whether some out[i] is a small_root (the values a[i], b[i], c[i]): a correctly
+// rounded square root, so the clones (weighted_sum) give the same bytes; the sums are
+// non-negative, so no errno is ever due (this file is compiled without errno for the math
+// functions, photo/CMakeLists.txt: the roots are then vector instructions, and the test on each
+// root with them, without a second pass).
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-bool any_small_root(const double* root, const double* a, const double* b, const double* c, std::size_t n) {
-  const std::int64_t bound = 0x20b0000000000000;  // the bits of 2^-500: biased exponent 1023 − 500
+bool root_sum_squares(const double* a, const double* b, const double* c, double* out, std::size_t n) {
   std::int64_t any = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    std::int64_t bits;
-    std::memcpy(&bits, root + i, sizeof bits);
-    any |= (bits <= bound) & ((a[i] != 0) | (b[i] != 0) | (c[i] != 0));
-  }
+  if (c)
+    for (std::size_t i = 0; i < n; ++i) {
+      const double root = std::sqrt(a[i] * a[i] + 4 * c[i] * c[i] + b[i] * b[i]);
+      out[i] = root;
+      any |= small_root(root, a[i], b[i], c[i]);
+    }
+  else
+    for (std::size_t i = 0; i < n; ++i) {
+      const double root = std::sqrt(a[i] * a[i] + b[i] * b[i]);
+      out[i] = root;
+      any |= small_root(root, a[i], b[i], 0.0);
+    }
   return any != 0;
 }
 
@@ -295,9 +334,9 @@ void combine(DerivativeOrder order, const double* const* v, const std::array<boo
     std::copy(a, a + out.size(), out.begin());
     return;
   }
-  root_sum_squares(a, b, c, out.data(), out.size());
+  const bool any_small = root_sum_squares(a, b, c, out.data(), out.size());
   const std::array<bool, 3> is_flat = flat;
-  if (any_small_root(out.data(), a, b, c ? c : a, out.size()))
+  if (any_small)
     for (std::size_t first = 0; first < out.size(); first += 3)
       for (std::size_t i = first; i < first + 3; ++i)
         if (!is_flat[i - first] && needs_magnitude(out[i], a[i], b[i], c ? c[i] : 0))
@@ -338,11 +377,13 @@ void direct_rows(const Source& source, long w, long h, const std::vector<const s
   XPasses<Source> x(source, static_cast<std::size_t>(w), along_x,
                     std::min<long>(h, 2 * static_cast<long>(along_x.front()->size() / 2) + 1));
   std::vector<std::vector<double>> results(passes.size(), std::vector<double>(static_cast<std::size_t>(3 * w)));
+  std::vector<std::vector<std::size_t>> groups(along_x.size());  // the passes along y by the pass along x they read
+  for (std::size_t p = 0; p < passes.size(); ++p) groups[passes[p].along_x].push_back(p);
   for (long y = 0; y < h; ++y) {
     x.make_to(std::min(h - 1, y + x.radius()));
     check_interrupt();
-    for (std::size_t p = 0; p < passes.size(); ++p)
-      y_pass(x, passes[p].along_x, *passes[p].kernel, y, w, h, results[p].data());
+    for (const std::vector<std::size_t>& group : groups)
+      if (!group.empty()) y_passes(x, passes, group, y, w, h, results);
     combiner(results, 0, static_cast<std::size_t>(y), row);
   }
 }
