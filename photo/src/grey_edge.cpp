@@ -3,7 +3,9 @@
 #include "internal/names.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 namespace gmcc {
@@ -90,6 +92,47 @@ void sweep(const RgbImage& image, std::uint32_t black_level, const std::vector<b
                            });
 }
 
+// At σ = 0 a baseline's values are the linear samples: max(s, black) − black of each 16-bit
+// sample s, integers (image_derivatives.h's linear image). Per kept pixel in pixel order, f(c, v)
+// for each channel c and value v.
+template <class F>
+void kept_linear_samples(const RgbImage& image, std::uint32_t black, const std::vector<bool>& kept, const F& f) {
+  const std::size_t pixels = image.width * image.height;
+  const std::uint16_t* s = image.samples.data();
+  for (std::size_t p = 0; p < pixels; ++p, s += 3)
+    if (kept[p])
+      for (int c = 0; c < 3; ++c) f(c, s[c] > black ? std::uint32_t{s[c]} - black : 0u);
+}
+
+// The first sweep at σ = 0 (order 0: the largest values and Σ v) in integers. Σ v in doubles in
+// pixel order is exact while the total is below 2^53, every partial sum being an integer at most
+// the total: the integer total converted is then the same double. False, and `n` untouched, when
+// some channel's total is not (more than 2^37 kept pixels): the double sweep is then due.
+bool integer_first_sweep(const RgbImage& image, std::uint32_t black, const std::vector<bool>& kept, Norm& n) {
+  std::array<std::uint32_t, 3> top{0, 0, 0};
+  std::array<std::uint64_t, 3> sum{0, 0, 0};  // below 2^64: at most 2^16 per sample and 2^47 pixels (image limits)
+  kept_linear_samples(image, black, kept, [&](int c, std::uint32_t v) {
+    top[static_cast<std::size_t>(c)] = std::max(top[static_cast<std::size_t>(c)], v);
+    sum[static_cast<std::size_t>(c)] += v;
+  });
+  for (std::uint64_t t : sum)
+    if (t >= (std::uint64_t{1} << 53)) return false;
+  for (std::size_t c = 0; c < 3; ++c) n.top[c] = double(top[c]), n.plain[c] = double(sum[c]);
+  return true;
+}
+
+// The second sweep at σ = 0 from the samples, when the terms are tables (Norm::make_powers): the
+// same terms summed in pixel order. False, and `n` untouched, without the tables.
+bool integer_sums(const RgbImage& image, std::uint32_t black, const std::vector<bool>& kept, Norm& n) {
+  if (n.powers[2].empty()) return false;
+  std::array<double, 3> sum = n.sum;
+  kept_linear_samples(image, black, kept, [&](int c, std::uint32_t v) {
+    sum[static_cast<std::size_t>(c)] += n.powers[static_cast<std::size_t>(c)][v];
+  });
+  n.sum = sum;
+  return true;
+}
+
 // The light from a baseline's sums: unit length, absent when some channel's structure is 0.
 std::optional<std::array<double, 3>> light_of(const Norm& n) {
   if (n.zero()) return std::nullopt;
@@ -135,6 +178,10 @@ std::vector<std::optional<std::array<double, 3>>> grey_edge_estimates(const RgbI
       std::size_t& first = first_of[static_cast<std::size_t>(all[k].parameters.order)];
       if (first == all.size()) first = k, firsts.push_back(k);
     }
+    // At σ = 0 (order 0 alone: another order refuses σ 0 in the sweep) from the samples.
+    const bool linear = all[i].parameters.sigma == 0 && firsts.size() == 1 &&
+                        all[firsts.front()].parameters.order == DerivativeOrder::zero;
+    if (linear && integer_first_sweep(image, black_level, kept, all[firsts.front()])) firsts.clear();
     // Each sum in its own variable, in pixel order (the same bytes as summing into the Norm).
     sweep(image, black_level, kept, all, firsts, [](Norm& n, const double* s, const std::vector<std::size_t>& columns) {
       std::array<double, 3> top = n.top, plain = n.plain;
@@ -152,6 +199,11 @@ std::vector<std::optional<std::array<double, 3>>> grey_edge_estimates(const RgbI
     }
     for (std::size_t k : group)
       if (all[k].sums()) summed.push_back(k), all[k].make_powers();
+    // At σ = 0 with the terms' tables, from the samples: the others in a second sweep.
+    if (linear)
+      summed.erase(std::remove_if(summed.begin(), summed.end(),
+                                  [&](std::size_t k) { return integer_sums(image, black_level, kept, all[k]); }),
+                   summed.end());
     sweep(image, black_level, kept, all, summed, [](Norm& n, const double* s, const std::vector<std::size_t>& columns) {
       std::array<double, 3> sum = n.sum;
       for (std::size_t i : columns)

@@ -467,6 +467,37 @@ BOOST_AUTO_TEST_CASE(grey_edge_from_the_samples) {
   BOOST_CHECK_THROW(grey_edge_estimate(im, 0, std::vector<bool>(3), GreyEdgeParameters{}), std::invalid_argument);
 }
 
+BOOST_AUTO_TEST_CASE(baselines_at_sigma_0_are_the_sums_in_pixel_order_bit_for_bit) {
+  // At σ = 0 the values are the linear samples, integers: the largest values and Σ v are taken in
+  // integers and the terms (v/largest)^p from tables (photo/src/grey_edge.cpp). Each light must be
+  // the bytes of the sums written out here in doubles, in pixel order, over the full 16-bit range,
+  // a black level and a random mask.
+  std::mt19937 rng(29);
+  RgbImage im;
+  im.width = 97, im.height = 61;
+  std::uniform_int_distribution<int> sample(0, 65535), coin(0, 3);
+  for (std::size_t i = 0; i < 3 * im.width * im.height; ++i) im.samples.push_back(static_cast<std::uint16_t>(sample(rng)));
+  std::vector<bool> kept(im.width * im.height);
+  for (std::size_t i = 0; i < kept.size(); ++i) kept[i] = coin(rng) != 0;
+  const std::uint32_t black = 2048;
+  for (double p : {1.0, HUGE_VAL, 6.0, 3.0, 1.5}) {
+    std::array<double, 3> top{0, 0, 0}, plain{0, 0, 0}, sum{0, 0, 0}, e{};
+    for (std::size_t i = 0; i < kept.size(); ++i)
+      for (std::size_t c = 0; c < 3 && kept[i]; ++c) {
+        const double v = im.samples[3 * i + c] > black ? double(im.samples[3 * i + c] - black) : 0.0;
+        top[c] = std::max(top[c], v), plain[c] += v;
+      }
+    for (std::size_t i = 0; i < kept.size(); ++i)
+      for (std::size_t c = 0; c < 3 && kept[i]; ++c)
+        sum[c] += std::pow((im.samples[3 * i + c] > black ? double(im.samples[3 * i + c] - black) : 0.0) / top[c], p);
+    for (std::size_t c = 0; c < 3; ++c) e[c] = p == 1 ? plain[c] : std::isfinite(p) ? top[c] * std::pow(sum[c], 1 / p) : top[c];
+    const double length = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+    const auto got = grey_edge_estimate(im, black, kept, GreyEdgeParameters{DerivativeOrder::zero, p, 0});
+    BOOST_TEST_REQUIRE(got.has_value());
+    for (std::size_t c = 0; c < 3; ++c) BOOST_TEST((*got)[c] == e[c] / length, "p " << p << " channel " << c);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(baselines_together_are_each_alone) {
   // The benchmark asks for its baselines together (one sweep per σ for the largest values, one
   // for the sums): each light is bit for bit the one asked alone, in the order asked, whatever
