@@ -93,15 +93,16 @@ void sweep(const RgbImage& image, std::uint32_t black_level, const std::vector<b
 }
 
 // At σ = 0 a baseline's values are the linear samples: max(s, black) − black of each 16-bit
-// sample s, integers (image_derivatives.h's linear image). Per kept pixel in pixel order, f(c, v)
-// for each channel c and value v.
+// sample s, integers (image_derivatives.h's linear image). Per kept pixel in pixel order,
+// f(v0, v1, v2) with its three values; f keeps its sums in locals of its own (in registers: sums
+// in an array that a lambda captures went through memory at every pixel).
 template <class F>
-void kept_linear_samples(const RgbImage& image, std::uint32_t black, const std::vector<bool>& kept, const F& f) {
-  const std::size_t pixels = image.width * image.height;
+void kept_linear_samples(const RgbImage& image, std::uint32_t black, const std::vector<bool>& kept, F&& f) {
   const std::uint16_t* s = image.samples.data();
-  for (std::size_t p = 0; p < pixels; ++p, s += 3)
-    if (kept[p])
-      for (int c = 0; c < 3; ++c) f(c, s[c] > black ? std::uint32_t{s[c]} - black : 0u);
+  for (auto k = kept.begin(); k != kept.end(); ++k, s += 3)  // the mask's bits one after another
+    if (*k)
+      f(std::max<std::uint32_t>(s[0], black) - black, std::max<std::uint32_t>(s[1], black) - black,
+        std::max<std::uint32_t>(s[2], black) - black);
 }
 
 // The first sweep at σ = 0 (order 0: the largest values and Σ v) in integers. Σ v in doubles in
@@ -109,15 +110,18 @@ void kept_linear_samples(const RgbImage& image, std::uint32_t black, const std::
 // the total: the integer total converted is then the same double. False, and `n` untouched, when
 // some channel's total is not (more than 2^37 kept pixels): the double sweep is then due.
 bool integer_first_sweep(const RgbImage& image, std::uint32_t black, const std::vector<bool>& kept, Norm& n) {
-  std::array<std::uint32_t, 3> top{0, 0, 0};
-  std::array<std::uint64_t, 3> sum{0, 0, 0};  // below 2^64: at most 2^16 per sample and 2^47 pixels (image limits)
-  kept_linear_samples(image, black, kept, [&](int c, std::uint32_t v) {
-    top[static_cast<std::size_t>(c)] = std::max(top[static_cast<std::size_t>(c)], v);
-    sum[static_cast<std::size_t>(c)] += v;
-  });
-  for (std::uint64_t t : sum)
+  struct {
+    std::uint32_t t0 = 0, t1 = 0, t2 = 0;
+    std::uint64_t s0 = 0, s1 = 0, s2 = 0;  // below 2^64: at most 2^16 a sample, 2^28 pixels (max_image_pixels)
+    void operator()(std::uint32_t v0, std::uint32_t v1, std::uint32_t v2) {
+      t0 = std::max(t0, v0), t1 = std::max(t1, v1), t2 = std::max(t2, v2);
+      s0 += v0, s1 += v1, s2 += v2;
+    }
+  } f;
+  kept_linear_samples(image, black, kept, f);
+  for (std::uint64_t t : {f.s0, f.s1, f.s2})
     if (t >= (std::uint64_t{1} << 53)) return false;
-  for (std::size_t c = 0; c < 3; ++c) n.top[c] = double(top[c]), n.plain[c] = double(sum[c]);
+  n.top = {double(f.t0), double(f.t1), double(f.t2)}, n.plain = {double(f.s0), double(f.s1), double(f.s2)};
   return true;
 }
 
@@ -125,11 +129,13 @@ bool integer_first_sweep(const RgbImage& image, std::uint32_t black, const std::
 // same terms summed in pixel order. False, and `n` untouched, without the tables.
 bool integer_sums(const RgbImage& image, std::uint32_t black, const std::vector<bool>& kept, Norm& n) {
   if (n.powers[2].empty()) return false;
-  std::array<double, 3> sum = n.sum;
-  kept_linear_samples(image, black, kept, [&](int c, std::uint32_t v) {
-    sum[static_cast<std::size_t>(c)] += n.powers[static_cast<std::size_t>(c)][v];
-  });
-  n.sum = sum;
+  struct {
+    const double *p0, *p1, *p2;
+    double s0, s1, s2;
+    void operator()(std::uint32_t v0, std::uint32_t v1, std::uint32_t v2) { s0 += p0[v0], s1 += p1[v1], s2 += p2[v2]; }
+  } f{n.powers[0].data(), n.powers[1].data(), n.powers[2].data(), n.sum[0], n.sum[1], n.sum[2]};
+  kept_linear_samples(image, black, kept, f);
+  n.sum = {f.s0, f.s1, f.s2};
   return true;
 }
 
