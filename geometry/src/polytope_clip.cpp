@@ -725,14 +725,37 @@ class Clipper {
     return wides_[static_cast<std::size_t>(k)];
   }
 
-  // Vertex v's truncated coordinates from its planes' double-word copies, when decided.
+  // Vertex v's truncated coordinates from its planes' double-word copies, when decided, the cross
+  // products of its pairs of planes shared with the other vertices on the same two planes.
   std::optional<LazyConvexSet3::TruncatedVertex> truncated(const Vertex& v) {
     const std::optional<WidePlane> p = wide(v.planes[0]), q = wide(v.planes[1]), r = wide(v.planes[2]);
     if (!p || !q || !r) return std::nullopt;
     std::array<bool, 3> zero_axis{};  // on the box side x_k >= 0 (plane k): x_k = 0
     for (int t : v.planes)
       if (t < 3) zero_axis[static_cast<std::size_t>(t)] = true;
-    return truncated_meet(*p, *q, *r, zero_axis);
+    const int a = v.planes[0], b = v.planes[1], c = v.planes[2];
+    return truncated_meet(*p, *q, *r, shared_cross(b, c, *q, *r), shared_cross(c, a, *r, *p),
+                          shared_cross(a, b, *p, *q), zero_axis);
+  }
+
+  // An enclosure of a_s × a_u from the planes' double-word copies ws, wu: made once for each pair
+  // of planes (as a_min × a_max, its negation, exact, for the other order), kept in a table
+  // (open addressing, `crosses_` slots) that result() clears. A final vertex's three pairs of
+  // planes are edges of the polytope where the vertex is simple, each shared with the vertex at
+  // the edge's other end.
+  WideCross shared_cross(int s, int u, const WidePlane& ws, const WidePlane& wu) {
+    const bool swap = s > u;
+    const std::uint64_t key = swap ? (std::uint64_t(std::uint32_t(u)) << 32 | std::uint32_t(s))
+                                   : (std::uint64_t(std::uint32_t(s)) << 32 | std::uint32_t(u));
+    const std::size_t mask = cross_slot_.size() - 1;
+    std::size_t h = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 40) & mask;
+    while (cross_slot_[h].key != key && cross_slot_[h].key != kNoPair) h = (h + 1) & mask;
+    CrossSlot& e = cross_slot_[h];
+    if (e.key == kNoPair) {
+      e.key = key, e.index = crosses_.size();
+      crosses_.push_back(swap ? wide_cross(wu, ws) : wide_cross(ws, wu));
+    }
+    return swap ? negated(crosses_[e.index]) : crosses_[e.index];
   }
 
   // The same from exact homogeneous coordinates (as LazyConvexSet3::from_homogeneous reads them:
@@ -769,6 +792,10 @@ class Clipper {
       faces.push_back(std::move(c));
     }
     wide_index_.assign(filters_.size(), -1);
+    std::size_t slots = 16;
+    while (slots < 6 * n) slots *= 2;  // at most 3n pairs, the table at most half full
+    cross_slot_.assign(slots, CrossSlot{});
+    crosses_.reserve(3 * n);
     auto meets = std::make_shared<PlaneMeets>();
     meets->meets.resize(n), meets->made.resize(n), meets->planes.reserve(3 * n), meets->rows.reserve(3 * n);
     std::vector<LazyConvexSet3::TruncatedVertex> vertices;
@@ -893,6 +920,13 @@ class Clipper {
   std::vector<std::optional<WidePlane>> box_wide_;    // the box sides' double-word copies
   std::vector<int> wide_index_;                        // wide(): each row's index in wides_, or -1
   std::vector<std::optional<WidePlane>> wides_;        // wide(): the rows' copies made so far
+  static constexpr std::uint64_t kNoPair = ~std::uint64_t(0);
+  struct CrossSlot {
+    std::uint64_t key = kNoPair;  // the pair of planes (lower << 32 | higher), or none
+    std::size_t index = 0;        // its cross product in crosses_
+  };
+  std::vector<CrossSlot> cross_slot_;  // shared_cross(): the table of pairs of planes
+  std::vector<WideCross> crosses_;     // shared_cross(): their cross products
   std::array<mpz_class, 4> homogeneous_;           // scratch for exact_homogeneous
   mpz_class side_;                                  // scratch for side
 };
