@@ -172,9 +172,12 @@ class Clipper {
     for (int k = 0; k < 3; ++k) c[k] = coord(box, k).get_d() / 2;
     // Each row's distance; a constant row (a = 0) first, one without a filter copy last.
     const std::size_t n = order_.size();
-    std::vector<double> d(n);
-    std::vector<std::uint32_t> kept(n);  // positions in order_ of the rows the box does not settle
-    std::size_t m = 0;                   // how many (each written, kept without a branch)
+    // Scratch written before it is read, left uninitialised (`new T[n]`, no zeroing pass).
+    const std::unique_ptr<double[]> d(new double[n]);
+    // kept: positions in order_ of the rows the box does not settle; m how many (each written, kept
+    // without a branch).
+    const std::unique_ptr<std::uint32_t[]> kept(new std::uint32_t[n]);
+    std::size_t m = 0;
     double lo = HUGE_VAL, hi = -HUGE_VAL;
     for (std::size_t k = 0; k < n; ++k) {
       const Filter& f = filters_[order_[k]];
@@ -184,26 +187,25 @@ class Clipper {
       const bool settled = f.usable ? filter_.box_inside(f.c) : false;
       kept[m] = static_cast<std::uint32_t>(k), m += !settled;
     }
-    kept.resize(m);
     // A stable sort into `levels` equal bands of distance, deepest band first, each band in the
     // order it had (a comparison sort's mispredicted branches cost more than it gained): band
     // numbers below 2^14, sorted by their low 7 bits, then stably by the high 7 (an LSD radix
     // sort, the same order as one counting pass over every band at a fraction of the counts).
     constexpr std::size_t levels = 4096;
     const double scale = hi > lo ? double(levels - 1) / (hi - lo) : 0;
-    std::vector<std::uint16_t> band(m);
+    const std::unique_ptr<std::uint16_t[]> band(new std::uint16_t[m]);
     for (std::size_t j = 0; j < m; ++j) {
       const double x = d[kept[j]];
       band[j] = x == HUGE_VAL ? 0 : x == -HUGE_VAL || std::isnan(x) ? levels + 1
                 : static_cast<std::uint16_t>(1 + std::min(double(levels - 1), std::floor((hi - x) * scale)));
     }
-    std::vector<std::uint32_t> index(m), sorted(m);
+    std::unique_ptr<std::uint32_t[]> index(new std::uint32_t[m]), sorted(new std::uint32_t[m]);
     for (std::size_t j = 0; j < m; ++j) index[j] = static_cast<std::uint32_t>(j);
     for (const int shift : {0, 7}) {
       std::array<std::uint32_t, 129> start{};
       for (std::size_t j = 0; j < m; ++j) ++start[((band[j] >> shift) & 127u) + 1u];
       for (std::size_t b = 0; b + 1 < start.size(); ++b) start[b + 1] += start[b];
-      for (const std::uint32_t j : index) sorted[start[(band[j] >> shift) & 127u]++] = j;
+      for (std::size_t t = 0; t < m; ++t) sorted[start[(band[index[t]] >> shift) & 127u]++] = index[t];
       index.swap(sorted);
     }
     std::vector<std::size_t> rows(m);
@@ -795,7 +797,7 @@ class Clipper {
     std::size_t slots = 16;
     while (slots < 6 * n) slots *= 2;  // at most 3n pairs, the table at most half full
     cross_slot_.assign(slots, CrossSlot{});
-    crosses_.reserve(3 * n);
+    crosses_.clear(), crosses_.reserve(3 * n);
     auto meets = std::make_shared<PlaneMeets>();
     meets->meets.resize(n), meets->made.resize(n), meets->planes.reserve(3 * n), meets->rows.reserve(3 * n);
     std::vector<LazyConvexSet3::TruncatedVertex> vertices;
