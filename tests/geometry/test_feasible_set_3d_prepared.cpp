@@ -12,11 +12,11 @@
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/geometry/integers_over_lcm.h>
 #include <gmcc/geometry/point3_arithmetic.h>
+#include <gmcc/numerics/truncated_quotient.h>
 
 #include "internal/clip_filter.h"
 #include "internal/crule_exact.h"
 #include "internal/plane_meets.h"
-#include <gmcc/numerics/truncated_quotient.h>
 #include "internal/polytope_clip.h"
 #include "support/cgal_references.h"
 

@@ -47,7 +47,8 @@ WideCross negated(const WideCross& c);
 // truncated_meet with the three cross products given: c_qr ∋ a_q × a_r, c_rp ∋ a_r × a_p,
 // c_pq ∋ a_p × a_q (any enclosures of them: wide_cross's, or one's negation for the planes the
 // other way round, shared between vertices that meet on the same two planes). A decided
-// truncation is the exact coordinate's, whichever enclosures decided it.
+// truncation is the exact coordinate's, whichever enclosures decided it (docs/derivations.md
+// §4.6: the enclosures contain the exact cross products, so X_k/W's enclosure contains x_k).
 std::optional<LazyConvexSet3::TruncatedVertex> truncated_meet(const WidePlane& p, const WidePlane& q,
                                                               const WidePlane& r, const WideCross& c_qr,
                                                               const WideCross& c_rp, const WideCross& c_pq,
