@@ -53,25 +53,34 @@ void homogeneous_meet(const IntegerPlane3& p, const IntegerPlane3& q, const Inte
   mpz_addmul(h[3].get_mpz_t(), p.a[2].get_mpz_t(), c[0][2].get_mpz_t());
 }
 
+GMCC_DW_FMA_CLONES WideCross wide_cross(const WidePlane& s, const WidePlane& u) {
+  WideCross out;
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    out[k] = s[i] * u[j] - s[j] * u[i];
+  }
+  return out;
+}
+
+WideCross negated(const WideCross& c) { return {-c[0], -c[1], -c[2]}; }
+
+std::optional<LazyConvexSet3::TruncatedVertex> truncated_meet(const WidePlane& p, const WidePlane& q,
+                                                              const WidePlane& r, const std::array<bool, 3>& zero_axis) {
+  return truncated_meet(p, q, r, wide_cross(q, r), wide_cross(r, p), wide_cross(p, q), zero_axis);
+}
+
 // The same Cramer's rule on enclosures (dw_enclosure.h: every operation's enclosure contains the
 // exact result of the operation on any points of its operands' enclosures), so each x_k = X_k/W
 // is enclosed; its truncation is then decided exactly (truncate_to_double) or not at all.
 GMCC_DW_FMA_CLONES std::optional<LazyConvexSet3::TruncatedVertex> truncated_meet(
-    const WidePlane& p, const WidePlane& q, const WidePlane& r, const std::array<bool, 3>& zero_axis) {
+    const WidePlane& p, const WidePlane& q, const WidePlane& r, const WideCross& c_qr, const WideCross& c_rp,
+    const WideCross& c_pq, const std::array<bool, 3>& zero_axis) {
   using numerics::DWEnclosure;
-  auto cross = [](const WidePlane& s, const WidePlane& u, std::array<DWEnclosure, 3>& out) {
-    for (int k = 0; k < 3; ++k) {
-      const int i = (k + 1) % 3, j = (k + 2) % 3;
-      out[k] = s[i] * u[j] - s[j] * u[i];
-    }
-  };
-  std::array<DWEnclosure, 3> c[3];
-  cross(q, r, c[0]), cross(r, p, c[1]), cross(p, q, c[2]);
-  const DWEnclosure w = p[0] * c[0][0] + p[1] * c[0][1] + p[2] * c[0][2];
+  const DWEnclosure w = p[0] * c_qr[0] + p[1] * c_qr[1] + p[2] * c_qr[2];
   LazyConvexSet3::TruncatedVertex out{{0, 0, 0}, zero_axis[0] && zero_axis[1] && zero_axis[2]};
   for (std::size_t k = 0; k < 3; ++k) {
     if (zero_axis[k]) continue;  // exactly 0
-    const DWEnclosure x = (p[3] * c[0][k] + q[3] * c[1][k] + r[3] * c[2][k]) / w;
+    const DWEnclosure x = (p[3] * c_qr[k] + q[3] * c_rp[k] + r[3] * c_pq[k]) / w;
     const std::optional<double> t = numerics::truncate_to_double(x);
     if (!t || *t == 0 || !(std::fabs(*t) >= 0x1p-136 && std::fabs(*t) <= 0x1p136)) return std::nullopt;
     out.truncated[k] = *t;

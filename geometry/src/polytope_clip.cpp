@@ -172,9 +172,12 @@ class Clipper {
     for (int k = 0; k < 3; ++k) c[k] = coord(box, k).get_d() / 2;
     // Each row's distance; a constant row (a = 0) first, one without a filter copy last.
     const std::size_t n = order_.size();
-    std::vector<double> d(n);
-    std::vector<std::uint32_t> kept(n);  // positions in order_ of the rows the box does not settle
-    std::size_t m = 0;                   // how many (each written, kept without a branch)
+    // Scratch written before it is read, left uninitialised (`new T[n]`, no zeroing pass).
+    const std::unique_ptr<double[]> d(new double[n]);
+    // kept: positions in order_ of the rows the box does not settle; m how many (each written, kept
+    // without a branch).
+    const std::unique_ptr<std::uint32_t[]> kept(new std::uint32_t[n]);
+    std::size_t m = 0;
     double lo = HUGE_VAL, hi = -HUGE_VAL;
     for (std::size_t k = 0; k < n; ++k) {
       const Filter& f = filters_[order_[k]];
@@ -184,26 +187,25 @@ class Clipper {
       const bool settled = f.usable ? filter_.box_inside(f.c) : false;
       kept[m] = static_cast<std::uint32_t>(k), m += !settled;
     }
-    kept.resize(m);
     // A stable sort into `levels` equal bands of distance, deepest band first, each band in the
     // order it had (a comparison sort's mispredicted branches cost more than it gained): band
     // numbers below 2^14, sorted by their low 7 bits, then stably by the high 7 (an LSD radix
     // sort, the same order as one counting pass over every band at a fraction of the counts).
     constexpr std::size_t levels = 4096;
     const double scale = hi > lo ? double(levels - 1) / (hi - lo) : 0;
-    std::vector<std::uint16_t> band(m);
+    const std::unique_ptr<std::uint16_t[]> band(new std::uint16_t[m]);
     for (std::size_t j = 0; j < m; ++j) {
       const double x = d[kept[j]];
       band[j] = x == HUGE_VAL ? 0 : x == -HUGE_VAL || std::isnan(x) ? levels + 1
                 : static_cast<std::uint16_t>(1 + std::min(double(levels - 1), std::floor((hi - x) * scale)));
     }
-    std::vector<std::uint32_t> index(m), sorted(m);
+    std::unique_ptr<std::uint32_t[]> index(new std::uint32_t[m]), sorted(new std::uint32_t[m]);
     for (std::size_t j = 0; j < m; ++j) index[j] = static_cast<std::uint32_t>(j);
     for (const int shift : {0, 7}) {
       std::array<std::uint32_t, 129> start{};
       for (std::size_t j = 0; j < m; ++j) ++start[((band[j] >> shift) & 127u) + 1u];
       for (std::size_t b = 0; b + 1 < start.size(); ++b) start[b + 1] += start[b];
-      for (const std::uint32_t j : index) sorted[start[(band[j] >> shift) & 127u]++] = j;
+      for (std::size_t t = 0; t < m; ++t) sorted[start[(band[index[t]] >> shift) & 127u]++] = index[t];
       index.swap(sorted);
     }
     std::vector<std::size_t> rows(m);
@@ -725,14 +727,37 @@ class Clipper {
     return wides_[static_cast<std::size_t>(k)];
   }
 
-  // Vertex v's truncated coordinates from its planes' double-word copies, when decided.
+  // Vertex v's truncated coordinates from its planes' double-word copies, when decided, the cross
+  // products of its pairs of planes shared with the other vertices on the same two planes.
   std::optional<LazyConvexSet3::TruncatedVertex> truncated(const Vertex& v) {
     const std::optional<WidePlane> p = wide(v.planes[0]), q = wide(v.planes[1]), r = wide(v.planes[2]);
     if (!p || !q || !r) return std::nullopt;
     std::array<bool, 3> zero_axis{};  // on the box side x_k >= 0 (plane k): x_k = 0
     for (int t : v.planes)
       if (t < 3) zero_axis[static_cast<std::size_t>(t)] = true;
-    return truncated_meet(*p, *q, *r, zero_axis);
+    const int a = v.planes[0], b = v.planes[1], c = v.planes[2];
+    return truncated_meet(*p, *q, *r, shared_cross(b, c, *q, *r), shared_cross(c, a, *r, *p),
+                          shared_cross(a, b, *p, *q), zero_axis);
+  }
+
+  // An enclosure of a_s × a_u from the planes' double-word copies ws, wu: made once for each pair
+  // of planes (as a_min × a_max, its negation, exact, for the other order), kept in a table
+  // (open addressing, `crosses_` slots) that result() clears. A final vertex's three pairs of
+  // planes are edges of the polytope where the vertex is simple, each shared with the vertex at
+  // the edge's other end.
+  WideCross shared_cross(int s, int u, const WidePlane& ws, const WidePlane& wu) {
+    const bool swap = s > u;
+    const std::uint64_t key = swap ? (std::uint64_t(std::uint32_t(u)) << 32 | std::uint32_t(s))
+                                   : (std::uint64_t(std::uint32_t(s)) << 32 | std::uint32_t(u));
+    const std::size_t mask = cross_slot_.size() - 1;
+    std::size_t h = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 40) & mask;
+    while (cross_slot_[h].key != key && cross_slot_[h].key != kNoPair) h = (h + 1) & mask;
+    CrossSlot& e = cross_slot_[h];
+    if (e.key == kNoPair) {
+      e.key = key, e.index = crosses_.size();
+      crosses_.push_back(swap ? wide_cross(wu, ws) : wide_cross(ws, wu));
+    }
+    return swap ? negated(crosses_[e.index]) : crosses_[e.index];
   }
 
   // The same from exact homogeneous coordinates (as LazyConvexSet3::from_homogeneous reads them:
@@ -769,6 +794,10 @@ class Clipper {
       faces.push_back(std::move(c));
     }
     wide_index_.assign(filters_.size(), -1);
+    std::size_t slots = 16;
+    while (slots < 6 * n) slots *= 2;  // at most 3n pairs, the table at most half full
+    cross_slot_.assign(slots, CrossSlot{});
+    crosses_.clear(), crosses_.reserve(3 * n);
     auto meets = std::make_shared<PlaneMeets>();
     meets->meets.resize(n), meets->made.resize(n), meets->planes.reserve(3 * n), meets->rows.reserve(3 * n);
     std::vector<LazyConvexSet3::TruncatedVertex> vertices;
@@ -893,6 +922,13 @@ class Clipper {
   std::vector<std::optional<WidePlane>> box_wide_;    // the box sides' double-word copies
   std::vector<int> wide_index_;                        // wide(): each row's index in wides_, or -1
   std::vector<std::optional<WidePlane>> wides_;        // wide(): the rows' copies made so far
+  static constexpr std::uint64_t kNoPair = ~std::uint64_t(0);
+  struct CrossSlot {
+    std::uint64_t key = kNoPair;  // the pair of planes (lower << 32 | higher), or none
+    std::size_t index = 0;        // its cross product in crosses_
+  };
+  std::vector<CrossSlot> cross_slot_;  // shared_cross(): the table of pairs of planes
+  std::vector<WideCross> crosses_;     // shared_cross(): their cross products
   std::array<mpz_class, 4> homogeneous_;           // scratch for exact_homogeneous
   mpz_class side_;                                  // scratch for side
 };

@@ -12,9 +12,11 @@
 #include <gmcc/geometry/feasible_set_3d.h>
 #include <gmcc/geometry/integers_over_lcm.h>
 #include <gmcc/geometry/point3_arithmetic.h>
+#include <gmcc/numerics/truncated_quotient.h>
 
 #include "internal/clip_filter.h"
 #include "internal/crule_exact.h"
+#include "internal/plane_meets.h"
 #include "internal/polytope_clip.h"
 #include "support/cgal_references.h"
 
@@ -852,4 +854,58 @@ BOOST_AUTO_TEST_CASE(one_hull_gives_the_facets_and_the_vertices) {
     ++checked;
   }
   BOOST_TEST(checked > 40);
+}
+
+// The final vertices' truncated coordinates with cross products shared between vertices on the
+// same two planes (the clip makes a_min × a_max once and negates it for the other order;
+// internal/plane_meets.h): on random triples of integer planes — coefficients of 12, 60 and 200
+// bits, signed, some planes sharing coefficients so that crosses have zero components — every
+// truncation decided from crosses given either way round is that of the exact meet (Cramer's
+// rule in integers, truncated exactly), and the same as truncated_meet's own when both decide.
+BOOST_AUTO_TEST_CASE(shared_cross_products_give_the_exact_truncations) {
+  Rng rng(4653);
+  auto coefficient = [&](int bits) {
+    mpz_class z = 0;
+    for (int b = 0; b < bits; b += 30) z = (z << 30) + static_cast<long>(rng() % (1u << 30));
+    z >>= (bits + 29) / 30 * 30 - bits;
+    return rng() % 2 ? mpz_class(-z) : z;
+  };
+  std::size_t decided = 0, trials = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int bits = trial % 3 == 0 ? 12 : trial % 3 == 1 ? 60 : 200;
+    std::array<internal::IntegerPlane3, 3> pl;
+    for (internal::IntegerPlane3& p : pl) {
+      for (mpz_class& a : p.a) a = coefficient(bits);
+      p.b = coefficient(bits);
+    }
+    if (trial % 5 == 0) pl[1].a[0] = pl[0].a[0], pl[1].a[1] = pl[0].a[1];  // a cross with a zero component
+    std::array<std::array<mpz_class, 3>, 3> scratch;
+    std::array<mpz_class, 4> h;
+    internal::homogeneous_meet(pl[0], pl[1], pl[2], scratch, h);
+    if (sgn(h[3]) == 0) continue;
+    if (sgn(h[3]) < 0)
+      for (mpz_class& c : h) c = -c;
+    std::array<std::optional<double>, 3> exact;
+    for (std::size_t k = 0; k < 3; ++k) exact[k] = numerics::truncated_double(h[k].get_mpz_t(), h[3].get_mpz_t());
+    std::array<std::optional<internal::WidePlane>, 3> w;
+    for (std::size_t i = 0; i < 3; ++i) w[i] = internal::wide_plane(pl[i]);
+    if (!w[0] || !w[1] || !w[2]) continue;
+    const internal::WidePlane &p = *w[0], &q = *w[1], &r = *w[2];
+    auto cross = [&](const internal::WidePlane& s, const internal::WidePlane& u, bool swap) {
+      return swap ? internal::negated(internal::wide_cross(u, s)) : internal::wide_cross(s, u);
+    };
+    const std::array<bool, 3> none{};
+    const auto own = internal::truncated_meet(p, q, r, none);
+    ++trials;
+    for (int way = 0; way < 8; ++way) {
+      const auto t = internal::truncated_meet(p, q, r, cross(q, r, way & 1), cross(r, p, way & 2), cross(p, q, way & 4), none);
+      if (!t) continue;
+      decided += way == 7;
+      for (std::size_t k = 0; k < 3; ++k)
+        BOOST_TEST((exact[k] && t->truncated[k] == *exact[k]), "trial " << trial << " way " << way << " k " << k);
+      if (own) BOOST_TEST((own->truncated == t->truncated), "trial " << trial << " way " << way);
+    }
+  }
+  BOOST_TEST(trials > 2500);
+  BOOST_TEST(decided > trials * 9 / 10);
 }

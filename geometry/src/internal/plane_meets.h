@@ -38,6 +38,22 @@ void homogeneous_meet(const IntegerPlane3& p, const IntegerPlane3& q, const Inte
 std::optional<LazyConvexSet3::TruncatedVertex> truncated_meet(const WidePlane& p, const WidePlane& q,
                                                               const WidePlane& r, const std::array<bool, 3>& zero_axis);
 
+// An enclosure of the cross product a_s × a_u of two planes' normals.
+using WideCross = std::array<numerics::DWEnclosure, 3>;
+// a_s × a_u from the planes' WidePlanes, each component enclosed (dw_enclosure.h).
+WideCross wide_cross(const WidePlane& s, const WidePlane& u);
+// −c, exactly (each enclosure's midpoint negated: it encloses −x where c encloses x).
+WideCross negated(const WideCross& c);
+// truncated_meet with the three cross products given: c_qr ∋ a_q × a_r, c_rp ∋ a_r × a_p,
+// c_pq ∋ a_p × a_q (any enclosures of them: wide_cross's, or one's negation for the planes the
+// other way round, shared between vertices that meet on the same two planes). A decided
+// truncation is the exact coordinate's, whichever enclosures decided it (docs/derivations.md
+// §4.6: the enclosures contain the exact cross products, so X_k/W's enclosure contains x_k).
+std::optional<LazyConvexSet3::TruncatedVertex> truncated_meet(const WidePlane& p, const WidePlane& q,
+                                                              const WidePlane& r, const WideCross& c_qr,
+                                                              const WideCross& c_rp, const WideCross& c_pq,
+                                                              const std::array<bool, 3>& zero_axis);
+
 // The exact planes of a set's vertices, kept so that each vertex's homogeneous coordinates can be
 // made on request (LazyConvexSet3::from_truncated's maker): vertex i is the meet of planes
 // meets[i], or given already in made[i] (W != 0). Plane k is planes[k], or, while rows[k].facet
