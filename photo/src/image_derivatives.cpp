@@ -102,9 +102,6 @@ void weighted_sums(const double* const* k, long count, const double* const* in, 
   else if (count == 2) sums_of<2, 4>(k, in, m, out, n);
   else sums_of<3, 4>(k, in, m, out, n);
 }
-void weighted_sum(const double* k, const double* const* in, long m, double* out, long n) {
-  weighted_sums(&k, 1, in, m, &out, n);
-}
 
 // The image's rows as doubles: the linear image of an RgbImage (black level removed, clamped at
 // 0: exact) or a DoubleImage's own samples.
@@ -295,7 +292,7 @@ inline std::int64_t small_root(double root, double a, double b, double c) {
 
 // out[i] = sqrt(a[i]² + 4c[i]² + b[i]²) (c null: sqrt(a[i]² + b[i]²)), as magnitude() writes them,
 // for i < n, and whether some out[i] is a small_root (the values a[i], b[i], c[i]): a correctly
-// rounded square root, so the clones (weighted_sum) give the same bytes; the sums are
+// rounded square root, so the clones (as weighted_sums') give the same bytes; the sums are
 // non-negative, so no errno is ever due (this file is compiled without errno for the math
 // functions, photo/CMakeLists.txt: the roots are then vector instructions, and the test on each
 // root with them, without a second pass).
