@@ -31,17 +31,24 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace {
 
 std::string images_dir, truths_path;
 std::size_t size = 128;
+std::filesystem::path made_dir;  // the Mondrians' folder, when this run wrote it
 
 // The dataset: the given one, or the Mondrians written once to a temporary folder.
 const std::vector<gmcc::BenchmarkImage>& dataset() {
   static std::vector<gmcc::BenchmarkImage> images;
   if (!images.empty()) return images;
   if (images_dir.empty()) {
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "gmcc_bench_edge_sigma";
+    // A folder of this process's own: two runs at once (one folder for both) read each other's
+    // half-written PNGs. Removed at the end of main.
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("gmcc_bench_edge_sigma_" + std::to_string(::getpid()));
+    made_dir = dir;
     std::filesystem::create_directories(dir);
     const gmcc::ColourTable chips = gmcc::read_colour_csv(std::string(GMCC_DATA_DIR) + "/samples/image_munsell_D75.csv");
     std::ofstream truths(dir / "truths.csv");
@@ -134,5 +141,6 @@ int main(int argc, char** argv) {
     for (int s : {1, 4, 16}) std::printf("  %9.2f", time(0, s) > 0 ? time(m, s) / time(0, s) : 0.0);
     std::printf("\n");
   }
+  if (!made_dir.empty()) std::filesystem::remove_all(made_dir);
   return 0;
 }
