@@ -21,6 +21,7 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <thread>
 
 using namespace gmcc;
 
@@ -378,6 +379,39 @@ BOOST_AUTO_TEST_CASE(fft_without_reordering_is_the_dft_in_bit_reversed_order) {
     BOOST_TEST(err <= 0x1p-45 * static_cast<double>(n), "n " << n << ": forward " << err);
     BOOST_TEST(back <= 0x1p-45 * static_cast<double>(n), "n " << n << ": round trip " << back);
   }
+}
+
+BOOST_AUTO_TEST_CASE(fft_route_buffers_kept_between_calls_change_nothing) {
+  // The FFT route's rings and results are kept by the thread between calls (image_derivatives.cpp,
+  // KeptBuffers; every value written before it is read): each image's rows are the same bytes as
+  // those made in a fresh thread, after images of other sizes and orders in this thread, and after
+  // one too large to keep (its own buffers).
+  std::mt19937 rng(4648);
+  const std::vector<RgbImage> images = {mondrian(rng, 70, 50, 0, 60000), mondrian(rng, 13, 300, 0, 60000),
+                                        mondrian(rng, 150, 3, 0, 60000), mondrian(rng, 600, 400, 0, 60000)};
+  const std::array<bool, 3> orders[2] = {{false, true, false}, {true, true, true}};
+  const auto rows_of = [&](const RgbImage& im, const std::array<bool, 3>& asked) {
+    std::vector<double> out;
+    gaussian_derivative_rows(im, 0, 16.0, asked, [&](std::size_t, const std::array<const double*, 3>& v) {
+      for (std::size_t o = 0; o < 3; ++o)
+        if (v[o]) out.insert(out.end(), v[o], v[o] + 3 * im.width);
+    });
+    return out;
+  };
+  std::vector<std::vector<double>> fresh;
+  for (const RgbImage& im : images)
+    for (const std::array<bool, 3>& asked : orders) {
+      std::thread t([&] { fresh.push_back(rows_of(im, asked)); });
+      t.join();
+    }
+  for (int round = 0; round < 2; ++round)
+    for (std::size_t i = 0; i < images.size(); ++i)
+      for (std::size_t k = 0; k < 2; ++k) {
+        const std::vector<double> again = rows_of(images[i], orders[k]);
+        const std::vector<double>& f = fresh[2 * i + k];
+        BOOST_TEST((again.size() == f.size() && std::memcmp(again.data(), f.data(), f.size() * sizeof(double)) == 0),
+                   "round " << round << " image " << i << " orders " << k);
+      }
 }
 
 BOOST_AUTO_TEST_CASE(fft_derivatives_within_their_stated_bound) {
