@@ -16,6 +16,7 @@
 #include "internal/crule_exact.h"
 #include "internal/lazy_rows.h"
 #include "internal/polytope_clip.h"
+#include "internal/shifted_sieve.h"
 
 #include <algorithm>
 #include <array>
@@ -149,18 +150,8 @@ std::vector<std::size_t> hull_candidate_indices(const std::vector<std::array<dou
   for (const std::array<double, 4>& f : facets)
     shifted.push_back({f[0] + 16 * u * std::fabs(f[0]), f[1] + 16 * u * std::fabs(f[1]),
                        f[2] + 16 * u * std::fabs(f[2]), f[3] - 16 * u * std::fabs(f[3])});
-  std::vector<std::size_t> out;
-  for (std::size_t i = 0; i < d.size(); ++i) {
-    bool inside = !shifted.empty();
-    for (int k = 0; k < 3 && inside; ++k)  // magnitudes where the relative bound holds, channels >= 0
-      inside = numerics::in_double_range(d[i][k]) && d[i][k] >= 0;
-    for (std::size_t j = 0; j < shifted.size() && inside; ++j) {
-      const std::array<double, 4>& g = shifted[j];
-      inside = g[0] * d[i][0] + g[1] * d[i][1] + g[2] * d[i][2] - g[3] < 0;
-    }
-    if (!inside) out.push_back(i);
-  }
-  return out;
+  // Colours with magnitudes where the relative bound holds and channels >= 0 (shifted_sieve.h).
+  return not_certified_inside(shifted, d);
 }
 
 std::vector<Point3> hull_candidates(const std::vector<Colour>& image) {

@@ -133,10 +133,14 @@ struct DoubleRows {
 template <class Source>
 class XPasses {
  public:
-  XPasses(const Source& source, std::size_t w, std::vector<const std::vector<double>*> kernels, long slots)
+  // The rings in `storage` when given (each at least slots·3w values; their contents are
+  // overwritten before they are read), else in the object's own.
+  XPasses(const Source& source, std::size_t w, std::vector<const std::vector<double>*> kernels, long slots,
+          std::vector<std::vector<double>>* storage = nullptr)
       : source_(source), kernels_(std::move(kernels)), w_(static_cast<long>(w)),
-        r_(static_cast<long>(kernels_.front()->size() / 2)), slots_(slots),
-        in_(3 * w), rings_(kernels_.size(), std::vector<double>(static_cast<std::size_t>(slots_) * 3 * w)) {
+        r_(static_cast<long>(kernels_.front()->size() / 2)), slots_(slots), in_(3 * w),
+        rings_(storage ? *storage : own_rings_) {
+    if (!storage) own_rings_.assign(kernels_.size(), std::vector<double>(static_cast<std::size_t>(slots_) * 3 * w));
     if (r_ >= internal::kFftMinRadius) {
       fft_.emplace(kernels_, w);
       z_.resize(fft_->size()), t_.resize(fft_->size());
@@ -217,7 +221,8 @@ class XPasses {
   long w_, r_, slots_, next_ = 0;
   std::vector<double> in_;
   mutable std::vector<const double*> terms_ = std::vector<const double*>(2 * static_cast<std::size_t>(r_) + 1);  // along_x's rows of terms
-  std::vector<std::vector<double>> rings_;
+  std::vector<std::vector<double>> own_rings_;
+  std::vector<std::vector<double>>& rings_;
   std::optional<internal::ClampedFftConvolution> fft_;  // above kFftMinRadius
   std::vector<std::complex<double>> z_, t_;
 };
@@ -385,6 +390,40 @@ void direct_rows(const Source& source, long w, long h, const std::vector<const s
   }
 }
 
+// The FFT route's rings and results: kept by the thread from one call to the next while they
+// fit in 8 MiB together (images up to about 180 × 180 at σ = 16; more are made afresh each call),
+// so that a dataset of small images does not fault the same pages in anew for every image and
+// order (a third of the σ = 16 derivatives' time on 128 × 128 images; docs/performance-history.md
+// "Edge and n-jet methods, fifth round"). Every value is written before it is read; one user at a
+// time (a nested call gets its own).
+class KeptBuffers {
+ public:
+  explicit KeptBuffers(std::size_t doubles) {
+    static thread_local std::array<std::vector<std::vector<double>>, 2> kept;
+    static thread_local bool busy = false;
+    if (doubles * sizeof(double) <= (std::size_t(8) << 20) && !busy) sets_ = &kept, busy_ = &busy, busy = true;
+    else sets_ = &own_;
+  }
+  ~KeptBuffers() {
+    if (busy_) *busy_ = false;
+  }
+  KeptBuffers(const KeptBuffers&) = delete;
+  KeptBuffers& operator=(const KeptBuffers&) = delete;
+  // Set `which` (0 or 1) as `count` buffers of at least `size` values each.
+  std::vector<std::vector<double>>& buffers(std::size_t which, std::size_t count, std::size_t size) {
+    std::vector<std::vector<double>>& b = (*sets_)[which];
+    if (b.size() < count) b.resize(count);
+    for (std::size_t i = 0; i < count; ++i)
+      if (b[i].size() < size) b[i].resize(size);
+    return b;
+  }
+
+ private:
+  std::array<std::vector<std::vector<double>>, 2> own_;
+  std::array<std::vector<std::vector<double>>, 2>* sets_;
+  bool* busy_ = nullptr;
+};
+
 // The FFT route (clamped_convolution.h): rows in blocks of B = N − 2r (N the length of the FFT
 // along y, the smallest power of 2 of at least min(h, 2r + 2) + 2r), each block's passes along y
 // made column pair by column pair from a ring of min(h, N) rows along x.
@@ -397,8 +436,12 @@ void fft_rows(const Source& source, long w, long h, const std::vector<const std:
   for (const YPass& p : passes) kernels.push_back(p.kernel);
   const internal::ClampedFftConvolution fy(kernels, static_cast<std::size_t>(std::min(h, 2 * r + 2)));
   const long n = static_cast<long>(fy.size()), block = n - 2 * r, width = 3 * w;
-  XPasses<Source> x(source, static_cast<std::size_t>(w), along_x, std::min(h, n));
-  std::vector<std::vector<double>> results(passes.size(), std::vector<double>(static_cast<std::size_t>(block * width)));
+  const std::size_t ring = static_cast<std::size_t>(std::min(h, n) * width);
+  const std::size_t out = static_cast<std::size_t>(std::min(block, h) * width);
+  KeptBuffers kept(along_x.size() * ring + passes.size() * out);
+  std::vector<std::vector<double>>& rings = kept.buffers(0, along_x.size(), ring);
+  std::vector<std::vector<double>>& results = kept.buffers(1, passes.size(), out);
+  XPasses<Source> x(source, static_cast<std::size_t>(w), along_x, std::min(h, n), &rings);
   std::vector<std::complex<double>> z(static_cast<std::size_t>(n)), t(static_cast<std::size_t>(n));
   for (long y0 = 0; y0 < h; y0 += block) {
     const long rows = std::min(block, h - y0);

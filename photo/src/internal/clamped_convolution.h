@@ -3,7 +3,8 @@
 // "Gaussian derivatives by FFT"): the same truncated, edge-replicated convolution as the direct
 // sums, Σ_t k(t)·in(clamp(x − t)) for t in [−r, r], computed as a circular convolution of
 // length N ≥ n + 2r (a power of 2) of the edge-extended sequence, two real sequences at once as
-// the real and imaginary parts of one complex one (Cooley & Tukey 1965, radix 2). Its cost per
+// the real and imaginary parts of one complex one (Cooley & Tukey 1965 and Gentleman & Sande 1966,
+// radix 2, no reordering). Its cost per
 // value is O(log N) whatever the radius; its result differs from the exact sum by round-off only,
 // at most 2^-40·Σ|k|·max|in| for N ≤ 2^16 (tested against a long double reference in
 // tests/photo/test_edge_colours.cpp; about 2^-50 measured). Deterministic: a fixed order of
@@ -27,15 +28,23 @@ inline constexpr long kFftMinRadius = 34;
 // image_derivatives.h says (image_derivatives.cpp).
 std::vector<double> derivative_kernel(double sigma, int order);
 
-// A radix-2 complex FFT of one length n (a power of 2, at least 2), unscaled both ways.
+// A radix-2 complex FFT of one length n (a power of 2, at least 2), unscaled both ways, with no
+// reordering pass (docs/photographs.md "Gaussian derivatives by FFT"): the forward transform by
+// decimation in frequency (Gentleman & Sande 1966) leaves the spectrum in bit-reversed order, the
+// inverse by decimation in time (Cooley & Tukey 1965) reads it in that order, so a convolution
+// (spectra multiplied entry by entry, both in that order) never permutes. The stages whose
+// twiddles are 1 and ∓i (the two shortest) take no multiplication.
 class Fft {
  public:
   explicit Fft(std::size_t n);
   std::size_t size() const { return n_; }
-  // a ← DFT(a), a[k] = Σ_j a_j·e^{−2πijk/n}.
+  // a ← DFT(a) in bit-reversed order: a[rev(k)] = Σ_j a_j·e^{−2πijk/n}.
   void forward(std::complex<double>* a) const;
-  // a ← n·IDFT(a), a[j] = Σ_k a_k·e^{2πijk/n} (forward on the conjugates, conjugated).
+  // a ← n·IDFT of a spectrum in bit-reversed order, in natural order: a[j] = Σ_k A_k·e^{2πijk/n}
+  // where A_k is read from a[rev(k)]. inverse(forward(a)) = n·a up to round-off.
   void inverse(std::complex<double>* a) const;
+  // rev(k): k's log2(n) bits reversed.
+  std::size_t bit_reversed(std::size_t k) const { return rev_[k]; }
 
  private:
   std::size_t n_;
@@ -52,7 +61,8 @@ class ClampedFftConvolution {
   long radius() const { return r_; }
   std::size_t size() const { return fft_.size(); }
   // z (size() values): z[m] = e0[m] + i·e1[m] for m < n + 2r, e the extended inputs
-  // (e[m] = in(clamp(m − r))), the rest 0, as the caller wrote it; transformed in place.
+  // (e[m] = in(clamp(m − r))), the rest 0, as the caller wrote it; transformed in place (its
+  // spectrum in bit-reversed order, as apply reads it).
   void transform(std::complex<double>* z) const { fft_.forward(z); }
   // Kernel k applied to a transformed z, into out (size() values): the convolution of e0 at
   // output x (0 <= x < n) is out[x + 2r].real(), of e1 out[x + 2r].imag().
