@@ -395,14 +395,24 @@ void direct_rows(const Source& source, long w, long h, const std::vector<const s
 // so that a dataset of small images does not fault the same pages in anew for every image and
 // order (a third of the σ = 16 derivatives' time on 128 × 128 images; docs/performance-history.md
 // "Edge and n-jet methods, fifth round"). Every value is written before it is read; one user at a
-// time (a nested call gets its own).
+// time (a nested call gets its own). A buffer kept grows to the largest a call asked of it, so
+// calls of different shapes could leave more than 8 MiB: the kept set is freed when a call finds it
+// beyond 8 MiB, so that a thread keeps at most twice that.
 class KeptBuffers {
  public:
   explicit KeptBuffers(std::size_t doubles) {
     static thread_local std::array<std::vector<std::vector<double>>, 2> kept;
     static thread_local bool busy = false;
-    if (doubles * sizeof(double) <= (std::size_t(8) << 20) && !busy) sets_ = &kept, busy_ = &busy, busy = true;
-    else sets_ = &own_;
+    constexpr std::size_t limit = (std::size_t(8) << 20) / sizeof(double);
+    if (doubles > limit || busy) {
+      sets_ = &own_;
+      return;
+    }
+    std::size_t held = 0;
+    for (const auto& set : kept)
+      for (const std::vector<double>& b : set) held += b.capacity();
+    if (held > limit) kept = {};
+    sets_ = &kept, busy_ = &busy, busy = true;
   }
   ~KeptBuffers() {
     if (busy_) *busy_ = false;
