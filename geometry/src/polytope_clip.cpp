@@ -742,7 +742,8 @@ class Clipper {
 
   // An enclosure of a_s × a_u from the planes' double-word copies ws, wu: made once for each pair
   // of planes (as a_min × a_max, its negation, exact, for the other order), kept in a table
-  // (open addressing, `crosses_` slots) that result() clears. A final vertex's three pairs of
+  // (open addressing in `cross_slot_`, home slot from the top bits of a multiplicative hash) that
+  // result() clears. A final vertex's three pairs of
   // planes are edges of the polytope where the vertex is simple, each shared with the vertex at
   // the edge's other end.
   WideCross shared_cross(int s, int u, const WidePlane& ws, const WidePlane& wu) {
@@ -750,7 +751,7 @@ class Clipper {
     const std::uint64_t key = swap ? (std::uint64_t(std::uint32_t(u)) << 32 | std::uint32_t(s))
                                    : (std::uint64_t(std::uint32_t(s)) << 32 | std::uint32_t(u));
     const std::size_t mask = cross_slot_.size() - 1;
-    std::size_t h = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 40) & mask;
+    std::size_t h = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> (64 - cross_bits_)) & mask;
     while (cross_slot_[h].key != key && cross_slot_[h].key != kNoPair) h = (h + 1) & mask;
     CrossSlot& e = cross_slot_[h];
     if (e.key == kNoPair) {
@@ -795,7 +796,8 @@ class Clipper {
     }
     wide_index_.assign(filters_.size(), -1);
     std::size_t slots = 16;
-    while (slots < 6 * n) slots *= 2;  // at most 3n pairs, the table at most half full
+    cross_bits_ = 4;
+    while (slots < 6 * n) slots *= 2, ++cross_bits_;  // at most 3n pairs, the table at most half full
     cross_slot_.assign(slots, CrossSlot{});
     crosses_.clear(), crosses_.reserve(3 * n);
     auto meets = std::make_shared<PlaneMeets>();
@@ -928,6 +930,7 @@ class Clipper {
     std::size_t index = 0;        // its cross product in crosses_
   };
   std::vector<CrossSlot> cross_slot_;  // shared_cross(): the table of pairs of planes
+  unsigned cross_bits_ = 4;            // log2 of its size
   std::vector<WideCross> crosses_;     // shared_cross(): their cross products
   std::array<mpz_class, 4> homogeneous_;           // scratch for exact_homogeneous
   mpz_class side_;                                  // scratch for side

@@ -62,7 +62,8 @@ template <long K, long lanes>
 inline __attribute__((always_inline)) void sums_of(const double* const* k, const double* const* in, long m,
                                                    double* const* out, long n) {
   typedef double Four __attribute__((vector_size(32)));
-  typedef double UnalignedFour __attribute__((vector_size(32), aligned(8)));  // a store to out
+  // A store to out: unaligned, and of the alias set of double (as GCC's own __m256d_u).
+  typedef double UnalignedFour __attribute__((vector_size(32), aligned(8), __may_alias__));
   long i = 0;
   for (; i + 4 * lanes <= n; i += 4 * lanes) {
     Four sum[K][lanes];
@@ -90,7 +91,7 @@ inline __attribute__((always_inline)) void sums_of(const double* const* k, const
     }
 }
 
-// sums_of for `count` (1 to 3) kernels. On x86-64 ELF with GCC it is compiled twice and the
+// sums_of for `count` kernels, three at a time. On x86-64 ELF with GCC it is compiled twice and the
 // loader picks the clone the processor supports (as GMCC_DW_FMA_CLONES, numerics/internal): the
 // AVX2 clone makes the same operations four at a time, with no fused multiply-add (AVX2 does not
 // enable FMA), so the same bytes.
@@ -98,9 +99,12 @@ inline __attribute__((always_inline)) void sums_of(const double* const* k, const
 __attribute__((target_clones("avx2", "default")))
 #endif
 void weighted_sums(const double* const* k, long count, const double* const* in, long m, double* const* out, long n) {
-  if (count == 1) sums_of<1, 8>(k, in, m, out, n);
-  else if (count == 2) sums_of<2, 4>(k, in, m, out, n);
-  else sums_of<3, 4>(k, in, m, out, n);
+  for (long first = 0; first < count; first += 3) {
+    const long left = count - first;
+    if (left == 1) sums_of<1, 8>(k + first, in, m, out + first, n);
+    else if (left == 2) sums_of<2, 4>(k + first, in, m, out + first, n);
+    else sums_of<3, 4>(k + first, in, m, out + first, n);
+  }
 }
 
 // The image's rows as doubles: the linear image of an RgbImage (black level removed, clamped at
@@ -140,6 +144,8 @@ class XPasses {
       : source_(source), kernels_(std::move(kernels)), w_(static_cast<long>(w)),
         r_(static_cast<long>(kernels_.front()->size() / 2)), slots_(slots), in_(3 * w),
         rings_(storage ? *storage : own_rings_) {
+    // along_x() holds the kernels in arrays of three: g, d1 and d2 at most (sweep_plan).
+    if (kernels_.size() > 3) throw std::logic_error("at most three kernels along x");
     if (!storage) own_rings_.assign(kernels_.size(), std::vector<double>(static_cast<std::size_t>(slots_) * 3 * w));
     if (r_ >= internal::kFftMinRadius) {
       fft_.emplace(kernels_, w);
@@ -535,7 +541,9 @@ void derivative_rows(const Source& source, std::size_t w, std::size_t h, double 
   const std::array<bool, 3> flat = asked[1] || asked[2] ? flat_channels(source, 3 * w * h) : std::array<bool, 3>{};
   Combiner combiner(plan.orders, flat, static_cast<long>(w));
   const long W = static_cast<long>(w), H = static_cast<long>(h);
-  if (static_cast<long>(kernels[0].size() / 2) >= internal::kFftMinRadius)
+  // Rows of no pixels (w = 0) take the direct route, which hands on h empty rows: the FFT's
+  // clamped row would read the sample before the first.
+  if (static_cast<long>(kernels[0].size() / 2) >= internal::kFftMinRadius && w > 0)
     fft_rows(source, W, H, along_x, passes, combiner, row);
   else
     direct_rows(source, W, H, along_x, passes, combiner, row);

@@ -1,7 +1,8 @@
 // The degenerate-gamut catalogue of docs/degenerate.md: one test per entry, each stating what
 // gmcc returns (exactly) and what a plain double-precision pipeline (tests/baseline) returns on
 // the same input. The double results asserted here are what IEEE-754 binary64 with
-// round-to-nearest gives (x86-64 SSE2, no FMA contraction: -std=c++17 implies -ffp-contract=off).
+// round-to-nearest gives (x86-64 SSE2, no FMA contraction: the default x86-64 target has no FMA;
+// GCC would contract a·b + c in C++ on a target that has it, whatever the -std).
 #include "../baseline/double_pipeline.h"
 #include "../test_support.h"
 

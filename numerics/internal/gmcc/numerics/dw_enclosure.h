@@ -32,8 +32,12 @@
 /// already targeting FMA, it is compiled twice, with and without FMA instructions, and the loader
 /// picks the one the processor supports (target_clones); `flatten` inlines every double-word
 /// operation into both, so that std::fma is one instruction rather than a call into the C
-/// library. Both compute the same values (std::fma is exact-then-rounded either way). Elsewhere
-/// it marks nothing: in the portable build, and under Clang (the fuzz build, scripts/fuzz), which
+/// library. std::fma gives the same value in both (exact, then rounded), but GCC also contracts
+/// other products and sums (a·b + c) into fused multiply-adds in the FMA clone, which removes a
+/// rounding: the enclosures stay enclosures (each error bound covers the unfused operations and
+/// keeps its slack), yet an enclosure's last bits, and so which truncations a filter decides, can
+/// differ between a processor with FMA and one without; exact results cannot. Elsewhere it marks
+/// nothing: in the portable build, and under Clang (the fuzz build, scripts/fuzz), which
 /// refuses target_clones together with flatten.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__) && !defined(__FMA__) && \
     !defined(GMCC_PORTABLE_NUMERICS)
