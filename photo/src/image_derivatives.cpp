@@ -147,7 +147,7 @@ class XPasses {
     // along_x() holds the kernels in arrays of three: g, d1 and d2 at most (sweep_plan).
     if (kernels_.size() > 3) throw std::logic_error("at most three kernels along x");
     if (!storage) own_rings_.assign(kernels_.size(), std::vector<double>(static_cast<std::size_t>(slots_) * 3 * w));
-    if (r_ >= internal::kFftMinRadius) {
+    if (r_ >= internal::kFftMinRadius && w > 0) {  // a row of no pixels has nothing to transform
       fft_.emplace(kernels_, w);
       z_.resize(fft_->size()), t_.resize(fft_->size());
     }
