@@ -32,6 +32,8 @@ std::array<double, 3> colour_of(std::uint64_t key) {
 constexpr std::size_t slabs = 8;
 // About how many kept pixels the sieves' corners are chosen from.
 constexpr std::size_t sample = 1 << 18;
+// Up to how many kept pixels the exact hull takes every kept colour, without the sieves.
+constexpr std::size_t few = 1 << 15;
 
 // The keys of the kept pixels' colours that their slab's sieve keeps, in pixel order (the slab
 // of a linear red r is slab_of_red[r]). On x86-64 ELF with GCC it is compiled twice and the loader
@@ -51,16 +53,17 @@ void sieve_pass(const RgbImage& image, std::uint32_t black_level, const std::vec
     }
 }
 
-}  // namespace
-
-std::vector<ImageColours> image_hull_sets(const RgbImage& image, const PixelRules& rules, const KeptPixels& kept,
-                                          const std::vector<ColourSet>& sets) {
-  const bool hulls = !sets.empty() && std::all_of(sets.begin(), sets.end(), [](ColourSet s) {
-    return s == ColourSet::hull_3d || s == ColourSet::hull;
-  });
-  if (!hulls || rules.bin != 1 || rules.prefilter_sigma > 0 || kept.counts.kept == 0 ||
-      kept.kept.size() != image.width * image.height)
-    return image_colour_sets(image, rules, kept, sets);
+// The keys of the kept pixels' colours that may be vertices of their hull: every kept colour for
+// an image of at most `few` kept pixels, where building the sieves costs more than the exact
+// hull's own filter spends on all of them; else those the sieves of slabs of red keep.
+std::vector<std::uint64_t> candidate_keys(const RgbImage& image, std::uint32_t black_level, const KeptPixels& kept) {
+  std::vector<std::uint64_t> keys;
+  if (kept.counts.kept <= few) {
+    keys.reserve(kept.counts.kept);
+    for (std::size_t i = 0; i < kept.kept.size(); ++i)
+      if (kept.kept[i]) keys.push_back(internal::colour_key(internal::linear_channels(image, black_level, i)));
+    return keys;
+  }
   // The sieves' corners from a sample of the kept pixels (about `sample` of them, every
   // stride-th pixel): any colours of the image will do, since a colour strictly inside the hull of
   // some of its colours is a vertex of neither hull; every kept pixel would give colours only
@@ -68,7 +71,7 @@ std::vector<ImageColours> image_hull_sets(const RgbImage& image, const PixelRule
   const std::size_t n = image.width * image.height, stride = std::max<std::size_t>(1, kept.counts.kept / sample);
   const auto each_sampled_colour = [&](const auto& f) {
     for (std::size_t i = 0; i < n; i += stride)
-      if (kept.kept[i]) f(i, linear_colour(image, rules.black_level, i));
+      if (kept.kept[i]) f(i, linear_colour(image, black_level, i));
   };
   // The sample's range of red; the colours fall into slabs of red, each with its own sieve: a
   // slab's hull is thin along red, so its few extreme colours leave far fewer inside candidates
@@ -92,13 +95,26 @@ std::vector<ImageColours> image_hull_sets(const RgbImage& image, const PixelRule
   std::vector<ColourHullSieve> sieves;
   for (const ExtremeColours& e : extremes) {
     std::vector<std::array<double, 3>> corners;
-    for (std::size_t i : e.indices()) corners.push_back(linear_colour(image, rules.black_level, i));
+    for (std::size_t i : e.indices()) corners.push_back(linear_colour(image, black_level, i));
     sieves.emplace_back(corners);
   }
-  std::vector<std::uint64_t> keys;
   std::vector<std::uint8_t> slab_of_red(1 << 16);
   for (std::size_t r = 0; r < slab_of_red.size(); ++r) slab_of_red[r] = static_cast<std::uint8_t>(slab({double(r), 0, 0}));
-  sieve_pass(image, rules.black_level, kept.kept, slab_of_red, sieves, keys);
+  sieve_pass(image, black_level, kept.kept, slab_of_red, sieves, keys);
+  return keys;
+}
+
+}  // namespace
+
+std::vector<ImageColours> image_hull_sets(const RgbImage& image, const PixelRules& rules, const KeptPixels& kept,
+                                          const std::vector<ColourSet>& sets) {
+  const bool hulls = !sets.empty() && std::all_of(sets.begin(), sets.end(), [](ColourSet s) {
+    return s == ColourSet::hull_3d || s == ColourSet::hull;
+  });
+  if (!hulls || rules.bin != 1 || rules.prefilter_sigma > 0 || kept.counts.kept == 0 ||
+      kept.kept.size() != image.width * image.height)
+    return image_colour_sets(image, rules, kept, sets);
+  std::vector<std::uint64_t> keys = candidate_keys(image, rules.black_level, kept);
   // The colours kept, distinct and sorted.
   internal::sort_keys_in_place(keys);
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());

@@ -166,32 +166,37 @@ BOOST_AUTO_TEST_CASE(hull_sets_are_the_sorted_colour_sets) {
     const std::vector<Colour> chips = {{Rational(1), Rational(2), Rational(3)}, {Rational(3), Rational(1), Rational(1)},
                                        {Rational(2), Rational(2), Rational(1)}, {Rational(1), Rational(3), Rational(2)}};
     check_same(render_mondrian(chips, spec).image, dark, sets, "noisy Mondrian");
-    RgbImage flat = noisy(rng, 120, 80, 1, 50000);
-    for (std::size_t i = 0; i < flat.samples.size(); i += 3) flat.samples[i + 2] = flat.samples[i];  // b = r
-    check_same(flat, plain, sets, "flat colours (b = r)");
-    RgbImage line = noisy(rng, 60, 40, 1, 60000);
-    for (std::size_t i = 0; i < line.samples.size(); i += 3) line.samples[i + 1] = line.samples[i + 2] = line.samples[i];
-    check_same(line, plain, sets, "grey colours (a segment)");
-    RgbImage blue_zero = noisy(rng, 90, 70, 0, 65535);
-    blue_zero.samples[2] = 0;  // a colour without chromaticity
-    check_same(blue_zero, plain, sets, "a blue channel of 0");
-    // Colours with b = 0 that hide a vertex of conv(S+) inside the image's hull: P = (1000, 500,
-    // 1000) has the largest r/b of the colours with a chromaticity, but lies inside the hull of
-    // the others with (3000, g, 0) and black (masked pixels kept): the lifts must still have it.
-    RgbImage hidden = noisy(rng, 64, 64, 0, 0);
-    std::uniform_int_distribution<unsigned> r(0, 999), g(0, 1000), b(1001, 2000);
-    for (std::size_t i = 0; i < 64 * 64; ++i) {
-      const std::array<unsigned, 3> c = i % 7 == 0   ? std::array<unsigned, 3>{3000, unsigned(i % 3) * 500, 0}
-                                        : i % 11 == 0 ? std::array<unsigned, 3>{0, 0, 0}
-                                        : i == 5      ? std::array<unsigned, 3>{1000, 500, 1000}
-                                                      : std::array<unsigned, 3>{r(rng), g(rng), b(rng)};
-      for (int k = 0; k < 3; ++k) hidden.samples[3 * i + k] = static_cast<std::uint16_t>(c[k]);
+    // Each special case at two sizes: at most 2^15 kept pixels the exact hull takes every kept
+    // colour, above it the sieves of slabs of red choose (image_hull_sets.cpp, candidate_keys).
+    for (const std::size_t scale : {1, 4}) {
+      const std::size_t w = 64 * scale, h = 60 * scale;
+      RgbImage flat = noisy(rng, w, h, 1, 50000);
+      for (std::size_t i = 0; i < flat.samples.size(); i += 3) flat.samples[i + 2] = flat.samples[i];  // b = r
+      check_same(flat, plain, sets, "flat colours (b = r)");
+      RgbImage line = noisy(rng, w, h, 1, 60000);
+      for (std::size_t i = 0; i < line.samples.size(); i += 3) line.samples[i + 1] = line.samples[i + 2] = line.samples[i];
+      check_same(line, plain, sets, "grey colours (a segment)");
+      RgbImage blue_zero = noisy(rng, w, h, 0, 65535);
+      blue_zero.samples[2] = 0;  // a colour without chromaticity
+      check_same(blue_zero, plain, sets, "a blue channel of 0");
+      // Colours with b = 0 that hide a vertex of conv(S+) inside the image's hull: P = (1000, 500,
+      // 1000) has the largest r/b of the colours with a chromaticity, but lies inside the hull of
+      // the others with (3000, g, 0) and black (masked pixels kept): the lifts must still have it.
+      RgbImage hidden = noisy(rng, w, h, 0, 0);
+      std::uniform_int_distribution<unsigned> r(0, 999), g(0, 1000), b(1001, 2000);
+      for (std::size_t i = 0; i < w * h; ++i) {
+        const std::array<unsigned, 3> c = i % 7 == 0   ? std::array<unsigned, 3>{3000, unsigned(i % 3) * 500, 0}
+                                          : i % 11 == 0 ? std::array<unsigned, 3>{0, 0, 0}
+                                          : i == 5      ? std::array<unsigned, 3>{1000, 500, 1000}
+                                                        : std::array<unsigned, 3>{r(rng), g(rng), b(rng)};
+        for (int k = 0; k < 3; ++k) hidden.samples[3 * i + k] = static_cast<std::uint16_t>(c[k]);
+      }
+      check_same(hidden, plain, sets, "a vertex of the chromatic colours' hull hidden by colours with b = 0");
+      PixelRules masked = plain;
+      masked.keep.assign(w * h, false);
+      for (std::size_t i = 0; i < masked.keep.size(); ++i) masked.keep[i] = i % 3 != 0;  // two in three
+      check_same(blue_zero, masked, sets, "a mask");
     }
-    check_same(hidden, plain, sets, "a vertex of the chromatic colours' hull hidden by colours with b = 0");
-    PixelRules masked = plain;
-    masked.keep.assign(90 * 70, false);
-    for (std::size_t i = 0; i < masked.keep.size(); i += 3) masked.keep[i] = true;
-    check_same(blue_zero, masked, sets, "a mask");
   }
   // Other sets and binning: image_colour_sets itself, counts and all.
   RgbImage im = noisy(rng, 40, 30, 1, 4000);
