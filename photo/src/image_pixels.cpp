@@ -421,21 +421,19 @@ ImageColours hull_3d_of_doubles(std::vector<std::array<double, 3>> colours, cons
   // vertices the same, and the working copies a chunk's size. colour_hull_vertex_indices gives
   // one index per distinct vertex in increasing colour order, in any order of its input.
   const std::size_t n = colours.size();
-  std::vector<std::array<double, 3>> vertices, chunk;
+  std::vector<std::array<double, 3>> vertices;
   if (n <= colour_chunk) {  // one chunk: the colours themselves, no copy
     for (std::size_t i : colour_hull_vertex_indices(colours)) vertices.push_back(colours[i]);
-  }
-  for (std::size_t begin = 0; n > colour_chunk && begin < n; begin += colour_chunk) {
-    const std::size_t end = std::min(n, begin + colour_chunk);
-    chunk.assign(colours.begin() + static_cast<long>(begin), colours.begin() + static_cast<long>(end));
-    for (std::size_t i : colour_hull_vertex_indices(chunk)) vertices.push_back(chunk[i]);
-  }
-  std::vector<std::array<double, 3>>().swap(colours);
-  std::vector<std::array<double, 3>>().swap(chunk);
-  if (n > colour_chunk) {
-    std::vector<std::array<double, 3>> all;
-    for (std::size_t i : colour_hull_vertex_indices(vertices)) all.push_back(vertices[i]);
-    vertices.swap(all);
+  } else {
+    std::vector<std::array<double, 3>> chunk, parts;
+    for (std::size_t begin = 0; begin < n; begin += colour_chunk) {
+      const std::size_t end = std::min(n, begin + colour_chunk);
+      chunk.assign(colours.begin() + static_cast<long>(begin), colours.begin() + static_cast<long>(end));
+      for (std::size_t i : colour_hull_vertex_indices(chunk)) parts.push_back(chunk[i]);
+    }
+    std::vector<std::array<double, 3>>().swap(colours);
+    std::vector<std::array<double, 3>>().swap(chunk);
+    for (std::size_t i : colour_hull_vertex_indices(parts)) vertices.push_back(parts[i]);
   }
   for (const auto& c : vertices) out.colours.push_back({Rational(c[0]), Rational(c[1]), Rational(c[2])});
   out.counts.hull_vertices = out.colours.size();
